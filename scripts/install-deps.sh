@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of Gearsim from Debian's packages.
+# Idempotent: packages already present are left as they are. Needs root (or sudo).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libbullet-dev libbullet-extras-dev      # rigid-body dynamics (double precision: bullet-float64)
+  libassimp-dev                           # CAD mesh import (STL/OBJ/PLY/...)
+  libeigen3-dev                           # linear algebra
+  libosmesa6-dev                          # off-screen OpenGL
+  libyaml-cpp-dev                         # scenario and gear-spec files
+  libcli11-dev                            # command line
+  nlohmann-json3-dev                      # JSON outputs
+  libfftw3-dev                            # spectra
+  libpng-dev                              # PNG frames
+  libgtest-dev libgmock-dev               # unit tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
