@@ -1,0 +1,171 @@
+#include "app/yaml_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "geometry/errors.hpp"
+
+namespace gearsim::app {
+
+YamlMap::YamlMap(YAML::Node node, std::string path, std::shared_ptr<const std::string> source)
+    : node_(std::move(node)), path_(std::move(path)), source_(std::move(source)),
+      read_(std::make_shared<std::set<std::string>>()) {}
+
+YamlMap YamlMap::load_file(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": cannot open the file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return from_string(text.str(), path.string());
+}
+
+YamlMap YamlMap::from_string(const std::string& text, const std::string& source_name) {
+  auto source = std::make_shared<const std::string>(source_name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(source_name + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (!root.IsMap()) throw InputError(source_name + ": expected a mapping (key: value) at the top level");
+  return YamlMap(root, "", source);
+}
+
+std::string YamlMap::where(const YAML::Node& node) const {
+  const YAML::Mark m = node.Mark();
+  if (m.line < 0) return *source_;
+  return *source_ + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
+}
+
+std::string YamlMap::key_path(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+void YamlMap::fail(const std::string& key, const std::string& message) const {
+  const YAML::Node n = node_[key];
+  throw InputError(where(n.IsDefined() ? n : node_) + ": " + key_path(key) + ": " + message);
+}
+
+void YamlMap::fail_here(const std::string& message) const {
+  throw InputError(where(node_) + ": " + (path_.empty() ? "" : path_ + ": ") + message);
+}
+
+bool YamlMap::has(const std::string& key) const { return node_[key].IsDefined() && !node_[key].IsNull(); }
+
+YAML::Node YamlMap::get(const std::string& key) const {
+  read_->insert(key);
+  const YAML::Node n = node_[key];
+  if (!n.IsDefined() || n.IsNull()) fail(key, "missing (required)");
+  return n;
+}
+
+double YamlMap::number(const std::string& key) const {
+  const YAML::Node n = get(key);
+  double v = 0;
+  if (!n.IsScalar() || !YAML::convert<double>::decode(n, v))
+    fail(key, "expected a number, got '" + (n.IsScalar() ? n.Scalar() : std::string("a collection")) + "'");
+  if (!std::isfinite(v)) fail(key, "expected a finite number");
+  return v;
+}
+
+double YamlMap::number_or(const std::string& key, double fallback) const {
+  read_->insert(key);
+  return has(key) ? number(key) : fallback;
+}
+
+std::optional<double> YamlMap::optional_number(const std::string& key) const {
+  read_->insert(key);
+  if (!has(key)) return std::nullopt;
+  return number(key);
+}
+
+int YamlMap::integer(const std::string& key) const {
+  const YAML::Node n = get(key);
+  long long v = 0;
+  if (!n.IsScalar() || !YAML::convert<long long>::decode(n, v))
+    fail(key, "expected an integer, got '" + (n.IsScalar() ? n.Scalar() : std::string("a collection")) + "'");
+  if (v < -2147483647LL || v > 2147483647LL) fail(key, "integer out of range");
+  return static_cast<int>(v);
+}
+
+int YamlMap::integer_or(const std::string& key, int fallback) const {
+  read_->insert(key);
+  return has(key) ? integer(key) : fallback;
+}
+
+std::string YamlMap::string(const std::string& key) const {
+  const YAML::Node n = get(key);
+  if (!n.IsScalar()) fail(key, "expected a text value");
+  return n.Scalar();
+}
+
+std::string YamlMap::string_or(const std::string& key, const std::string& fallback) const {
+  read_->insert(key);
+  return has(key) ? string(key) : fallback;
+}
+
+bool YamlMap::boolean_or(const std::string& key, bool fallback) const {
+  read_->insert(key);
+  if (!has(key)) return fallback;
+  const YAML::Node n = get(key);
+  bool v = false;
+  if (!n.IsScalar() || !YAML::convert<bool>::decode(n, v)) fail(key, "expected true or false");
+  return v;
+}
+
+std::string YamlMap::choice(const std::string& key, const std::vector<std::string>& choices) const {
+  const std::string v = string(key);
+  for (const std::string& c : choices)
+    if (c == v) return v;
+  std::string list;
+  for (const std::string& c : choices) list += (list.empty() ? "" : ", ") + c;
+  fail(key, "expected one of {" + list + "}, got '" + v + "'");
+}
+
+std::string YamlMap::choice_or(const std::string& key, const std::vector<std::string>& choices,
+                               const std::string& fallback) const {
+  read_->insert(key);
+  return has(key) ? choice(key, choices) : fallback;
+}
+
+YamlMap YamlMap::map(const std::string& key) const {
+  const YAML::Node n = get(key);
+  if (!n.IsMap()) fail(key, "expected a mapping (key: value pairs)");
+  return YamlMap(n, key_path(key), source_);
+}
+
+std::vector<YamlMap> YamlMap::list_of_maps(const std::string& key) const {
+  const YAML::Node n = get(key);
+  if (!n.IsSequence()) fail(key, "expected a list");
+  std::vector<YamlMap> out;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const std::string p = key_path(key) + "[" + std::to_string(i) + "]";
+    if (!n[i].IsMap()) throw InputError(where(n[i]) + ": " + p + ": expected a mapping");
+    out.push_back(YamlMap(n[i], p, source_));
+  }
+  return out;
+}
+
+std::vector<std::string> YamlMap::keys() const {
+  std::vector<std::string> out;
+  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  return out;
+}
+
+std::vector<std::pair<std::string, YamlMap>> YamlMap::entries() const {
+  std::vector<std::pair<std::string, YamlMap>> out;
+  for (const std::string& k : keys()) out.emplace_back(k, map(k));
+  return out;
+}
+
+void YamlMap::reject_unknown_keys() const {
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.as<std::string>();
+    if (!read_->count(k))
+      throw InputError(where(kv.first) + ": " + key_path(k) + ": unknown key");
+  }
+}
+
+}  // namespace gearsim::app

@@ -1,0 +1,64 @@
+// A strict reader over yaml-cpp: typed getters whose errors name the file, line, column and key
+// path, and a check that every key of a mapping was read (unknown keys are errors). Used by every
+// file format of the app (gear-set specs, scenarios). Not a schema language.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gearsim::app {
+
+class YamlMap {
+ public:
+  // Loads a file whose top level is a mapping. Throws InputError naming the file on I/O or
+  // syntax errors (with yaml-cpp's line and column).
+  static YamlMap load_file(const std::filesystem::path& path);
+  static YamlMap from_string(const std::string& text, const std::string& source_name);
+
+  bool has(const std::string& key) const;
+  double number(const std::string& key) const;
+  double number_or(const std::string& key, double fallback) const;
+  std::optional<double> optional_number(const std::string& key) const;
+  int integer(const std::string& key) const;
+  int integer_or(const std::string& key, int fallback) const;
+  std::string string(const std::string& key) const;
+  std::string string_or(const std::string& key, const std::string& fallback) const;
+  bool boolean_or(const std::string& key, bool fallback) const;
+  // A string that must be one of `choices`.
+  std::string choice(const std::string& key, const std::vector<std::string>& choices) const;
+  std::string choice_or(const std::string& key, const std::vector<std::string>& choices,
+                        const std::string& fallback) const;
+  YamlMap map(const std::string& key) const;
+  std::vector<YamlMap> list_of_maps(const std::string& key) const;
+  // Mapping entries in file order, each as (key, map).
+  std::vector<std::pair<std::string, YamlMap>> entries() const;
+  std::vector<std::string> keys() const;
+
+  // Throws InputError for the first key that no getter asked for.
+  void reject_unknown_keys() const;
+  // Throws InputError "file:line:col: key.path: message".
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  [[noreturn]] void fail_here(const std::string& message) const;
+
+  const std::string& source() const { return *source_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  YamlMap(YAML::Node node, std::string path, std::shared_ptr<const std::string> source);
+  YAML::Node get(const std::string& key) const;  // marks as read; fails when missing
+  std::string where(const YAML::Node& node) const;
+  std::string key_path(const std::string& key) const;
+
+  YAML::Node node_;
+  std::string path_;  // dotted key path of this mapping ("" at top level)
+  std::shared_ptr<const std::string> source_;
+  std::shared_ptr<std::set<std::string>> read_;
+};
+
+}  // namespace gearsim::app
