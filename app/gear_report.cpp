@@ -1,6 +1,5 @@
 #include "app/gear_report.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -13,10 +12,6 @@ namespace gearsim::app {
 namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 json gear_json(const GearBody& b, double spacing) {
   const GearSpec& s = b.spec;
@@ -49,7 +44,6 @@ json gear_json(const GearBody& b, double spacing) {
                {"outward_oriented", r.outward_oriented()}, {"chordal_deviation_m", s.chordal_deviation_m},
                {"volume_m3", b.mass.volume_m3},       {"mass_kg", b.mass.mass_kg},
                {"inertia_zz_kg_m2", b.mass.inertia_com_kg_m2(2, 2)}};
-  const auto t0 = std::chrono::steady_clock::now();
   const DecompositionDeviation dev = decomposition_deviation(b.mesh, b.pieces, spacing);
   std::size_t max_vertices = 0;
   for (const ConvexPiece2& p : b.decomposition.pieces) max_vertices = std::max(max_vertices, p.polygon.points.size());
@@ -58,8 +52,7 @@ json gear_json(const GearBody& b, double spacing) {
                         {"max_piece_vertices", max_vertices},
                         {"hausdorff_m", dev.hausdorff_m},
                         {"hausdorff_sample_spacing_m", spacing},
-                        {"relative_volume_error", dev.relative_volume_error},
-                        {"measure_seconds", seconds_since(t0)}};
+                        {"relative_volume_error", dev.relative_volume_error}};
   return g;
 }
 
@@ -93,12 +86,8 @@ GearSetAnalysis analyse_gearset(const GearSetFile& f, double spacing) {
   doc["density_kg_m3"] = f.density_kg_m3;
   doc["gears"] = json::object();
   for (const GearSpec& s : f.gears) {
-    const auto t0 = std::chrono::steady_clock::now();
     GearBody b = make_gear_body(s, f.density_kg_m3);
-    const double build_seconds = seconds_since(t0);
-    json g = gear_json(b, spacing);
-    g["build_seconds"] = build_seconds;
-    doc["gears"][s.name] = g;
+    doc["gears"][s.name] = gear_json(b, spacing);
     a.bodies.emplace(s.name, std::move(b));
   }
   if (f.planetary) {

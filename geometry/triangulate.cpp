@@ -15,9 +15,18 @@ namespace {
 
 using Vec2 = Eigen::Vector2d;
 
-// Twice the signed area of triangle abc: > 0 when a, b, c turn counter-clockwise.
+// Twice the signed area of triangle abc: > 0 when a, b, c turn counter-clockwise. Evaluated
+// from the lexicographically smallest corner, so every rotation of (a, b, c) rounds to the same
+// value and every reflection to its negation: decisions about one triangle never disagree.
 double orient(const Vec2& a, const Vec2& b, const Vec2& c) {
-  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+  auto less = [](const Vec2* p, const Vec2* q) { return p->x() < q->x() || (p->x() == q->x() && p->y() < q->y()); };
+  const Vec2 *p = &a, *q = &b, *r = &c;
+  bool flip = false;
+  if (less(q, p)) std::swap(p, q), flip = !flip;
+  if (less(r, q)) std::swap(q, r), flip = !flip;
+  if (less(q, p)) std::swap(p, q), flip = !flip;
+  const double d = (q->x() - p->x()) * (r->y() - p->y()) - (q->y() - p->y()) * (r->x() - p->x());
+  return flip ? -d : d;
 }
 
 std::string at(const Vec2& p) {
