@@ -1,5 +1,6 @@
 #include "geometry/approx_decomposition.hpp"
 
+#include <Eigen/Geometry>
 #include <HACD/hacdHACD.h>
 
 #include <algorithm>
@@ -132,30 +133,62 @@ Hull make_hull(TriMesh mesh) {
   return h;
 }
 
-// Sampled boundary of the union of the hulls (see ApproxDecomposition::deviation_m).
-TriMesh union_surface(const std::vector<Hull>& hulls, double spacing_m, double probe_m) {
+// Splits the convex polygon p by the plane n.x = offset into its parts in front (n.x > offset)
+// and behind; points on the plane go to both.
+void split(const std::vector<Vec3>& p, const Vec3& n, double offset, std::vector<Vec3>& front,
+           std::vector<Vec3>& back) {
+  front.clear(), back.clear();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3 &a = p[i], &b = p[(i + 1) % p.size()];
+    const double sa = n.dot(a) - offset, sb = n.dot(b) - offset;
+    if (sa >= 0) front.push_back(a);
+    if (sa <= 0) back.push_back(a);
+    if ((sa > 0 && sb < 0) || (sa < 0 && sb > 0)) {
+      const Vec3 x = a + (b - a) * (sa / (sa - sb));
+      front.push_back(x), back.push_back(x);
+    }
+  }
+}
+
+// The boundary of the union of the hulls: every hull face minus the other hulls, clipped exactly
+// (a convex polygon minus a convex solid is a few convex polygons, one per plane crossed). A face
+// point counts as covered when, pushed probe_m along its face normal, it is inside or on another
+// hull, so faces of two hulls lying back to back are dropped and coplanar same-side faces kept.
+TriMesh union_surface(const std::vector<Hull>& hulls, double probe_m) {
   TriMesh out;
+  std::vector<std::vector<Vec3>> pieces, next;
+  std::vector<Vec3> front, back, rest;
   for (std::size_t h = 0; h < hulls.size(); ++h) {
     const auto& v = hulls[h].mesh.vertices;
     for (std::size_t f = 0; f < hulls[h].mesh.triangles.size(); ++f) {
       const auto& t = hulls[h].mesh.triangles[f];
-      const Vec3 a = v[t[0]], ab = v[t[1]] - a, ac = v[t[2]] - a;
-      const double longest = std::max({ab.norm(), ac.norm(), (ac - ab).norm()});
-      const int k = std::max(1, static_cast<int>(std::ceil(longest / spacing_m)));
-      auto at = [&](int i, int j) { return Vec3(a + ab * (double(i) / k) + ac * (double(j) / k)); };
-      auto emit = [&](const Vec3& x, const Vec3& y, const Vec3& z) {
-        const Vec3 probe = (x + y + z) / 3.0 + probe_m * hulls[h].n[f];
-        for (std::size_t g = 0; g < hulls.size(); ++g)
-          if (g != h && hulls[g].contains(probe)) return;
-        const auto base = static_cast<std::uint32_t>(out.vertices.size());
-        out.vertices.insert(out.vertices.end(), {x, y, z});
-        out.triangles.push_back({base, base + 1, base + 2});
-      };
-      for (int i = 0; i < k; ++i)
-        for (int j = 0; i + j < k; ++j) {
-          emit(at(i, j), at(i + 1, j), at(i, j + 1));
-          if (i + j + 1 < k) emit(at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+      const Vec3& normal = hulls[h].n[f];
+      pieces.assign(1, {v[t[0]], v[t[1]], v[t[2]]});
+      for (std::size_t g = 0; g < hulls.size() && !pieces.empty(); ++g) {
+        if (g == h) continue;
+        const Hull& o = hulls[g];
+        next.clear();
+        for (auto& poly : pieces) {
+          Vec3 lo = poly[0], hi = poly[0];
+          for (const Vec3& x : poly) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+          if ((hi.array() + probe_m < o.lo.array()).any() || (lo.array() - probe_m > o.hi.array()).any()) {
+            next.push_back(std::move(poly));
+            continue;
+          }
+          rest = poly;  // peel off the parts in front of each plane of o; what is left is covered
+          for (std::size_t k = 0; k < o.n.size() && rest.size() >= 3; ++k) {
+            split(rest, o.n[k], o.d[k] - probe_m * o.n[k].dot(normal), front, back);
+            if (front.size() >= 3) next.push_back(front);
+            rest.swap(back);
+          }
         }
+        pieces.swap(next);
+      }
+      for (const auto& poly : pieces) {  // fan-triangulate the convex leftovers
+        const auto base = static_cast<std::uint32_t>(out.vertices.size());
+        out.vertices.insert(out.vertices.end(), poly.begin(), poly.end());
+        for (std::uint32_t i = 1; i + 1 < poly.size(); ++i) out.triangles.push_back({base, base + i, base + i + 1});
+      }
     }
   }
   return out;
@@ -313,7 +346,7 @@ ApproxDecomposition approximate_decomposition(const TriMesh& mesh,
   }
 
   // Measure: input surface against the sampled union boundary.
-  const TriMesh boundary = union_surface(hulls, spacing_m, kUnionProbeRelative * diag_m);
+  const TriMesh boundary = union_surface(hulls, kUnionProbeRelative * diag_m);
   out.deviation_m = hausdorff_distance(mesh, boundary, spacing_m);
   out.input_volume_m3 = signed_volume_m3(mesh);
   out.union_volume_m3 = signed_volume_m3(boundary);

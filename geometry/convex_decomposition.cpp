@@ -31,7 +31,9 @@ std::vector<Polygon2> hertel_mehlhorn(const std::vector<Vec2>& pos,
   const int nh = 3 * static_cast<int>(tris.size());
   std::vector<int> from(nh), to(nh), next(nh), prev(nh), twin(nh, -1);
   std::unordered_map<std::uint64_t, int> by_ends;
-  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  auto key = [](int a, int b) {
+    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+  };
   for (int h = 0; h < nh; ++h) {
     const int t = h / 3, j = h % 3;
     from[h] = tris[t][j], to[h] = tris[t][(j + 1) % 3];
@@ -108,21 +110,28 @@ std::string cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, cons
     const int wp = wedge(p), wq = wedge(q);
     if (wp == wq) continue;
     if (cross2(p, q) <= 0)
-      return name + " edge " + std::to_string(i) + " crosses a gap mid-line clockwise";
+      return "the " + name + " is not star-shaped about the gear axis: its edge " +
+             std::to_string(i) + " crosses a gap mid-line clockwise";
     for (int k = wp; k != wq; k = (k + 1) % z) {
-      if (++hits[std::size_t(k)] > 1) return "gap mid-line " + std::to_string(k) + " crosses the " + name + " more than once";
+      if (++hits[std::size_t(k)] > 1)
+        return "gap mid-line " + std::to_string(k) + " crosses the " + name + " more than once";
       const Vec2 d(std::cos(ray_angle(lay, k)), std::sin(ray_angle(lay, k)));
       const double sp = cross2(d, p), sq = cross2(d, q), len = (q - p).norm();
       const double t = std::clamp(sp == sq ? 0.5 : sp / (sp - sq), 0.0, 1.0);
-      if (t * len <= kCutSnap_m) out.cut[std::size_t(k)] = ip;
-      else if ((1.0 - t) * len > kCutSnap_m) out.pts.push_back(p + t * (q - p)), out.cut[std::size_t(k)] = int(out.pts.size()) - 1;
-      else if (i + 1 < n) pending.push_back(k);
-      else out.cut[std::size_t(k)] = 0;
+      if (t * len <= kCutSnap_m)
+        out.cut[std::size_t(k)] = ip;
+      else if ((1.0 - t) * len > kCutSnap_m)
+        out.pts.push_back(p + t * (q - p)), out.cut[std::size_t(k)] = int(out.pts.size()) - 1;
+      else if (i + 1 < n)
+        pending.push_back(k);
+      else
+        out.cut[std::size_t(k)] = 0;
     }
   }
   int descents = 0;
   for (int k = 0; k < z; ++k) {
-    if (hits[std::size_t(k)] != 1) return "gap mid-line " + std::to_string(k) + " misses the " + name;
+    if (hits[std::size_t(k)] != 1)
+      return "gap mid-line " + std::to_string(k) + " misses the " + name;
     const int a = out.cut[std::size_t(k)], b = out.cut[std::size_t((k + 1) % z)];
     if (a == b) return "two gap mid-lines meet the " + name + " at one point";
     descents += b < a;
@@ -144,9 +153,11 @@ void append_arc(const CutLoop& c, int k0, int k1, std::vector<Vec2>& out) {
 std::string decompose_sectors(const Outline2& outline, const ToothLayout& lay,
                               std::vector<ConvexPiece2>& pieces) {
   if (outline.holes.size() > 1)
-    return "the outline has " + std::to_string(outline.holes.size()) + " holes; sector cutting allows at most one";
+    return "the outline has " + std::to_string(outline.holes.size()) +
+           " holes; sector cutting allows at most one";
   CutLoop outer, inner;
-  if (auto why = cut_loop(outline.outer.points, lay, "outer boundary", outer); !why.empty()) return why;
+  if (auto why = cut_loop(outline.outer.points, lay, "outer boundary", outer); !why.empty())
+    return why;
   if (!outline.holes.empty()) {
     std::vector<Vec2> hole(outline.holes[0].points.rbegin(), outline.holes[0].points.rend());
     if (auto why = cut_loop(hole, lay, "hole", inner); !why.empty()) return why;
@@ -165,7 +176,8 @@ std::string decompose_sectors(const Outline2& outline, const ToothLayout& lay,
     if (auto d = polygon_defect(sector, true, "sector " + std::to_string(k))) return *d;
     std::vector<char> reflex;
     mark_reflex(sector.points, reflex);
-    for (Polygon2& p : hertel_mehlhorn(sector.points, detail::triangulate_unchecked(sector), reflex))
+    for (Polygon2& p :
+         hertel_mehlhorn(sector.points, detail::triangulate_unchecked(sector), reflex))
       pieces.push_back({std::move(p), k, 0.0});
   }
   return {};
@@ -212,8 +224,8 @@ ConvexDecomposition decompose(const Outline2& outline, const DecompositionOption
   require_valid(outline);
   const auto& lay = options.tooth_layout;
   if (lay && (lay->teeth < 3 || !std::isfinite(lay->tooth0_angle_rad)))
-    throw InputError("tooth layout: " + std::to_string(lay->teeth) +
-                     " teeth with tooth-0 angle " + std::to_string(lay->tooth0_angle_rad) +
+    throw InputError("tooth layout: " + std::to_string(lay->teeth) + " teeth with tooth-0 angle " +
+                     std::to_string(lay->tooth0_angle_rad) +
                      " rad; need at least 3 teeth and a finite angle");
   ConvexDecomposition result;
   if (lay) {
@@ -233,8 +245,8 @@ ConvexDecomposition decompose(const Outline2& outline, const DecompositionOption
 ConvexPieces3 extrude_pieces(const ConvexDecomposition& decomposition, const PrismFrame& frame,
                              double w_min_m, double w_max_m) {
   if (!(w_min_m < w_max_m) || !std::isfinite(w_min_m) || !std::isfinite(w_max_m))
-    throw InputError("piece extrusion range [" + std::to_string(w_min_m) + ", " + std::to_string(w_max_m) +
-                     "] m: need finite w_min_m < w_max_m");
+    throw InputError("piece extrusion range [" + std::to_string(w_min_m) + ", " +
+                     std::to_string(w_max_m) + "] m: need finite w_min_m < w_max_m");
   ConvexPieces3 out;
   out.pieces.reserve(decomposition.pieces.size());
   for (const ConvexPiece2& p : decomposition.pieces) {

@@ -13,8 +13,8 @@ namespace {
 
 void require_z_range(double z_min_m, double z_max_m) {
   if (!std::isfinite(z_min_m) || !std::isfinite(z_max_m) || !(z_min_m < z_max_m))
-    throw InputError("extrusion range [" + std::to_string(z_min_m) + ", " + std::to_string(z_max_m) +
-                     "] m: need finite z_min_m < z_max_m");
+    throw InputError("extrusion range [" + std::to_string(z_min_m) + ", " +
+                     std::to_string(z_max_m) + "] m: need finite z_min_m < z_max_m");
 }
 
 // Bottom ring, top ring, caps from `triangles`, side quads along each loop (first index, size).
@@ -60,12 +60,14 @@ TriMesh extrude(const Outline2& outline, double z_min_m, double z_max_m) {
 
 TriMesh extrude_convex(const Polygon2& convex, double z_min_m, double z_max_m) {
   require_z_range(z_min_m, z_max_m);
-  if (auto d = polygon_defect(convex, true, "convex polygon")) throw InputError("cannot extrude: " + *d);
+  if (auto d = polygon_defect(convex, true, "convex polygon"))
+    throw InputError("cannot extrude: " + *d);
   if (!is_convex(convex, kConvexSineTolerance))
     throw InputError("cannot extrude: polygon with " + std::to_string(convex.points.size()) +
                      " points is not convex");
   const auto tris = detail::triangulate_unchecked(convex);
-  return build_prism(convex.points, tris, {{0, static_cast<int>(convex.points.size())}}, z_min_m, z_max_m);
+  return build_prism(convex.points, tris, {{0, static_cast<int>(convex.points.size())}}, z_min_m,
+                     z_max_m);
 }
 
 }  // namespace gearsim

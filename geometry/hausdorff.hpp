@@ -3,8 +3,8 @@
 // convex pieces lies from the input mesh. Sampled: every triangle is bisected until its edges are
 // <= sample_spacing_m and every corner is a sample (so every input vertex and edge end is one);
 // each sample's distance to the other surface is exact (point-to-triangle, uniform-grid search).
-// The result is a lower bound of the true distance and exceeds it by at most
-// sample_spacing_m / sqrt(3) (the largest distance from a point to its nearest sample).
+// The true distance lies between the result and the result + sample_spacing_m / sqrt(3) (the
+// largest distance from a surface point to its nearest sample); vertex errors are seen exactly.
 // Not a volume comparison (see the volumes in DecompositionDeviation) and not a mesh Boolean.
 #pragma once
 
@@ -22,9 +22,9 @@ double hausdorff_distance(const TriMesh& a, const TriMesh& b, double sample_spac
 TriMesh union_boundary(const ConvexPieces3& pieces);
 
 struct DecompositionDeviation {
-  double hausdorff_m = 0.0;          // input surface vs union boundary, m
-  double input_volume_m3 = 0.0;      // divergence theorem over the input triangles, m^3
-  double pieces_volume_m3 = 0.0;     // sum of the piece prisms' volumes, m^3
+  double hausdorff_m = 0.0;            // input surface vs union boundary, m
+  double input_volume_m3 = 0.0;        // divergence theorem over the input triangles, m^3
+  double pieces_volume_m3 = 0.0;       // sum of the piece prisms' volumes, m^3
   double relative_volume_error = 0.0;  // (pieces - input) / input: the area check times height
   std::size_t union_boundary_triangles = 0;
 };

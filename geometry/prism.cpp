@@ -109,17 +109,21 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
   PrismFrame f = frame_for(axis);
   std::vector<double> w(nv);
   for (std::size_t i = 0; i < nv; ++i) w[i] = mesh.vertices[i].dot(f.z);
-  const double w_lo = *std::min_element(w.begin(), w.end()), w_hi = *std::max_element(w.begin(), w.end());
+  const double w_lo = *std::min_element(w.begin(), w.end()),
+               w_hi = *std::max_element(w.begin(), w.end());
   if (w_hi - w_lo <= tol) return "the mesh is flat along this axis";
   std::vector<int> level(nv);
   double sum_lo = 0, sum_hi = 0;
   int n_lo = 0, n_hi = 0;
   for (std::size_t i = 0; i < nv; ++i) {
     // Offsets from the extreme planes (<= tol) average without the rounding of a sum of heights.
-    if (w[i] - w_lo <= tol) level[i] = 0, sum_lo += w[i] - w_lo, ++n_lo;
-    else if (w_hi - w[i] <= tol) level[i] = 1, sum_hi += w[i] - w_hi, ++n_hi;
-    else return "vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) + " m above the bottom cap of a " +
-                fmt(w_hi - w_lo) + " m prism";
+    if (w[i] - w_lo <= tol)
+      level[i] = 0, sum_lo += w[i] - w_lo, ++n_lo;
+    else if (w_hi - w[i] <= tol)
+      level[i] = 1, sum_hi += w[i] - w_hi, ++n_hi;
+    else
+      return "vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) +
+             " m above the bottom cap of a " + fmt(w_hi - w_lo) + " m prism";
   }
   const double bottom = w_lo + sum_lo / n_lo, top = w_hi + sum_hi / n_hi;
   f.origin_m = bottom * f.z;
@@ -144,12 +148,14 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
     const std::array<Vec2, 3> p{a, b, c};
     int k = 0;  // the corner opposite the longest projected edge
     for (int j = 1; j < 3; ++j)
-      if ((p[(j + 1) % 3] - p[(j + 2) % 3]).norm() > (p[(k + 1) % 3] - p[(k + 2) % 3]).norm()) k = j;
+      if ((p[(j + 1) % 3] - p[(j + 2) % 3]).norm() > (p[(k + 1) % 3] - p[(k + 2) % 3]).norm())
+        k = j;
     const Vec2 e = p[(k + 2) % 3] - p[(k + 1) % 3];
-    const double off = e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
+    const double off =
+        e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
     if (off > tol)
-      return "face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " + fmt(off) +
-             " m off its wall line";
+      return "face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " +
+             fmt(off) + " m off its wall line";
   }
   // Weld top-cap corners closer than tol, then keep the directed edges without a reverse twin.
   std::unordered_map<std::uint64_t, std::vector<int>> cells;
@@ -174,21 +180,26 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
     return weld[v];
   };
   std::unordered_map<std::uint64_t, int> open;
-  auto edge_key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  auto edge_key = [](int a, int b) {
+    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+  };
   for (std::size_t t : top_faces)
     for (int j = 0; j < 3; ++j) {
       const int a = weld_id(mesh.triangles[t][j]), b = weld_id(mesh.triangles[t][(j + 1) % 3]);
       if (a == b) continue;
       auto twin = open.find(edge_key(b, a));
-      if (twin != open.end() && twin->second > 0) --twin->second;
-      else ++open[edge_key(a, b)];
+      if (twin != open.end() && twin->second > 0)
+        --twin->second;
+      else
+        ++open[edge_key(a, b)];
     }
   std::vector<int> out(welded.size(), -1);
   for (const auto& [k, count] : open) {
     if (count == 0) continue;
     const int a = int(k >> 32), b = int(k & 0xffffffffu);
     if (count > 1 || out[a] >= 0)
-      return "the top cap boundary branches at (" + fmt(welded[a].x()) + ", " + fmt(welded[a].y()) + ") m";
+      return "the top cap boundary branches at (" + fmt(welded[a].x()) + ", " + fmt(welded[a].y()) +
+             ") m";
     out[a] = b;
   }
   std::vector<std::vector<Vec2>> loops;
@@ -197,7 +208,9 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
     if (out[s] < 0 || seen[s]) continue;
     std::vector<Vec2> loop;
     for (int v = int(s); !seen[v]; v = out[v]) {
-      if (out[v] < 0) return "the top cap boundary is open at (" + fmt(welded[v].x()) + ", " + fmt(welded[v].y()) + ") m";
+      if (out[v] < 0)
+        return "the top cap boundary is open at (" + fmt(welded[v].x()) + ", " +
+               fmt(welded[v].y()) + ") m";
       seen[v] = 1;
       loop.push_back(welded[v]);
     }
@@ -208,13 +221,18 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
   double perimeter = 0;
   for (auto& loop : loops) {
     Polygon2 p{std::move(loop)};
-    for (std::size_t i = 0; i < p.points.size(); ++i) perimeter += (p.points[(i + 1) % p.points.size()] - p.points[i]).norm();
-    if (signed_area(p) > 0) ++outers, prism.outline.outer = std::move(p);
-    else prism.outline.holes.push_back(std::move(p));
+    for (std::size_t i = 0; i < p.points.size(); ++i)
+      perimeter += (p.points[(i + 1) % p.points.size()] - p.points[i]).norm();
+    if (signed_area(p) > 0)
+      ++outers, prism.outline.outer = std::move(p);
+    else
+      prism.outline.holes.push_back(std::move(p));
   }
-  if (outers != 1) return "the top cap has " + std::to_string(outers) + " outer loops; exactly one is supported";
+  if (outers != 1)
+    return "the top cap has " + std::to_string(outers) + " outer loops; exactly one is supported";
   if (std::abs(top_area + bottom_area) > tol * perimeter)
-    return "the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) + " m^2";
+    return "the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) +
+           " m^2";
   if (auto d = outline_defect(prism.outline)) return "the recovered outline is invalid: " + *d;
   prism.frame = f;
   prism.height_m = top - bottom;
@@ -224,14 +242,15 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
 }  // namespace
 
 PrismRecovery recover_prism(const TriMesh& mesh, double tol_m) {
-  if (!(tol_m > 0) || !std::isfinite(tol_m)) throw InputError("prism tolerance " + fmt(tol_m) + " m: need > 0");
+  if (!(tol_m > 0) || !std::isfinite(tol_m))
+    throw InputError("prism tolerance " + fmt(tol_m) + " m: need > 0");
   if (mesh.triangles.empty()) throw InputError("prism recovery: the mesh has no triangles");
   std::vector<Vec3> face_n;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (std::uint32_t v : mesh.triangles[t])
       if (v >= mesh.vertices.size())
-        throw InputError("prism recovery: triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) +
-                         " of " + std::to_string(mesh.vertices.size()));
+        throw InputError("prism recovery: triangle " + std::to_string(t) + " uses vertex " +
+                         std::to_string(v) + " of " + std::to_string(mesh.vertices.size()));
     const auto& tri = mesh.triangles[t];
     const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
     face_n.push_back((b - a).cross(c - a));
@@ -241,9 +260,12 @@ PrismRecovery recover_prism(const TriMesh& mesh, double tol_m) {
     Prism prism;
     std::string why = try_axis(mesh, axis, tol_m, prism);
     if (why.empty()) return {std::move(prism), {}};
-    if (result.reason.empty())
-      result.reason = "not a prism along its largest face cluster's normal (" + fmt(axis.x()) + ", " +
-                      fmt(axis.y()) + ", " + fmt(axis.z()) + "): " + why;
+    if (result.reason.empty()) {
+      const Vec3 shown = frame_for(axis).z;
+      result.reason = "not a prism along its largest face cluster's normal (" +
+                      fmt(shown.x() + 0.0) + ", " + fmt(shown.y() + 0.0) + ", " +
+                      fmt(shown.z() + 0.0) + "): " + why;
+    }
   }
   if (result.reason.empty()) result.reason = "every face is degenerate";
   return result;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -167,3 +169,28 @@ TEST(ApproxDecomposition, RejectsEmptyAndNonFiniteMeshes) {
 
 }  // namespace
 }  // namespace gearsim
+namespace gearsim { TEST(Scratch, Timing) {
+  for (int which = 0; which < 2; ++which) {
+    ApproxDecompositionOptions o; if (which) o.max_concavity_m = 0.5e-3;
+    auto d = approximate_decomposition(which ? revolve(hourglass(), 24) : revolve(kStepped, 32), o);
+    std::printf("%s\n hacd %.3f s measure %.3f s dev %.3g um pieces %zu spacing %.3g um vol in %.6g union %.6g sum %.6g\n", d.method.c_str(), d.hacd_seconds, d.measure_seconds, d.deviation_m*1e6, d.pieces.pieces.size(), d.sample_spacing_m*1e6, d.input_volume_m3, d.union_volume_m3, d.hull_volume_sum_m3);
+    for (auto& w : d.warnings) std::printf("  %s\n", w.c_str());
+  }
+}}
+#include "geometry/gear_body.hpp"
+#include "../support/gear_specs.hpp"
+namespace gearsim { TEST(Scratch, Gear) {
+  auto spec = test::external_gear(std::getenv("TEETH") ? std::atoi(std::getenv("TEETH")) : 20);
+  if (std::getenv("CHORD")) spec.chordal_deviation_m = std::atof(std::getenv("CHORD"));
+  auto body = make_gear_body(spec, 7800);
+  ApproxDecompositionOptions o;
+  if (std::getenv("MAXTRI")) o.max_hacd_triangles = std::size_t(std::atoi(std::getenv("MAXTRI")));
+  if (std::getenv("CONC")) o.max_concavity_m = std::atof(std::getenv("CONC"));
+  if (std::getenv("VPH")) o.max_vertices_per_hull = std::atoi(std::getenv("VPH"));
+  if (std::getenv("SPACING")) o.sample_spacing_m = std::atof(std::getenv("SPACING"));
+  o.tooth_layout = tooth_layout(spec);
+  std::printf("gear %d teeth: %zu triangles\n", spec.teeth, body.mesh.triangles.size());
+  auto d = approximate_decomposition(body.mesh, o);
+  std::printf("%s\n hacd %.3f s measure %.3f s dev %.3g um pieces %zu spacing %.3g um vol in %.6g union %.6g sum %.6g\n", d.method.c_str(), d.hacd_seconds, d.measure_seconds, d.deviation_m*1e6, d.pieces.pieces.size(), d.sample_spacing_m*1e6, d.input_volume_m3, d.union_volume_m3, d.hull_volume_sum_m3);
+  for (auto& w : d.warnings) std::printf("  %s\n", w.c_str());
+}}

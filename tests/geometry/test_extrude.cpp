@@ -1,7 +1,7 @@
 // Extrusion: closed, consistently oriented prisms whose volume (divergence theorem) is area * h.
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <map>
 
 #include "geometry/errors.hpp"
@@ -13,7 +13,8 @@ namespace {
 // Signed volume by the divergence theorem: positive when the triangles face outward.
 double signed_volume(const TriMesh& m) {
   double v = 0.0;
-  for (const auto& t : m.triangles) v += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]]));
+  for (const auto& t : m.triangles)
+    v += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]]));
   return v / 6.0;
 }
 
@@ -25,7 +26,8 @@ void expect_closed(const TriMesh& m) {
   for (const auto& [e, count] : edges) {
     EXPECT_EQ(count, 1) << "edge " << e.first << "->" << e.second;
     const auto twin = edges.find({e.second, e.first});
-    EXPECT_TRUE(twin != edges.end() && twin->second == 1) << "open edge " << e.first << "->" << e.second;
+    EXPECT_TRUE(twin != edges.end() && twin->second == 1)
+        << "open edge " << e.first << "->" << e.second;
   }
 }
 
@@ -50,7 +52,8 @@ TEST(Extrude, HoleIsCarvedOutOfTheVolume) {
 }
 
 TEST(Extrude, ConvexPolygonWithCollinearCornerGivesAPrism) {
-  const Polygon2 hex{{{1, 0}, {0.5, 0.866}, {-0.5, 0.866}, {-1, 0}, {-0.5, -0.866}, {0, -0.866}, {0.5, -0.866}}};
+  const Polygon2 hex{
+      {{1, 0}, {0.5, 0.866}, {-0.5, 0.866}, {-1, 0}, {-0.5, -0.866}, {0, -0.866}, {0.5, -0.866}}};
   const TriMesh m = extrude_convex(hex, 1.0, 1.5);
   expect_closed(m);
   EXPECT_NEAR(signed_volume(m), signed_area(hex) * 0.5, 1e-14);
@@ -58,7 +61,8 @@ TEST(Extrude, ConvexPolygonWithCollinearCornerGivesAPrism) {
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (const auto& v : m.vertices) c += v / double(m.vertices.size());
   for (const auto& t : m.triangles) {
-    const Eigen::Vector3d n = (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]);
+    const Eigen::Vector3d n =
+        (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]);
     EXPECT_GT(n.dot(m.vertices[t[0]] - c), 0.0);
   }
 }
@@ -68,8 +72,8 @@ TEST(Extrude, RejectsBadInput) {
   EXPECT_THROW(extrude_convex(l, 0.0, 1.0), InputError);  // concave
   Outline2 sq;
   sq.outer = Polygon2{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
-  EXPECT_THROW(extrude(sq, 1.0, 1.0), InputError);        // empty height
-  EXPECT_THROW(extrude(sq, 2.0, 1.0), InputError);        // inverted range
+  EXPECT_THROW(extrude(sq, 1.0, 1.0), InputError);  // empty height
+  EXPECT_THROW(extrude(sq, 2.0, 1.0), InputError);  // inverted range
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ Outline2 l_shape() {  // 20 mm L, one reflex corner
 }
 
 std::vector<Vec2> sorted(std::vector<Vec2> v) {
-  std::sort(v.begin(), v.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  std::sort(v.begin(), v.end(), [](const Vec2& a, const Vec2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
   return v;
 }
 
@@ -52,12 +54,13 @@ TEST(Prism, HoleIsRecoveredClockwise) {
 TEST(Prism, RotatedAndTallPrismIsFoundAlongItsAxis) {
   // 50 mm tall: every side wall is larger than the caps, so the axis is not the biggest face.
   TriMesh m = extrude(l_shape(), 0.0, 0.05);
-  const Eigen::Matrix3d rot = (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())).toRotationMatrix();
+  const Eigen::Matrix3d rot =
+      (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())).toRotationMatrix();
   for (Vec3& v : m.vertices) v = rot * v + Vec3(0.1, -0.2, 0.3);
   const PrismRecovery r = recover_prism(m, 1e-9);
   ASSERT_TRUE(r.prism) << r.reason;
   EXPECT_NEAR(std::abs(r.prism->frame.z.dot(rot * Vec3::UnitZ())), 1.0, 1e-15);
-  EXPECT_NEAR(r.prism->height_m, 0.05, 1e-15);      // rounding of rotated coordinates
+  EXPECT_NEAR(r.prism->height_m, 0.05, 1e-15);       // rounding of rotated coordinates
   EXPECT_NEAR(area(r.prism->outline), 3e-4, 1e-17);  // m^2
   // Mapping the recovered outline back lands on mesh vertices (within rounding, 1e-15 m).
   for (const Vec2& p : r.prism->outline.outer.points) {
@@ -70,7 +73,8 @@ TEST(Prism, RotatedAndTallPrismIsFoundAlongItsAxis) {
 
 TEST(Prism, ExactlyCollinearPointsGoButNearlyCollinearOnesStay) {
   Outline2 o;
-  o.outer = Polygon2{{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0.5, 1 + 1e-9}, {0, 1}}};  // 1 nm bump on top
+  o.outer =
+      Polygon2{{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0.5, 1 + 1e-9}, {0, 1}}};  // 1 nm bump on top
   const PrismRecovery r = recover_prism(extrude(o, 0.0, 1.0), 1e-12);
   ASSERT_TRUE(r.prism) << r.reason;
   EXPECT_EQ(r.prism->outline.outer.points.size(), 5u);  // (0.5, 0) dropped, the bump kept

@@ -62,7 +62,7 @@ TEST(Triangulate, CombKeepsNMinusTwoTrianglesAndItsArea) {
   const Polygon2 c = comb(7);
   const Tris t = triangulate(c);
   EXPECT_EQ(t.size(), c.points.size() - 2);
-  EXPECT_NEAR(signed_area(c), 13.0 + 7 * 3.0, 1e-12);              // base 13 x 1, seven 1 x 3 teeth
+  EXPECT_NEAR(signed_area(c), 13.0 + 7 * 3.0, 1e-12);             // base 13 x 1, seven 1 x 3 teeth
   EXPECT_NEAR(checked_area(c.points, t), signed_area(c), 1e-12);  // rounding only
 }
 
@@ -90,11 +90,12 @@ TEST(Triangulate, DenseCircleOfTenThousandPoints) {
 TEST(Triangulate, HoleAreaIsSubtracted) {
   Outline2 o;
   o.outer = Polygon2{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}};
-  o.holes.push_back(Polygon2{{{1, 1}, {1, 2}, {2, 2}, {2, 1}}});   // clockwise
-  o.holes.push_back(Polygon2{{{3, 2}, {2.5, 3}, {3.5, 3}}});       // clockwise triangle
+  o.holes.push_back(Polygon2{{{1, 1}, {1, 2}, {2, 2}, {2, 1}}});  // clockwise
+  o.holes.push_back(Polygon2{{{3, 2}, {2.5, 3}, {3.5, 3}}});      // clockwise triangle
   const OutlineTriangulation t = triangulate(o);
   EXPECT_EQ(t.vertices.size(), 11u);
-  EXPECT_EQ(t.triangles.size(), 11u + 2 * 2 - 2);  // n + 2h - 2 for a triangulated polygon with h holes
+  EXPECT_EQ(t.triangles.size(),
+            11u + 2 * 2 - 2);  // n + 2h - 2 for a triangulated polygon with h holes
   EXPECT_NEAR(checked_area(t.vertices, t.triangles), 16.0 - 1.0 - 0.5, 1e-14);
 }
 
@@ -107,7 +108,8 @@ TEST(Triangulate, HolesInAGearLikeRing) {
   }
   for (int h = 0; h < 6; ++h) {
     Polygon2 hole;
-    const Vec2 c(0.03 * std::cos(h * std::numbers::pi / 3), 0.03 * std::sin(h * std::numbers::pi / 3));
+    const Vec2 c(0.03 * std::cos(h * std::numbers::pi / 3),
+                 0.03 * std::sin(h * std::numbers::pi / 3));
     for (int i = 0; i < 16; ++i) {
       const double a = -2.0 * std::numbers::pi * i / 16;  // clockwise
       hole.points.push_back(c + 0.006 * Vec2(std::cos(a), std::sin(a)));
@@ -131,8 +133,10 @@ void expect_rejected(const Polygon2& p, const std::string& fragment) {
 TEST(Triangulate, RejectsInvalidPolygonsWithAReason) {
   expect_rejected(Polygon2{{{0, 0}, {1, 0}}}, "at least 3");
   expect_rejected(Polygon2{{{0, 0}, {1, 0}, {2, 0}}}, "zero area");
-  expect_rejected(Polygon2{{{0, 0}, {1, 1}, {1, 0}, {0, 1}}}, "zero area");  // bow-tie: areas cancel
-  expect_rejected(Polygon2{{{0, 0}, {4, 0}, {4, 4}, {2, -1}, {0, 4}}}, "intersect");  // net area > 0
+  expect_rejected(Polygon2{{{0, 0}, {1, 1}, {1, 0}, {0, 1}}},
+                  "zero area");  // bow-tie: areas cancel
+  expect_rejected(Polygon2{{{0, 0}, {4, 0}, {4, 4}, {2, -1}, {0, 4}}},
+                  "intersect");  // net area > 0
   expect_rejected(Polygon2{{{0, 0}, {0, 1}, {1, 1}, {1, 0}}}, "clockwise");
   expect_rejected(Polygon2{{{0, 0}, {1, 0}, {1, 0}, {0, 1}}}, "coincide");
 }
@@ -142,9 +146,9 @@ TEST(Triangulate, RejectsHolesThatCrossOrLieOutside) {
   o.outer = Polygon2{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}};
   o.holes.push_back(Polygon2{{{3, 1}, {3, 2}, {5, 2}, {5, 1}}});  // crosses the outer boundary
   EXPECT_THROW(triangulate(o), InputError);
-  o.holes[0] = Polygon2{{{5, 1}, {5, 2}, {6, 2}, {6, 1}}};        // entirely outside
+  o.holes[0] = Polygon2{{{5, 1}, {5, 2}, {6, 2}, {6, 1}}};  // entirely outside
   EXPECT_THROW(triangulate(o), InputError);
-  o.holes[0] = Polygon2{{{1, 1}, {2, 1}, {2, 2}, {1, 2}}};        // counter-clockwise hole
+  o.holes[0] = Polygon2{{{1, 1}, {2, 1}, {2, 2}, {1, 2}}};  // counter-clockwise hole
   EXPECT_THROW(triangulate(o), InputError);
 }
 
