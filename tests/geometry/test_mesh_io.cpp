@@ -162,6 +162,20 @@ TEST_F(MeshIo, ObjRoundTripKeepsTrianglesAndVerticesToFloat32) {
   expect_same_mesh(m, import_mesh(dir_ / "p.obj"), float32_tolerance_m(m));
 }
 
+TEST_F(MeshIo, AsciiPlyCubeImportsAsAClosedTenMillimetreCube) {
+  // A 10 mm cube as an ASCII PLY with quads: Assimp triangulates to 12 faces over 8 vertices.
+  const fs::path p = file("cube.ply",
+                          "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 6\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n10 0 0\n10 10 0\n0 10 0\n0 0 10\n10 0 10\n10 10 10\n0 10 10\n"
+                          "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n");
+  const TriMesh m = import_mesh(p, LengthUnit::Millimetre);
+  EXPECT_EQ(m.triangles.size(), 12u);
+  EXPECT_EQ(m.vertices.size(), 8u);
+  // Outward winding and the volume of a 10 mm cube: 1e-6 m³ (float32-exact coordinates).
+  EXPECT_NEAR(signed_volume_m3(m), 1e-6, 1e-18);
+}
+
 TEST_F(MeshIo, StlCornersWeldIntoSharedVertices) {
   // 20 facets store 60 corners; the prism has 12 distinct vertices.
   export_mesh(hex_prism(), dir_ / "p.stl", MeshFormat::StlBinary);
