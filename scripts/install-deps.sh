@@ -14,6 +14,8 @@ packages=(
   nlohmann-json3-dev                      # JSON outputs
   libfftw3-dev                            # spectra
   libpng-dev                              # PNG frames
+  libavcodec-dev libavformat-dev libswscale-dev libavutil-dev  # MP4 (H.264) video
+  ffmpeg                                  # ffprobe, to check written videos in tests
   libgtest-dev libgmock-dev               # unit tests
 )
 
