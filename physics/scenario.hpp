@@ -1,0 +1,123 @@
+// Scenario: the validated description of one simulation run, as plain structs with defaults, in
+// SI units. app/ parses scenario files into it; physics/ builds a world from it. Nothing here
+// reads files or knows YAML. Not the running world: see world.hpp.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/convex_decomposition.hpp"
+#include "geometry/gear_spec.hpp"
+#include "geometry/mesh_io.hpp"
+
+namespace gearsim::physics {
+
+// Where a body is at t = 0: origin of its body frame in the world, and its orientation.
+struct Pose {
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
+// A body's shape from a CAD mesh file. A gear mesh names its tooth layout so that contacts know
+// which tooth touched (tooth k centred at tooth0_angle_rad + k·2π/teeth about the body's z axis).
+struct MeshSource {
+  std::filesystem::path path;
+  LengthUnit unit = LengthUnit::Millimetre;
+  std::optional<ToothLayout> teeth;
+};
+
+struct BodyDef {
+  std::string name;
+  std::optional<GearSpec> gear;    // a generated gear (its errors included) ...
+  std::optional<MeshSource> mesh;  // ... or a mesh file; neither: a carrier-like body without shape
+  // Mass from density and the shape's volume, or given directly with its inertia about the
+  // centre of mass (for shapeless bodies such as a carrier arm).
+  std::optional<double> density_kg_m3;
+  std::optional<double> mass_kg;
+  std::optional<Eigen::Vector3d> principal_inertia_kg_m2;  // with mass_kg, body axes
+  Pose pose;
+  bool fixed = false;  // welded to the ground (a fixed ring gear)
+};
+
+// Radial compliance of a bearing: the joint's pivot may move perpendicular to its axis.
+struct BearingDef {
+  double radial_stiffness_N_per_m = 0;
+  double radial_damping_N_s_per_m = 0;
+};
+
+// A revolute joint of `body` about `axis` through `pivot_m` (world, at t = 0), to `parent`
+// ("ground" or another body's name).
+struct JointDef {
+  std::string name;
+  std::string body;
+  std::string parent = "ground";
+  Eigen::Vector3d pivot_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  std::optional<BearingDef> bearing;  // none: a rigid hinge
+};
+
+// Drives a joint at a target speed, reached by a linear ramp, with a torque limit.
+struct MotorDef {
+  std::string joint;
+  double target_speed_rad_s = 0;
+  double ramp_time_s = 0;
+  double max_torque_N_m = 0;
+};
+
+// Torque on a joint's body about the joint axis, opposing nothing in particular: a constant
+// part (sign as given, positive about +axis) and a viscous part −c·ω (relative to the parent).
+struct LoadDef {
+  std::string joint;
+  double constant_torque_N_m = 0;
+  double viscous_N_m_s_per_rad = 0;
+};
+
+// Tooth contact: a compliant, damped, unilateral contact with one point per tooth pair.
+struct ContactDef {
+  // Single-pair tooth stiffness per face width, N/m per m (ISO 6336 c' ≈ 14 N/(mm·µm) = 1.4e10).
+  double stiffness_N_per_m_per_m = 1.4e10;
+  double damping_ratio = 0.05;  // of the pair's critical damping along the line of action
+  double friction = 0.0;        // Coulomb coefficient on the flanks
+  // Chordal deviation of the outline the flank tables are built from. The tables interpolate
+  // the outline's vertices (which lie on the true flanks) with cubics, so the default outline
+  // already resolves depths to ~2 nm (tests/physics/test_tooth_contact.cpp).
+  double chordal_deviation_m = 0.5e-6;
+};
+
+struct SolverDef {
+  double time_step_s = 2e-5;
+  int iterations = 50;
+};
+
+struct OutputDef {
+  double sample_rate_hz = 2000;  // state.csv and contacts.csv rate
+  bool per_step_log = true;      // the binary per-step contact log
+};
+
+// How transmission error is formed: te = θ_input − ratio·θ_output.
+struct TransmissionDef {
+  std::string input_joint;
+  std::string output_joint;
+  double ratio = 0;  // θ_input/θ_output of the ideal train
+};
+
+struct Scenario {
+  std::string name;
+  std::filesystem::path source;  // the file it came from
+  double duration_s = 0;
+  std::uint64_t seed = 0;
+  std::vector<BodyDef> bodies;
+  std::vector<JointDef> joints;
+  std::vector<MotorDef> motors;
+  std::vector<LoadDef> loads;
+  ContactDef contact;
+  SolverDef solver;
+  OutputDef output;
+  std::optional<TransmissionDef> transmission;
+};
+
+}  // namespace gearsim::physics
