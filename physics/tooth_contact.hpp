@@ -27,7 +27,7 @@ struct ToothContact {
 };
 
 struct ToothContactOptions {
-  int flank_samples = 64;  // radial samples per flank probed against the other gear
+  int flank_samples = 16;  // radial samples per flank probed against the other gear (then refined)
 };
 
 // All tooth-pair contacts between gear a and gear b, at most one per (tooth_a, tooth_b).

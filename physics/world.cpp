@@ -1,0 +1,333 @@
+#include "physics/world.hpp"
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <tuple>
+
+#include "geometry/errors.hpp"
+#include "physics/world_bodies.hpp"
+
+namespace gearsim::physics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Collision groups: gears reach each other only through tooth contact, never through Bullet's
+// own narrowphase (whose point counts and GJK chatter are what tooth contact replaces).
+constexpr int kGearGroup = 1 << 6;
+constexpr int kOtherGroup = 1 << 7;
+
+// A Bullet manifold holds at most 4 points: enough for one point per tooth pair at contact
+// ratios below 4. Extra pairs (never seen in a healthy mesh) are dropped and counted.
+constexpr int kMaxPointsPerPair = 4;
+
+btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+Eigen::Vector3d eig(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+}  // namespace
+
+struct JointRec {
+  JointDef def;
+  int body = -1, parent = -1;  // parent -1 = ground
+  btTypedConstraint* constraint = nullptr;
+  btJointFeedback feedback;
+  btHingeConstraint* hinge = nullptr;
+  btGeneric6DofSpring2Constraint* spring = nullptr;
+  Eigen::Vector3d axis_world = Eigen::Vector3d::UnitZ();
+  double last_raw = 0, unwrapped = 0;
+  const MotorDef* motor = nullptr;
+  const LoadDef* load = nullptr;
+};
+
+struct PairRec {
+  int a = -1, b = -1;
+  btPersistentManifold* manifold = nullptr;
+  GearPairInfo info;
+  std::map<std::tuple<int, int, int>, double> last_impulse;  // warm start per tooth pair
+  std::vector<ToothContact> current;                          // in manifold point order
+};
+
+struct World::Impl {
+  Scenario scenario;
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  std::vector<BuiltBody> bodies;
+  std::vector<JointRec> joints;
+  std::vector<PairRec> pairs;
+  std::vector<BodyState> states;
+  std::vector<ContactSample> contacts;
+  std::vector<GearPairInfo> pair_infos;
+  std::map<std::string, int> body_index;
+  double time = 0;
+  long steps = 0;
+  double max_penetration = 0;
+  long dropped_points = 0;
+
+  void generate_contacts();
+  void apply_motors_and_loads();
+  void measure();
+};
+
+namespace {
+
+void pretick(btDynamicsWorld* w, btScalar) { static_cast<World::Impl*>(w->getWorldUserInfo())->generate_contacts(); }
+
+// Gear-frame pose projected on the common plane (the gear axes must be parallel to world z).
+PlanarPose planar_pose(const BuiltBody& b) {
+  const btTransform t = b.rigid->getWorldTransform() * b.com_from_gear;
+  const btVector3 x = t.getBasis().getColumn(0);
+  return {{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())};
+}
+
+}  // namespace
+
+void World::Impl::generate_contacts() {
+  max_penetration = 0;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    PairRec& pr = pairs[p];
+    const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
+    std::vector<ToothContact> found =
+        find_tooth_contacts(*a.flanks, planar_pose(a), *b.flanks, planar_pose(b));
+    if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
+      std::sort(found.begin(), found.end(), [](const ToothContact& x, const ToothContact& y) { return x.depth_m > y.depth_m; });
+      dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;
+      found.resize(kMaxPointsPerPair);
+    }
+    pr.manifold->clearManifold();
+    const double z = 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
+                            (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
+    pr.current.clear();
+    for (const ToothContact& c : found) {
+      max_penetration = std::max(max_penetration, c.depth_m);
+      const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
+      const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
+      const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
+      btManifoldPoint pt(a.rigid->getWorldTransform().invXform(on_a), b.rigid->getWorldTransform().invXform(on_b), n,
+                         -c.depth_m);
+      pt.m_positionWorldOnA = on_a;
+      pt.m_positionWorldOnB = on_b;
+      pt.m_combinedFriction = scenario.contact.friction;
+      pt.m_combinedRestitution = 0;
+      pt.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+      pt.m_combinedContactStiffness1 = pr.info.stiffness_N_per_m;
+      pt.m_combinedContactDamping1 = pr.info.damping_N_s_per_m;
+      const auto key = std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a));
+      if (auto it = pr.last_impulse.find(key); it != pr.last_impulse.end()) pt.m_appliedImpulse = it->second;
+      pt.m_userPersistentData = nullptr;
+      pr.manifold->addManifoldPoint(pt, false);
+      pr.current.push_back(c);
+    }
+  }
+}
+
+void World::Impl::apply_motors_and_loads() {
+  for (JointRec& j : joints) {
+    if (j.motor) {
+      const double ramp = j.motor->ramp_time_s > 0 ? std::min(1.0, time / j.motor->ramp_time_s) : 1.0;
+      const double target = j.motor->target_speed_rad_s * ramp;
+      if (j.hinge) j.hinge->enableAngularMotor(true, target, j.motor->max_torque_N_m * scenario.solver.time_step_s);
+      if (j.spring) {
+        j.spring->enableMotor(5, true);
+        // The spring constraint drives body A (the parent, or the ground) relative to B.
+        j.spring->setTargetVelocity(5, -target);
+        j.spring->setMaxMotorForce(5, j.motor->max_torque_N_m);
+      }
+    }
+    if (j.load) {
+      const double speed = states.empty() ? 0.0 : states[j.body].speed_rad_s;
+      const double torque = j.load->constant_torque_N_m - j.load->viscous_N_m_s_per_rad * speed;
+      const btVector3 t = bt(j.axis_world * torque);
+      bodies[j.body].rigid->applyTorque(t);
+      if (j.parent >= 0 && !bodies[j.parent].fixed) bodies[j.parent].rigid->applyTorque(-t);
+    }
+  }
+}
+
+void World::Impl::measure() {
+  // Joint angles: the body's gear-frame x axis against the parent's, about the joint axis.
+  for (JointRec& j : joints) {
+    const BuiltBody& b = bodies[j.body];
+    const btTransform tb = b.rigid->getWorldTransform() * b.com_from_gear;
+    const Eigen::Vector3d ax = j.axis_world;
+    const Eigen::Vector3d xb = eig(tb.getBasis().getColumn(0));
+    Eigen::Vector3d ref = Eigen::Vector3d::UnitX(), ref2;
+    Eigen::Vector3d omega_parent = Eigen::Vector3d::Zero();
+    if (j.parent >= 0) {
+      const BuiltBody& p = bodies[j.parent];
+      ref = eig((p.rigid->getWorldTransform() * p.com_from_gear).getBasis().getColumn(0));
+      omega_parent = eig(p.rigid->getAngularVelocity());
+    }
+    if (std::abs(ref.dot(ax)) > 0.9) ref = Eigen::Vector3d::UnitY();
+    ref = (ref - ref.dot(ax) * ax).normalized();
+    ref2 = ax.cross(ref);
+    const double raw = std::atan2(xb.dot(ref2), xb.dot(ref));
+    j.unwrapped += std::remainder(raw - j.last_raw, 2 * kPi);
+    j.last_raw = raw;
+    BodyState& s = states[j.body];
+    s.angle_rad = j.unwrapped;
+    s.speed_rad_s = (eig(b.rigid->getAngularVelocity()) - omega_parent).dot(ax);
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    states[i].position_m = eig((bodies[i].rigid->getWorldTransform() * bodies[i].com_from_gear).getOrigin());
+  contacts.clear();
+  const double dt = scenario.solver.time_step_s;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    PairRec& pr = pairs[p];
+    pr.last_impulse.clear();
+    GEARSIM_CHECK(pr.manifold->getNumContacts() == static_cast<int>(pr.current.size()),
+                  "tooth contacts and manifold points must correspond one to one");
+    for (int k = 0; k < pr.manifold->getNumContacts(); ++k) {
+      const btManifoldPoint& pt = pr.manifold->getContactPoint(k);
+      ContactSample cs;
+      cs.pair = static_cast<int>(p);
+      cs.geometry = pr.current[static_cast<std::size_t>(k)];
+      cs.normal_force_N = pt.m_appliedImpulse / dt;
+      cs.friction_force_N = std::hypot(pt.m_appliedImpulseLateral1, pt.m_appliedImpulseLateral2) / dt;
+      contacts.push_back(cs);
+      // Each tooth pair's impulse warm-starts the same pair's point next step.
+      const ToothContact& c = cs.geometry;
+      pr.last_impulse[std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a))] = pt.m_appliedImpulse;
+    }
+  }
+}
+
+World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.scenario = s;
+  m.world.setGravity(btVector3(0, 0, 0));
+  btContactSolverInfo& info = m.world.getSolverInfo();
+  info.m_numIterations = s.solver.iterations;
+  // Split impulse would move the contact springs' position error out of the velocity solve and
+  // so remove their force: off. Warm starting on (impulses carried per tooth pair).
+  info.m_splitImpulse = false;
+  info.m_solverMode |= SOLVER_USE_WARMSTARTING;
+  m.world.setInternalTickCallback(pretick, &m, true);
+
+  for (const BodyDef& def : s.bodies) {
+    if (m.body_index.count(def.name)) throw InputError("scenario: duplicate body name '" + def.name + "'");
+    m.body_index[def.name] = static_cast<int>(m.bodies.size());
+    m.bodies.push_back(build_body(def, s.contact));
+    BuiltBody& b = m.bodies.back();
+    const bool gear = b.flanks.has_value();
+    m.world.addRigidBody(b.rigid.get(), gear ? kGearGroup : kOtherGroup, gear ? kOtherGroup : (kGearGroup | kOtherGroup));
+    m.states.push_back({def.name, 0, 0, Eigen::Vector3d::Zero()});
+  }
+  auto body_of = [&](const std::string& name, const std::string& who) {
+    auto it = m.body_index.find(name);
+    if (it == m.body_index.end()) throw InputError("scenario: " + who + ": no body named '" + name + "'");
+    return it->second;
+  };
+  m.joints.reserve(s.joints.size());
+  for (const JointDef& jd : s.joints) {
+    JointRec j;
+    j.def = jd;
+    j.body = body_of(jd.body, "joint '" + jd.name + "'");
+    j.parent = jd.parent == "ground" ? -1 : body_of(jd.parent, "joint '" + jd.name + "'");
+    if (jd.axis.norm() < 1e-12) throw InputError("scenario: joint '" + jd.name + "': axis has zero length");
+    j.axis_world = jd.axis.normalized();
+    m.joints.push_back(j);
+    JointRec& jr = m.joints.back();
+    btRigidBody& rb = *m.bodies[jr.body].rigid;
+    btRigidBody* parent = jr.parent >= 0 ? m.bodies[jr.parent].rigid.get() : nullptr;
+    // Joint frame: origin at the pivot, z along the axis.
+    btTransform frame_world;
+    frame_world.setOrigin(bt(jd.pivot_m));
+    const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), jr.axis_world);
+    frame_world.setRotation(btQuaternion(q.x(), q.y(), q.z(), q.w()));
+    const btTransform in_body = rb.getWorldTransform().inverse() * frame_world;
+    if (!jd.bearing) {
+      if (parent) {
+        const btTransform in_parent = parent->getWorldTransform().inverse() * frame_world;
+        jr.hinge = new btHingeConstraint(rb, *parent, in_body, in_parent);
+      } else {
+        jr.hinge = new btHingeConstraint(rb, in_body);
+      }
+      jr.constraint = jr.hinge;
+    } else {
+      if (parent) {
+        const btTransform in_parent = parent->getWorldTransform().inverse() * frame_world;
+        jr.spring = new btGeneric6DofSpring2Constraint(*parent, rb, in_parent, in_body);
+      } else {
+        jr.spring = new btGeneric6DofSpring2Constraint(rb, in_body);
+      }
+      jr.spring->setLinearLowerLimit(btVector3(1, 1, 0));  // x, y free (lower > upper), z locked
+      jr.spring->setLinearUpperLimit(btVector3(-1, -1, 0));
+      jr.spring->setAngularLowerLimit(btVector3(0, 0, 1));  // tilts locked, spin free
+      jr.spring->setAngularUpperLimit(btVector3(0, 0, -1));
+      for (int axis = 0; axis < 2; ++axis) {
+        jr.spring->enableSpring(axis, true);
+        jr.spring->setStiffness(axis, jd.bearing->radial_stiffness_N_per_m);
+        jr.spring->setDamping(axis, jd.bearing->radial_damping_N_s_per_m);
+      }
+      jr.spring->setEquilibriumPoint();
+      jr.constraint = jr.spring;
+    }
+    jr.constraint->setJointFeedback(&jr.feedback);
+    m.world.addConstraint(jr.constraint, true);
+  }
+  auto joint_of = [&](const std::string& name, const std::string& who) -> JointRec& {
+    for (JointRec& j : m.joints)
+      if (j.def.name == name) return j;
+    throw InputError("scenario: " + who + ": no joint named '" + name + "'");
+  };
+  for (const MotorDef& md : m.scenario.motors) joint_of(md.joint, "motor").motor = &md;
+  for (const LoadDef& ld : m.scenario.loads) joint_of(ld.joint, "load").load = &ld;
+  // Meshing gear pairs: every two gears whose toothed zones can reach each other.
+  for (std::size_t a = 0; a < m.bodies.size(); ++a)
+    for (std::size_t b = a + 1; b < m.bodies.size(); ++b) {
+      const BuiltBody &ga = m.bodies[a], &gb = m.bodies[b];
+      if (!ga.flanks || !gb.flanks || (ga.flanks->internal() && gb.flanks->internal())) continue;
+      if (!gears_can_mesh(ga, gb)) continue;
+      PairRec pr;
+      // The external gear first, so that tooth_a is always the external one's.
+      pr.a = static_cast<int>(ga.flanks->internal() ? b : a);
+      pr.b = static_cast<int>(ga.flanks->internal() ? a : b);
+      pr.manifold = m.dispatcher.getNewManifold(m.bodies[pr.a].rigid.get(), m.bodies[pr.b].rigid.get());
+      pr.manifold->setContactProcessingThreshold(BT_LARGE_FLOAT);
+      pr.info = pair_contact(m.bodies[pr.a], m.bodies[pr.b], s.contact);
+      m.pairs.push_back(std::move(pr));
+      m.pair_infos.push_back(m.pairs.back().info);
+    }
+  m.measure();
+}
+
+World::~World() {
+  if (!impl_) return;
+  for (JointRec& j : impl_->joints) {
+    impl_->world.removeConstraint(j.constraint);
+    delete j.constraint;
+  }
+  for (PairRec& p : impl_->pairs) impl_->dispatcher.releaseManifold(p.manifold);
+  for (BuiltBody& b : impl_->bodies) impl_->world.removeRigidBody(b.rigid.get());
+}
+
+void World::step() {
+  Impl& m = *impl_;
+  m.apply_motors_and_loads();
+  m.world.stepSimulation(m.scenario.solver.time_step_s, 0, m.scenario.solver.time_step_s);
+  m.time += m.scenario.solver.time_step_s;
+  ++m.steps;
+  m.measure();
+}
+
+double World::time_s() const { return impl_->time; }
+long World::steps() const { return impl_->steps; }
+const std::vector<BodyState>& World::bodies() const { return impl_->states; }
+const std::vector<ContactSample>& World::contacts() const { return impl_->contacts; }
+const std::vector<GearPairInfo>& World::gear_pairs() const { return impl_->pair_infos; }
+double World::max_penetration_m() const { return impl_->max_penetration; }
+
+double World::motor_torque_N_m(const std::string& joint) const {
+  for (const JointRec& j : impl_->joints)
+    if (j.def.name == joint) return eig(j.feedback.m_appliedTorqueBodyA).dot(j.axis_world);
+  throw InputError("no joint named '" + joint + "'");
+}
+
+}  // namespace gearsim::physics

@@ -1,0 +1,65 @@
+// World: a running Bullet simulation built from a Scenario. Rigid bodies (gears as compounds of
+// their exact convex pieces, mass properties from the mesh), hinges or compliant bearings,
+// velocity motors, loads, and tooth contact between meshing gears: one compliant, damped contact
+// point per touching tooth pair (tooth_contact.hpp), handed to Bullet's solver as a manifold
+// point with stiffness and damping. SI units throughout; Bullet runs in SI double precision.
+// Not a logger and not a file writer: see run_log.hpp.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "physics/scenario.hpp"
+#include "physics/tooth_contact.hpp"
+
+namespace gearsim::physics {
+
+struct BodyState {
+  std::string name;
+  double angle_rad = 0;      // unwrapped rotation about its joint axis relative to the parent
+  double speed_rad_s = 0;    // relative to the parent
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // gear-frame origin, world
+};
+
+// One tooth-pair contact as the solver left it after a step.
+struct ContactSample {
+  int pair = -1;  // index into World::gear_pairs()
+  ToothContact geometry;
+  double normal_force_N = 0;    // applied impulse / dt
+  double friction_force_N = 0;  // magnitude of the lateral impulses / dt
+};
+
+struct GearPairInfo {
+  std::string body_a, body_b;
+  double stiffness_N_per_m = 0;  // per tooth pair
+  double damping_N_s_per_m = 0;
+};
+
+class World {
+ public:
+  explicit World(const Scenario& scenario);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // Advances one fixed time step.
+  void step();
+
+  double time_s() const;
+  long steps() const;
+  const std::vector<BodyState>& bodies() const;
+  const std::vector<ContactSample>& contacts() const;  // of the last step
+  const std::vector<GearPairInfo>& gear_pairs() const;
+  // Torque the motor of a joint applied in the last step, N·m (impulse / dt).
+  double motor_torque_N_m(const std::string& joint) const;
+  // Deepest tooth penetration in the last step, m.
+  double max_penetration_m() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace gearsim::physics

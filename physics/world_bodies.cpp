@@ -1,0 +1,194 @@
+#include "physics/world_bodies.hpp"
+
+#include <cmath>
+
+#include "geometry/errors.hpp"
+#include "geometry/gear_body.hpp"
+#include "geometry/mass_properties.hpp"
+#include "geometry/mesh_validate.hpp"
+#include "geometry/prism.hpp"
+
+namespace gearsim::physics {
+namespace {
+
+// Collision margin of the convex pieces, m. Gears never touch through Bullet's narrowphase
+// (tooth contact does that), so this only matters against other bodies; Bullet's default
+// (0.04) is sized for metre-scale boxes.
+constexpr double kPieceMargin_m = 10e-6;
+
+// Flank-table radial samples: 4096 over a tooth height of 2.25 modules is ~0.5 µm per sample at
+// m = 1 mm; the cubic through the outline's vertices carries the accuracy, this the resolution.
+constexpr int kFlankSamples = 4096;
+
+// Prism recovery tolerance for CAD meshes, m: STL stores float32 (~3 nm at 50 mm).
+constexpr double kPrismTolerance_m = 0.1e-6;
+
+btTransform to_bt(const Pose& p) {
+  btTransform t;
+  t.setOrigin(btVector3(p.position_m.x(), p.position_m.y(), p.position_m.z()));
+  t.setRotation(btQuaternion(p.orientation.x(), p.orientation.y(), p.orientation.z(), p.orientation.w()));
+  return t;
+}
+
+// Gear frame → principal centre-of-mass frame.
+btTransform com_frame(const MassProperties& m) {
+  btMatrix3x3 basis;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) basis[r][c] = m.principal_axes(r, c);
+  return btTransform(basis, btVector3(m.centre_of_mass_m.x(), m.centre_of_mass_m.y(), m.centre_of_mass_m.z()));
+}
+
+// The loop that carries the teeth: the one whose radius varies most about the axis.
+const Polygon2& toothed_loop(const Outline2& o, bool* internal) {
+  auto extent = [](const Polygon2& p) {
+    double lo = 1e300, hi = 0;
+    for (const Eigen::Vector2d& v : p.points) lo = std::min(lo, v.norm()), hi = std::max(hi, v.norm());
+    return hi - lo;
+  };
+  const Polygon2* best = &o.outer;
+  *internal = false;
+  for (const Polygon2& h : o.holes)
+    if (extent(h) > extent(*best)) best = &h, *internal = true;
+  return *best;
+}
+
+void add_pieces(BuiltBody& b, const ConvexPieces3& pieces, const btTransform& com_from_shape) {
+  auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(pieces.pieces.size()));
+  for (const ConvexPiece3& piece : pieces.pieces) {
+    auto hull = std::make_unique<btConvexHullShape>();
+    for (const Eigen::Vector3d& p : piece.points_m) hull->addPoint(btVector3(p.x(), p.y(), p.z()), false);
+    hull->recalcLocalAabb();
+    hull->setMargin(kPieceMargin_m);
+    compound->addChildShape(com_from_shape, hull.get());
+    b.children.push_back(std::move(hull));
+  }
+  b.shape = std::move(compound);
+}
+
+}  // namespace
+
+BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
+  BuiltBody b;
+  b.name = def.name;
+  b.fixed = def.fixed;
+  const std::string who = "body '" + def.name + "'";
+  std::optional<MassProperties> mass;
+  btTransform shape_in_gear = btTransform::getIdentity();  // where the pieces' coordinates live
+  ConvexPieces3 pieces;
+  if (def.gear && def.mesh) throw InputError(who + ": give a gear or a mesh, not both");
+  if (def.gear) {
+    GearSpec spec = *def.gear;
+    spec.chordal_deviation_m = contact.chordal_deviation_m;
+    const double density = def.density_kg_m3.value_or(0);
+    if (!def.mass_kg && !(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
+    GearBody g = make_gear_body(spec, def.mass_kg ? 1.0 : density);
+    if (def.mass_kg) g.mass = mass_properties(g.mesh, *def.mass_kg / g.mass.volume_m3);
+    mass = g.mass;
+    pieces = std::move(g.pieces);
+    const bool internal = spec.kind == GearKind::Internal;
+    b.flanks.emplace(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
+                     ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
+    b.face_width_m = spec.face_width_m;
+    b.contact_radius_m = g.outline.dims.base_radius_m;
+  } else if (def.mesh) {
+    const TriMesh mesh = import_mesh(def.mesh->path, def.mesh->unit);
+    require_valid_solid(validate_mesh(mesh), def.mesh->path.string());
+    const PrismRecovery pr = recover_prism(mesh, kPrismTolerance_m);
+    double density = def.density_kg_m3.value_or(0);
+    const MassProperties unit = mass_properties(mesh, 1.0);
+    if (def.mass_kg) density = *def.mass_kg / unit.volume_m3;
+    if (!(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
+    if (def.mesh->teeth) {
+      if (!pr.prism) throw InputError(who + ": " + def.mesh->path.string() + " has teeth but is not a prism (" + pr.reason +
+                                      "); tooth contact needs a spur-gear extrusion");
+      // The gear frame is the prism's frame moved to its mid-plane: axis = extrusion axis.
+      const Prism& prism = *pr.prism;
+      btTransform gear_in_mesh;
+      btMatrix3x3 basis(prism.frame.x.x(), prism.frame.y.x(), prism.frame.z.x(), prism.frame.x.y(), prism.frame.y.y(),
+                        prism.frame.z.y(), prism.frame.x.z(), prism.frame.y.z(), prism.frame.z.z());
+      const Eigen::Vector3d mid = prism.frame.origin_m + 0.5 * prism.height_m * prism.frame.z;
+      gear_in_mesh = btTransform(basis, btVector3(mid.x(), mid.y(), mid.z()));
+      shape_in_gear = gear_in_mesh.inverse();  // mesh coordinates → gear frame
+      DecompositionOptions opt;
+      opt.tooth_layout = *def.mesh->teeth;
+      pieces = extrude_pieces(decompose(prism.outline, opt), prism);
+      bool internal = false;
+      const Polygon2& loop = toothed_loop(prism.outline, &internal);
+      b.flanks.emplace(loop, *def.mesh->teeth, internal, kFlankSamples);
+      b.face_width_m = prism.height_m;
+      b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
+      // Mass properties in the gear frame.
+      TriMesh in_gear = mesh;
+      for (Eigen::Vector3d& v : in_gear.vertices) {
+        const btVector3 p = shape_in_gear * btVector3(v.x(), v.y(), v.z());
+        v = {p.x(), p.y(), p.z()};
+      }
+      mass = mass_properties(in_gear, density);
+    } else {
+      mass = mass_properties(mesh, density);
+      if (pr.prism) pieces = extrude_pieces(decompose(pr.prism->outline), *pr.prism);
+      else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + pr.reason +
+                            "); only prismatic meshes are simulated so far");
+    }
+  } else {
+    if (!def.mass_kg || !def.principal_inertia_kg_m2)
+      throw InputError(who + ": a body without gear or mesh needs mass_kg and principal_inertia_kg_m2");
+    MassProperties m;
+    m.mass_kg = *def.mass_kg;
+    m.principal_moments_kg_m2 = *def.principal_inertia_kg_m2;
+    mass = m;
+  }
+  b.mass_kg = mass->mass_kg;
+  const btTransform com_in_gear = com_frame(*mass);
+  b.com_from_gear = com_in_gear.inverse();
+  if (!pieces.pieces.empty()) add_pieces(b, pieces, b.com_from_gear * shape_in_gear);
+  else b.shape = std::make_unique<btEmptyShape>();
+  const Eigen::Vector3d& I = mass->principal_moments_kg_m2;
+  // Inertia about the gear axis (z of the gear frame) from the principal tensor.
+  Eigen::Matrix3d tensor = mass->principal_axes * I.asDiagonal() * mass->principal_axes.transpose();
+  b.inertia_axis_kg_m2 = def.gear || (def.mesh && def.mesh->teeth) ? tensor(2, 2) : I.z();
+  const double m = b.fixed ? 0.0 : b.mass_kg;
+  btRigidBody::btRigidBodyConstructionInfo ci(m, nullptr, b.shape.get(), b.fixed ? btVector3(0, 0, 0) : btVector3(I.x(), I.y(), I.z()));
+  b.rigid = std::make_unique<btRigidBody>(ci);
+  b.rigid->setWorldTransform(to_bt(def.pose) * com_in_gear);
+  b.rigid->setActivationState(DISABLE_DEACTIVATION);
+  b.rigid->setDamping(0, 0);
+  return b;
+}
+
+bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
+  const btTransform ta = a.rigid->getWorldTransform() * a.com_from_gear;
+  const btTransform tb = b.rigid->getWorldTransform() * b.com_from_gear;
+  const double d = (ta.getOrigin() - tb.getOrigin()).length();
+  const FlankTable &fa = *a.flanks, &fb = *b.flanks;
+  bool reach;
+  if (!fa.internal() && !fb.internal()) reach = d < fa.r_max_m() + fb.r_max_m();
+  else {
+    const FlankTable& ext = fa.internal() ? fb : fa;
+    const FlankTable& ring = fa.internal() ? fa : fb;
+    reach = d + ext.r_max_m() > ring.r_min_m() && d < ring.r_max_m();
+  }
+  if (!reach) return false;
+  const double parallel = ta.getBasis().getColumn(2).dot(tb.getBasis().getColumn(2));
+  if (std::abs(parallel) < 1 - 1e-9)
+    throw InputError("gears '" + a.name + "' and '" + b.name + "' overlap but their axes are not parallel: tooth contact "
+                     "supports spur gears on parallel axes");
+  return true;
+}
+
+GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactDef& c) {
+  GearPairInfo info;
+  info.body_a = a.name;
+  info.body_b = b.name;
+  info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * std::min(a.face_width_m, b.face_width_m);
+  // Effective mass along the line of action from the rotational inertias (J/r²); a fixed gear
+  // contributes none. Planet translation on its carrier is neglected here.
+  auto inv_mass = [](const BuiltBody& g) {
+    return g.fixed ? 0.0 : g.contact_radius_m * g.contact_radius_m / g.inertia_axis_kg_m2;
+  };
+  const double m_eq = 1.0 / (inv_mass(a) + inv_mass(b));
+  info.damping_N_s_per_m = 2 * c.damping_ratio * std::sqrt(info.stiffness_N_per_m * m_eq);
+  return info;
+}
+
+}  // namespace gearsim::physics

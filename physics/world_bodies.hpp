@@ -1,0 +1,43 @@
+// Building Bullet rigid bodies from body definitions: generated gears and CAD meshes become
+// compounds of their exact convex pieces with mass properties from the mesh; gears also get the
+// flank tables tooth contact uses. Internal to physics/ (world.cpp).
+#pragma once
+
+#include <btBulletDynamicsCommon.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "physics/flank_table.hpp"
+#include "physics/scenario.hpp"
+#include "physics/world.hpp"
+
+namespace gearsim::physics {
+
+struct BuiltBody {
+  std::string name;
+  std::unique_ptr<btCollisionShape> shape;
+  std::vector<std::unique_ptr<btCollisionShape>> children;
+  std::unique_ptr<btRigidBody> rigid;
+  // The gear (or mesh) frame expressed in the centre-of-mass principal frame Bullet simulates.
+  btTransform com_from_gear = btTransform::getIdentity();
+  bool fixed = false;
+  double mass_kg = 0;
+  double inertia_axis_kg_m2 = 0;  // about the gear axis
+  // Gears only.
+  std::optional<FlankTable> flanks;
+  double face_width_m = 0;
+  double contact_radius_m = 0;  // base radius (generated) or mid-tooth radius (meshes), for damping
+};
+
+BuiltBody build_body(const BodyDef& def, const ContactDef& contact);
+
+// Can the two gears' toothed zones reach each other (at their initial poses)? Throws InputError
+// when they could but their axes are not parallel.
+bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b);
+
+// Tooth-pair stiffness and damping of a meshing pair.
+GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactDef& contact);
+
+}  // namespace gearsim::physics
