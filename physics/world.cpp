@@ -18,8 +18,10 @@ constexpr double kPi = std::numbers::pi;
 
 // Collision groups: gears reach each other only through tooth contact, never through Bullet's
 // own narrowphase (whose point counts and GJK chatter are what tooth contact replaces).
+// Shapeless bodies (a carrier arm) collide with nothing.
 constexpr int kGearGroup = 1 << 6;
 constexpr int kOtherGroup = 1 << 7;
+constexpr int kShapelessGroup = 1 << 8;
 
 // A Bullet manifold holds at most 4 points: enough for one point per tooth pair at contact
 // ratios below 4. Extra pairs (never seen in a healthy mesh) are dropped and counted.
@@ -216,7 +218,9 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
     m.bodies.push_back(build_body(def, s.contact));
     BuiltBody& b = m.bodies.back();
     const bool gear = b.flanks.has_value();
-    m.world.addRigidBody(b.rigid.get(), gear ? kGearGroup : kOtherGroup, gear ? kOtherGroup : (kGearGroup | kOtherGroup));
+    const bool shapeless = b.shape->getShapeType() == EMPTY_SHAPE_PROXYTYPE;
+    if (shapeless) m.world.addRigidBody(b.rigid.get(), kShapelessGroup, 0);
+    else m.world.addRigidBody(b.rigid.get(), gear ? kGearGroup : kOtherGroup, gear ? kOtherGroup : (kGearGroup | kOtherGroup));
     m.states.push_back({def.name, 0, 0, Eigen::Vector3d::Zero()});
   }
   auto body_of = [&](const std::string& name, const std::string& who) {
