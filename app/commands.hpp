@@ -9,5 +9,6 @@ namespace gearsim::app {
 void register_tolerance(CLI::App& app);
 void register_gears(CLI::App& app);
 void register_inspect(CLI::App& app);
+void register_run(CLI::App& app);
 
 }  // namespace gearsim::app

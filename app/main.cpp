@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   gearsim::app::register_tolerance(app);
   gearsim::app::register_gears(app);
   gearsim::app::register_inspect(app);
+  gearsim::app::register_run(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

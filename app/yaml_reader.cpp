@@ -33,6 +33,11 @@ YamlMap YamlMap::from_string(const std::string& text, const std::string& source_
   return YamlMap(root, "", source);
 }
 
+YamlMap YamlMap::from_node(const YAML::Node& root, const std::string& source_name) {
+  if (!root.IsMap()) throw InputError(source_name + ": expected a mapping (key: value) at the top level");
+  return YamlMap(root, "", std::make_shared<const std::string>(source_name));
+}
+
 std::string YamlMap::where(const YAML::Node& node) const {
   const YAML::Mark m = node.Mark();
   if (m.line < 0) return *source_;
@@ -93,6 +98,20 @@ int YamlMap::integer(const std::string& key) const {
 int YamlMap::integer_or(const std::string& key, int fallback) const {
   read_->insert(key);
   return has(key) ? integer(key) : fallback;
+}
+
+std::vector<double> YamlMap::numbers(const std::string& key, std::size_t count) const {
+  const YAML::Node n = get(key);
+  const std::string expected = count ? "a list of " + std::to_string(count) + " numbers" : "a list of numbers";
+  if (!n.IsSequence() || (count && n.size() != count)) fail(key, "expected " + expected);
+  std::vector<double> out;
+  for (const YAML::Node& item : n) {
+    double v = 0;
+    if (!item.IsScalar() || !YAML::convert<double>::decode(item, v) || !std::isfinite(v))
+      fail(key, "expected " + expected + " (finite), got an item that is not a number");
+    out.push_back(v);
+  }
+  return out;
 }
 
 std::string YamlMap::string(const std::string& key) const {

@@ -20,6 +20,9 @@ class YamlMap {
   // syntax errors (with yaml-cpp's line and column).
   static YamlMap load_file(const std::filesystem::path& path);
   static YamlMap from_string(const std::string& text, const std::string& source_name);
+  // Wraps an already parsed tree (e.g. edited by command-line overrides); its nodes keep the
+  // marks they were parsed with, nodes built in code have none (errors then name the file only).
+  static YamlMap from_node(const YAML::Node& root, const std::string& source_name);
 
   bool has(const std::string& key) const;
   double number(const std::string& key) const;
@@ -27,6 +30,8 @@ class YamlMap {
   std::optional<double> optional_number(const std::string& key) const;
   int integer(const std::string& key) const;
   int integer_or(const std::string& key, int fallback) const;
+  // A list of numbers, e.g. a vector [x, y, z]; `count` > 0 demands exactly that many.
+  std::vector<double> numbers(const std::string& key, std::size_t count = 0) const;
   std::string string(const std::string& key) const;
   std::string string_or(const std::string& key, const std::string& fallback) const;
   bool boolean_or(const std::string& key, bool fallback) const;

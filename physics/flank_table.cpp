@@ -162,9 +162,22 @@ FlankTable::Probe FlankTable::probe(const Eigen::Vector2d& p) const {
   double s_ccw = 0, s_cw = 0;
   const double a_ccw = sample(ccw_, out.tooth, r, &s_ccw);
   const double a_cw = sample(cw_, out.tooth, r, &s_cw);
-  if (std::isnan(a_ccw) || std::isnan(a_cw) || rel <= a_cw || rel >= a_ccw) return out;
-  out.inside = true;
-  const bool to_ccw = a_ccw - rel < rel - a_cw;
+  if (std::isnan(a_ccw) || std::isnan(a_cw)) return out;
+  out.inside = rel > a_cw && rel < a_ccw;
+  // Inside: the nearer flank of this tooth. Outside (in a tooth space): the flank of this tooth
+  // that faces the point, or the facing flank of the neighbour if that one is nearer in angle;
+  // the depth then comes out negative (a gap), so a prober sees the approach, not only overlap.
+  bool to_ccw = out.inside ? a_ccw - rel < rel - a_cw : rel >= a_ccw;
+  if (!out.inside) {
+    const int next = (out.tooth + (to_ccw ? 1 : layout_.teeth - 1)) % layout_.teeth;
+    const double neighbour = sample(to_ccw ? cw_ : ccw_, next, r, nullptr) + (to_ccw ? pitch_ : -pitch_);
+    const double own_gap = to_ccw ? rel - a_ccw : a_cw - rel;
+    const double next_gap = to_ccw ? neighbour - rel : rel - neighbour;
+    if (!std::isnan(neighbour) && next_gap < own_gap) {
+      out.tooth = next;
+      to_ccw = !to_ccw;
+    }
+  }
   out.flank = to_ccw ? Flank::Ccw : Flank::Cw;
   // Foot of the normal from p on the flank: start at the flank point of the same radius, slide
   // along its tangent to the projection of p, and take the flank point at that radius. Two
@@ -182,6 +195,7 @@ FlankTable::Probe FlankTable::probe(const Eigen::Vector2d& p) const {
   }
   out.depth_m = (ff.point - p).dot(ff.normal);
   out.normal = ff.normal;
+  out.has_flank = true;
   return out;
 }
 

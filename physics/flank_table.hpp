@@ -37,10 +37,11 @@ class FlankTable {
 
   // Where a point in the gear frame lies against the material.
   struct Probe {
-    bool inside = false;   // in tooth material (or the solid body beyond the teeth)
-    int tooth = -1;        // nearest tooth
+    bool inside = false;     // in tooth material (or the solid body beyond the teeth)
+    bool has_flank = false;  // depth_m and normal refer to a flank (also for a point in a gap)
+    int tooth = -1;          // nearest tooth
     Flank flank = Flank::Ccw;  // nearest flank
-    double depth_m = 0;    // distance to that flank along its normal (> 0 inside)
+    double depth_m = 0;      // distance to that flank along its normal (> 0 inside, < 0 in a gap)
     Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // outward flank normal, gear frame
   };
   Probe probe(const Eigen::Vector2d& p) const;

@@ -15,6 +15,11 @@ using Eigen::Vector2d;
 // shrinks by 0.618^20 ≈ 7e-5 of two sample spacings (≈ 5 nm at 64 samples over 2.25 mm).
 constexpr int kRefineIterations = 20;
 
+// Gap below which a flank's coarse maximum is refined, m. Normally 5 µm: the parabola between
+// samples 140 µm apart (16 samples over a 2.25 mm module-1 tooth) rises at most ~1.2 µm at the
+// sun–planet curvature; 5 µm also covers module-2 teeth with 16 samples.
+constexpr double kRefineWithin_m = 5e-6;
+
 struct Frame {
   const FlankTable& table;
   PlanarPose pose;
@@ -48,7 +53,7 @@ Hit probe_at(const Frame& x, int k, Flank f, double r, const Frame& y) {
   Hit h;
   const Vector2d w = x.to_world(x.table.flank_point(k, f, r));
   const FlankTable::Probe p = y.table.probe(y.to_local(w));
-  if (!p.inside) return h;
+  if (!p.inside && !p.has_flank) return h;  // far from y's teeth: no gap to measure
   h.depth = p.depth_m;
   h.point = w;
   h.normal_into_x = y.dir_to_world(p.normal);
@@ -75,7 +80,9 @@ Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y, int samples
       best_i = i;
     }
   }
-  if (best_i < 0) return best;
+  // Refine only where contact is possible: between samples the depth can exceed the best
+  // sample by at most κ·(spacing/2)²/2 (κ: relative curvature of the flanks).
+  if (best_i < 0 || best.depth < -kRefineWithin_m) return best;
   // Golden-section search for the maximum between the best sample's neighbours: the depth is
   // flat at its maximum, but where it sits along the flank fixes the contact point and normal.
   double lo = r0 + std::max(best_i - 1, 0) * step, hi = r0 + std::min(best_i + 1, samples - 1) * step;

@@ -251,7 +251,10 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
         const btTransform in_parent = parent->getWorldTransform().inverse() * frame_world;
         jr.hinge = new btHingeConstraint(rb, *parent, in_body, in_parent);
       } else {
-        jr.hinge = new btHingeConstraint(rb, in_body);
+        // To Bullet's fixed body with an explicit world frame: the one-body constructor reads the
+        // body-local frame's basis as a world basis, which flips the axis of a body whose
+        // principal frame is turned (and with it the motor's sense).
+        jr.hinge = new btHingeConstraint(rb, btTypedConstraint::getFixedBody(), in_body, frame_world);
       }
       jr.constraint = jr.hinge;
     } else {

@@ -1,5 +1,6 @@
 #include "physics/world_bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/errors.hpp"
@@ -73,7 +74,6 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
   b.fixed = def.fixed;
   const std::string who = "body '" + def.name + "'";
   std::optional<MassProperties> mass;
-  btTransform shape_in_gear = btTransform::getIdentity();  // where the pieces' coordinates live
   ConvexPieces3 pieces;
   if (def.gear && def.mesh) throw InputError(who + ": give a gear or a mesh, not both");
   if (def.gear) {
@@ -101,30 +101,45 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
     if (def.mesh->teeth) {
       if (!pr.prism) throw InputError(who + ": " + def.mesh->path.string() + " has teeth but is not a prism (" + pr.reason +
                                       "); tooth contact needs a spur-gear extrusion");
-      // The gear frame is the prism's frame moved to its mid-plane: axis = extrusion axis.
+      // Gear frame: origin on the axis at mid face width, z along the extrusion, oriented to
+      // the mesh's own positive direction (+z for a gear modelled about z) so that the tooth
+      // layout, given in mesh coordinates, reads the same; x along the prism's x.
       const Prism& prism = *pr.prism;
-      btTransform gear_in_mesh;
-      btMatrix3x3 basis(prism.frame.x.x(), prism.frame.y.x(), prism.frame.z.x(), prism.frame.x.y(), prism.frame.y.y(),
-                        prism.frame.z.y(), prism.frame.x.z(), prism.frame.y.z(), prism.frame.z.z());
+      Eigen::Vector3d gx = prism.frame.x, gy = prism.frame.y, gz = gx.cross(gy);
+      Outline2 outline = prism.outline;
+      int dominant = 0;
+      gz.cwiseAbs().maxCoeff(&dominant);
+      if (gz[dominant] < 0) {
+        // Mirror: flip y and z; the outline's v coordinates flip and its loops reverse.
+        gy = -gy;
+        gz = -gz;
+        auto mirror = [](Polygon2& poly) {
+          for (Eigen::Vector2d& v : poly.points) v.y() = -v.y();
+          std::reverse(poly.points.begin(), poly.points.end());
+        };
+        mirror(outline.outer);
+        for (Polygon2& h : outline.holes) mirror(h);
+      }
       const Eigen::Vector3d mid = prism.frame.origin_m + 0.5 * prism.height_m * prism.frame.z;
-      gear_in_mesh = btTransform(basis, btVector3(mid.x(), mid.y(), mid.z()));
-      shape_in_gear = gear_in_mesh.inverse();  // mesh coordinates → gear frame
+      Eigen::Matrix3d rot;
+      rot.col(0) = gx;
+      rot.col(1) = gy;
+      rot.col(2) = gz;
       DecompositionOptions opt;
       opt.tooth_layout = *def.mesh->teeth;
-      pieces = extrude_pieces(decompose(prism.outline, opt), prism);
+      const double half = 0.5 * prism.height_m;
+      pieces = extrude_pieces(decompose(outline, opt), PrismFrame{}, -half, half);  // gear frame
       bool internal = false;
-      const Polygon2& loop = toothed_loop(prism.outline, &internal);
+      const Polygon2& loop = toothed_loop(outline, &internal);
       b.flanks.emplace(loop, *def.mesh->teeth, internal, kFlankSamples);
       b.face_width_m = prism.height_m;
       b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
       // Mass properties in the gear frame.
       TriMesh in_gear = mesh;
-      for (Eigen::Vector3d& v : in_gear.vertices) {
-        const btVector3 p = shape_in_gear * btVector3(v.x(), v.y(), v.z());
-        v = {p.x(), p.y(), p.z()};
-      }
+      for (Eigen::Vector3d& v : in_gear.vertices) v = rot.transpose() * (v - mid);
       mass = mass_properties(in_gear, density);
     } else {
+      // A toothless mesh body: its own coordinates are its frame.
       mass = mass_properties(mesh, density);
       if (pr.prism) pieces = extrude_pieces(decompose(pr.prism->outline), *pr.prism);
       else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + pr.reason +
@@ -141,7 +156,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
   b.mass_kg = mass->mass_kg;
   const btTransform com_in_gear = com_frame(*mass);
   b.com_from_gear = com_in_gear.inverse();
-  if (!pieces.pieces.empty()) add_pieces(b, pieces, b.com_from_gear * shape_in_gear);
+  if (!pieces.pieces.empty()) add_pieces(b, pieces, b.com_from_gear);
   else b.shape = std::make_unique<btEmptyShape>();
   const Eigen::Vector3d& I = mass->principal_moments_kg_m2;
   // Inertia about the gear axis (z of the gear frame) from the principal tensor.

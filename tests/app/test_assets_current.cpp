@@ -18,22 +18,28 @@ std::string bytes(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-TEST(Assets, PaperGearMeshesMatchTheirSpec) {
+void expect_current(const std::string& spec, const std::string& folder) {
   const std::filesystem::path src(GEARSIM_SOURCE_DIR);
-  const GearSetFile f = load_gearset(src / "assets/specs/paper_gearset.yaml");
+  const GearSetFile f = load_gearset(src / spec);
   const std::filesystem::path tmp = std::filesystem::temp_directory_path() / "gearsim_assets_check";
   std::filesystem::create_directories(tmp);
   for (const GearSpec& s : f.gears) {
     const GearBody b = make_gear_body(s, f.density_kg_m3);
     for (auto [fmt, ext] : {std::pair{MeshFormat::StlBinary, ".stl"}, std::pair{MeshFormat::Obj, ".obj"}}) {
       export_mesh(b.mesh, tmp / (s.name + ext), fmt, LengthUnit::Millimetre);
-      const std::string committed = bytes(src / "assets/gears" / (s.name + ext));
-      ASSERT_FALSE(committed.empty()) << s.name << ext << " missing from assets/gears";
+      const std::string committed = bytes(src / folder / (s.name + ext));
+      ASSERT_FALSE(committed.empty()) << s.name << ext << " missing from " << folder;
       EXPECT_TRUE(committed == bytes(tmp / (s.name + ext)))
-          << s.name << ext << " differs: regenerate with gearsim gears assets/specs/paper_gearset.yaml --out assets/gears";
+          << s.name << ext << " differs: regenerate with gearsim gears " << spec << " --out " << folder;
     }
   }
   std::filesystem::remove_all(tmp);
+}
+
+TEST(Assets, PaperGearMeshesMatchTheirSpec) { expect_current("assets/specs/paper_gearset.yaml", "assets/gears"); }
+
+TEST(Assets, SpurPairMeshesMatchTheirSpec) {
+  expect_current("assets/specs/spur_pair_gearset.yaml", "assets/gears/spur_pair");
 }
 
 }  // namespace

@@ -1,0 +1,60 @@
+// Every tolerance and default of the analysis library, written once with its unit and why.
+// Not the window coefficients (window.cpp: they define a window, they are not tolerances).
+#pragma once
+
+namespace gearsim::analysis_constants {
+
+// --- Peak search and matching --------------------------------------------------------------------
+
+// Half-width of the search for a mesh harmonic and of a sideband's match to a characteristic
+// frequency, in bins of the (padded) spectrum. Normally 1.5: a peak taken at its highest bin lies
+// up to 0.5 bin from the true tone, and a neighbour's leakage can skew the highest bin by one more.
+inline constexpr double kDefaultMatchToleranceBins = 1.5;
+
+// Relative part of the same tolerances, as a fraction of the expected frequency (or offset).
+// Normally 1 %: characteristic frequencies are computed from the nominal input speed, and the
+// mean speed of a loaded, compliant run differs from it by up to about that much.
+inline constexpr double kDefaultMatchRelativeTolerance = 0.01;
+
+// A sideband must stand this far over the median noise floor of its band, dB. Normally 10 dB
+// (×3.16): the amplitude of noise in one bin is Rayleigh distributed with median 1.18·σ, so it
+// exceeds 3.16× its median (3.72·σ) with probability exp(−3.72²/2) ≈ 1e-3 per bin.
+inline constexpr double kDefaultSidebandMinHeight_dB = 10.0;
+
+// Sidebands are sought within ± this fraction of the mesh frequency around each harmonic, unless a
+// span is given. Normally 0.5: halfway to the next harmonic, so no peak belongs to two harmonics.
+inline constexpr double kDefaultSidebandSpanFraction = 0.5;
+
+// Highest multiple k of a characteristic frequency f tried when matching a sideband offset to k·f.
+// Normally 10: planet-pass modulation puts sidebands at many multiples of the carrier rate.
+inline constexpr int kDefaultMaxMultiple = 10;
+
+// Two candidates k·f closer than this are the same frequency (e.g. the planet's spin relative to
+// the carrier and the planet local-fault frequency, equal by definition), Hz. Only breaks ties.
+inline constexpr double kSameFrequencyTolerance_hz = 1e-9;
+
+// Number of mesh harmonics listed and searched unless told otherwise. Normally 3: the paper's
+// figure 5 shows f_m, 2·f_m, 3·f_m (320, 640, 960 Hz).
+inline constexpr int kDefaultMeshHarmonics = 3;
+
+// --- Angle-synchronous averaging and tooth statistics --------------------------------------------
+
+// Samples per revolution of the angle-domain average unless told otherwise. Normally 1024: 28 per
+// tooth of the paper's 36-tooth planet, enough to resolve a tooth's mesh cycle.
+inline constexpr int kDefaultSamplesPerRevolution = 1024;
+
+// A tooth is reported faulty when its leave-one-out z-score exceeds this in magnitude. Normally
+// 3.5: with Gaussian tooth-to-tooth scatter a healthy tooth's leave-one-out z (36 teeth) is
+// t-distributed (34 degrees of freedom, scaled by √(1 + 1/35)) and passes 3.5 with probability
+// 1.5e-3, so a healthy 36-tooth gear raises a false alarm in about 1 run of 19.
+inline constexpr double kDefaultToothZThreshold = 3.5;
+
+// --- Input validation ----------------------------------------------------------------------------
+
+// Largest relative deviation of a sample interval from the mean interval for a time base to count
+// as uniform. Normally 1e-6: an interval recovered from logged times t_k ≈ k·dt carries a rounding
+// of about k·2.2e-16 of dt (2e-10 after a million steps); a larger spread means variable steps,
+// which must be resampled first.
+inline constexpr double kUniformTimeRelativeTolerance = 1e-6;
+
+}  // namespace gearsim::analysis_constants

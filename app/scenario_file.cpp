@@ -1,0 +1,252 @@
+// Scenario files: parse the top level, bodies, joints, motors, loads and the transmission;
+// expand macros (scenario_macros.cpp); check every cross-reference. See scenario_file.hpp.
+#include "app/scenario_file.hpp"
+
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "app/gearset_file.hpp"
+#include "app/scenario_parts.hpp"
+#include "geometry/errors.hpp"
+
+namespace gearsim::app {
+namespace {
+
+using namespace scenario_detail;
+namespace fs = std::filesystem;
+constexpr const char* kGround = "ground";
+
+physics::Pose parse_pose(const YamlMap& m) {
+  physics::Pose pose;
+  pose.position_m = vec3_or(m, "position_m", Eigen::Vector3d::Zero());
+  const bool full = m.has("orientation_deg") || m.has("orientation_rad");
+  const bool about_z = m.has("angle_deg") || m.has("angle_rad");
+  if (full && about_z) m.fail(m.has("angle_deg") ? "angle_deg" : "angle_rad",
+                              "give orientation_deg/_rad [rx, ry, rz] or angle_deg/_rad about z, not both");
+  if (m.has("orientation_deg") && m.has("orientation_rad"))
+    m.fail("orientation_deg", "give the orientation once: orientation_deg or orientation_rad");
+  Eigen::Vector3d r = vec3_or(m, "orientation_rad", Eigen::Vector3d::Zero());
+  r += vec3_or(m, "orientation_deg", Eigen::Vector3d::Zero()) * (std::numbers::pi / 180.0);
+  r.z() += angle_rad_or(m, "angle", 0.0);
+  // Rotations about the fixed world axes x, then y, then z: R = Rz·Ry·Rx.
+  pose.orientation = Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX());
+  return pose;
+}
+
+physics::BodyDef parse_body(const YamlMap& m, const fs::path& dir) {
+  physics::BodyDef b;
+  b.name = m.string("name");
+  b.fixed = m.boolean_or("fixed", false);
+  parse_shape_and_mass(m, b, dir);
+  b.pose = parse_pose(m);
+  m.reject_unknown_keys();
+  return b;
+}
+
+double positive_or(const YamlMap& m, const std::string& key, double fallback, const std::string& what) {
+  return m.has(key) ? positive(m, key, what) : m.number_or(key, fallback);
+}
+double non_negative_or(const YamlMap& m, const std::string& key, double fallback, const std::string& what) {
+  const double v = m.number_or(key, fallback);
+  if (v < 0) m.fail(key, "expected " + what + " ≥ 0, got " + m.string(key));
+  return v;
+}
+
+// Every name the scenario defines so far, for duplicate and reference checks.
+struct Names {
+  std::map<std::string, const physics::BodyDef*> bodies;
+  std::map<std::string, std::string> joint_of_body;  // body → its hinge
+  std::set<std::string> joints;
+};
+
+physics::BearingDef parse_bearing(const YamlMap& m) {
+  physics::BearingDef b;
+  b.radial_stiffness_N_per_m = positive(m, "radial_stiffness_N_per_m", "stiffness in N/m");
+  b.radial_damping_N_s_per_m = non_negative_or(m, "radial_damping_N_s_per_m", 0.0, "a damping in N·s/m");
+  m.reject_unknown_keys();
+  return b;
+}
+
+physics::JointDef parse_joint(const YamlMap& m, const Names& names) {
+  physics::JointDef j;
+  j.name = m.string("name");
+  j.body = m.string("body");
+  const auto body = names.bodies.find(j.body);
+  if (body == names.bodies.end()) m.fail("body", "no body named '" + j.body + "'");
+  if (body->second->fixed) m.fail("body", "body '" + j.body + "' is fixed (welded to the ground): it cannot turn in a joint");
+  j.parent = m.string_or("parent", kGround);
+  if (j.parent != kGround && !names.bodies.count(j.parent))
+    m.fail("parent", "no body named '" + j.parent + "' (or 'ground')");
+  if (j.parent == j.body) m.fail("parent", "a body cannot be hinged to itself");
+  // The pivot defaults to the body's origin (a gear's centre).
+  j.pivot_m = vec3_or(m, "pivot_m", body->second->pose.position_m);
+  const Eigen::Vector3d axis = vec3_or(m, "axis", Eigen::Vector3d::UnitZ());
+  if (!(axis.norm() > 1e-12)) m.fail("axis", "the hinge axis has zero length");
+  j.axis = axis.normalized();  // a direction: only its sense matters
+  if (given(m, "bearing")) j.bearing = parse_bearing(m.map("bearing"));
+  m.reject_unknown_keys();
+  return j;
+}
+
+void add_body(Names& names, const physics::BodyDef& b, const YamlMap& at, const std::string& key) {
+  if (b.name == kGround) at.fail(key, "'ground' is reserved for the world");
+  if (!names.bodies.emplace(b.name, &b).second) at.fail(key, "a second body named '" + b.name + "'");
+}
+
+void add_joint(Names& names, const physics::JointDef& j, const YamlMap& at, const std::string& key) {
+  if (!names.joints.insert(j.name).second) at.fail(key, "a second joint named '" + j.name + "'");
+  const auto [it, fresh] = names.joint_of_body.emplace(j.body, j.name);
+  if (!fresh) at.fail(key, "body '" + j.body + "' already turns in joint '" + it->second + "' (one hinge per body)");
+}
+
+std::string joint_ref(const YamlMap& m, const std::string& key, const Names& names) {
+  const std::string j = m.string(key);
+  if (!names.joints.count(j)) m.fail(key, "no joint named '" + j + "'");
+  return j;
+}
+
+void parse_settings(const YamlMap& top, physics::Scenario& s) {
+  if (given(top, "solver")) {
+    const YamlMap m = top.map("solver");
+    s.solver.time_step_s = positive_or(m, "time_step_s", s.solver.time_step_s, "time step in s");
+    s.solver.iterations = m.integer_or("iterations", s.solver.iterations);
+    if (s.solver.iterations < 1) m.fail("iterations", "expected at least 1 solver iteration");
+    m.reject_unknown_keys();
+  }
+  if (given(top, "output")) {
+    const YamlMap m = top.map("output");
+    s.output.sample_rate_hz = positive_or(m, "sample_rate_hz", s.output.sample_rate_hz, "rate in Hz");
+    if (s.output.sample_rate_hz * s.solver.time_step_s > 1 + 1e-9) {
+      std::ostringstream msg;
+      msg << "sample rate " << s.output.sample_rate_hz << " Hz is above the step rate 1/time_step_s = "
+          << 1 / s.solver.time_step_s << " Hz";
+      m.fail("sample_rate_hz", msg.str());
+    }
+    s.output.per_step_log = m.boolean_or("per_step_log", s.output.per_step_log);
+    m.reject_unknown_keys();
+  }
+  if (given(top, "contact")) {
+    const YamlMap m = top.map("contact");
+    physics::ContactDef& c = s.contact;
+    c.stiffness_N_per_m_per_m = positive_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, "stiffness in N/m per m");
+    c.damping_ratio = non_negative_or(m, "damping_ratio", c.damping_ratio, "a damping ratio");
+    c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
+    c.chordal_deviation_m = positive_or(m, "chordal_deviation_m", c.chordal_deviation_m, "length in m");
+    m.reject_unknown_keys();
+  }
+}
+
+physics::Scenario parse(const YamlMap& top, const fs::path& file) {
+  const fs::path dir = file.parent_path();
+  physics::Scenario s;
+  s.source = file;
+  s.name = top.string_or("name", file.stem().string());
+  s.duration_s = positive(top, "duration_s", "duration in s");
+  const int seed = top.integer_or("seed", 0);
+  if (seed < 0) top.fail("seed", "expected a seed ≥ 0");
+  s.seed = static_cast<std::uint64_t>(seed);
+  parse_settings(top, s);
+  if (s.solver.time_step_s >= s.duration_s) top.fail("duration_s", "expected a duration longer than one time step");
+
+  // Bodies: explicit ones, then the macros' (their names must not collide).
+  std::vector<YamlMap> body_maps;
+  if (given(top, "bodies")) body_maps = top.list_of_maps("bodies");
+  for (const YamlMap& m : body_maps) s.bodies.push_back(parse_body(m, dir));
+  std::vector<std::pair<Expansion, std::string>> macros;
+  if (given(top, "planetary")) macros.emplace_back(expand_planetary(top.map("planetary"), dir), "planetary");
+  if (given(top, "pair")) macros.emplace_back(expand_pair(top.map("pair"), dir), "pair");
+  for (const auto& [e, key] : macros) s.bodies.insert(s.bodies.end(), e.bodies.begin(), e.bodies.end());
+  Names names;
+  std::size_t bi = 0;
+  for (const YamlMap& m : body_maps) add_body(names, s.bodies[bi++], m, "name");
+  for (const auto& [e, key] : macros)
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) add_body(names, s.bodies[bi++], top, key);
+
+  // Joints: the macros' first, then explicit ones (which may hinge to macro bodies).
+  for (const auto& [e, key] : macros)
+    for (const physics::JointDef& j : e.joints) {
+      add_joint(names, j, top, key);
+      s.joints.push_back(j);
+    }
+  if (given(top, "joints"))
+    for (const YamlMap& m : top.list_of_maps("joints")) {
+      s.joints.push_back(parse_joint(m, names));
+      add_joint(names, s.joints.back(), m, "name");
+    }
+
+  if (given(top, "motors")) {
+    std::set<std::string> driven;
+    for (const YamlMap& m : top.list_of_maps("motors")) {
+      physics::MotorDef d;
+      d.joint = joint_ref(m, "joint", names);
+      if (!driven.insert(d.joint).second) m.fail("joint", "joint '" + d.joint + "' already has a motor");
+      d.target_speed_rad_s = m.number("target_speed_rad_s");
+      d.ramp_time_s = non_negative_or(m, "ramp_time_s", 0.0, "a ramp time in s");
+      d.max_torque_N_m = positive(m, "max_torque_N_m", "torque limit in N·m");
+      m.reject_unknown_keys();
+      s.motors.push_back(d);
+    }
+  }
+  if (given(top, "loads"))
+    for (const YamlMap& m : top.list_of_maps("loads")) {
+      physics::LoadDef l;
+      l.joint = joint_ref(m, "joint", names);
+      l.constant_torque_N_m = m.number_or("constant_torque_N_m", 0.0);
+      l.viscous_N_m_s_per_rad = non_negative_or(m, "viscous_N_m_s_per_rad", 0.0, "a viscous coefficient in N·m·s/rad");
+      m.reject_unknown_keys();
+      s.loads.push_back(l);
+    }
+
+  // Transmission: the explicit block, each key defaulting to the macro's proposal.
+  std::optional<physics::TransmissionDef> proposed;
+  for (const auto& [e, key] : macros)
+    if (e.transmission) {
+      if (proposed && !top.has("transmission"))
+        top.fail(key, "two macros each define a transmission: give transmission {input_joint, output_joint, ratio}");
+      proposed = e.transmission;
+    }
+  if (given(top, "transmission")) {
+    const YamlMap m = top.map("transmission");
+    physics::TransmissionDef t = proposed.value_or(physics::TransmissionDef{});
+    if (!proposed || m.has("input_joint")) t.input_joint = joint_ref(m, "input_joint", names);
+    if (!proposed || m.has("output_joint")) t.output_joint = joint_ref(m, "output_joint", names);
+    if (t.input_joint == t.output_joint) m.fail("output_joint", "input and output are the same joint");
+    t.ratio = proposed ? m.number_or("ratio", t.ratio) : m.number("ratio");
+    if (t.ratio == 0) m.fail("ratio", "expected a non-zero ratio θ_input/θ_output");
+    m.reject_unknown_keys();
+    proposed = t;
+  }
+  s.transmission = proposed;
+  top.reject_unknown_keys();
+  return s;
+}
+
+}  // namespace
+
+physics::Scenario load_scenario(const fs::path& file, const std::vector<std::string>& overrides) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string() + ": cannot open the scenario file");
+  std::stringstream text;
+  text << in.rdbuf();
+  YAML::Node root;
+  try {
+    root = YAML::Load(text.str());
+  } catch (const YAML::Exception& e) {
+    throw InputError(file.string() + ":" + std::to_string(e.mark.line + 1) + ":" +
+                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+  }
+  if (!root.IsMap()) throw InputError(file.string() + ": expected a mapping (key: value) at the top level");
+  apply_overrides(root, overrides, file.string());
+  try {
+    return parse(YamlMap::from_node(root, file.string()), file);
+  } catch (const InputError& e) {
+    throw InputError(blame_override(e.what(), overrides));
+  }
+}
+
+}  // namespace gearsim::app

@@ -1,0 +1,215 @@
+// Scenario macros: `planetary` and `pair` expand into plain bodies and hinges placed so that
+// every mesh engages (tooth centred in the mating gap), plus the ideal transmission.
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "app/gearset_file.hpp"
+#include "app/scenario_parts.hpp"
+#include "geometry/errors.hpp"
+#include "geometry/gear_dimensions.hpp"
+#include "geometry/planetary.hpp"
+
+namespace gearsim::app::scenario_detail {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = std::numbers::pi;
+
+Eigen::Quaterniond about_z(double angle_rad) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()));
+}
+
+// The gear called m[key] (or `fallback` when the key is absent and fallback is not empty).
+const GearSpec& named_gear(const YamlMap& m, const std::string& key, const GearSetFile& f,
+                           const std::string& fallback) {
+  const std::string name = fallback.empty() ? m.string(key) : m.string_or(key, fallback);
+  std::string names;
+  for (const GearSpec& g : f.gears) {
+    if (g.name == name) return g;
+    names += (names.empty() ? "" : ", ") + g.name;
+  }
+  m.fail(key, "no gear named '" + name + "' in " + f.path.string() + " (it has: " + names + ")");
+}
+
+physics::JointDef hinge(const std::string& name, const std::string& parent, const Eigen::Vector3d& pivot_m) {
+  physics::JointDef j;
+  j.name = name;
+  j.body = name;
+  j.parent = parent;
+  j.pivot_m = pivot_m;
+  return j;  // axis +z
+}
+
+// faulty_planets: {index: gear}; every other planet is the train's planet gear.
+std::vector<const GearSpec*> planet_gears(const YamlMap& m, const GearSetFile& f, const GearSpec& planet, int n) {
+  std::vector<const GearSpec*> gears(static_cast<std::size_t>(n), &planet);
+  if (!given(m, "faulty_planets")) return gears;  // absent or null: all healthy
+  const YamlMap fp = m.map("faulty_planets");
+  for (const std::string& key : fp.keys()) {
+    int k = -1;
+    const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), k);
+    if (ec != std::errc() || end != key.data() + key.size() || k < 0 || k >= n)
+      fp.fail(key, "expected a planet index 0.." + std::to_string(n - 1) + " as the key");
+    const GearSpec& g = named_gear(fp, key, f, "");
+    if (g.kind != planet.kind || g.teeth != planet.teeth || g.module_m != planet.module_m ||
+        g.pressure_angle_rad != planet.pressure_angle_rad || g.profile_shift != planet.profile_shift)
+      fp.fail(key, "gear '" + g.name + "' cannot take planet " + key + "'s place: its kind, teeth, module, "
+                   "pressure angle and profile shift must equal those of '" + planet.name + "'");
+    gears[static_cast<std::size_t>(k)] = &g;
+  }
+  return gears;
+}
+
+}  // namespace
+
+Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
+  const fs::path spec = resolve(dir, m.string("spec"));
+  if (!fs::is_regular_file(spec)) m.fail("spec", "gear-set spec file not found: " + spec.string());
+  const GearSetFile f = load_gearset(spec);
+  // Gear names and planet count default to the spec's planetary train.
+  const auto& t = f.planetary;
+  PlanetarySpec ps{named_gear(m, "sun", f, t ? t->sun.name : ""), named_gear(m, "planet", f, t ? t->planet.name : ""),
+                   named_gear(m, "ring", f, t ? t->ring.name : ""), t ? m.integer_or("planets", t->planets) : m.integer("planets")};
+  if (ps.planets < 1) m.fail("planets", "expected at least 1 planet");
+  const std::vector<const GearSpec*> planets = planet_gears(m, f, ps.planet, ps.planets);
+  const YamlMap c = m.map("carrier");
+  const double carrier_mass_kg = positive(c, "mass_kg", "carrier mass in kg");
+  const double carrier_jz = positive(c, "inertia_z_kg_m2", "carrier moment of inertia in kg·m²");
+  c.reject_unknown_keys();
+  std::optional<physics::BearingDef> floating;
+  if (given(m, "floating_sun")) {
+    const YamlMap b = m.map("floating_sun");
+    floating = physics::BearingDef{positive(b, "radial_stiffness_N_per_m", "stiffness in N/m"),
+                                   b.number_or("radial_damping_N_s_per_m", 0.0)};
+    if (floating->radial_damping_N_s_per_m < 0) b.fail("radial_damping_N_s_per_m", "expected a damping ≥ 0 in N·s/m");
+    b.reject_unknown_keys();
+  }
+  const bool ring_fixed = m.boolean_or("ring_fixed", true);
+  const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
+  m.reject_unknown_keys();
+
+  // The set's geometry last: the mesh analysis is the slow part.
+  PlanetaryGeometry g;
+  try {
+    g = analyse_planetary(ps);
+  } catch (const InputError& e) {
+    m.fail("ring", std::string("sun, planets and ring cannot be assembled: ") + e.what());
+  }
+  if (!g.equally_spaced_assembly) {
+    std::ostringstream msg;
+    msg << "(z_s + z_r)/N = (" << ps.sun.teeth << " + " << ps.ring.teeth << ")/" << ps.planets << " = "
+        << g.assembly_quotient << " is not a whole number: " << ps.planets
+        << " equally spaced planets cannot all mesh with sun and ring (phase mismatch " << g.phase_mismatch_teeth
+        << " teeth); choose N dividing z_s + z_r";
+    m.fail("planets", msg.str());
+  }
+  if (g.adjacency_clearance_m <= 0) {
+    std::ostringstream msg;
+    msg << ps.planets << " planets on a " << g.centre_distance_m * 1e3 << " mm centre distance overlap: "
+        << "their tip circles are " << -g.adjacency_clearance_m * 1e3 << " mm too close";
+    m.fail("planets", msg.str());
+  }
+
+  Expansion e;
+  auto gear_body = [&](const std::string& name, const GearSpec& gear, const Eigen::Vector3d& at, double angle_rad) {
+    physics::BodyDef b;
+    b.name = name;
+    b.gear = gear;
+    b.density_kg_m3 = f.density_kg_m3;
+    b.pose.position_m = at;
+    b.pose.orientation = about_z(angle_rad);
+    e.bodies.push_back(b);
+  };
+  gear_body("sun", ps.sun, origin, 0.0);
+  e.joints.push_back(hinge("sun", "ground", origin));
+  e.joints.back().bearing = floating;
+  e.joints.push_back(hinge("carrier", "ground", origin));  // before the planets it carries
+  physics::BodyDef carrier;
+  carrier.name = "carrier";
+  carrier.mass_kg = carrier_mass_kg;
+  // Shapeless carrier: a thin disc's moments, J_x = J_y = J_z/2, about the sun axis.
+  carrier.principal_inertia_kg_m2 = Eigen::Vector3d(carrier_jz / 2, carrier_jz / 2, carrier_jz);
+  carrier.pose.position_m = origin;
+  for (int k = 0; k < ps.planets; ++k) {
+    const PlanetPlacement& p = g.placements[static_cast<std::size_t>(k)];
+    const GearSpec& gear = *planets[static_cast<std::size_t>(k)];
+    const Eigen::Vector3d centre = origin + g.centre_distance_m * Eigen::Vector3d(std::cos(p.carrier_angle_rad),
+                                                                                  std::sin(p.carrier_angle_rad), 0);
+    // The spin places the planet's tooth 0 as analyse_planetary placed the healthy planet's.
+    const std::string name = "planet_" + std::to_string(k);
+    gear_body(name, gear, centre, p.spin_angle_rad + ps.planet.tooth0_angle_rad - gear.tooth0_angle_rad);
+    e.joints.push_back(hinge(name, "carrier", centre));
+  }
+  gear_body("ring", ps.ring, origin, g.ring_angle_rad);
+  e.bodies.back().fixed = ring_fixed;
+  if (!ring_fixed) e.joints.push_back(hinge("ring", "ground", origin));
+  e.bodies.push_back(carrier);
+  // Ring fixed, sun in, carrier out: θ_sun = (1 + z_r/z_s)·θ_carrier (Willis).
+  if (ring_fixed) e.transmission = physics::TransmissionDef{"sun", "carrier", g.ratio_sun_to_carrier};
+  return e;
+}
+
+namespace {
+
+physics::BodyDef pair_member(const YamlMap& m, const std::string& fallback_name, const fs::path& dir) {
+  physics::BodyDef b;
+  b.name = m.string_or("name", fallback_name);
+  parse_shape_and_mass(m, b, dir);
+  m.reject_unknown_keys();
+  if (!b.gear && !b.mesh) m.fail_here("a pair member needs a shape: gear, gear_from or mesh");
+  if (b.gear && b.gear->kind != GearKind::External)
+    m.fail_here("the pair macro meshes two external gears; place an internal gear with explicit bodies");
+  if (b.mesh && !b.mesh->teeth) m.fail("mesh", "a mesh in a pair needs `teeth` (and tooth0_deg) for its ratio and phasing");
+  return b;
+}
+
+double tooth0_of(const physics::BodyDef& b) {
+  return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad;
+}
+
+}  // namespace
+
+Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
+  physics::BodyDef a = pair_member(m.map("driver"), "driver", dir);
+  physics::BodyDef b = pair_member(m.map("driven"), "driven", dir);
+  if (a.name == b.name) m.fail("driven", "driver and driven have the same name '" + a.name + "'");
+  double centre_distance_m = 0;
+  if (a.gear && b.gear) {
+    // Generated gears: the zero-backlash distance unless given; either way the mesh must work.
+    try {
+      centre_distance_m = m.number_or("centre_distance_m", zero_backlash_centre_distance(*a.gear, *b.gear));
+      analyse_mesh(*a.gear, *b.gear, centre_distance_m);
+    } catch (const InputError& e) {
+      m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
+    }
+  } else {
+    if (!m.has("centre_distance_m"))
+      m.fail("centre_distance_m", "missing (required when a member is a mesh: there is no gear data to derive it)");
+    centre_distance_m = m.number("centre_distance_m");
+  }
+  if (!(centre_distance_m > 0)) m.fail("centre_distance_m", "expected a positive centre distance in m");
+  const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
+  m.reject_unknown_keys();
+
+  // Phasing at the pitch point (+x of the driver, −x of the driven): tooth fractions f (0 at a
+  // tooth centre) of an external mesh satisfy f_driver + f_driven ≡ ½ (see planetary.cpp).
+  const double za = teeth_of(a), zb = teeth_of(b);
+  const double fa = (0.0 - tooth0_of(a)) * za / (2 * kPi);
+  const double fb = 0.5 - (fa - std::floor(fa));
+  const double fb01 = fb - std::floor(fb);
+  const double spin_b = kPi - tooth0_of(b) - fb01 * 2 * kPi / zb;
+  a.pose.position_m = origin;
+  b.pose.position_m = origin + Eigen::Vector3d(centre_distance_m, 0, 0);
+  b.pose.orientation = about_z(spin_b);
+  Expansion e;
+  e.joints = {hinge(a.name, "ground", a.pose.position_m), hinge(b.name, "ground", b.pose.position_m)};
+  // An external pair turns opposite ways: θ_driver = −(z_driven/z_driver)·θ_driven, so with
+  // te = θ_input − ratio·θ_output the ratio is negative.
+  e.transmission = physics::TransmissionDef{a.name, b.name, -zb / za};
+  e.bodies = {a, b};
+  return e;
+}
+
+}  // namespace gearsim::app::scenario_detail

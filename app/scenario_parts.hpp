@@ -1,0 +1,56 @@
+// Internal pieces of the scenario reader (scenario_file.cpp), shared by its macro expansion
+// (scenario_macros.cpp) and its --set overrides (scenario_overrides.cpp). Not a public API:
+// use load_scenario() from scenario_file.hpp.
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/yaml_reader.hpp"
+#include "physics/scenario.hpp"
+
+namespace gearsim::app::scenario_detail {
+
+// Bodies, joints and the ideal transmission a macro expands into.
+struct Expansion {
+  std::vector<physics::BodyDef> bodies;
+  std::vector<physics::JointDef> joints;
+  std::optional<physics::TransmissionDef> transmission;
+};
+
+// True when `key` holds a value; marks the key as known either way (so `key:` left empty, or
+// set to null by an override, means "absent" rather than "unknown key").
+bool given(const YamlMap& m, const std::string& key);
+
+// m[key] as a number > 0, else InputError "expected a positive <what>, got <value>".
+double positive(const YamlMap& m, const std::string& key, const std::string& what);
+
+// `file` as a path relative to `dir` (unless absolute), lexically normalised.
+std::filesystem::path resolve(const std::filesystem::path& dir, const std::string& file);
+
+// [x, y, z] under `key`, or `fallback` when absent.
+Eigen::Vector3d vec3_or(const YamlMap& m, const std::string& key, const Eigen::Vector3d& fallback);
+
+// The shape (gear / gear_from / mesh / none) and mass keys of a body mapping into `body`
+// (body.name must be set). Every body needs a mass, fixed ones too (physics builds them all).
+// Does not reject unknown keys: the caller reads more.
+void parse_shape_and_mass(const YamlMap& m, physics::BodyDef& body, const std::filesystem::path& dir);
+
+// Teeth of a body's shape (gear or mesh with a tooth layout); 0 when unknown.
+int teeth_of(const physics::BodyDef& body);
+
+// The `planetary:` macro: sun, planet_0..planet_{N−1}, ring, carrier and their hinges.
+Expansion expand_planetary(const YamlMap& m, const std::filesystem::path& dir);
+// The `pair:` macro: an external pair, driver at the origin, driven on +x.
+Expansion expand_pair(const YamlMap& m, const std::filesystem::path& dir);
+
+// Applies "a.b[2].c=value" overrides to a parsed tree; InputError naming the override when one
+// is malformed or walks through something that is not a mapping or list.
+void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides, const std::string& file);
+// When `message` concerns a key an override set, the message with " (set by --set 'TEXT')".
+std::string blame_override(const std::string& message, const std::vector<std::string>& overrides);
+
+}  // namespace gearsim::app::scenario_detail
