@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/tolerance_report.hpp"
+#include "geometry/approx_decomposition.hpp"
 #include "geometry/constants.hpp"
 #include "geometry/convex_decomposition.hpp"
 #include "geometry/errors.hpp"
@@ -62,10 +63,20 @@ json inspect(const InspectOptions& o) {
   const PrismRecovery pr = recover_prism(mesh, o.prism_tolerance_um * 1e-6);
   j["prismatic"] = pr.prism.has_value();
   if (!pr.prism) {
+    // No exact decomposition: Bullet's HACD, with its deviation measured against the mesh.
     j["not_prismatic_because"] = pr.reason;
-    j["convex_pieces"] = nullptr;
-    j["max_deviation_um"] = nullptr;
-    j["warnings"] = {"not a prism: no exact decomposition (" + pr.reason + ")"};
+    ApproxDecompositionOptions opt;
+    if (o.teeth > 0) opt.tooth_layout = ToothLayout{o.teeth, o.tooth0_deg * std::numbers::pi / 180.0};
+    opt.sample_spacing_m = o.spacing_mm * 1e-3;
+    const ApproxDecomposition ad = approximate_decomposition(mesh, opt);
+    j["convex_pieces"] = ad.pieces.pieces.size();
+    j["decomposition_method"] = ad.method;
+    j["max_deviation_um"] = ad.deviation_m * 1e6;
+    j["deviation_sample_spacing_mm"] = ad.sample_spacing_m * 1e3;
+    json warnings = json::array();
+    warnings.push_back("not a prism: no exact decomposition (" + pr.reason + ")");
+    for (const std::string& w : ad.warnings) warnings.push_back(w);
+    j["warnings"] = warnings;
     return j;
   }
   DecompositionOptions opt;
