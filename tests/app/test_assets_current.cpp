@@ -21,7 +21,9 @@ std::string bytes(const std::filesystem::path& p) {
 void expect_current(const std::string& spec, const std::string& folder) {
   const std::filesystem::path src(GEARSIM_SOURCE_DIR);
   const GearSetFile f = load_gearset(src / spec);
-  const std::filesystem::path tmp = std::filesystem::temp_directory_path() / "gearsim_assets_check";
+  // One folder per test: ctest runs the tests of this file in parallel.
+  const std::filesystem::path tmp = std::filesystem::temp_directory_path() /
+                                    ("gearsim_assets_check_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   std::filesystem::create_directories(tmp);
   for (const GearSpec& s : f.gears) {
     const GearBody b = make_gear_body(s, f.density_kg_m3);
