@@ -15,6 +15,7 @@
 #include "app/commands.hpp"
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
+#include "physics/step_log.hpp"
 #include "physics/world.hpp"
 
 namespace gearsim::app {
@@ -77,6 +78,9 @@ void run(const RunOptions& o) {
   }
   contacts << '\n';
 
+  std::unique_ptr<physics::StepLog> step_log;
+  if (s.output.per_step_log) step_log = std::make_unique<physics::StepLog>(dir / "steps.h5", world, s.name, dt);
+
   std::vector<double> speed_sum(world.bodies().size(), 0.0);
   long speed_count = 0;
   double max_pen = 0, ramp_end = 0;
@@ -88,6 +92,7 @@ void run(const RunOptions& o) {
   int last_percent = -1;
   for (long i = 1; i <= total; ++i) {
     world.step();
+    if (step_log) step_log->append(world);
     max_pen = std::max(max_pen, world.max_penetration_m());
     bool finite = true;
     for (const physics::BodyState& b : world.bodies()) finite = finite && std::isfinite(b.speed_rad_s) && std::isfinite(b.angle_rad);
@@ -131,6 +136,7 @@ void run(const RunOptions& o) {
   if (tty) std::cerr << "\n";
   state.flush();
   contacts.flush();
+  if (step_log) step_log->close();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   json summary;
   summary["scenario"] = s.name;
@@ -144,11 +150,11 @@ void run(const RunOptions& o) {
   summary["mean_speed_window_s"] = {ramp_end, world.time_s()};
   json bodies = json::object();
   for (std::size_t b = 0; b < world.bodies().size(); ++b)
-    bodies[world.bodies()[b].name] = {{"mean_speed_rad_s", speed_count ? speed_sum[b] / speed_count : 0.0}};
+    bodies[world.bodies()[b].name] = {{"mean_speed_rad_s", speed_count ? speed_sum[b] / static_cast<double>(speed_count) : 0.0}};
   summary["bodies"] = bodies;
   if (s.transmission && speed_count) {
-    const double out = speed_sum[te_out] / speed_count;
-    summary["ratio"] = out != 0 ? (speed_sum[te_in] / speed_count) / out : 0.0;
+    const double out = speed_sum[te_out] / static_cast<double>(speed_count);
+    summary["ratio"] = out != 0 ? (speed_sum[te_in] / static_cast<double>(speed_count)) / out : 0.0;
     summary["ratio_nominal"] = s.transmission->ratio;
   }
   summary["max_penetration_um"] = max_pen * 1e6;
@@ -157,7 +163,14 @@ void run(const RunOptions& o) {
     pairs.push_back({{"a", p.body_a}, {"b", p.body_b}, {"stiffness_N_per_m", p.stiffness_N_per_m}, {"damping_N_s_per_m", p.damping_N_s_per_m}});
   summary["gear_pairs"] = pairs;
   summary["warnings"] = json::array();
-  summary["outputs"] = {"state.csv", "contacts.csv"};
+  json outputs = {"state.csv", "contacts.csv"};
+  if (step_log) {
+    outputs.push_back("steps.h5");
+    const double bytes = static_cast<double>(step_log->bytes_on_disk());
+    summary["step_log_bytes"] = bytes;
+    summary["step_log_bytes_per_sim_second"] = world.time_s() > 0 ? bytes / world.time_s() : 0.0;
+  }
+  summary["outputs"] = outputs;
   std::ofstream(dir / "summary.json") << summary.dump(2) << "\n";
   std::cout << s.name << ": " << status << ", " << world.time_s() << " s simulated in " << std::setprecision(3) << wall
             << " s wall; logs in " << dir.string() << "\n";

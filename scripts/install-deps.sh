@@ -13,6 +13,7 @@ packages=(
   libcli11-dev                            # command line
   nlohmann-json3-dev                      # JSON outputs
   libfftw3-dev                            # spectra
+  libhdf5-dev                             # per-step binary logs (HDF5)
   libpng-dev                              # PNG frames
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev  # MP4 (H.264) video
   ffmpeg                                  # ffprobe, to check written videos in tests
