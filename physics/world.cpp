@@ -333,7 +333,11 @@ double World::max_penetration_m() const { return impl_->max_penetration; }
 
 double World::motor_torque_N_m(const std::string& joint) const {
   for (const JointRec& j : impl_->joints)
-    if (j.def.name == joint) return eig(j.feedback.m_appliedTorqueBodyA).dot(j.axis_world);
+    if (j.def.name == joint) {
+      // The joint's own body is Bullet's body A of a hinge and body B of a bearing constraint.
+      const btVector3& t = j.hinge ? j.feedback.m_appliedTorqueBodyA : j.feedback.m_appliedTorqueBodyB;
+      return eig(t).dot(j.axis_world);
+    }
   throw InputError("no joint named '" + joint + "'");
 }
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "app/scenario_file.hpp"
 #include "physics/step_log.hpp"
-#include "tests/support/paper_scenario.hpp"
 
 namespace gearsim::physics {
 namespace {
@@ -25,7 +25,8 @@ std::vector<double> read_doubles(hid_t file, const char* name, hsize_t* dims_out
 }
 
 TEST(StepLog, HoldsEveryStepAndEveryToothContact) {
-  const Scenario s = test::paper_planetary(50.0, 20.0, 0.002, false);
+  const Scenario s = app::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+                                       {"duration_s=0.0024"});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "gearsim_step_log_test.h5";
   World world(s);
   std::vector<double> forces;  // every contact's normal force, in order

@@ -4,11 +4,19 @@
 
 #include <cmath>
 
+#include "app/scenario_file.hpp"
 #include "physics/world.hpp"
-#include "tests/support/paper_scenario.hpp"
 
 namespace gearsim::physics {
 namespace {
+
+// The paper's healthy scenario (assets/scenarios), shortened and sped down for a unit test: sun
+// at 50 rad/s reached in 2 ms, friction off so that normal forces alone carry the torque.
+Scenario paper(double seconds) {
+  return app::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+                            {"duration_s=" + std::to_string(seconds), "motors[0].target_speed_rad_s=50",
+                             "motors[0].ramp_time_s=0.002", "contact.friction=0"});
+}
 
 // Runs `seconds` and averages over the last half: sun and carrier speed, motor torque, and the
 // torque the sun receives from its tooth contacts (Σ force × base radius).
@@ -34,26 +42,23 @@ Averages run(const Scenario& s, double seconds) {
     for (const ContactSample& c : w.contacts())
       if (c.pair < 3) a.contact_torque += c.normal_force_N * 11.2763e-3;  // sun base radius
   }
-  a.sun_speed /= counted;
-  a.carrier_speed /= counted;
-  a.motor_torque /= counted;
-  a.contact_torque /= counted;
+  const double c = static_cast<double>(counted);
+  a.sun_speed /= c;
+  a.carrier_speed /= c;
+  a.motor_torque /= c;
+  a.contact_torque /= c;
   return a;
 }
 
 TEST(World, CarrierTurnsAtTheWillisRatioOfTheSun) {
-  Scenario s = test::paper_planetary(50.0, 20.0, 0.01, /*floating_sun=*/false);
-  s.motors[0].ramp_time_s = 0.002;
-  const Averages a = run(s, 0.01);
+  const Averages a = run(paper(0.01), 0.01);
   // i = 1 + 96/24 = 5. Over 5 ms the mesh passes ~0.6 tooth per planet: the tooth-pair
   // alternation modulates the speed ratio by ~1 %, so the mean is within 0.5 %.
   EXPECT_NEAR(a.sun_speed / a.carrier_speed, 5.0, 0.025);
 }
 
 TEST(World, MotorTorqueIsCarriedByTheLoggedToothContacts) {
-  Scenario s = test::paper_planetary(50.0, 20.0, 0.01, false);
-  s.motors[0].ramp_time_s = 0.002;
-  const Averages a = run(s, 0.01);
+  const Averages a = run(paper(0.01), 0.01);
   // Steady speed: the motor's torque equals the contacts' torque on the sun, and both equal the
   // carrier load over the ratio, 20/5 = 4 N·m (less the small torque that accelerates nothing).
   // 5 %: inertial torque of speed ripple and the friction-free contact damping.
@@ -62,14 +67,13 @@ TEST(World, MotorTorqueIsCarriedByTheLoggedToothContacts) {
 }
 
 TEST(World, PlanetPinsHoldTheirRadius) {
-  Scenario s = test::paper_planetary(50.0, 20.0, 0.004, false);
-  const Averages a = run(s, 0.004);
+  const Averages a = run(paper(0.004), 0.004);
   // Rigid hinges: the planet centres stay on the 30 mm circle to the solver's accuracy.
   EXPECT_LT(a.max_pin_drift_m, 1e-6);
 }
 
 TEST(World, SameScenarioGivesTheSameStatesBitForBit) {
-  Scenario s = test::paper_planetary(50.0, 20.0, 0.002, true);
+  const Scenario s = paper(0.002);
   World a(s), b(s);
   for (int i = 0; i < 100; ++i) {
     a.step();
