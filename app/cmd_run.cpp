@@ -140,6 +140,8 @@ void run(const RunOptions& o) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   json summary;
   summary["scenario"] = s.name;
+  summary["scenario_file"] = std::filesystem::absolute(o.scenario).lexically_normal().string();
+  summary["overrides"] = o.sets;
   summary["status"] = status;
   if (!error.empty()) summary["error"] = error;
   summary["sim_seconds"] = world.time_s();

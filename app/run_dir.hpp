@@ -1,0 +1,30 @@
+// A finished run's folder (what `gearsim run --out DIR` wrote) as the later commands see it:
+// `analyze`, `report` and `render` reload the scenario the run used from DIR/summary.json
+// (the scenario file's absolute path, the --set overrides and the --duration override) and read
+// its logs. Not the writer: cmd_run.cpp writes the folder.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "physics/scenario.hpp"
+
+namespace gearsim::app {
+
+struct RunDir {
+  std::filesystem::path dir;
+  nlohmann::ordered_json summary;   // DIR/summary.json as written by run (and added to later)
+  physics::Scenario scenario;       // reloaded with the run's overrides
+};
+
+// Reads DIR/summary.json and reloads the scenario it names. InputError (naming the file and key)
+// when DIR is not a run folder, the scenario file moved, or it no longer loads.
+RunDir open_run_dir(const std::filesystem::path& dir);
+
+// Writes DIR/summary.json back (2-space JSON), e.g. after analyze added its keys.
+void save_summary(const RunDir& run);
+
+}  // namespace gearsim::app
