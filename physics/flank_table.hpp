@@ -23,6 +23,8 @@ class FlankTable {
 
   int teeth() const { return layout_.teeth; }
   bool internal() const { return internal_; }
+  // Distinct tooth shapes the table holds (identical teeth share one), for memory accounting.
+  int distinct_teeth() const { return static_cast<int>(ccw_.size()) / samples_; }
   double pitch_angle_rad() const { return pitch_; }
   double tooth_angle_rad(int tooth) const { return layout_.tooth0_angle_rad + tooth * pitch_; }
   // Radial extent of the teeth: root to tip (external) or tip to root (internal), m.
@@ -45,6 +47,23 @@ class FlankTable {
     Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // outward flank normal, gear frame
   };
   Probe probe(const Eigen::Vector2d& p) const;
+  // The same answer without the normal and with the depth to first order: the angular offset
+  // from the flank at the point's own radius times r·cos ψ (ψ: the flank's angle to the radial).
+  // Its error is about depth²·curvature (1e-9 m at 1 µm, 5 µm at a 100 µm gap): for searching
+  // the deepest point, three times cheaper than probe() (no trigonometry after one atan2).
+  Probe probe_depth(const Eigen::Vector2d& p) const;
+
+  // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
+  // m; NaN where the flank has no material), kept so that probing a flank costs no trigonometry.
+  static constexpr int kProbeRadii = 16;
+  const Eigen::Vector2d& probe_point(int tooth, Flank flank, int i) const {
+    return probe_points_[(static_cast<std::size_t>(tooth) * 2 + (flank == Flank::Cw)) * kProbeRadii + i];
+  }
+  double probe_radius(int i) const { return r_min_ + i * (r_max_ - r_min_) / (kProbeRadii - 1); }
+  // Centre of a tooth's radial extent on its centre line (gear frame), m, and the radius of a
+  // circle about it that holds the whole tooth.
+  const Eigen::Vector2d& tooth_centre(int tooth) const { return tooth_centres_[tooth]; }
+  double tooth_bound_radius_m() const { return tooth_bound_; }
 
   // A point on a flank at radius r (gear frame), m.
   Eigen::Vector2d flank_point(int tooth, Flank flank, double r) const;
@@ -57,13 +76,28 @@ class FlankTable {
 
  private:
   double sample(const std::vector<double>& table, int tooth, double r, double* slope) const;
+  // Where a point lies: its radius, the tooth and flank it faces, and its angle relative to that
+  // tooth's centre line; shared by probe() and probe_depth().
+  void share_identical_teeth();
+  // A tooth number taken modulo the tooth count (k within a few turns of the range).
+  int wrap_tooth(int k) const {
+    while (k < 0) k += layout_.teeth;
+    while (k >= layout_.teeth) k -= layout_.teeth;
+    return k;
+  }
+  struct Located;
+  Located locate(const Eigen::Vector2d& p) const;
 
   ToothLayout layout_;
   bool internal_;
   double pitch_;
-  double r_min_, r_max_, dr_;
+  double r_min_, r_max_, dr_, inv_dr_, inv_pitch_;
   int samples_;
-  std::vector<double> ccw_, cw_;  // [tooth * samples + i], rad relative to the tooth centre
+  std::vector<double> ccw_, cw_;  // [row * samples + i], rad relative to the tooth centre
+  std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
+  std::vector<Eigen::Vector2d> probe_points_;  // [(tooth * 2 + cw) * kProbeRadii + i]
+  std::vector<Eigen::Vector2d> tooth_centres_;
+  double tooth_bound_ = 0;
 };
 
 }  // namespace gearsim::physics

@@ -2,7 +2,8 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
-#include <map>
+#include <algorithm>
+#include <array>
 #include <numbers>
 #include <tuple>
 
@@ -11,44 +12,51 @@ namespace {
 
 using Eigen::Vector2d;
 
-// Golden-section steps refining the deepest point between two flank samples: the bracket
-// shrinks by 0.618^20 ≈ 7e-5 of two sample spacings (≈ 5 nm at 64 samples over 2.25 mm).
-constexpr int kRefineIterations = 20;
+// Golden-section steps refining the deepest point where a parabola cannot (a maximum at the end
+// of the sampled flank: a tip corner): the bracket shrinks by 0.618^20 ≈ 7e-5 of two sample
+// spacings (≈ 10 nm at 16 samples over 2.25 mm).
+constexpr int kGoldenIterations = 20;
+
+// Parabola fits refining an interior maximum, each on a bracket kParabolaShrink times narrower
+// than the last: the depth is smooth and flat at its maximum, so three fits (brackets of 150,
+// 19 and 2.3 µm on a module-1 tooth) place it to a few nm along the flank.
+constexpr int kParabolaFits = 3;
+constexpr double kParabolaShrink = 1.0 / 8;
 
 // Gap below which a flank's coarse maximum is refined, m. Normally 5 µm: the parabola between
 // samples 140 µm apart (16 samples over a 2.25 mm module-1 tooth) rises at most ~1.2 µm at the
 // sun–planet curvature; 5 µm also covers module-2 teeth with 16 samples.
 constexpr double kRefineWithin_m = 5e-6;
 
+constexpr double kNone = -1e300;
+
 struct Frame {
   const FlankTable& table;
   PlanarPose pose;
-  Vector2d to_world(const Vector2d& p) const { return pose.centre_m + Eigen::Rotation2Dd(pose.angle_rad) * p; }
-  Vector2d to_local(const Vector2d& w) const { return Eigen::Rotation2Dd(-pose.angle_rad) * (w - pose.centre_m); }
-  Vector2d dir_to_world(const Vector2d& d) const { return Eigen::Rotation2Dd(pose.angle_rad) * d; }
+  Eigen::Rotation2Dd rot{pose.angle_rad};
+  Eigen::Matrix2d to_world_m = rot.toRotationMatrix(), to_local_m = to_world_m.transpose();
+  Vector2d to_world(const Vector2d& p) const { return pose.centre_m + to_world_m * p; }
+  Vector2d to_local(const Vector2d& w) const { return to_local_m * (w - pose.centre_m); }
+  Vector2d dir_to_world(const Vector2d& d) const { return to_world_m * d; }
 };
 
 // Could tooth k of `x` reach the toothed annulus of `y`? Bounding circle of the tooth against
 // the annulus [r_min, r_max] of y (or y's whole disc beyond it on its body side).
 bool tooth_near(const Frame& x, int k, const Frame& y) {
-  const double rmid = 0.5 * (x.table.r_min_m() + x.table.r_max_m());
-  const double half = 0.5 * (x.table.r_max_m() - x.table.r_min_m());
-  const double wide = x.table.r_max_m() * x.table.pitch_angle_rad() * 0.5;
-  const double radius = std::sqrt(half * half + wide * wide);
-  const double a = x.table.tooth_angle_rad(k);
-  const Vector2d c = x.to_world(rmid * Vector2d(std::cos(a), std::sin(a)));
-  const double d = (c - y.pose.centre_m).norm();
-  return d - radius < y.table.r_max_m() && d + radius > y.table.r_min_m();
+  const double radius = x.table.tooth_bound_radius_m();
+  const double d2 = (x.to_world(x.table.tooth_centre(k)) - y.pose.centre_m).squaredNorm();
+  const double outer = y.table.r_max_m() + radius, inner = y.table.r_min_m() - radius;
+  return d2 < outer * outer && (inner < 0 || d2 > inner * inner);
 }
 
 struct Hit {
-  double depth = -1e300;
+  double depth = kNone;
   Vector2d point, normal_into_x;  // world: the probed point and the surface normal of y there
   int tooth_y = -1;
   Flank flank_y = Flank::Ccw;
 };
 
-// Depth of x's flank point at radius r inside y, in world terms.
+// Exact depth of x's flank point at radius r inside y, with the contact geometry, in world terms.
 Hit probe_at(const Frame& x, int k, Flank f, double r, const Frame& y) {
   Hit h;
   const Vector2d w = x.to_world(x.table.flank_point(k, f, r));
@@ -62,37 +70,43 @@ Hit probe_at(const Frame& x, int k, Flank f, double r, const Frame& y) {
   return h;
 }
 
-// The deepest point of one flank of x's tooth k inside y: sampled, then refined by a parabola
-// through the best sample and its neighbours.
-Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y, int samples) {
-  const double r0 = x.table.r_min_m(), r1 = x.table.r_max_m();
-  const double step = (r1 - r0) / (samples - 1);
-  std::vector<double> depth(samples, -1e300);
-  Hit best;
-  int best_i = -1;
-  for (int i = 0; i < samples; ++i) {
-    const double r = r0 + i * step;
-    if (std::isnan(x.table.flank_angle(k, f, r))) continue;
-    const Hit h = probe_at(x, k, f, r, y);
-    depth[i] = h.depth;
-    if (h.depth > best.depth) {
-      best = h;
-      best_i = i;
-    }
-  }
-  // Refine only where contact is possible: between samples the depth can exceed the best
-  // sample by at most κ·(spacing/2)²/2 (κ: relative curvature of the flanks).
-  if (best_i < 0 || best.depth < -kRefineWithin_m) return best;
-  // Golden-section search for the maximum between the best sample's neighbours: the depth is
-  // flat at its maximum, but where it sits along the flank fixes the contact point and normal.
-  double lo = r0 + std::max(best_i - 1, 0) * step, hi = r0 + std::min(best_i + 1, samples - 1) * step;
-  constexpr double kGolden = 0.6180339887498949;
-  auto depth_at = [&](double r) {
-    return std::isnan(x.table.flank_angle(k, f, r)) ? -1e300 : probe_at(x, k, f, r, y).depth;
+// First-order depth of a point of x (gear frame of x) inside y, kNone where there is nothing to
+// measure.
+double depth_of(const Frame& x, const Vector2d& p_x, const Frame& y) {
+  const FlankTable::Probe p = y.table.probe_depth(y.to_local(x.to_world(p_x)));
+  return (p.inside || p.has_flank) ? p.depth_m : kNone;
+}
+
+// Radius of the deepest point near r_b, the best of samples spaced `step` apart whose
+// neighbours' depths are d_lo and d_hi: successive parabola fits on shrinking brackets.
+double parabola_refine(const Frame& x, int k, Flank f, const Frame& y, double r, double step, double d_lo, double d0,
+                       double d_hi) {
+  auto depth_at = [&](double rr) {
+    return std::isnan(x.table.flank_angle(k, f, rr)) ? kNone : depth_of(x, x.table.flank_point(k, f, rr), y);
   };
+  double h = step;
+  for (int fit = 0; fit < kParabolaFits; ++fit) {
+    const double curvature = d_lo - 2 * d0 + d_hi;
+    if (!(curvature < 0)) break;  // not a maximum (flat within rounding): keep the best sample
+    r += std::clamp(0.5 * h * (d_lo - d_hi) / curvature, -h, h);
+    if (fit + 1 == kParabolaFits) break;
+    h *= kParabolaShrink;
+    d_lo = depth_at(r - h), d0 = depth_at(r), d_hi = depth_at(r + h);
+    if (d_lo <= kNone || d0 <= kNone || d_hi <= kNone) break;
+  }
+  return r;
+}
+
+// Radius of the deepest point in [lo, hi] by golden-section search: for a maximum at the end of
+// the sampled flank, where the depth is not smooth.
+double golden_refine(const Frame& x, int k, Flank f, const Frame& y, double lo, double hi) {
+  auto depth_at = [&](double r) {
+    return std::isnan(x.table.flank_angle(k, f, r)) ? kNone : depth_of(x, x.table.flank_point(k, f, r), y);
+  };
+  constexpr double kGolden = 0.6180339887498949;
   double c = hi - kGolden * (hi - lo), d = lo + kGolden * (hi - lo);
   double fc = depth_at(c), fd = depth_at(d);
-  for (int it = 0; it < kRefineIterations; ++it) {
+  for (int it = 0; it < kGoldenIterations; ++it) {
     if (fc > fd) {
       hi = d, d = c, fd = fc;
       c = hi - kGolden * (hi - lo), fc = depth_at(c);
@@ -101,19 +115,41 @@ Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y, int samples
       d = lo + kGolden * (hi - lo), fd = depth_at(d);
     }
   }
-  const double r_best = fc > fd ? c : d;
-  if (std::isnan(x.table.flank_angle(k, f, r_best))) return best;
+  return fc > fd ? c : d;
+}
+
+// The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
+// first order, the best refined, and the result measured exactly. A flank whose best sample
+// stays more than kRefineWithin_m clear of y returns no hit.
+Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y) {
+  constexpr int n = FlankTable::kProbeRadii;
+  std::array<double, n> depth;
+  int best_i = -1;
+  for (int i = 0; i < n; ++i) {
+    const Vector2d& p = x.table.probe_point(k, f, i);
+    depth[i] = std::isnan(p.x()) ? kNone : depth_of(x, p, y);
+    if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
+  }
+  if (best_i < 0 || depth[best_i] < -kRefineWithin_m) return {};
+  const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
+  const double r_b = x.table.probe_radius(best_i);
+  const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
+  double r_best = interior ? parabola_refine(x, k, f, y, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1])
+                           : golden_refine(x, k, f, y, std::max(r_b - step, x.table.probe_radius(0)),
+                                           std::min(r_b + step, x.table.probe_radius(n - 1)));
+  if (std::isnan(x.table.flank_angle(k, f, r_best))) r_best = r_b;
   const Hit refined = probe_at(x, k, f, r_best, y);
-  return refined.depth >= best.depth ? refined : best;
+  if (refined.depth > kNone) return refined;
+  return probe_at(x, k, f, r_b, y);
 }
 
 }  // namespace
 
 std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb,
-                                              const PlanarPose& pb, const ToothContactOptions& o) {
+                                              const PlanarPose& pb) {
   const Frame a{ta, pa}, b{tb, pb};
-  // Keyed by (tooth_a, tooth_b, flank of a): the deepest of both probing directions.
-  std::map<std::tuple<int, int, int>, ToothContact> best;
+  // One per (tooth_a, tooth_b, flank of a): the deepest of both probing directions.
+  std::vector<ToothContact> best;
   auto keep = [&](int tooth_a, int tooth_b, Flank flank_a, const Hit& h, bool x_is_a) {
     if (h.depth <= 0) return;
     ToothContact c;
@@ -127,9 +163,10 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
     // The probed point lies on x's surface, y's surface lies a depth further along y's outward
     // normal: the overlap's mid-point is half-way.
     c.point_m = h.point + 0.5 * h.depth * h.normal_into_x;
-    auto key = std::make_tuple(tooth_a, tooth_b, static_cast<int>(flank_a));
-    auto it = best.find(key);
-    if (it == best.end() || it->second.depth_m < c.depth_m) best[key] = c;
+    auto same = [&](const ToothContact& o) { return o.tooth_a == tooth_a && o.tooth_b == tooth_b && o.flank_a == flank_a; };
+    auto it = std::find_if(best.begin(), best.end(), same);
+    if (it == best.end()) best.push_back(c);
+    else if (it->depth_m < c.depth_m) *it = c;
   };
   for (int pass = 0; pass < 2; ++pass) {
     const Frame& x = pass == 0 ? a : b;
@@ -137,7 +174,7 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
     for (int k = 0; k < x.table.teeth(); ++k) {
       if (!tooth_near(x, k, y)) continue;
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
-        const Hit h = deepest_on_flank(x, k, f, y, o.flank_samples);
+        const Hit h = deepest_on_flank(x, k, f, y);
         if (h.tooth_y < 0) continue;
         // Name the contact by a's tooth and the flank of a that is touched.
         if (pass == 0) keep(k, h.tooth_y, f, h, true);
@@ -145,9 +182,12 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
       }
     }
   }
-  std::vector<ToothContact> out;
-  for (const auto& [key, c] : best) out.push_back(c);
-  return out;
+  // In a fixed order (as the map keyed by teeth and flank gave before), independent of probing order.
+  std::sort(best.begin(), best.end(), [](const ToothContact& u, const ToothContact& v) {
+    return std::make_tuple(u.tooth_a, u.tooth_b, static_cast<int>(u.flank_a)) <
+           std::make_tuple(v.tooth_a, v.tooth_b, static_cast<int>(v.flank_a));
+  });
+  return best;
 }
 
 }  // namespace gearsim::physics

@@ -26,13 +26,8 @@ struct ToothContact {
   double depth_m = 0;                   // penetration, > 0
 };
 
-struct ToothContactOptions {
-  int flank_samples = 16;  // radial samples per flank probed against the other gear (then refined)
-};
-
 // All tooth-pair contacts between gear a and gear b, at most one per (tooth_a, tooth_b).
 std::vector<ToothContact> find_tooth_contacts(const FlankTable& a, const PlanarPose& pa,
-                                              const FlankTable& b, const PlanarPose& pb,
-                                              const ToothContactOptions& options = {});
+                                              const FlankTable& b, const PlanarPose& pb);
 
 }  // namespace gearsim::physics

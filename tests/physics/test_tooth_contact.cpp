@@ -160,3 +160,25 @@ TEST(ToothContact, SingleFlankErrorOpensAGapOfItsSize) {
 
 }  // namespace
 }  // namespace gearsim::physics
+
+namespace gearsim::physics {
+namespace {
+
+TEST(FlankTable, IdenticalTeethShareOneShapeAndAnErrorKeepsItsOwn) {
+  // A generated gear's teeth are rotated copies of one tooth: one shape in the table. A flank
+  // error on tooth 0 makes that tooth a second shape; probing it still sees the error.
+  const GearSpec healthy = fine(test::external_gear(36, 0.010));
+  GearSpec faulty = healthy;
+  faulty.errors.flank_offsets.push_back({0, Flank::Ccw, -43e-6});
+  const FlankTable th = table_of(healthy), tf = table_of(faulty);
+  EXPECT_EQ(th.distinct_teeth(), 1);
+  EXPECT_EQ(tf.distinct_teeth(), 2);
+  const double r = 18e-3;  // reference radius: on the involute
+  const double arc = r * (th.flank_angle(0, Flank::Ccw, r) - tf.flank_angle(0, Flank::Ccw, r));
+  // 43 µm along the normal is 43/cos(20°) µm along the reference circle (normal = arc·cos α there).
+  EXPECT_NEAR(arc, 43e-6 / std::cos(20.0 * kPi / 180), 0.05e-6);
+  EXPECT_NEAR(th.flank_angle(5, Flank::Ccw, r), tf.flank_angle(5, Flank::Ccw, r), 1e-12);
+}
+
+}  // namespace
+}  // namespace gearsim::physics
