@@ -15,6 +15,7 @@
 #include "app/commands.hpp"
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
+#include "physics/power_balance.hpp"
 #include "physics/step_log.hpp"
 #include "physics/world.hpp"
 
@@ -81,6 +82,8 @@ void run(const RunOptions& o) {
   std::unique_ptr<physics::StepLog> step_log;
   if (s.output.per_step_log) step_log = std::make_unique<physics::StepLog>(dir / "steps.h5", world, s.name, dt);
 
+  const double setup_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  physics::PowerBalance power;
   std::vector<double> speed_sum(world.bodies().size(), 0.0);
   long speed_count = 0;
   double max_pen = 0, ramp_end = 0;
@@ -104,6 +107,7 @@ void run(const RunOptions& o) {
     }
     if (world.time_s() >= ramp_end) {
       for (std::size_t b = 0; b < world.bodies().size(); ++b) speed_sum[b] += world.bodies()[b].speed_rad_s;
+      power.add(world.power(), world.time_s());
       ++speed_count;
     }
     if (i % every == 0) {
@@ -160,6 +164,18 @@ void run(const RunOptions& o) {
     summary["ratio_nominal"] = s.transmission->ratio;
   }
   summary["max_penetration_um"] = max_pen * 1e6;
+  if (power.samples() > 1)
+    summary["power_W"] = {{"window_s", {ramp_end, world.time_s()}},
+                          {"motor_input", power.motor_W()},
+                          {"load_output", -power.load_W()},
+                          {"contact_dissipation", -power.contact_W()},
+                          {"joint_dissipation", -power.joint_W()},
+                          {"kinetic_energy_rate", power.kinetic_rate_W()},
+                          {"imbalance_fraction", power.imbalance_fraction()}};
+  summary["wall_profile_s"] = {{"setup", setup_wall},
+                               {"tooth_contact", world.profile().tooth_contact_s},
+                               {"bullet_solver_and_measuring", world.profile().step_total_s - world.profile().tooth_contact_s},
+                               {"logging_and_output", wall - setup_wall - world.profile().step_total_s}};
   json pairs = json::array();
   for (const physics::GearPairInfo& p : world.gear_pairs())
     pairs.push_back({{"a", p.body_a}, {"b", p.body_b}, {"stiffness_N_per_m", p.stiffness_N_per_m}, {"damping_N_s_per_m", p.damping_N_s_per_m}});

@@ -3,6 +3,7 @@
 #include <btBulletDynamicsCommon.h>
 #include <BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h>
 
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -26,6 +27,9 @@ constexpr int kShapelessGroup = 1 << 8;
 // A Bullet manifold holds at most 4 points: enough for one point per tooth pair at contact
 // ratios below 4. Extra pairs (never seen in a healthy mesh) are dropped and counted.
 constexpr int kMaxPointsPerPair = 4;
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 Eigen::Vector3d eig(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
@@ -72,10 +76,13 @@ struct World::Impl {
   long steps = 0;
   double max_penetration = 0;
   long dropped_points = 0;
+  World::Profile profile;
+  PowerFlows power;
 
   void generate_contacts();
   void apply_motors_and_loads();
   void measure();
+  void measure_power();
 };
 
 namespace {
@@ -92,6 +99,7 @@ PlanarPose planar_pose(const BuiltBody& b) {
 }  // namespace
 
 void World::Impl::generate_contacts() {
+  const auto start = Clock::now();
   max_penetration = 0;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     PairRec& pr = pairs[p];
@@ -128,6 +136,7 @@ void World::Impl::generate_contacts() {
       pr.current.push_back(c);
     }
   }
+  profile.tooth_contact_s += seconds_since(start);
 }
 
 void World::Impl::apply_motors_and_loads() {
@@ -318,11 +327,60 @@ World::~World() {
 
 void World::step() {
   Impl& m = *impl_;
+  const auto start = Clock::now();
   m.apply_motors_and_loads();
   m.world.stepSimulation(m.scenario.solver.time_step_s, 0, m.scenario.solver.time_step_s);
   m.time += m.scenario.solver.time_step_s;
   ++m.steps;
   m.measure();
+  m.measure_power();
+  m.profile.step_total_s += seconds_since(start);
+}
+
+const World::Profile& World::profile() const { return impl_->profile; }
+const PowerFlows& World::power() const { return impl_->power; }
+
+void World::Impl::measure_power() {
+  const double dt = scenario.solver.time_step_s;
+  PowerFlows pw;
+  for (const BuiltBody& b : bodies) {
+    const btRigidBody& r = *b.rigid;
+    if (r.getInvMass() == 0) continue;
+    const btVector3 v = r.getLinearVelocity(), w = r.getAngularVelocity();
+    const btMatrix3x3 inertia = r.getInvInertiaTensorWorld().inverse();
+    pw.kinetic_J += 0.5 * v.dot(v) / r.getInvMass() + 0.5 * w.dot(inertia * w);
+  }
+  for (const JointRec& j : joints) {
+    const btRigidBody& a = j.constraint->getRigidBodyA();
+    const btRigidBody& b = j.constraint->getRigidBodyB();
+    // The whole constraint's power on both bodies (force at the centre of mass, torque about it).
+    const double total = j.feedback.m_appliedForceBodyA.dot(a.getLinearVelocity()) +
+                         j.feedback.m_appliedTorqueBodyA.dot(a.getAngularVelocity()) +
+                         j.feedback.m_appliedForceBodyB.dot(b.getLinearVelocity()) +
+                         j.feedback.m_appliedTorqueBodyB.dot(b.getAngularVelocity());
+    const double speed = states[static_cast<std::size_t>(j.body)].speed_rad_s;
+    double motor = 0;
+    if (j.motor) {
+      const btVector3& t = j.hinge ? j.feedback.m_appliedTorqueBodyA : j.feedback.m_appliedTorqueBodyB;
+      motor = eig(t).dot(j.axis_world) * speed;
+    }
+    pw.motor_W += motor;
+    pw.joint_W += total - motor;
+    if (j.load) pw.load_W += (j.load->constant_torque_N_m - j.load->viscous_N_m_s_per_rad * speed) * speed;
+  }
+  for (const PairRec& pr : pairs) {
+    const btRigidBody &a = *bodies[pr.a].rigid, &b = *bodies[pr.b].rigid;
+    for (int k = 0; k < pr.manifold->getNumContacts(); ++k) {
+      const btManifoldPoint& pt = pr.manifold->getContactPoint(k);
+      // Impulses act on a along +normal (+friction directions) and on b the opposite way.
+      const btVector3 impulse = pt.m_normalWorldOnB * pt.m_appliedImpulse + pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
+                                pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
+      const btVector3 va = a.getVelocityInLocalPoint(pt.m_positionWorldOnA - a.getCenterOfMassPosition());
+      const btVector3 vb = b.getVelocityInLocalPoint(pt.m_positionWorldOnB - b.getCenterOfMassPosition());
+      pw.contact_W += impulse.dot(va - vb) / dt;
+    }
+  }
+  power = pw;
 }
 
 double World::time_s() const { return impl_->time; }

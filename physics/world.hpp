@@ -30,6 +30,17 @@ struct ContactSample {
   double friction_force_N = 0;  // magnitude of the lateral impulses / dt
 };
 
+// Power flows of the last step, W (forces from the solver's impulses / dt, velocities after the
+// step). Over a steady window: motor = −load + dissipation + d(kinetic energy)/dt, which is the
+// power balance a run reports.
+struct PowerFlows {
+  double motor_W = 0;     // delivered by the velocity motors (torque × joint speed)
+  double load_W = 0;      // delivered by the load torques (< 0 for a brake)
+  double contact_W = 0;   // delivered by tooth contacts (< 0: friction and contact damping dissipate)
+  double joint_W = 0;     // delivered by joints apart from their motors (< 0: bearing damping)
+  double kinetic_J = 0;   // kinetic energy of all bodies, J
+};
+
 struct GearPairInfo {
   std::string body_a, body_b;
   double stiffness_N_per_m = 0;  // per tooth pair
@@ -55,6 +66,15 @@ class World {
   double motor_torque_N_m(const std::string& joint) const;
   // Deepest tooth penetration in the last step, m.
   double max_penetration_m() const;
+
+  // Where the wall time of step() went since construction, s: finding tooth contacts, and
+  // everything else Bullet does (constraint solve, integration) plus measuring.
+  struct Profile {
+    double tooth_contact_s = 0;
+    double step_total_s = 0;
+  };
+  const Profile& profile() const;
+  const PowerFlows& power() const;
 
   struct Impl;
 
