@@ -32,6 +32,7 @@ struct Column {
     H5Pset_chunk(props, rank, chunk);
     H5Pset_shuffle(props);
     H5Pset_deflate(props, 1);
+    H5Pset_obj_track_times(props, false);  // no timestamps: the same run gives the same bytes
     dataset = H5Dcreate2(parent, name, memtype, space, H5P_DEFAULT, props, H5P_DEFAULT);
     H5Pclose(props);
     H5Sclose(space);
@@ -129,7 +130,10 @@ StepLog::StepLog(const std::filesystem::path& path, const World& world, const st
   std::string pairs;
   for (const GearPairInfo& p : world.gear_pairs()) pairs += (pairs.empty() ? "" : ",") + p.body_a + "__" + p.body_b;
   string_attribute(m.file, "pairs", pairs);
-  m.contacts_group = H5Gcreate2(m.file, "contacts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t group_props = H5Pcreate(H5P_GROUP_CREATE);
+  H5Pset_obj_track_times(group_props, false);
+  m.contacts_group = H5Gcreate2(m.file, "contacts", H5P_DEFAULT, group_props, H5P_DEFAULT);
+  H5Pclose(group_props);
   for (std::size_t c = 0; c < m.dcol.size(); ++c) m.dcol[c].create(m.contacts_group, Impl::kDoubleNames[c], H5T_NATIVE_DOUBLE, 1);
   for (std::size_t c = 0; c < m.icol.size(); ++c) m.icol[c].create(m.contacts_group, Impl::kIntNames[c], H5T_NATIVE_INT64, 1);
 }
