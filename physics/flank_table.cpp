@@ -117,6 +117,7 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
       }
     }
   share_identical_teeth();
+  build_probe_knots();
   probe_points_.resize(static_cast<std::size_t>(layout.teeth) * 2 * kProbeRadii);
   tooth_centres_.resize(static_cast<std::size_t>(layout.teeth));
   const double r_mid = 0.5 * (r_min_ + r_max_), half = 0.5 * (r_max_ - r_min_);
@@ -155,6 +156,7 @@ void FlankTable::share_identical_teeth() {
     while (r < kept.size() && !(same(ccw_, kept[r], t) && same(cw_, kept[r], t))) ++r;
     if (r == kept.size()) {
       kept.push_back(t);
+      tooth_of_row_.push_back(static_cast<int>(t));
       ccw.insert(ccw.end(), ccw_.begin() + static_cast<long>(t * n), ccw_.begin() + static_cast<long>((t + 1) * n));
       cw.insert(cw.end(), cw_.begin() + static_cast<long>(t * n), cw_.begin() + static_cast<long>((t + 1) * n));
     }
@@ -193,99 +195,6 @@ double FlankTable::flank_slope(int tooth, Flank flank, double r) const {
 Eigen::Vector2d FlankTable::flank_point(int tooth, Flank flank, double r) const {
   const double a = tooth_angle_rad(tooth) + flank_angle(tooth, flank, r);
   return r * Eigen::Vector2d(std::cos(a), std::sin(a));
-}
-
-struct FlankTable::Located {
-  enum Kind { Free, Body, NoMaterial, Teeth } kind = Free;
-  double r = 0;
-  int tooth = -1;
-  Flank flank = Flank::Ccw;
-  bool inside = false;
-  double rel = 0;  // angle from the chosen tooth's centre line, rad
-};
-
-FlankTable::Located FlankTable::locate(const Eigen::Vector2d& p) const {
-  Located l;
-  l.r = p.norm();
-  // Beyond the teeth: free (no atan2 needed), or solid body (below an external root, outside an
-  // internal root).
-  if (internal_ ? l.r < r_min_ : l.r > r_max_) return l;
-  const double phi = std::atan2(p.y(), p.x()) - layout_.tooth0_angle_rad;
-  const double k = std::nearbyint(phi * inv_pitch_);
-  l.tooth = wrap_tooth(static_cast<int>(k));
-  double rel = phi - k * pitch_;  // within half a pitch of the tooth
-  if (internal_ ? l.r > r_max_ : l.r < r_min_) {
-    l.kind = Located::Body;
-    l.inside = true;
-    return l;
-  }
-  const double a_ccw = sample(ccw_, l.tooth, l.r, nullptr);
-  const double a_cw = sample(cw_, l.tooth, l.r, nullptr);
-  if (std::isnan(a_ccw) || std::isnan(a_cw)) {
-    l.kind = Located::NoMaterial;
-    return l;
-  }
-  l.kind = Located::Teeth;
-  l.inside = rel > a_cw && rel < a_ccw;
-  // Inside: the nearer flank of this tooth. Outside (in a tooth space): the flank of this tooth
-  // that faces the point, or the facing flank of the neighbour if that one is nearer in angle;
-  // the depth then comes out negative (a gap), so a prober sees the approach, not only overlap.
-  bool to_ccw = l.inside ? a_ccw - rel < rel - a_cw : rel >= a_ccw;
-  if (!l.inside) {
-    const int next = wrap_tooth(l.tooth + (to_ccw ? 1 : -1));
-    const double neighbour = sample(to_ccw ? cw_ : ccw_, next, l.r, nullptr) + (to_ccw ? pitch_ : -pitch_);
-    const double own_gap = to_ccw ? rel - a_ccw : a_cw - rel;
-    const double next_gap = to_ccw ? neighbour - rel : rel - neighbour;
-    if (!std::isnan(neighbour) && next_gap < own_gap) {
-      l.tooth = next;
-      rel += to_ccw ? -pitch_ : pitch_;
-      to_ccw = !to_ccw;
-    }
-  }
-  l.flank = to_ccw ? Flank::Ccw : Flank::Cw;
-  l.rel = rel;
-  return l;
-}
-
-FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
-  const Located l = locate(p);
-  Probe out;
-  out.tooth = l.tooth;
-  out.flank = l.flank;
-  out.inside = l.inside;
-  if (l.kind == Located::Body) {
-    out.depth_m = internal_ ? l.r - r_max_ : r_min_ - l.r;
-    out.normal = (internal_ ? -1.0 : 1.0) * p / l.r;
-  }
-  if (l.kind != Located::Teeth) return out;
-  double slope = 0;
-  const double a = sample(l.flank == Flank::Ccw ? ccw_ : cw_, l.tooth, l.r, &slope);
-  const double offset = l.flank == Flank::Ccw ? a - l.rel : l.rel - a;  // > 0 inside
-  out.depth_m = l.r * offset / std::sqrt(1 + l.r * l.r * slope * slope);
-  out.has_flank = true;
-  return out;
-}
-
-FlankTable::Probe FlankTable::probe(const Eigen::Vector2d& p) const {
-  Probe out = probe_depth(p);
-  if (!out.has_flank) return out;
-  // Foot of the normal from p on the flank: start at the flank point of the same radius, slide
-  // along its tangent to the projection of p, and take the flank point at that radius. Two
-  // passes leave an error third-order in the depth (the first pass alone biases where along the
-  // flank the deepest point appears by µm, which tilts the normal).
-  double rf = p.norm();
-  FlankFrame ff = flank_frame(out.tooth, out.flank, rf);
-  for (int pass = 0; pass < 2; ++pass) {
-    const Eigen::Vector2d foot = ff.point + (p - ff.point).dot(ff.tangent) * ff.tangent;
-    const double r_next = foot.norm();
-    if (r_next <= r_min_ || r_next >= r_max_) break;
-    const FlankFrame next = flank_frame(out.tooth, out.flank, r_next);
-    if (std::isnan(next.point.x())) break;
-    ff = next;
-  }
-  out.depth_m = (ff.point - p).dot(ff.normal);
-  out.normal = ff.normal;
-  return out;
 }
 
 FlankTable::FlankFrame FlankTable::flank_frame(int tooth, Flank flank, double r) const {

@@ -79,6 +79,17 @@ class FlankTable {
   // Where a point lies: its radius, the tooth and flank it faces, and its angle relative to that
   // tooth's centre line; shared by probe() and probe_depth().
   void share_identical_teeth();
+  void build_probe_knots();
+  // The probe_depth() path: per shared row, flank and radius sample, the flank direction and
+  // cos ψ, so that a probe needs no trigonometry (see flank_probe.cpp).
+  struct Knot {
+    double cos_a, sin_a;  // direction of the flank point at this radius, tooth frame (NaN: no material)
+    double cos_psi;       // cosine of the flank's angle to the radial: 1/√(1 + (r·dθ/dr)²)
+  };
+  const Knot* knots(int tooth, Flank flank) const {
+    return (flank == Flank::Ccw ? ccw_knots_ : cw_knots_).data() +
+           static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
+  }
   // A tooth number taken modulo the tooth count (k within a few turns of the range).
   int wrap_tooth(int k) const {
     while (k < 0) k += layout_.teeth;
@@ -95,6 +106,10 @@ class FlankTable {
   int samples_;
   std::vector<double> ccw_, cw_;  // [row * samples + i], rad relative to the tooth centre
   std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
+  std::vector<int> tooth_of_row_;  // a tooth of each row
+  std::vector<Knot> ccw_knots_, cw_knots_;      // [row * samples + i]
+  std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle
+  Eigen::Vector2d pitch_axis_;                  // (cos, sin) of the pitch angle
   std::vector<Eigen::Vector2d> probe_points_;  // [(tooth * 2 + cw) * kProbeRadii + i]
   std::vector<Eigen::Vector2d> tooth_centres_;
   double tooth_bound_ = 0;

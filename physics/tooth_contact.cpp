@@ -29,7 +29,6 @@ constexpr double kParabolaShrink = 1.0 / 8;
 constexpr double kRefineWithin_m = 5e-6;
 
 constexpr double kNone = -1e300;
-constexpr double kPi = std::numbers::pi;
 
 struct Frame {
   const FlankTable& table;
@@ -72,21 +71,10 @@ Hit probe_at(const Frame& x, int k, Flank f, double r, const Frame& y) {
 }
 
 // First-order depth of a point of x (gear frame of x) inside y, kNone where there is nothing to
-// measure. `clear`: how far the point can move relative to y before its depth could rise above
-// −kRefineWithin_m... taken conservatively: half the first-order gap (whose error, ≈ gap²·κ, stays
-// below half the gap for gaps under half the smallest flank radius of curvature) and never more
-// than the radial distance to y's solid body or, outside y's teeth, to its toothed annulus.
-double depth_of(const Frame& x, const Vector2d& p_x, const Frame& y, double* clear = nullptr) {
-  const Vector2d p = y.to_local(x.to_world(p_x));
-  const FlankTable::Probe probe = y.table.probe_depth(p);
-  const bool measured = probe.inside || probe.has_flank;
-  if (clear) {
-    const double r = p.norm();
-    const FlankTable& t = y.table;
-    if (!measured) *clear = std::max(t.internal() ? t.r_min_m() - r : r - t.r_max_m(), 0.0);
-    else *clear = std::max(std::min(-0.5 * probe.depth_m, t.internal() ? t.r_max_m() - r : r - t.r_min_m()), 0.0);
-  }
-  return measured ? probe.depth_m : kNone;
+// measure.
+double depth_of(const Frame& x, const Vector2d& p_x, const Frame& y) {
+  const FlankTable::Probe p = y.table.probe_depth(y.to_local(x.to_world(p_x)));
+  return (p.inside || p.has_flank) ? p.depth_m : kNone;
 }
 
 // Radius of the deepest point near r_b, the best of samples spaced `step` apart whose
@@ -132,25 +120,17 @@ double golden_refine(const Frame& x, int k, Flank f, const Frame& y, double lo, 
 
 // The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
 // first order, the best refined, and the result measured exactly. A flank whose best sample
-// stays more than kRefineWithin_m clear of y returns no hit, and in `clear` the relative travel
-// after which that could change (0 when it has a hit).
-Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y, double* clear) {
+// stays more than kRefineWithin_m clear of y returns no hit.
+Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y) {
   constexpr int n = FlankTable::kProbeRadii;
   std::array<double, n> depth;
   int best_i = -1;
-  double clear_min = 1e300;
   for (int i = 0; i < n; ++i) {
     const Vector2d& p = x.table.probe_point(k, f, i);
-    double c = 1e300;
-    depth[i] = std::isnan(p.x()) ? kNone : depth_of(x, p, y, &c);
-    clear_min = std::min(clear_min, c);
+    depth[i] = std::isnan(p.x()) ? kNone : depth_of(x, p, y);
     if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
   }
-  *clear = 0;
-  if (best_i < 0 || depth[best_i] < -kRefineWithin_m) {
-    *clear = std::max(clear_min - kRefineWithin_m, 0.0);
-    return {};
-  }
+  if (best_i < 0 || depth[best_i] < -kRefineWithin_m) return {};
   const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);
   const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
@@ -163,37 +143,11 @@ Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y, double* cle
   return probe_at(x, k, f, r_b, y);
 }
 
-// The most any point of x within its toothed radius has moved relative to y between two poses
-// of the pair: the change of x's centre in y's frame plus the change of relative angle times
-// the radius.
-double relative_travel(const PlanarPose& x0, const PlanarPose& y0, const PlanarPose& x1, const PlanarPose& y1,
-                       double radius_x) {
-  const Vector2d c0 = Eigen::Rotation2Dd(-y0.angle_rad) * (x0.centre_m - y0.centre_m);
-  const Vector2d c1 = Eigen::Rotation2Dd(-y1.angle_rad) * (x1.centre_m - y1.centre_m);
-  const double turn = std::remainder((x1.angle_rad - y1.angle_rad) - (x0.angle_rad - y0.angle_rad), 2 * kPi);
-  return (c1 - c0).norm() + std::abs(turn) * radius_x;
-}
-
 }  // namespace
 
 std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb,
-                                              const PlanarPose& pb, ToothContactCoherence* coherence) {
+                                              const PlanarPose& pb) {
   const Frame a{ta, pa}, b{tb, pb};
-  if (coherence && !coherence->primed) {
-    for (int pass = 0; pass < 2; ++pass)
-      coherence->clear_m[pass].assign(static_cast<std::size_t>((pass == 0 ? ta : tb).teeth()) * 2, 0.0);
-    coherence->primed = true;
-  } else if (coherence) {
-    // Every flank's clearance shrinks by the most its points can have moved since the last call.
-    const double travel[2] = {relative_travel(coherence->last_a, coherence->last_b, pa, pb, ta.r_max_m()),
-                              relative_travel(coherence->last_b, coherence->last_a, pb, pa, tb.r_max_m())};
-    for (int pass = 0; pass < 2; ++pass)
-      for (double& c : coherence->clear_m[pass]) c -= travel[pass];
-  }
-  if (coherence) {
-    coherence->last_a = pa;
-    coherence->last_b = pb;
-  }
   // One per (tooth_a, tooth_b, flank of a): the deepest of both probing directions.
   std::vector<ToothContact> best;
   auto keep = [&](int tooth_a, int tooth_b, Flank flank_a, const Hit& h, bool x_is_a) {
@@ -220,11 +174,7 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
     for (int k = 0; k < x.table.teeth(); ++k) {
       if (!tooth_near(x, k, y)) continue;
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
-        double* clear = coherence ? &coherence->clear_m[pass][static_cast<std::size_t>(k) * 2 + (f == Flank::Cw)] : nullptr;
-        if (clear && *clear > 0) continue;  // cannot have come within reach since it was probed
-        double fresh = 0;
-        const Hit h = deepest_on_flank(x, k, f, y, &fresh);
-        if (clear) *clear = fresh;
+        const Hit h = deepest_on_flank(x, k, f, y);
         if (h.tooth_y < 0) continue;
         // Name the contact by a's tooth and the flank of a that is touched.
         if (pass == 0) keep(k, h.tooth_y, f, h, true);

@@ -26,19 +26,8 @@ struct ToothContact {
   double depth_m = 0;                   // penetration, > 0
 };
 
-// Probing state kept between calls for one gear pair: how far each flank was last found clear of
-// the other gear. A flank is probed again only once the gears can have moved that far relative
-// to each other (measured from the poses, not forecast), so the contacts found are the same as
-// without it; only the work differs. Start with a default-constructed value per pair.
-struct ToothContactCoherence {
-  bool primed = false;
-  PlanarPose last_a, last_b;
-  std::vector<double> clear_m[2];  // a's flanks against b, b's against a; [tooth * 2 + (flank == Cw)], m
-};
-
 // All tooth-pair contacts between gear a and gear b, at most one per (tooth_a, tooth_b).
 std::vector<ToothContact> find_tooth_contacts(const FlankTable& a, const PlanarPose& pa,
-                                              const FlankTable& b, const PlanarPose& pb,
-                                              ToothContactCoherence* coherence = nullptr);
+                                              const FlankTable& b, const PlanarPose& pb);
 
 }  // namespace gearsim::physics

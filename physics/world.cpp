@@ -55,7 +55,6 @@ struct PairRec {
   GearPairInfo info;
   std::map<std::tuple<int, int, int>, double> last_impulse;  // warm start per tooth pair
   std::vector<ToothContact> current;                          // in manifold point order
-  ToothContactCoherence coherence;
 };
 
 struct World::Impl {
@@ -105,7 +104,7 @@ void World::Impl::generate_contacts() {
     PairRec& pr = pairs[p];
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
     std::vector<ToothContact> found =
-        find_tooth_contacts(*a.flanks, planar_pose(a), *b.flanks, planar_pose(b), &pr.coherence);
+        find_tooth_contacts(*a.flanks, planar_pose(a), *b.flanks, planar_pose(b));
     if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
       std::sort(found.begin(), found.end(), [](const ToothContact& x, const ToothContact& y) { return x.depth_m > y.depth_m; });
       dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;
