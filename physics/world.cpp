@@ -338,6 +338,7 @@ void World::step() {
 
 const World::Profile& World::profile() const { return impl_->profile; }
 const PowerFlows& World::power() const { return impl_->power; }
+long World::dropped_contacts() const { return impl_->dropped_points; }
 
 void World::Impl::measure_power() {
   const double dt = scenario.solver.time_step_s;

@@ -1,0 +1,44 @@
+// What `gearsim run` reports in summary.json: the measured ratio and power balance of a short
+// paper run, and numerical trouble counted as warnings.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json run_paper(const std::string& tag, const std::string& extra) {
+  const fs::path dir = fs::temp_directory_path() / ("gearsim_summary_" + tag);
+  fs::remove_all(dir);
+  const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim run " + GEARSIM_SOURCE_DIR +
+                          "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
+                          " --duration 0.02 --set motors[0].ramp_time_s=0.004 " + extra + " > /dev/null 2>&1";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::ifstream f(dir / "summary.json");
+  return nlohmann::json::parse(f);
+}
+
+TEST(RunSummary, ReportsTheWillisRatioAndABalancedPowerFlow) {
+  const nlohmann::json s = run_paper("sound", "");
+  // 16 ms at speed: ~5 mesh periods, the ratio within the TE ripple's 0.5 %.
+  EXPECT_NEAR(s["ratio"].get<double>(), 5.0, 0.025);
+  EXPECT_NEAR(s["power_W"]["imbalance_fraction"].get<double>(), 0.0, 0.02);
+  // 20 N·m at 104.7/5 rad/s.
+  EXPECT_NEAR(s["power_W"]["load_output"].get<double>(), 20 * 104.7 / 5, 0.01 * 20 * 104.7 / 5);
+  EXPECT_TRUE(s["warnings"].empty()) << s["warnings"].dump();
+}
+
+TEST(RunSummary, ASoftContactIsReportedAsDeepPenetration) {
+  // Contact 100x softer than ISO 6336's 14 N/(mm·µm): 118 N per mesh presses ~80 µm.
+  const nlohmann::json s = run_paper("soft", "--set contact.stiffness_N_per_m_per_m=1.4e8");
+  EXPECT_GT(s["max_penetration_um"].get<double>(), 10.0);
+  ASSERT_FALSE(s["warnings"].empty());
+  EXPECT_NE(s["warnings"][0].get<std::string>().find("penetration"), std::string::npos) << s["warnings"].dump();
+}
+
+}  // namespace
