@@ -67,7 +67,7 @@ FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
   const double x = (r - r_min_) * inv_dr_;
   const int i = std::clamp(static_cast<int>(x), 0, samples_ - 2);
   const double f = x - i;
-  // sin(rel − a) of a point at angle rel against a flank at angle a (tooth frame), and cos ψ.
+  // r·sin(rel − a) of a point at angle rel against a flank at angle a (tooth frame), and cos ψ.
   struct Side {
     double s, cos_psi;
   };
@@ -75,7 +75,7 @@ FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
     const Knot* kn = knots(tooth, flank) + i;
     const double ca = kn[0].cos_a + f * (kn[1].cos_a - kn[0].cos_a);
     const double sa = kn[0].sin_a + f * (kn[1].sin_a - kn[0].sin_a);
-    return Side{(qq.y() * ca - qq.x() * sa) / r, kn[0].cos_psi + f * (kn[1].cos_psi - kn[0].cos_psi)};
+    return Side{qq.y() * ca - qq.x() * sa, kn[0].cos_psi + f * (kn[1].cos_psi - kn[0].cos_psi)};
   };
   Side ccw = side(k, Flank::Ccw, q), cw = side(k, Flank::Cw, q);
   if (std::isnan(ccw.s) || std::isnan(cw.s)) return out;
@@ -97,7 +97,7 @@ FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
     }
   }
   out.flank = to_ccw ? Flank::Ccw : Flank::Cw;
-  out.depth_m = r * (to_ccw ? -chosen.s : chosen.s) * chosen.cos_psi;
+  out.depth_m = (to_ccw ? -chosen.s : chosen.s) * chosen.cos_psi;
   out.has_flank = true;
   return out;
 }

@@ -23,6 +23,12 @@ class FlankTable {
 
   int teeth() const { return layout_.teeth; }
   bool internal() const { return internal_; }
+  // True when both tables describe the same flanks (same layout, radii and samples, bit for bit).
+  bool same_as(const FlankTable& o) const {
+    return layout_.teeth == o.layout_.teeth && layout_.tooth0_angle_rad == o.layout_.tooth0_angle_rad &&
+           internal_ == o.internal_ && r_min_ == o.r_min_ && r_max_ == o.r_max_ && samples_ == o.samples_ &&
+           row_of_ == o.row_of_ && ccw_ == o.ccw_ && cw_ == o.cw_;
+  }
   // Distinct tooth shapes the table holds (identical teeth share one), for memory accounting.
   int distinct_teeth() const { return static_cast<int>(ccw_.size()) / samples_; }
   double pitch_angle_rad() const { return pitch_; }

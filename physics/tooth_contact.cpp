@@ -40,6 +40,15 @@ struct Frame {
   Vector2d dir_to_world(const Vector2d& d) const { return to_world_m * d; }
 };
 
+// A probing pass: points of x tested against y, with x's frame expressed in y's once.
+struct XY {
+  const Frame& x;
+  const Frame& y;
+  Eigen::Matrix2d rot = y.to_local_m * x.to_world_m;
+  Vector2d shift = y.to_local(x.pose.centre_m);
+  Vector2d in_y(const Vector2d& p_x) const { return shift + rot * p_x; }
+};
+
 // Could tooth k of `x` reach the toothed annulus of `y`? Bounding circle of the tooth against
 // the annulus [r_min, r_max] of y (or y's whole disc beyond it on its body side).
 bool tooth_near(const Frame& x, int k, const Frame& y) {
@@ -57,7 +66,8 @@ struct Hit {
 };
 
 // Exact depth of x's flank point at radius r inside y, with the contact geometry, in world terms.
-Hit probe_at(const Frame& x, int k, Flank f, double r, const Frame& y) {
+Hit probe_at(const XY& xy, int k, Flank f, double r) {
+  const Frame &x = xy.x, &y = xy.y;
   Hit h;
   const Vector2d w = x.to_world(x.table.flank_point(k, f, r));
   const FlankTable::Probe p = y.table.probe(y.to_local(w));
@@ -72,17 +82,17 @@ Hit probe_at(const Frame& x, int k, Flank f, double r, const Frame& y) {
 
 // First-order depth of a point of x (gear frame of x) inside y, kNone where there is nothing to
 // measure.
-double depth_of(const Frame& x, const Vector2d& p_x, const Frame& y) {
-  const FlankTable::Probe p = y.table.probe_depth(y.to_local(x.to_world(p_x)));
+double depth_of(const XY& xy, const Vector2d& p_x) {
+  const FlankTable::Probe p = xy.y.table.probe_depth(xy.in_y(p_x));
   return (p.inside || p.has_flank) ? p.depth_m : kNone;
 }
 
 // Radius of the deepest point near r_b, the best of samples spaced `step` apart whose
 // neighbours' depths are d_lo and d_hi: successive parabola fits on shrinking brackets.
-double parabola_refine(const Frame& x, int k, Flank f, const Frame& y, double r, double step, double d_lo, double d0,
-                       double d_hi) {
+double parabola_refine(const XY& xy, int k, Flank f, double r, double step, double d_lo, double d0, double d_hi) {
+  const Frame& x = xy.x;
   auto depth_at = [&](double rr) {
-    return std::isnan(x.table.flank_angle(k, f, rr)) ? kNone : depth_of(x, x.table.flank_point(k, f, rr), y);
+    return std::isnan(x.table.flank_angle(k, f, rr)) ? kNone : depth_of(xy, x.table.flank_point(k, f, rr));
   };
   double h = step;
   for (int fit = 0; fit < kParabolaFits; ++fit) {
@@ -99,9 +109,10 @@ double parabola_refine(const Frame& x, int k, Flank f, const Frame& y, double r,
 
 // Radius of the deepest point in [lo, hi] by golden-section search: for a maximum at the end of
 // the sampled flank, where the depth is not smooth.
-double golden_refine(const Frame& x, int k, Flank f, const Frame& y, double lo, double hi) {
+double golden_refine(const XY& xy, int k, Flank f, double lo, double hi) {
+  const Frame& x = xy.x;
   auto depth_at = [&](double r) {
-    return std::isnan(x.table.flank_angle(k, f, r)) ? kNone : depth_of(x, x.table.flank_point(k, f, r), y);
+    return std::isnan(x.table.flank_angle(k, f, r)) ? kNone : depth_of(xy, x.table.flank_point(k, f, r));
   };
   constexpr double kGolden = 0.6180339887498949;
   double c = hi - kGolden * (hi - lo), d = lo + kGolden * (hi - lo);
@@ -121,26 +132,37 @@ double golden_refine(const Frame& x, int k, Flank f, const Frame& y, double lo, 
 // The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
 // first order, the best refined, and the result measured exactly. A flank whose best sample
 // stays more than kRefineWithin_m clear of y returns no hit.
-Hit deepest_on_flank(const Frame& x, int k, Flank f, const Frame& y) {
+Hit deepest_on_flank(const XY& xy, int k, Flank f) {
+  const Frame& x = xy.x;
   constexpr int n = FlankTable::kProbeRadii;
   std::array<double, n> depth;
+  depth.fill(kNone);
   int best_i = -1;
-  for (int i = 0; i < n; ++i) {
+  auto probe_sample = [&](int i) {
     const Vector2d& p = x.table.probe_point(k, f, i);
-    depth[i] = std::isnan(p.x()) ? kNone : depth_of(x, p, y);
+    depth[i] = std::isnan(p.x()) ? kNone : depth_of(xy, p);
     if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
-  }
+  };
+  auto missing = [&](int i) { return i < 0 || i >= n || std::isnan(x.table.probe_point(k, f, i).x()); };
+  // Every other sample first (and any whose neighbour has no material, and the last): at twice
+  // the spacing the depth between samples can rise four times as far above them, so a flank
+  // whose best is more than 4·kRefineWithin_m clear cannot reach the refinement window.
+  for (int i = 0; i < n; ++i)
+    if (i % 2 == 0 || i == n - 1 || missing(i - 1) || missing(i + 1)) probe_sample(i);
+  if (best_i < 0 || depth[best_i] < -4 * kRefineWithin_m) return {};
+  for (int i = 1; i < n - 1; i += 2)
+    if (depth[i] <= kNone && !missing(i)) probe_sample(i);
   if (best_i < 0 || depth[best_i] < -kRefineWithin_m) return {};
   const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);
   const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
-  double r_best = interior ? parabola_refine(x, k, f, y, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1])
-                           : golden_refine(x, k, f, y, std::max(r_b - step, x.table.probe_radius(0)),
+  double r_best = interior ? parabola_refine(xy, k, f, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1])
+                           : golden_refine(xy, k, f, std::max(r_b - step, x.table.probe_radius(0)),
                                            std::min(r_b + step, x.table.probe_radius(n - 1)));
   if (std::isnan(x.table.flank_angle(k, f, r_best))) r_best = r_b;
-  const Hit refined = probe_at(x, k, f, r_best, y);
+  const Hit refined = probe_at(xy, k, f, r_best);
   if (refined.depth > kNone) return refined;
-  return probe_at(x, k, f, r_b, y);
+  return probe_at(xy, k, f, r_b);
 }
 
 }  // namespace
@@ -171,10 +193,11 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
   for (int pass = 0; pass < 2; ++pass) {
     const Frame& x = pass == 0 ? a : b;
     const Frame& y = pass == 0 ? b : a;
+    const XY xy{x, y};
     for (int k = 0; k < x.table.teeth(); ++k) {
       if (!tooth_near(x, k, y)) continue;
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
-        const Hit h = deepest_on_flank(x, k, f, y);
+        const Hit h = deepest_on_flank(xy, k, f);
         if (h.tooth_y < 0) continue;
         // Name the contact by a's tooth and the flank of a that is touched.
         if (pass == 0) keep(k, h.tooth_y, f, h, true);

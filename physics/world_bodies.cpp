@@ -86,7 +86,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
     mass = g.mass;
     pieces = std::move(g.pieces);
     const bool internal = spec.kind == GearKind::Internal;
-    b.flanks.emplace(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
+    b.flanks = std::make_shared<const FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
                      ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
     b.face_width_m = spec.face_width_m;
     b.contact_radius_m = g.outline.dims.base_radius_m;
@@ -131,7 +131,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
       pieces = extrude_pieces(decompose(outline, opt), PrismFrame{}, -half, half);  // gear frame
       bool internal = false;
       const Polygon2& loop = toothed_loop(outline, &internal);
-      b.flanks.emplace(loop, *def.mesh->teeth, internal, kFlankSamples);
+      b.flanks = std::make_shared<const FlankTable>(loop, *def.mesh->teeth, internal, kFlankSamples);
       b.face_width_m = prism.height_m;
       b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
       // Mass properties in the gear frame.

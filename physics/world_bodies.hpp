@@ -26,7 +26,7 @@ struct BuiltBody {
   double mass_kg = 0;
   double inertia_axis_kg_m2 = 0;  // about the gear axis
   // Gears only.
-  std::optional<FlankTable> flanks;
+  std::shared_ptr<const FlankTable> flanks;  // shared by bodies of the same gear
   double face_width_m = 0;
   double contact_radius_m = 0;  // base radius (generated) or mid-tooth radius (meshes), for damping
 };
