@@ -131,8 +131,9 @@ double golden_refine(const XY& xy, int k, Flank f, double lo, double hi) {
 
 // The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
 // first order, the best refined, and the result measured exactly. A flank whose best sample
-// stays more than kRefineWithin_m clear of y returns no hit.
-Hit deepest_on_flank(const XY& xy, int k, Flank f) {
+// stays more than kRefineWithin_m clear of y returns no hit. With `tip_only`, only a maximum at
+// the tooth's free end (its tip corner) is looked for.
+Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only) {
   const Frame& x = xy.x;
   constexpr int n = FlankTable::kProbeRadii;
   std::array<double, n> depth;
@@ -147,12 +148,23 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f) {
   // Every other sample first (and any whose neighbour has no material, and the last): at twice
   // the spacing the depth between samples can rise four times as far above them, so a flank
   // whose best is more than 4·kRefineWithin_m clear cannot reach the refinement window.
-  for (int i = 0; i < n; ++i)
-    if (i % 2 == 0 || i == n - 1 || missing(i - 1) || missing(i + 1)) probe_sample(i);
-  if (best_i < 0 || depth[best_i] < -4 * kRefineWithin_m) return {};
-  for (int i = 1; i < n - 1; i += 2)
-    if (depth[i] <= kNone && !missing(i)) probe_sample(i);
-  if (best_i < 0 || depth[best_i] < -kRefineWithin_m) return {};
+  if (tip_only) {
+    // The three samples nearest the free end (an internal gear's teeth point inward); a maximum
+    // at the farthest of them lies down the flank, where the other probing direction finds it.
+    const int dir = x.table.internal() ? 1 : -1;
+    int end = x.table.internal() ? 0 : n - 1;
+    while (missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
+    for (int j = 0; j < 3; ++j)
+      if (!missing(end + j * dir)) probe_sample(end + j * dir);
+    if (best_i < 0 || best_i == end + 2 * dir || depth[best_i] < -kRefineWithin_m) return {};
+  } else {
+    for (int i = 0; i < n; ++i)
+      if (i % 2 == 0 || i == n - 1 || missing(i - 1) || missing(i + 1)) probe_sample(i);
+    if (best_i < 0 || depth[best_i] < -4 * kRefineWithin_m) return {};
+    for (int i = 1; i < n - 1; i += 2)
+      if (depth[i] <= kNone && !missing(i)) probe_sample(i);
+    if (best_i < 0 || depth[best_i] < -kRefineWithin_m) return {};
+  }
   const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);
   const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
@@ -197,7 +209,9 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
     for (int k = 0; k < x.table.teeth(); ++k) {
       if (!tooth_near(x, k, y)) continue;
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
-        const Hit h = deepest_on_flank(xy, k, f);
+        // An overlap of two teeth is deepest either along a's flank (a's tip corner included)
+        // or at b's tip corner: a's flanks are probed whole, b's only at their tips.
+        const Hit h = deepest_on_flank(xy, k, f, pass == 1);
         if (h.tooth_y < 0) continue;
         // Name the contact by a's tooth and the flank of a that is touched.
         if (pass == 0) keep(k, h.tooth_y, f, h, true);

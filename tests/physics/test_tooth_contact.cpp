@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <Eigen/Geometry>
 #include <numbers>
 
 #include "geometry/gear_profile.hpp"
@@ -213,3 +214,39 @@ TEST(FlankTable, FirstOrderProbeAgreesWithTheExactOne) {
 }  // namespace
 }  // namespace gearsim::physics
 
+
+namespace gearsim::physics {
+namespace {
+
+TEST(ToothContact, TipCornerOfTheSecondGearIsFound) {
+  // Pressed 20 µm along the line of action, the planet's tip corners cut into the sun's flanks
+  // where a tooth pair enters and leaves mesh. Probing the planet only at its tips must still
+  // report every such contact at least as deep as the corner itself sits in the sun (measured
+  // exactly, point by point).
+  SunPlanet s;
+  const double press = 20e-6 / 11.2763e-3;
+  int corners = 0;
+  for (int i = 0; i < 240; ++i) {
+    const double roll = i / 240.0 * 2 * 2 * kPi / 24;
+    const PlanarPose sun{{0, 0}, roll + press};
+    PlanarPose planet = s.planet_pose;
+    planet.angle_rad -= roll * 24.0 / 36.0;
+    const std::vector<ToothContact> found = find_tooth_contacts(s.ts, sun, s.tp, planet);
+    const Eigen::Rotation2Dd to_world(planet.angle_rad), to_sun(-sun.angle_rad);
+    for (int k = 0; k < s.tp.teeth(); ++k)
+      for (Flank f : {Flank::Ccw, Flank::Cw}) {
+        const Eigen::Vector2d corner_world = planet.centre_m + to_world * s.tp.probe_point(k, f, FlankTable::kProbeRadii - 1);
+        const FlankTable::Probe p = s.ts.probe(to_sun * corner_world);
+        if (!p.inside || !p.has_flank || p.depth_m < 0.1e-6) continue;
+        ++corners;
+        double reported = 0;
+        for (const ToothContact& c : found)
+          if (c.tooth_a == p.tooth && c.tooth_b == k) reported = std::max(reported, c.depth_m);
+        EXPECT_GE(reported, p.depth_m - 0.01e-6) << "planet tooth " << k << " at roll step " << i;
+      }
+  }
+  EXPECT_GT(corners, 10);  // the sweep does produce corner contacts
+}
+
+}  // namespace
+}  // namespace gearsim::physics
