@@ -10,6 +10,28 @@
 
 namespace gearsim {
 
+std::vector<double> leave_one_out_z_scores(const std::vector<double>& values) {
+  const std::size_t z = values.size();
+  if (z < 3) throw InputError("leave-one-out z-scores: expected at least 3 values, got " + std::to_string(z));
+  double total = 0.0;
+  for (double v : values) total += v;
+  std::vector<double> out(z);
+  // Value k against the mean and sample deviation of the other z − 1 values.
+  for (std::size_t k = 0; k < z; ++k) {
+    const double others_mean = (total - values[k]) / static_cast<double>(z - 1);
+    double ss = 0.0;
+    for (std::size_t u = 0; u < z; ++u)
+      if (u != k) ss += (values[u] - others_mean) * (values[u] - others_mean);
+    const double sd = std::sqrt(ss / static_cast<double>(z - 2));
+    const double d = values[k] - others_mean;
+    if (sd > 0.0)
+      out[k] = d / sd;
+    else
+      out[k] = d == 0.0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), d);
+  }
+  return out;
+}
+
 ToothStatistics tooth_statistics(const AngleAverage& avg, const ToothStatisticsOptions& o) {
   const char* what = "tooth statistics";
   const int z = o.teeth;
@@ -33,7 +55,6 @@ ToothStatistics tooth_statistics(const AngleAverage& avg, const ToothStatisticsO
   ToothStatistics r;
   r.z_threshold = o.z_threshold;
   r.teeth.resize(static_cast<std::size_t>(z));
-  double total = 0.0;
   for (int k = 0; k < z; ++k) {
     const auto i = static_cast<std::size_t>(k);
     if (count[i] == 0)
@@ -41,20 +62,12 @@ ToothStatistics tooth_statistics(const AngleAverage& avg, const ToothStatisticsO
                        (o.in_mesh_threshold ? " above the in-mesh threshold" : "") +
                        "; lower the threshold or raise the samples per revolution");
     r.teeth[i] = {k, count[i], sum[i] / count[i], 0.0, false};
-    total += r.teeth[i].mean;
   }
-  // Leave-one-out: tooth k against the mean and sample deviation of the other z − 1 teeth.
+  std::vector<double> means;
+  for (const ToothStatistic& t : r.teeth) means.push_back(t.mean);
+  const std::vector<double> z_scores = leave_one_out_z_scores(means);
   for (ToothStatistic& t : r.teeth) {
-    const double others_mean = (total - t.mean) / (z - 1);
-    double ss = 0.0;
-    for (const ToothStatistic& u : r.teeth)
-      if (u.tooth != t.tooth) ss += (u.mean - others_mean) * (u.mean - others_mean);
-    const double sd = std::sqrt(ss / (z - 2));
-    const double d = t.mean - others_mean;
-    if (sd > 0.0)
-      t.z_score = d / sd;
-    else
-      t.z_score = d == 0.0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), d);
+    t.z_score = z_scores[static_cast<std::size_t>(t.tooth)];
     t.faulty = std::abs(t.z_score) > o.z_threshold;
     if (t.faulty) r.faulty_teeth.push_back(t.tooth);
   }

@@ -40,6 +40,11 @@ struct ToothStatistics {
   double z_threshold = 0;
 };
 
+// (value − mean of the others)/(sample standard deviation of the others) for each value: how far
+// one tooth's figure stands from the rest. ±infinity when the others agree exactly and this one
+// differs; 0 when all agree. Throws InputError on fewer than 3 values.
+std::vector<double> leave_one_out_z_scores(const std::vector<double>& values);
+
 // Throws InputError on fewer than 3 teeth (a leave-one-out spread needs two others), fewer
 // average samples than teeth, a non-positive z threshold, or a tooth window with no counting
 // sample (the message names the tooth: lower the in-mesh threshold or raise the sampling).

@@ -12,7 +12,10 @@
 #include <iostream>
 #include <memory>
 
+#include "app/analyze.hpp"
 #include "app/commands.hpp"
+#include "app/run_analysis.hpp"
+#include "app/run_dir.hpp"
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
 #include "physics/power_balance.hpp"
@@ -39,6 +42,7 @@ struct RunOptions {
   std::string out_dir;
   std::vector<std::string> sets;
   double duration_s = 0;
+  bool no_analyze = false;
 };
 
 std::ofstream open_out(const std::filesystem::path& p) {
@@ -213,6 +217,14 @@ void run(const RunOptions& o) {
             << " s wall; logs in " << dir.string() << "\n";
   if (status == "aborted") throw InputError(error + " (logs up to that point kept in " + dir.string() + ")");
   if (status == "interrupted") std::cout << "interrupted: the logs hold the run up to t = " << world.time_s() << " s\n";
+  if (o.no_analyze) return;
+  // The analysis of the finished run; a run too short (or of a train the analysis does not
+  // know) keeps its logs and says why it was not analysed.
+  try {
+    print_analysis(analyze_run(open_run_dir(dir)), std::cout);
+  } catch (const InputError& e) {
+    std::cout << "not analysed: " << e.what() << "\n";
+  }
 }
 
 }  // namespace
@@ -226,6 +238,7 @@ void register_run(CLI::App& app) {
   sub->add_option("--out", o->out_dir, "Output folder (created if missing).")->required();
   sub->add_option("--set", o->sets, "Override a scenario value: key.path=value (repeatable), e.g. solver.time_step_s=1e-5.");
   sub->add_option("--duration", o->duration_s, "Simulated seconds, overriding the scenario's duration_s.")->check(CLI::PositiveNumber);
+  sub->add_flag("--no-analyze", o->no_analyze, "Do not analyse the run at the end (see `gearsim analyze`).");
   sub->callback([o] { run(*o); });
 }
 

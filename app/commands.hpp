@@ -10,5 +10,6 @@ void register_tolerance(CLI::App& app);
 void register_gears(CLI::App& app);
 void register_inspect(CLI::App& app);
 void register_run(CLI::App& app);
+void register_analyze(CLI::App& app);
 
 }  // namespace gearsim::app
