@@ -49,6 +49,13 @@ inline constexpr int kDefaultSamplesPerRevolution = 1024;
 // 1.5e-3, so a healthy 36-tooth gear raises a false alarm in about 1 run of 19.
 inline constexpr double kDefaultToothZThreshold = 3.5;
 
+// A tooth is flagged only when its figure also differs from the mean of the others by more than
+// this fraction. Normally 0.05: a 1 µm flank deviation against a loaded mesh's ~1 µm deflection
+// moves a tooth's load by tens of percent, while the scatter of healthy teeth in a simulation
+// (start transients, the output grid) is a few tenths of a percent; the leave-one-out z alone
+// flags such scatter whenever the healthy teeth agree very closely.
+inline constexpr double kDefaultToothMinRelativeDeviation = 0.05;
+
 // --- Input validation ----------------------------------------------------------------------------
 
 // Largest relative deviation of a sample interval from the mean interval for a time base to count

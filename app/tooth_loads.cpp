@@ -28,8 +28,15 @@ ToothLoads tooth_loads(const physics::StepLogContacts& log, int pair_index, bool
   for (double& f : t.mean_force_N) f /= (to_s - from_s);
   t.z_score = leave_one_out_z_scores(t.mean_force_N);
   t.z_threshold = analysis_constants::kDefaultToothZThreshold;
-  for (int k = 0; k < teeth; ++k)
-    if (std::abs(t.z_score[static_cast<std::size_t>(k)]) > t.z_threshold) t.flagged.push_back(k);
+  t.min_relative_deviation = analysis_constants::kDefaultToothMinRelativeDeviation;
+  double total = 0;
+  for (double f : t.mean_force_N) total += f;
+  for (int k = 0; k < teeth; ++k) {
+    const double own = t.mean_force_N[static_cast<std::size_t>(k)];
+    const double others = (total - own) / (teeth - 1);
+    const bool apart = others != 0 && std::abs(own - others) > t.min_relative_deviation * std::abs(others);
+    if (std::abs(t.z_score[static_cast<std::size_t>(k)]) > t.z_threshold && apart) t.flagged.push_back(k);
+  }
   return t;
 }
 
@@ -40,6 +47,7 @@ nlohmann::ordered_json to_json(const ToothLoads& t) {
   j["window_s"] = {t.from_s, t.to_s};
   j["revolutions"] = t.revolutions;
   j["z_threshold"] = t.z_threshold;
+  j["min_relative_deviation"] = t.min_relative_deviation;
   j["flagged_teeth"] = t.flagged;
   nlohmann::ordered_json teeth = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < t.mean_force_N.size(); ++k)

@@ -22,8 +22,8 @@ struct ToothLoads {
   double revolutions = 0;
   std::vector<double> mean_force_N;  // per tooth: impulse carried / window length
   std::vector<double> z_score;
-  std::vector<int> flagged;  // |z| > threshold
-  double z_threshold = 0;
+  std::vector<int> flagged;  // |z| > z_threshold and apart from the others' mean by > min_relative_deviation
+  double z_threshold = 0, min_relative_deviation = 0;
 };
 
 // Teeth of `gear` (side a or b of pair `pair_index`) over [from_s, to_s], which the caller chose
