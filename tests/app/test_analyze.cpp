@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -19,7 +20,8 @@ std::string gearsim() { return std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim";
 // 0.3 s of a paper scenario, ramp shortened to 4 ms: 2.6 planet revolutions relative to the
 // carrier, a record of 0.296 s (resolution 3.4 Hz).
 fs::path run(const std::string& scenario, const std::string& tag) {
-  const fs::path dir = fs::temp_directory_path() / ("gearsim_analyze_" + tag);
+  // One folder per test process: ctest runs the tests of this file in parallel processes.
+  const fs::path dir = fs::temp_directory_path() / ("gearsim_analyze_" + tag + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
   const std::string cmd = gearsim() + " run " + GEARSIM_SOURCE_DIR + "/assets/scenarios/" + scenario + " --out " +
                           dir.string() + " --duration 0.3 --set motors[0].ramp_time_s=0.004 > /dev/null 2>&1";
@@ -83,7 +85,7 @@ TEST_F(Analyze, PlanetFaultFamilyRisesOnlyWithTheError) {
 }
 
 TEST(AnalyzeErrors, FolderWithoutARunIsRefusedNamingTheFile) {
-  const fs::path dir = fs::temp_directory_path() / "gearsim_analyze_empty";
+  const fs::path dir = fs::temp_directory_path() / ("gearsim_analyze_empty_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string cmd = gearsim() + " analyze " + dir.string() + " 2>&1";
@@ -95,7 +97,7 @@ TEST(AnalyzeErrors, FolderWithoutARunIsRefusedNamingTheFile) {
 }
 
 TEST_F(Analyze, DamagedStateCsvIsRefusedNamingFileAndLine) {
-  const fs::path dir = fs::temp_directory_path() / "gearsim_analyze_damaged";
+  const fs::path dir = fs::temp_directory_path() / ("gearsim_analyze_damaged_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::copy(*healthy_, dir);
   {
