@@ -12,6 +12,7 @@
 #include "analysis/sidebands.hpp"
 #include "analysis/spectrum.hpp"
 #include "analysis/transmission_error.hpp"
+#include "app/analysis_outputs.hpp"
 #include "app/csv_table.hpp"
 #include "app/gear_train.hpp"
 #include "app/tooth_loads.hpp"
@@ -47,10 +48,9 @@ std::size_t padded_length(std::size_t n) {
   return l;
 }
 
-json spectrum_json(const Spectrum& s, const GearTrain& train, const std::string& csv_name, const std::filesystem::path& dir) {
+json spectrum_json(const Spectrum& s, const GearTrain& train) {
   json j;
   const double floor = median_noise_floor(s, 0, kBandTop_hz);
-  j["spectrum_csv"] = csv_name;
   j["resolution_hz"] = s.resolution_hz;
   j["bin_width_hz"] = s.bin_width_hz;
   j["median_floor_0_1000_hz_N"] = floor;
@@ -88,11 +88,6 @@ json spectrum_json(const Spectrum& s, const GearTrain& train, const std::string&
     }
     j["planet_fault_family"] = fam;
   }
-  std::ofstream csv(dir / csv_name);
-  if (!csv) throw InputError((dir / csv_name).string() + ": cannot write");
-  csv << "frequency_hz,amplitude_N\n" << std::setprecision(10);
-  for (std::size_t k = 0; k < s.frequency_hz.size() && s.frequency_hz[k] <= kBandTop_hz; ++k)
-    csv << s.frequency_hz[k] << ',' << s.amplitude[k] << '\n';
   return j;
 }
 
@@ -141,6 +136,7 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
                      {"characteristic_frequencies", freqs}};
 
   json pairs = json::object();
+  std::vector<std::pair<std::string, Spectrum>> spectra;
   for (const std::string& col : contacts.columns) {
     const std::string suffix = "_force_N";
     if (col.size() <= suffix.size() || col.compare(col.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
@@ -150,7 +146,8 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
     for (double v : f) mean += v, zeros += v == 0;
     mean /= static_cast<double>(f.size());
     const Spectrum sp = amplitude_spectrum(f, rate, {WindowKind::Hann, padded_length(f.size()), true});
-    json pj = spectrum_json(sp, train, "spectrum_" + pair + ".csv", run.dir);
+    json pj = spectrum_json(sp, train);
+    spectra.emplace_back(pair, sp);
     pj["mean_force_N"] = mean;
     pj["zero_force_share"] = zeros / static_cast<double>(f.size());
     pairs[pair] = pj;
@@ -165,7 +162,7 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
     mean /= static_cast<double>(te.size());
     double ss = 0;
     for (double v : te) ss += (v - mean) * (v - mean);
-    j["transmission_error"] = {{"mean_rad", mean}, {"peak_to_peak_rad", hi - lo},
+    j["transmission_error"] = {{"mean_rad", mean}, {"min_rad", lo}, {"max_rad", hi}, {"peak_to_peak_rad", hi - lo},
                                {"rms_rad", std::sqrt(ss / static_cast<double>(te.size()))}};
   }
 
@@ -194,6 +191,12 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
     j["tooth_loads"] = loads;
   }
   std::ofstream(run.dir / "analysis.json") << j.dump(2) << "\n";
+  write_spectrum_csv(run.dir / "spectrum.csv", spectra, kBandTop_hz);
+  write_sidebands_csv(run.dir / "sidebands.csv", j);
+  write_teeth_csv(run.dir / "teeth.csv", j);
+  RunDir updated = run;
+  add_to_summary(updated.summary, j);
+  save_summary(updated);
   return j;
 }
 

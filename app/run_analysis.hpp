@@ -2,7 +2,8 @@
 // frequencies; per gear pair the contact-force spectrum, its mesh harmonics over the median
 // floor, their sidebands matched to characteristic frequencies, and the amplitudes of the planet
 // local-fault family; the transmission error; per-tooth loads from the per-step log. Writes
-// DIR/analysis.json and DIR/spectrum_<pair>.csv; returns the JSON. Prints nothing.
+// DIR/analysis.json, spectrum.csv, sidebands.csv, teeth.csv and adds its keys to summary.json
+// (analysis_outputs.hpp); returns the JSON. Prints nothing.
 #pragma once
 
 #include <nlohmann/json.hpp>
