@@ -11,5 +11,6 @@ void register_gears(CLI::App& app);
 void register_inspect(CLI::App& app);
 void register_run(CLI::App& app);
 void register_analyze(CLI::App& app);
+void register_report(CLI::App& app);
 
 }  // namespace gearsim::app

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   gearsim::app::register_inspect(app);
   gearsim::app::register_run(app);
   gearsim::app::register_analyze(app);
+  gearsim::app::register_report(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

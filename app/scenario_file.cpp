@@ -160,7 +160,10 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
   std::vector<std::pair<Expansion, std::string>> macros;
   if (given(top, "planetary")) macros.emplace_back(expand_planetary(top.map("planetary"), dir), "planetary");
   if (given(top, "pair")) macros.emplace_back(expand_pair(top.map("pair"), dir), "pair");
-  for (const auto& [e, key] : macros) s.bodies.insert(s.bodies.end(), e.bodies.begin(), e.bodies.end());
+  for (const auto& [e, key] : macros) {
+    s.bodies.insert(s.bodies.end(), e.bodies.begin(), e.bodies.end());
+    if (!e.gearset_spec.empty()) s.gearset_spec = e.gearset_spec;
+  }
   Names names;
   std::size_t bi = 0;
   for (const YamlMap& m : body_maps) add_body(names, s.bodies[bi++], m, "name");

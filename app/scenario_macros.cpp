@@ -113,6 +113,7 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   }
 
   Expansion e;
+  e.gearset_spec = spec;
   auto gear_body = [&](const std::string& name, const GearSpec& gear, const Eigen::Vector3d& at, double angle_rad) {
     physics::BodyDef b;
     b.name = name;

@@ -19,6 +19,7 @@ struct Expansion {
   std::vector<physics::BodyDef> bodies;
   std::vector<physics::JointDef> joints;
   std::optional<physics::TransmissionDef> transmission;
+  std::filesystem::path gearset_spec;  // the gear-set spec the macro took its gears from, if any
 };
 
 // True when `key` holds a value; marks the key as known either way (so `key:` left empty, or

@@ -118,6 +118,9 @@ struct Scenario {
   SolverDef solver;
   OutputDef output;
   std::optional<TransmissionDef> transmission;
+  // The gear-set spec file a macro (planetary, pair) generated its gears from; empty otherwise.
+  // For reports that show the gear table; the simulation does not read it.
+  std::filesystem::path gearset_spec;
 };
 
 }  // namespace gearsim::physics

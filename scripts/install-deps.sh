@@ -17,6 +17,7 @@ packages=(
   libpng-dev                              # PNG frames
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev  # MP4 (H.264) video
   ffmpeg                                  # ffprobe, to check written videos in tests
+  gnuplot-nox                             # report plots (SVG)
   libgtest-dev libgmock-dev               # unit tests
 )
 

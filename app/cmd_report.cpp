@@ -1,0 +1,45 @@
+// gearsim report DIR [--compare DIR2]: DIR/report.html (app/report.hpp), after analysing the
+// folders afresh.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+#include "app/commands.hpp"
+#include "app/report.hpp"
+#include "app/run_analysis.hpp"
+#include "geometry/errors.hpp"
+
+namespace gearsim::app {
+namespace {
+
+// The run folder, analysed afresh (about a second): the report always shows the analysis of
+// this build, never a stale one.
+RunDir analysed(const std::string& dir) {
+  analyze_run(open_run_dir(dir));
+  return open_run_dir(dir);
+}
+
+}  // namespace
+
+void register_report(CLI::App& app) {
+  auto dir = std::make_shared<std::string>();
+  auto compare = std::make_shared<std::string>();
+  CLI::App* sub = app.add_subcommand("report", "Write DIR/report.html: the run against the paper, in one self-contained page.");
+  sub->add_option("dir", *dir, "A folder written by `gearsim run --out`.")->required()->check(CLI::ExistingDirectory);
+  sub->add_option("--compare", *compare, "A second run folder (e.g. the healthy twin) overlaid on spectra and tooth loads.")
+      ->check(CLI::ExistingDirectory);
+  sub->callback([dir, compare] {
+    const RunDir run = analysed(*dir);
+    std::optional<RunDir> other;
+    if (!compare->empty()) other = analysed(*compare);
+    const std::string html = build_report(run, other);
+    const std::filesystem::path out = run.dir / "report.html";
+    std::ofstream f(out);
+    if (!f) throw InputError(out.string() + ": cannot write");
+    f << html;
+    std::cout << "written: " << out.string() << "\n";
+  });
+}
+
+}  // namespace gearsim::app

@@ -1,0 +1,23 @@
+// `gearsim report DIR [--compare DIR2]`: one self-contained HTML page for a run — the gear
+// table against the paper's, tolerances, characteristic frequencies, the contact force, its
+// spectrum with harmonics and sidebands, the transmission error, per-tooth loads, rendered
+// frames when the run has them, and the paper's figures beside ours with the reasons for every
+// difference. Plots by gnuplot (SVG, inline). Analyses the run first when it has not been.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "app/run_dir.hpp"
+
+namespace gearsim::app {
+
+// Returns the HTML; the caller writes it.
+std::string build_report(const RunDir& run, const std::optional<RunDir>& compare);
+
+// Sections (report_*.cpp), each an HTML fragment.
+std::string report_gears_section(const RunDir& run);
+std::string report_signals_section(const RunDir& run, const std::optional<RunDir>& compare);
+std::string report_paper_section(const RunDir& run);
+
+}  // namespace gearsim::app
