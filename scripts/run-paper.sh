@@ -14,3 +14,5 @@ echo
 build/bin/gearsim run assets/scenarios/paper_dynamics_healthy.yaml --out out/paper_dynamics_healthy
 echo
 build/bin/gearsim run assets/scenarios/paper_dynamics.yaml --out out/paper_dynamics
+echo
+build/bin/gearsim report out/paper_dynamics --compare out/paper_dynamics_healthy
