@@ -12,5 +12,6 @@ void register_inspect(CLI::App& app);
 void register_run(CLI::App& app);
 void register_analyze(CLI::App& app);
 void register_report(CLI::App& app);
+void register_render(CLI::App& app);
 
 }  // namespace gearsim::app

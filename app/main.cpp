@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   gearsim::app::register_run(app);
   gearsim::app::register_analyze(app);
   gearsim::app::register_report(app);
+  gearsim::app::register_render(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

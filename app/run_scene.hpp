@@ -1,0 +1,37 @@
+// What a rendered frame of a run shows: a render mesh per scenario body (generated gears
+// extruded from their outlines with the teeth that carry errors highlighted, CAD meshes as
+// imported; shapeless bodies such as a carrier are not drawn) posed by a PoseReplay, and the
+// camera presets for any gear train. Not the renderer.
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "physics/scenario.hpp"
+#include "render/camera.hpp"
+#include "render/scene.hpp"
+
+namespace gearsim::app {
+
+struct RunMeshes {
+  std::vector<render::SceneBody> bodies;  // one per drawn body, in scenario order
+  std::vector<int> body_index;            // scenario body of each
+};
+
+// InputError naming the body when a mesh file cannot be read.
+RunMeshes run_meshes(const physics::Scenario& s);
+
+// The scene at one set of poses (scenario order, PoseReplay::poses), with overlay lines.
+render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>& poses,
+                        const std::vector<std::string>& overlay);
+
+// Cameras: "overview" (along −z), "tilted" (30° toward −y), "mesh" (a close-up on the pitch point
+// of the first meshing pair — the sun and planet 0 in a planetary set, 6 mm tall). InputError
+// naming the preset when it is unknown.
+render::Camera run_camera(const std::string& preset, const physics::Scenario& s, const render::Scene& scene,
+                          const std::vector<Eigen::Isometry3d>& poses, double aspect);
+
+}  // namespace gearsim::app

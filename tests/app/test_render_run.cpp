@@ -1,0 +1,106 @@
+// Rendering a run: poses replayed from state.csv put the planets on their carrier circle at the
+// logged carrier angle; `gearsim render` writes the expected number of video frames and PNGs,
+// the same bytes twice, and refuses bad options by name.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+#include <string>
+
+#include "app/pose_replay.hpp"
+#include "app/run_dir.hpp"
+
+namespace gearsim::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string bin() { return std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim"; }
+
+fs::path short_run() {
+  static const fs::path dir = [] {
+    const fs::path d = fs::temp_directory_path() / ("gearsim_render_run_" + std::to_string(getpid()));
+    fs::remove_all(d);
+    const std::string cmd = bin() + " run " + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics.yaml --out " + d.string() +
+                            " --duration 0.02 --no-analyze > /dev/null 2>&1";
+    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    return d;
+  }();
+  return dir;
+}
+
+std::pair<int, std::string> sh(const std::string& cmd) {
+  FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+  std::string out(8192, '\0');
+  out.resize(std::fread(out.data(), 1, out.size(), p));
+  return {WEXITSTATUS(pclose(p)), out};
+}
+
+std::string bytes(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+TEST(PoseReplay, PlanetsRideTheCarrierCircleAtTheLoggedCarrierAngle) {
+  const RunDir run = open_run_dir(short_run());
+  const CsvTable state = read_csv(run.dir / "state.csv");
+  const PoseReplay replay(run.scenario, state);
+  std::size_t planet = 0, carrier = 0, sun = 0;
+  for (std::size_t b = 0; b < run.scenario.bodies.size(); ++b) {
+    if (run.scenario.bodies[b].name == "planet_0") planet = b;
+    if (run.scenario.bodies[b].name == "carrier") carrier = b;
+    if (run.scenario.bodies[b].name == "sun") sun = b;
+  }
+  const std::vector<double>& t = state.column("time_s");
+  for (std::size_t i = 0; i < t.size(); i += 7) {
+    const std::vector<Eigen::Isometry3d> poses = replay.poses(t[i]);
+    const Eigen::Vector3d c = poses[planet].translation();
+    // Centre distance 30 mm (m(z_s + z_p)/2), planet 0 placed on +x at t = 0.
+    EXPECT_NEAR(c.head<2>().norm(), 30e-3, 1e-12);
+    EXPECT_NEAR(std::remainder(std::atan2(c.y(), c.x()) - state.column("carrier_angle_rad")[i], 2 * std::numbers::pi), 0.0, 1e-12);
+    // The sun's frame turned by its logged angle.
+    const Eigen::Vector3d x = poses[sun].rotation() * Eigen::Vector3d::UnitX();
+    EXPECT_NEAR(std::remainder(std::atan2(x.y(), x.x()) - state.column("sun_angle_rad")[i], 2 * std::numbers::pi), 0.0, 1e-12);
+  }
+  (void)carrier;
+}
+
+TEST(RenderRun, WritesTheFramesItPromisesAndTheSameBytesTwice) {
+  const fs::path dir = short_run();
+  // 0.0005–0.02 s at 10 fps, 50× slower: a frame every 2 ms of simulation, 10 frames; PNG every 4th: 3.
+  const std::string cmd = bin() + " render " + dir.string() + " --fps 10 --slowmo 50 --width 320 --height 180 --png-every 4";
+  ASSERT_EQ(sh(cmd).first, 0);
+  const std::string first = bytes(dir / "render_overview.mp4");
+  const auto [code, frames] = sh("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 " +
+                                 (dir / "render_overview.mp4").string());
+  ASSERT_EQ(code, 0);
+  EXPECT_EQ(std::stoi(frames), 10);
+  int pngs = 0;
+  for (const auto& e : fs::directory_iterator(dir / "frames")) pngs += e.path().extension() == ".png";
+  EXPECT_EQ(pngs, 3);
+  ASSERT_EQ(sh(cmd).first, 0);
+  EXPECT_EQ(bytes(dir / "render_overview.mp4"), first);
+}
+
+TEST(RenderRun, BadOptionsAreRefusedByName) {
+  const fs::path dir = short_run();
+  const auto [c1, o1] = sh(bin() + " render " + dir.string() + " --camera sideways");
+  EXPECT_NE(c1, 0);
+  EXPECT_NE(o1.find("--camera"), std::string::npos) << o1;
+  const auto [c2, o2] = sh(bin() + " render " + dir.string() + " --from 0.01 --to 0.005");
+  EXPECT_EQ(c2, 2);
+  EXPECT_NE(o2.find("--from/--to"), std::string::npos) << o2;
+  const auto [c3, o3] = sh(bin() + " render " + dir.string() + " --from 0.01 --to 0.5");
+  EXPECT_EQ(c3, 2);
+  EXPECT_NE(o3.find("outside the logged"), std::string::npos) << o3;
+}
+
+}  // namespace
+}  // namespace gearsim::app
