@@ -14,6 +14,7 @@
 
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
+#include "app/render_run.hpp"
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
 #include "app/scenario_file.hpp"
@@ -217,14 +218,19 @@ void run(const RunOptions& o) {
             << " s wall; logs in " << dir.string() << "\n";
   if (status == "aborted") throw InputError(error + " (logs up to that point kept in " + dir.string() + ")");
   if (status == "interrupted") std::cout << "interrupted: the logs hold the run up to t = " << world.time_s() << " s\n";
-  if (o.no_analyze) return;
-  // The analysis of the finished run; a run too short (or of a train the analysis does not
-  // know) keeps its logs and says why it was not analysed.
-  try {
-    print_analysis(analyze_run(open_run_dir(dir)), std::cout);
-  } catch (const InputError& e) {
-    std::cout << "not analysed: " << e.what() << "\n";
-  }
+  // The analysis and the scenario's renders of the finished run; a run too short (or of a train
+  // the analysis does not know) keeps its logs and says why it was not analysed or rendered.
+  if (!o.no_analyze) try {
+      print_analysis(analyze_run(open_run_dir(dir)), std::cout);
+    } catch (const InputError& e) {
+      std::cout << "not analysed: " << e.what() << "\n";
+    }
+  if (s.render) try {
+      const RenderResult r = render_run(open_run_dir(dir), *s.render);
+      std::cout << "rendered " << r.frames << " frames of " << r.from_s << "–" << r.to_s << " s: " << r.video.string() << "\n";
+    } catch (const InputError& e) {
+      std::cout << "not rendered: " << e.what() << "\n";
+    }
 }
 
 }  // namespace

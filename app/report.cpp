@@ -16,11 +16,16 @@ std::string frames_section(const RunDir& run) {
   const std::filesystem::path dir = run.dir / "frames";
   std::string h = "<h2>Rendered frames</h2>\n";
   if (!std::filesystem::is_directory(dir)) return h + "<p class=\"note\">This run has no rendered frames.</p>\n";
-  std::vector<std::filesystem::path> pngs;
+  // The contact sheets `render` made (one per camera), else the first few frames.
+  std::vector<std::filesystem::path> pngs, sheets;
   for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".png") pngs.push_back(e.path());
+    if (e.path().extension() == ".png")
+      (e.path().filename().string().find("_sheet") != std::string::npos ? sheets : pngs).push_back(e.path());
   std::sort(pngs.begin(), pngs.end());
-  for (std::size_t i = 0; i < pngs.size() && i < 4; ++i) h += html_png(pngs[i], pngs[i].filename().string(), 440) + "\n";
+  std::sort(sheets.begin(), sheets.end());
+  for (const auto& p : sheets) h += "<p>" + html_png(p, p.filename().string(), 960) + "</p>\n";
+  for (std::size_t i = 0; sheets.empty() && i < pngs.size() && i < 4; ++i)
+    h += html_png(pngs[i], pngs[i].filename().string(), 440) + "\n";
   return h;
 }
 

@@ -1,5 +1,6 @@
 #include "app/run_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -67,21 +68,43 @@ render::Camera run_camera(const std::string& preset, const physics::Scenario& s,
                           const std::vector<Eigen::Isometry3d>& poses, double aspect) {
   if (preset == "overview") return render::overview_camera(render::scene_bounds(scene), aspect);
   if (preset == "tilted") return render::overview_camera(render::scene_bounds(scene), aspect, kTilt_rad);
-  if (preset == "mesh") {
+  if (preset == "sun_mesh" || preset == "ring_mesh") {
     const GearTrain t = gear_train_of(s);
-    const std::string a = t.planetary ? t.sun : t.driver, b = t.planetary ? t.planets.front() : t.driven;
-    const int za = t.planetary ? t.sun_teeth : t.driver_teeth, zb = t.planetary ? t.planet_teeth : t.driven_teeth;
+    // The faulty planet (the first whose gear carries an error), planet 0 without one.
+    std::string planet = t.planetary ? t.planets.front() : t.driven;
+    for (const physics::BodyDef& b : s.bodies)
+      if (b.gear && !b.gear->errors.flank_offsets.empty() &&
+          std::find(t.planets.begin(), t.planets.end(), b.name) != t.planets.end()) {
+        planet = b.name;
+        break;
+      }
+    const bool ring = preset == "ring_mesh";
+    if (ring && !t.planetary) throw InputError("--camera ring_mesh: the scenario has no ring gear");
+    const std::string a = ring ? planet : (t.planetary ? t.sun : t.driver), b = ring ? t.ring : planet;
     Eigen::Vector3d ca = Eigen::Vector3d::Zero(), cb = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < s.bodies.size(); ++k) {
       if (s.bodies[k].name == a) ca = poses[k].translation();
       if (s.bodies[k].name == b) cb = poses[k].translation();
     }
-    // The pitch point divides the centre distance in the ratio of the tooth counts.
-    Eigen::Vector3d pitch = ca + (cb - ca) * za / double(za + zb);
+    // External pair: the pitch point divides the centre distance as z_a : z_b. Planet in ring:
+    // it lies beyond the planet, a pitch radius from its centre away from the ring's centre.
+    Eigen::Vector3d pitch;
+    if (ring) {
+      const Eigen::Vector3d out = (ca - cb).normalized();
+      pitch = ca + out * (t.planet_teeth * (ca - cb).norm() / double(t.ring_teeth - t.planet_teeth));
+    } else {
+      const int za = t.planetary ? t.sun_teeth : t.driver_teeth, zb = t.planetary ? t.planet_teeth : t.driven_teeth;
+      pitch = ca + (cb - ca) * za / double(za + zb);
+    }
     pitch.z() = render::scene_bounds(scene).max_m.z();  // on the gears' front face
-    return render::closeup_camera(pitch, Eigen::Vector3d(0, 0, -1), kMeshViewHeight_m);
+    render::Camera cam = render::closeup_camera(pitch, Eigen::Vector3d(0, 0, -1), kMeshViewHeight_m);
+    // The line of centres upright in the image (the sun, or the planet, below), so the mesh holds
+    // still on screen while the carrier turns.
+    const Eigen::Vector3d up = (cb - ca).normalized();
+    if (up.allFinite() && up.head<2>().norm() > 0.5) cam.up = ring ? Eigen::Vector3d(-up) : up;
+    return cam;
   }
-  throw InputError("--camera '" + preset + "': expected overview, tilted or mesh");
+  throw InputError("--camera '" + preset + "': expected overview, tilted, sun_mesh or ring_mesh");
 }
 
 }  // namespace gearsim::app

@@ -28,9 +28,10 @@ RunMeshes run_meshes(const physics::Scenario& s);
 render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>& poses,
                         const std::vector<std::string>& overlay);
 
-// Cameras: "overview" (along −z), "tilted" (30° toward −y), "mesh" (a close-up on the pitch point
-// of the first meshing pair — the sun and planet 0 in a planetary set, 6 mm tall). InputError
-// naming the preset when it is unknown.
+// Cameras: "overview" (along −z), "tilted" (30° toward −y), "sun_mesh" and "ring_mesh" (close-ups,
+// 6 mm tall, on the pitch point of the faulty planet — the first planet whose gear carries an
+// error, else planet 0 — with the sun and with the ring; a pair's "sun_mesh" is its mesh).
+// InputError naming the preset when it is unknown or the train has no ring.
 render::Camera run_camera(const std::string& preset, const physics::Scenario& s, const render::Scene& scene,
                           const std::vector<Eigen::Isometry3d>& poses, double aspect);
 

@@ -130,6 +130,30 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     s.output.per_step_log = m.boolean_or("per_step_log", s.output.per_step_log);
     m.reject_unknown_keys();
   }
+  if (given(top, "render")) {
+    const YamlMap m = top.map("render");
+    physics::RenderDef r;
+    r.camera = m.choice_or("camera", {"overview", "tilted", "sun_mesh", "ring_mesh"}, r.camera);
+    r.fps = m.integer_or("fps", r.fps);
+    if (r.fps < 1 || r.fps > 240) m.fail("fps", "expected 1 to 240 frames per second");
+    r.slowmo = positive_or(m, "slowmo", r.slowmo, "slow-motion factor");
+    r.from_s = m.optional_number("from_s");
+    r.to_s = m.optional_number("to_s");
+    if (r.from_s && *r.from_s < 0) m.fail("from_s", "expected a time ≥ 0 s");
+    if (r.from_s && r.to_s && !(*r.to_s > *r.from_s)) m.fail("to_s", "expected a time after from_s");
+    r.width_px = m.integer_or("width_px", r.width_px);
+    r.height_px = m.integer_or("height_px", r.height_px);
+    for (const char* key : {"width_px", "height_px"}) {
+      const int v = std::string(key) == "width_px" ? r.width_px : r.height_px;
+      if (v < 16 || v > 4096 || v % 2) m.fail(key, "expected an even size of 16 to 4096 px (H.264 halves the chroma)");
+    }
+    r.msaa = m.integer_or("msaa", r.msaa);
+    if (r.msaa < 0 || r.msaa > 16) m.fail("msaa", "expected 0 to 16 samples");
+    r.png_every = m.integer_or("png_every", r.png_every);
+    if (r.png_every < 0) m.fail("png_every", "expected 0 (no PNG) or a positive frame interval");
+    m.reject_unknown_keys();
+    s.render = r;
+  }
   if (given(top, "contact")) {
     const YamlMap m = top.map("contact");
     physics::ContactDef& c = s.contact;

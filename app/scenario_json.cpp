@@ -93,6 +93,13 @@ json scenario_json(const physics::Scenario& s) {
   for (const physics::LoadDef& l : s.loads)
     j["loads"].push_back({{"joint", l.joint}, {"constant_torque_N_m", l.constant_torque_N_m},
                           {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}});
+  if (s.render) {
+    const physics::RenderDef& r = *s.render;
+    j["render"] = {{"camera", r.camera}, {"fps", r.fps}, {"slowmo", r.slowmo}, {"width_px", r.width_px},
+                   {"height_px", r.height_px}, {"msaa", r.msaa}, {"png_every", r.png_every}};
+    if (r.from_s) j["render"]["from_s"] = *r.from_s;
+    if (r.to_s) j["render"]["to_s"] = *r.to_s;
+  }
   if (s.transmission)
     j["transmission"] = {{"input_joint", s.transmission->input_joint},
                          {"output_joint", s.transmission->output_joint},

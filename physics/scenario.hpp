@@ -105,6 +105,18 @@ struct TransmissionDef {
   double ratio = 0;  // θ_input/θ_output of the ideal train
 };
 
+// Frames and a video rendered from the run when it ends (`gearsim render` takes the same
+// settings from its command line). Read by app/, not by the simulation.
+struct RenderDef {
+  std::string camera = "overview";  // overview, tilted, sun_mesh, ring_mesh
+  int fps = 30;                      // video frames per second
+  double slowmo = 1;                 // the video plays this many times slower than simulated time
+  std::optional<double> from_s, to_s;  // simulated span, s (default: all that was logged)
+  int width_px = 1280, height_px = 720;
+  int msaa = 4;        // multisampling, 0: off
+  int png_every = 10;  // every Nth frame also as PNG under DIR/frames/ (0: none)
+};
+
 struct Scenario {
   std::string name;
   std::filesystem::path source;  // the file it came from
@@ -121,6 +133,7 @@ struct Scenario {
   // The gear-set spec file a macro (planetary, pair) generated its gears from; empty otherwise.
   // For reports that show the gear table; the simulation does not read it.
   std::filesystem::path gearset_spec;
+  std::optional<RenderDef> render;
 };
 
 }  // namespace gearsim::physics

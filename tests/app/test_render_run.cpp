@@ -77,16 +77,18 @@ TEST(RenderRun, WritesTheFramesItPromisesAndTheSameBytesTwice) {
   // 0.0005–0.02 s at 10 fps, 50× slower: a frame every 2 ms of simulation, 10 frames; PNG every 4th: 3.
   const std::string cmd = bin() + " render " + dir.string() + " --fps 10 --slowmo 50 --width 320 --height 180 --png-every 4";
   ASSERT_EQ(sh(cmd).first, 0);
-  const std::string first = bytes(dir / "render_overview.mp4");
+  const std::string first = bytes(dir / "video.mp4");
   const auto [code, frames] = sh("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 " +
-                                 (dir / "render_overview.mp4").string());
+                                 (dir / "video.mp4").string());
   ASSERT_EQ(code, 0);
   EXPECT_EQ(std::stoi(frames), 10);
   int pngs = 0;
-  for (const auto& e : fs::directory_iterator(dir / "frames")) pngs += e.path().extension() == ".png";
+  for (const auto& e : fs::directory_iterator(dir / "frames"))
+    pngs += e.path().extension() == ".png" && e.path().filename().string().find("_sheet") == std::string::npos;
   EXPECT_EQ(pngs, 3);
+  EXPECT_TRUE(fs::exists(dir / "frames" / "overview_sheet.png"));  // the contact sheet for reports
   ASSERT_EQ(sh(cmd).first, 0);
-  EXPECT_EQ(bytes(dir / "render_overview.mp4"), first);
+  EXPECT_EQ(bytes(dir / "video.mp4"), first);
 }
 
 TEST(RenderRun, BadOptionsAreRefusedByName) {

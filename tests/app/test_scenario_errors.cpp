@@ -179,5 +179,14 @@ TEST(ScenarioErrors, FaultyPlanetIndexOutOfRange) {
   EXPECT_NAMES(e, "planetary.faulty_planets.3", "expected a planet index 0..2");
 }
 
+TEST(ScenarioErrors, RenderSectionIsCheckedKeyByKey) {
+  EXPECT_EQ(error_for(kGood + "render: {camera: sun_mesh, fps: 25, slowmo: 20, from_s: 0.01, to_s: 0.05}\n"), "");
+  EXPECT_NAMES(error_for(kGood + "render: {camera: sideways}\n"), "render.camera");
+  EXPECT_NAMES(error_for(kGood + "render: {fps: 0}\n"), "render.fps", "1 to 240");
+  EXPECT_NAMES(error_for(kGood + "render: {width_px: 641}\n"), "render.width_px", "even");
+  EXPECT_NAMES(error_for(kGood + "render: {from_s: 0.2, to_s: 0.1}\n"), "render.to_s", "after from_s");
+  EXPECT_NAMES(error_for(kGood + "render: {colour: red}\n"), "render.colour: unknown key");
+}
+
 }  // namespace
 }  // namespace gearsim::app

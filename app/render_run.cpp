@@ -1,0 +1,73 @@
+#include "app/render_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "app/pose_replay.hpp"
+#include "app/run_scene.hpp"
+#include "geometry/errors.hpp"
+#include "render/contact_sheet.hpp"
+#include "render/png_io.hpp"
+#include "render/renderer.hpp"
+#include "render/video_writer.hpp"
+
+namespace gearsim::app {
+namespace {
+
+// The contact sheet: up to this many of the PNG frames, 4 columns, each reduced 4×.
+constexpr std::size_t kSheetFrames = 8;
+
+}  // namespace
+
+RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
+  const PoseReplay replay(run.scenario, read_csv(run.dir / "state.csv"));
+  RenderResult r;
+  r.from_s = o.from_s.value_or(replay.start_s());
+  r.to_s = o.to_s.value_or(replay.end_s());
+  const std::string span = std::to_string(r.from_s) + "–" + std::to_string(r.to_s) + " s";
+  if (!(r.to_s > r.from_s)) throw InputError("--from/--to (render.from_s/to_s): the span " + span + " is empty");
+  if (r.from_s < replay.start_s() || r.to_s > replay.end_s())
+    throw InputError("--from/--to (render.from_s/to_s): " + span + " is outside the logged " + std::to_string(replay.start_s()) +
+                     "–" + std::to_string(replay.end_s()) + " s");
+  const double dt = 1.0 / (o.fps * o.slowmo);  // simulated seconds per frame
+  r.frames = static_cast<long>(std::floor((r.to_s - r.from_s) / dt + 1e-9)) + 1;
+  const RunMeshes meshes = run_meshes(run.scenario);
+  render::RenderSettings rs;
+  rs.width_px = o.width_px;
+  rs.height_px = o.height_px;
+  rs.msaa_samples = o.msaa;
+  render::Renderer renderer(rs);
+  r.video = run.dir / (o.camera == "overview" ? std::string("video.mp4") : "video_" + o.camera + ".mp4");
+  render::VideoWriter writer(r.video, {o.width_px, o.height_px, o.fps});
+  if (o.png_every > 0) std::filesystem::create_directories(run.dir / "frames");
+  std::vector<render::Image> sheet;
+  std::vector<std::string> labels;
+  for (long k = 0; k < r.frames; ++k) {
+    const double t = std::min(r.from_s + static_cast<double>(k) * dt, r.to_s);  // rounding of the last frame
+    const std::vector<Eigen::Isometry3d> poses = replay.poses(t);
+    char line[128];
+    std::snprintf(line, sizeof line, "%s  t = %.4f s  (%s, %gx slower)", run.scenario.name.c_str(), t, o.camera.c_str(), o.slowmo);
+    const render::Scene scene = run_scene(meshes, poses, {line});
+    const render::Image image = renderer.render(scene, run_camera(o.camera, run.scenario, scene, poses, renderer.aspect()));
+    writer.add_frame(image);
+    if (o.png_every > 0 && k % o.png_every == 0) {
+      char name[64];
+      std::snprintf(name, sizeof name, "%s_%05ld.png", o.camera.c_str(), k);
+      render::write_png(image, run.dir / "frames" / name);
+      if (sheet.size() < kSheetFrames && o.width_px % 4 == 0 && o.height_px % 4 == 0) {
+        sheet.push_back(image);
+        char label[32];
+        std::snprintf(label, sizeof label, "t = %.4f s", t);
+        labels.push_back(label);
+      }
+    }
+  }
+  writer.finish();
+  if (!sheet.empty())
+    render::write_png(render::contact_sheet(sheet, {4, 4, 4, {255, 255, 255}, 1}, labels),
+                      run.dir / "frames" / (o.camera + "_sheet.png"));
+  return r;
+}
+
+}  // namespace gearsim::app
