@@ -32,6 +32,20 @@ std::vector<double> leave_one_out_z_scores(const std::vector<double>& values) {
   return out;
 }
 
+std::vector<int> teeth_standing_apart(const std::vector<double>& values, const std::vector<double>& z_scores,
+                                      double z_threshold, double min_relative_deviation) {
+  double total = 0.0;
+  for (double v : values) total += v;
+  std::vector<int> out;
+  const auto n = static_cast<double>(values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const double others = (total - values[k]) / (n - 1);
+    const bool apart = others != 0.0 && std::abs(values[k] - others) > min_relative_deviation * std::abs(others);
+    if (std::abs(z_scores[k]) > z_threshold && apart) out.push_back(static_cast<int>(k));
+  }
+  return out;
+}
+
 ToothStatistics tooth_statistics(const AngleAverage& avg, const ToothStatisticsOptions& o) {
   const char* what = "tooth statistics";
   const int z = o.teeth;

@@ -15,6 +15,7 @@
 #include "app/analysis_outputs.hpp"
 #include "app/csv_table.hpp"
 #include "app/gear_train.hpp"
+#include "app/synchronous_teeth.hpp"
 #include "app/tooth_loads.hpp"
 #include "geometry/errors.hpp"
 #include "physics/step_log_reader.hpp"
@@ -164,6 +165,28 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
     for (double v : te) ss += (v - mean) * (v - mean);
     j["transmission_error"] = {{"mean_rad", mean}, {"min_rad", lo}, {"max_rad", hi}, {"peak_to_peak_rad", hi - lo},
                                {"rms_rad", std::sqrt(ss / static_cast<double>(te.size()))}};
+  }
+
+  // The angle-synchronous average per planet from the output-rate logs (the standard view).
+  if (train.planetary) {
+    json tsa = json::array();
+    const std::vector<double>& ts = state.column("time_s");
+    for (const std::string& planet : train.planets) {
+      const std::string col = train.sun + "__" + planet + "_force_N";
+      if (!contacts.has(col) || !state.has(planet + "_angle_rad")) continue;
+      const std::vector<double> force = window(contacts.column(col), tc, from_s);
+      const std::vector<double> angle = window(state.column(planet + "_angle_rad"), ts, from_s);
+      if (force.size() != angle.size()) throw InputError(run.dir.string() + ": state.csv and contacts.csv differ in rows");
+      // Where the sun lies seen from the planet at t = 0 (carrier frame = world frame then).
+      double sun_direction = 0;
+      for (const physics::BodyDef& b : s.bodies)
+        if (b.name == planet) {
+          const Eigen::Vector3d& p = b.pose.position_m;
+          sun_direction = std::atan2(-p.y(), -p.x()) - (b.gear ? b.gear->tooth0_angle_rad : 0.0);
+        }
+      tsa.push_back(synchronous_teeth(train.sun + "__" + planet, planet, force, angle, train.planet_teeth, sun_direction));
+    }
+    j["synchronous_average"] = tsa;
   }
 
   // Per-tooth loads, when the per-step log is there: each planet (or each gear of a pair) over

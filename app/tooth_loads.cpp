@@ -29,14 +29,7 @@ ToothLoads tooth_loads(const physics::StepLogContacts& log, int pair_index, bool
   t.z_score = leave_one_out_z_scores(t.mean_force_N);
   t.z_threshold = analysis_constants::kDefaultToothZThreshold;
   t.min_relative_deviation = analysis_constants::kDefaultToothMinRelativeDeviation;
-  double total = 0;
-  for (double f : t.mean_force_N) total += f;
-  for (int k = 0; k < teeth; ++k) {
-    const double own = t.mean_force_N[static_cast<std::size_t>(k)];
-    const double others = (total - own) / (teeth - 1);
-    const bool apart = others != 0 && std::abs(own - others) > t.min_relative_deviation * std::abs(others);
-    if (std::abs(t.z_score[static_cast<std::size_t>(k)]) > t.z_threshold && apart) t.flagged.push_back(k);
-  }
+  t.flagged = teeth_standing_apart(t.mean_force_N, t.z_score, t.z_threshold, t.min_relative_deviation);
   return t;
 }
 

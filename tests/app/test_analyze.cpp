@@ -71,6 +71,17 @@ TEST_F(Analyze, FaultyPlanetToothCarriesNothingAndStandsOut) {
   EXPECT_TRUE(h["tooth_loads"][0]["flagged_teeth"].empty()) << h["tooth_loads"][0]["flagged_teeth"].dump();
 }
 
+TEST_F(Analyze, SynchronousAverageFindsTheSameTooth) {
+  // The standard view from the output-rate logs alone: planet 0's force averaged over its
+  // rotation relative to the carrier, one window per tooth where it faces the sun.
+  const nlohmann::json f = analysis(*faulty_), h = analysis(*healthy_);
+  const nlohmann::json& faulty = f["synchronous_average"][0];
+  ASSERT_EQ(faulty["gear"], "planet_0");
+  EXPECT_LT(faulty["teeth"][0]["z_score"].get<double>(), -5.0);
+  EXPECT_EQ(faulty["flagged_teeth"][0].get<int>(), 0);
+  for (const auto& planet : h["synchronous_average"]) EXPECT_TRUE(planet["flagged_teeth"].empty()) << planet["gear"];
+}
+
 TEST_F(Analyze, PlanetFaultFamilyRisesOnlyWithTheError) {
   // f_m/36 = 8.89 Hz and its multiples in the sun–planet 0 force: lines with the error; without
   // it, no local maximum there or one at least 10 dB lower.
