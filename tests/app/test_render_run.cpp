@@ -82,6 +82,12 @@ TEST(RenderRun, WritesTheFramesItPromisesAndTheSameBytesTwice) {
                                  (dir / "video.mp4").string());
   ASSERT_EQ(code, 0);
   EXPECT_EQ(std::stoi(frames), 10);
+  // H.264, and 10 frames at 10 fps last 1 s.
+  const auto [c2, info] = sh("ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,duration -of csv=p=0 " +
+                             (dir / "video.mp4").string());
+  ASSERT_EQ(c2, 0);
+  EXPECT_EQ(info.substr(0, 5), "h264,") << info;
+  EXPECT_NEAR(std::stod(info.substr(5)), 1.0, 1e-6) << info;
   int pngs = 0;
   for (const auto& e : fs::directory_iterator(dir / "frames"))
     pngs += e.path().extension() == ".png" && e.path().filename().string().find("_sheet") == std::string::npos;
