@@ -34,6 +34,14 @@ nlohmann::json analysis(const fs::path& dir) {
   return nlohmann::json::parse(f);
 }
 
+// Exit code and stdout+stderr of `gearsim analyze dir`.
+std::pair<int, std::string> analyze_output(const fs::path& dir) {
+  FILE* p = popen((gearsim() + " analyze " + dir.string() + " 2>&1").c_str(), "r");
+  std::string out(4096, '\0');
+  out.resize(std::fread(out.data(), 1, out.size(), p));
+  return {WEXITSTATUS(pclose(p)), out};
+}
+
 class Analyze : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -99,11 +107,8 @@ TEST(AnalyzeErrors, FolderWithoutARunIsRefusedNamingTheFile) {
   const fs::path dir = fs::temp_directory_path() / ("gearsim_analyze_empty_" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string cmd = gearsim() + " analyze " + dir.string() + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out(4096, '\0');
-  out.resize(std::fread(out.data(), 1, out.size(), p));
-  EXPECT_EQ(WEXITSTATUS(pclose(p)), 2);
+  const auto [code, out] = analyze_output(dir);
+  EXPECT_EQ(code, 2);
   EXPECT_NE(out.find("summary.json"), std::string::npos) << out;
 }
 
@@ -115,11 +120,8 @@ TEST_F(Analyze, DamagedStateCsvIsRefusedNamingFileAndLine) {
     std::ofstream state(dir / "state.csv", std::ios::app);
     state << "0.5,not-a-number\n";
   }
-  const std::string cmd = gearsim() + " analyze " + dir.string() + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out(4096, '\0');
-  out.resize(std::fread(out.data(), 1, out.size(), p));
-  EXPECT_EQ(WEXITSTATUS(pclose(p)), 2);
+  const auto [code, out] = analyze_output(dir);
+  EXPECT_EQ(code, 2);
   EXPECT_NE(out.find("state.csv:"), std::string::npos) << out;
   EXPECT_NE(out.find("not a number"), std::string::npos) << out;
 }
