@@ -1,0 +1,32 @@
+// Constants of the flexible-teeth (finite element) work, each with its unit and why.
+// Not the rigid-body contact constants (those live with physics/).
+#pragma once
+
+namespace gearsim::fe {
+
+// Steel, the gears' material (paper and ISO 6336 reference material).
+inline constexpr double kYoungModulus_Pa = 210e9;   // normally 210 GPa
+inline constexpr double kPoissonRatio = 0.3;        // normally 0.3
+
+// ISO 6336-1:2019 eq. (74)–(76), method B: theoretical single-tooth stiffness coefficients,
+// 1/q' = c'_th with q' in mm·µm/N.
+inline constexpr double kIsoC1 = 0.04723;
+inline constexpr double kIsoC2 = 0.15551;
+inline constexpr double kIsoC3 = 0.25791;
+inline constexpr double kIsoC4 = -0.00635;
+inline constexpr double kIsoC5 = -0.11654;
+inline constexpr double kIsoC6 = -0.00193;
+inline constexpr double kIsoC7 = -0.24188;
+inline constexpr double kIsoC8 = 0.00529;
+inline constexpr double kIsoC9 = 0.00182;
+// Correction factor C_M between theory and measurement (ISO 6336-1, normally 0.8).
+inline constexpr double kIsoCorrectionCM = 0.8;
+// Gear blank factor C_R for solid blanks (ISO 6336-1, 1.0).
+inline constexpr double kIsoBlankCR = 1.0;
+// Conversion of ISO's N/(mm·µm) to SI N/m² (stiffness per face width): 1 N/(mm·µm) = 1e9 N/m².
+inline constexpr double kNPerMmUm_in_NPerM2 = 1e9;
+
+// ccx subprocess: longest log tail quoted in an error message (characters).
+inline constexpr int kLogTailChars = 2000;
+
+}  // namespace gearsim::fe
