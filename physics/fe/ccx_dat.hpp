@@ -17,6 +17,20 @@ struct DatBlock {
   std::map<int, std::vector<double>> rows;  // node/element id → values, in the deck's units
 };
 
+// One "statistics for slave set S, master set M" block of a *CONTACT PRINT CF request: the total
+// contact force the master exerts on the slave surface, in the deck's units.
+struct ContactTotals {
+  std::string slave, master;  // surface names, upper case as ccx prints them
+  double time = 0.0;          // total time of the block
+  double force[3] = {0, 0, 0};     // fx, fy, fz on the slave surface
+  double moment[3] = {0, 0, 0};    // about the origin
+  double centre[3] = {0, 0, 0};    // centre of gravity of the contact area
+  double normal_force = 0, shear_force = 0, area = 0;  // normal (+ = tension), shear size, area
+};
+
+// Every contact-statistics block of a .dat; throws InputError for a malformed block.
+std::vector<ContactTotals> read_contact_totals(const std::filesystem::path& dat);
+
 // Parses every block of a .dat; throws InputError for an unreadable file or a malformed row.
 std::vector<DatBlock> read_dat(const std::filesystem::path& dat);
 

@@ -30,3 +30,22 @@ inline constexpr double kNPerMmUm_in_NPerM2 = 1e9;
 inline constexpr int kLogTailChars = 2000;
 
 }  // namespace gearsim::fe
+
+namespace gearsim::fe {
+
+// Deck units: ccx is unit-free; the decks use mm, N, MPa (contact search tolerances and penalty
+// values are tuned for geometry of order 1–100).
+inline constexpr double kDeckLength_per_m = 1e3;   // m → mm
+inline constexpr double kDeckStress_per_Pa = 1e-6; // Pa → MPa
+// Contact pressure of an open contact at large clearance ("σ∞" of ccx's linear pressure-
+// overclosure law): a small tension keeps open pairs from leaving free rigid-body modes.
+// 0.1 MPa is 1e-4 of a flank's Hertzian pressure (~1 GPa).
+inline constexpr double kOpenContactTension_Pa = 1e5;
+// Static step incrementation: initial and largest increment (fractions of the step), smallest
+// before ccx gives up, and the increment budget per step.
+inline constexpr double kFirstIncrement = 0.1;
+inline constexpr double kMaxIncrement = 0.25;
+inline constexpr double kMinIncrement = 1e-5;
+inline constexpr int kStepMaxIncrements = 1000;
+
+}  // namespace gearsim::fe
