@@ -49,3 +49,15 @@ inline constexpr double kMinIncrement = 1e-5;
 inline constexpr int kStepMaxIncrements = 1000;
 
 }  // namespace gearsim::fe
+
+namespace gearsim::fe {
+
+// Closing the clearances of a quasi-static position: search step and range of the rotation that
+// brings a flank into touch, and the bisection tolerance (1e-10 rad is 2 pm on a 20 mm radius).
+inline constexpr double kClosingStep_rad = 1e-4;
+inline constexpr double kMaxClosingTurn_rad = 0.05;
+inline constexpr double kClosingTolerance_rad = 1e-10;
+// Flank-table radial samples (as the dynamics uses: ~0.5 µm per sample at m = 1 mm).
+inline constexpr int kFlankTableSamples = 4096;
+
+}  // namespace gearsim::fe
