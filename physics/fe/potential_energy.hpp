@@ -6,7 +6,8 @@
 // energy in both gear bodies. The mesh stiffness is the sum over the tooth pairs in contact.
 // External pairs and internal pairs (z2 < 0: a pinion/planet meshing with a ring) are covered.
 // Not covered: profile shift (x = 0 only), tip relief, cracks, helical gears, ring rim bending
-// (the ring's foundation uses Sainsot's external-body fit by analogy), load-dependent contact.
+// (the ring's foundation uses Sainsot's external-body fit by analogy), load-dependent contact,
+// tip and trochoid interference of internal pairs (only involute interference is rejected).
 // Not a contact model: it yields numbers in SI (N/m; per face width N/m², 1 N/(mm·µm) = 1e9 N/m²).
 #pragma once
 
