@@ -26,6 +26,21 @@ inline constexpr double kIsoBlankCR = 1.0;
 // Conversion of ISO's N/(mm·µm) to SI N/m² (stiffness per face width): 1 N/(mm·µm) = 1e9 N/m².
 inline constexpr double kNPerMmUm_in_NPerM2 = 1e9;
 
+// Potential-energy (analytical) mesh stiffness, physics/fe/potential_energy.hpp.
+// Timoshenko shear coefficient of a rectangular tooth section (Yang & Lin 1987, normally 1.2).
+inline constexpr double kPeShearCoefficient = 1.2;
+// Sainsot et al. (2004) fillet-foundation fit: the body's r_f / r_int ratio h_f when the bore is
+// not known, dimensionless (normally 2: a bore of half the root diameter, inside the fit's range).
+inline constexpr double kPeDefaultRootOverBore = 2.0;
+// Composite Gauss–Legendre quadrature of the tooth energy integrals: panels per segment
+// (normally 24; 5 points each, so the integrals converge to ~1e-10 relative).
+inline constexpr int kPeQuadraturePanels = 24;
+// Most tooth pairs a sample can hold (contact ratio < 3).
+inline constexpr int kPeMaxPairsInContact = 3;
+// Slack when a contact point lies on the end of the path of contact, in m of roll length
+// (normally 1e-12 m: rounding of the roll arithmetic, far below any geometric length).
+inline constexpr double kPeRollSlack_m = 1e-12;
+
 // ccx subprocess: longest log tail quoted in an error message (characters).
 inline constexpr int kLogTailChars = 2000;
 
