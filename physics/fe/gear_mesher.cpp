@@ -173,6 +173,31 @@ std::uint64_t edge_key(int a, int b) {
   return (hi << 32) | lo;
 }
 
+// Laplacian smoothing of the interior nodes (each moves to the mean of its edge neighbours,
+// all at once per sweep), boundary nodes fixed: evens out the quads next to boundary midpoints
+// that moved from their chord onto the outline.
+void smooth_interior(RawMesh& m) {
+  std::vector<char> fixed(m.nodes.size(), 0);
+  for (const auto& ids : m.loop_nodes)
+    for (int i : ids) fixed[i] = 1;
+  std::vector<std::vector<int>> neighbours(m.nodes.size());
+  for (const auto& q : m.quads)
+    for (int e = 0; e < 4; ++e) {
+      neighbours[q[e]].push_back(q[(e + 1) % 4]);
+      neighbours[q[(e + 1) % 4]].push_back(q[e]);
+    }
+  for (int sweep = 0; sweep < kSubdivisionSmoothingSweeps; ++sweep) {
+    std::vector<Vector2d> next = m.nodes;
+    for (std::size_t i = 0; i < m.nodes.size(); ++i) {
+      if (fixed[i] || neighbours[i].empty()) continue;
+      Vector2d sum = Vector2d::Zero();
+      for (int j : neighbours[i]) sum += m.nodes[j];
+      next[i] = sum / static_cast<double>(neighbours[i].size());
+    }
+    m.nodes = std::move(next);
+  }
+}
+
 // Splits quads into 4 and triangles into 3 quads. Edge midpoints of boundary edges go onto the
 // outline polygon (half way along its arc between the edge's nodes); interior ones are midpoints.
 RawMesh subdivide(const RawMesh& in, const std::vector<Loop>& loops) {
@@ -221,6 +246,7 @@ RawMesh subdivide(const RawMesh& in, const std::vector<Loop>& loops) {
     out.quads.push_back({m01, t[1], m12, c});
     out.quads.push_back({c, m12, t[2], m20});
   }
+  smooth_interior(out);
   return out;
 }
 
