@@ -44,6 +44,43 @@ inline constexpr double kPeRollSlack_m = 1e-12;
 // ccx subprocess: longest log tail quoted in an error message (characters).
 inline constexpr int kLogTailChars = 2000;
 
+// ---- Quadrilateral meshes of gear outlines (gear_mesher.hpp) ----
+
+// Element size along flanks and root fillets, m. Normally 0.4 mm: the paper's converged size for
+// module 1 mm teeth.
+inline constexpr double kDefaultFlankElementSize_m = 0.4e-3;
+// Element size in the gear body away from the teeth, m. Normally 2 mm (five flank sizes): the
+// body only carries the tooth loads to the bore or rim.
+inline constexpr double kDefaultCoreElementSize_m = 2.0e-3;
+// Distance over which the size grows from the flank size at the root circle to the core size,
+// inward (external gears) or outward (internal gears), m. Normally 3 mm (three modules): the
+// bending stresses of a tooth fade within about a tooth height below its root.
+inline constexpr double kDefaultSizeTransition_m = 3.0e-3;
+
+// An outline vertex that turns the boundary by more than this is kept as a mesh node (a corner),
+// rad. Normally 30°: a tooth tip corner turns ≈ 60° (90° less the tip pressure angle), while the
+// vertices of a smooth curve tessellated within 0.5 µm turn < 7° each (root fillet, ρ = 0.38 mm).
+inline constexpr double kOutlineCornerTurn_rad = 0.5235987755982988;
+// A boundary node placed by arc length moves onto the nearest outline vertex when that vertex is
+// within this fraction of the local spacing: vertices lie exactly on the true curve, points
+// between them only within the outline's chordal deviation. Normally 0.2 (spacing varies ±20 %).
+inline constexpr double kSnapToVertexFraction = 0.2;
+// gmsh 2D algorithm: 5 = Delaunay. Normally 5: recombined, its triangles gave the best quads on
+// the paper's gears (min scaled Jacobian 0.60–0.62 at 0.4 mm, against 0.44–0.58 for 6,
+// Frontal-Delaunay); Debian's gmsh 4.8.4 crashes with 8 (Frontal-Delaunay for quads) even on a
+// unit square (segfault in backgroundMesh::getAngle).
+inline constexpr int kGmshAlgorithm2D = 5;
+// gmsh recombination: 1 = Blossom (a perfect matching of triangles into quads). Normally 1: with
+// an even number of boundary edges on every loop it leaves no triangle.
+inline constexpr int kGmshRecombination = 1;
+// Laplacian smoothing sweeps over the interior nodes after a subdivision. Normally 5: enough to
+// even out the quads beside boundary midpoints moved onto a fillet, few enough to keep the
+// grading.
+inline constexpr int kSubdivisionSmoothingSweeps = 5;
+// Largest quad count a mesh may have before it is refused as a sizing mistake. Normally 2e6
+// (a 0.01 mm flank size on the ring): beyond that gmsh runs for minutes and ccx for hours.
+inline constexpr double kMaxQuadCount = 2e6;
+
 }  // namespace gearsim::fe
 
 namespace gearsim::fe {
