@@ -113,3 +113,17 @@ inline constexpr double kClosingTolerance_rad = 1e-10;
 inline constexpr int kFlankTableSamples = 4096;
 
 }  // namespace gearsim::fe
+
+namespace gearsim::fe {
+
+// Planetary FE positions: the low load stage (fraction of the torque) for the secant stiffness,
+// the press the closing step imposes on the sun's contacts (0.05 µm along the line of action),
+// the idlers' weak rotational spring (N·m/rad; a 118 N mesh force on an 18 mm planet turns it
+// against 1 N·m/rad by ~2 rad·1e-3 N·m: its torque is < 1e-3 of the mesh torque), and the
+// contact search band beyond a partner's tip circle, in modules.
+inline constexpr double kLowLoadFraction = 0.1;
+inline constexpr double kClosingPress_m = 0.05e-6;
+inline constexpr double kIdlerSpring_N_m_per_rad = 1.0;
+inline constexpr double kContactBand_modules = 1.0;
+
+}  // namespace gearsim::fe

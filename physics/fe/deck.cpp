@@ -18,6 +18,13 @@ std::string num(double v) {
   return buf;
 }
 
+// A real number ccx reads as real in every card (some cards take "1000" for an integer).
+std::string real(double v) {
+  std::string s = num(v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".";
+  return s;
+}
+
 void check_name(const std::string& what, const std::string& name) {
   if (name.empty()) throw InputError(what + " name is empty");
   for (char c : name)
@@ -167,7 +174,7 @@ Deck write_deck(const DeckDef& def) {
   if (!idler_rot.empty() && def.idler_spring_N_m_per_rad > 0) {
     o << "*ELEMENT, TYPE=SPRING1, ELSET=ESPRING\n";
     for (int n : idler_rot) o << next_el++ << ", " << n << "\n";
-    o << "*SPRING, ELSET=ESPRING\n1\n" << num(def.idler_spring_N_m_per_rad * M) << "\n";
+    o << "*SPRING, ELSET=ESPRING\n1\n" << real(def.idler_spring_N_m_per_rad * M) << "\n";
   }
 
   // Contact surfaces and pairs.

@@ -1,0 +1,144 @@
+#include "physics/fe/planetary_fe.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <fstream>
+
+#include "geometry/errors.hpp"
+#include "physics/fe/ccx_dat.hpp"
+#include "physics/fe/constants.hpp"
+#include "physics/fe/deck.hpp"
+#include "physics/fe/planetary_positions.hpp"
+#include "physics/fe/process.hpp"
+
+namespace gearsim::fe {
+namespace {
+
+const GearSpec& planet_gear(const PlanetaryFeDef& def, int k) {
+  return def.planet_gears.empty() ? def.spec.planet : def.planet_gears[static_cast<size_t>(k)];
+}
+
+FeMesh to_fe_mesh(const QuadMesh2& q) {
+  FeMesh m;
+  m.nodes_m = q.nodes;
+  m.quads = q.quads;
+  m.hub_nodes = q.bore_nodes;
+  m.fixed_nodes = q.rim_nodes;
+  m.boundary_edges = q.toothed_edges;
+  return m;
+}
+
+// Toothed edges of a placed mesh whose mid-points lie within `radius` of `centre` (world, m).
+std::vector<std::pair<int, int>> edges_near(const QuadMesh2& q, const physics::PlanarPose& pose,
+                                            const Eigen::Vector2d& centre, double radius) {
+  std::vector<std::pair<int, int>> out;
+  const Eigen::Rotation2Dd rot(pose.angle_rad);
+  for (const QuadEdge& e : q.toothed_edges) {
+    const auto [a, b] = edge_points(q, e);
+    const Eigen::Vector2d mid = pose.centre_m + rot * (0.5 * (a + b));
+    if ((mid - centre).norm() < radius) out.push_back(e);
+  }
+  return out;
+}
+
+double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+}  // namespace
+
+PlanetaryFeMeshes mesh_planetary(const PlanetaryFeDef& def) {
+  if (!def.planet_gears.empty() && static_cast<int>(def.planet_gears.size()) != def.spec.planets)
+    throw InputError("planetary FE: planet_gears must list one gear per planet (" +
+                     std::to_string(def.spec.planets) + ")");
+  PlanetaryFeMeshes m;
+  m.sun = mesh_gear_outline(make_gear_outline(def.spec.sun), GearKind::External, def.sizing);
+  m.ring = mesh_gear_outline(make_gear_outline(def.spec.ring), GearKind::Internal, def.sizing);
+  for (int k = 0; k < def.spec.planets; ++k)
+    m.planets.push_back(mesh_gear_outline(make_gear_outline(planet_gear(def, k)), GearKind::External, def.sizing));
+  return m;
+}
+
+PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes,
+                                   double sun_turn_rad, const std::filesystem::path& work_dir) {
+  const PlanetarySpec& ps = def.spec;
+  const PlanetaryGeometry geo = analyse_planetary(ps);
+  // Place the set and close its clearances with the rigid flank tables.
+  const physics::FlankTable ts = flank_table_of(ps.sun), tr = flank_table_of(ps.ring);
+  std::vector<physics::FlankTable> tp;
+  for (int k = 0; k < ps.planets; ++k) tp.push_back(flank_table_of(planet_gear(def, k)));
+  PlanetaryTables tables{&ts, {}, &tr};
+  for (const auto& t : tp) tables.planets.push_back(&t);
+  const PlanetaryPosition pos = place_closed(ps, geo, tables, sun_turn_rad);
+
+  // Bodies: the sun drives, planets idle on held pins, the ring rim is fixed.
+  const GearDimensions sd = make_gear_outline(ps.sun).dims, rd = make_gear_outline(ps.ring).dims;
+  const GearDimensions pd = make_gear_outline(ps.planet).dims;
+  const double band = kContactBand_modules * ps.sun.module_m;
+  DeckDef deck;
+  deck.bodies.push_back({"SUN", to_fe_mesh(meshes.sun.mesh), pos.sun.centre_m, pos.sun.angle_rad, FeSupport::Driving});
+  for (int k = 0; k < ps.planets; ++k) {
+    const auto& pp = pos.planets[static_cast<size_t>(k)];
+    deck.bodies.push_back({"P" + std::to_string(k), to_fe_mesh(meshes.planets[static_cast<size_t>(k)].mesh),
+                           pp.centre_m, pp.angle_rad, FeSupport::Idler});
+  }
+  deck.bodies.push_back({"RING", to_fe_mesh(meshes.ring.mesh), pos.ring.centre_m, pos.ring.angle_rad, FeSupport::Fixed});
+  const int ring = ps.planets + 1;
+  // Contacts: sun (slave) on each planet, each planet (slave) on the ring.
+  for (int k = 0; k < ps.planets; ++k) {
+    const auto& pp = pos.planets[static_cast<size_t>(k)];
+    const QuadMesh2& pm = meshes.planets[static_cast<size_t>(k)].mesh;
+    deck.contacts.push_back({"SP" + std::to_string(k), 0, k + 1,
+                             edges_near(meshes.sun.mesh, pos.sun, pp.centre_m, pd.tip_radius_m + band),
+                             edges_near(pm, pp, pos.sun.centre_m, sd.tip_radius_m + band)});
+    std::vector<std::pair<int, int>> ring_side;
+    const Eigen::Rotation2Dd rot(pp.angle_rad);
+    for (const QuadEdge& e : pm.toothed_edges) {
+      const auto [a, b] = edge_points(pm, e);
+      if ((pp.centre_m + rot * (0.5 * (a + b))).norm() > rd.tip_radius_m - band) ring_side.push_back(e);
+    }
+    deck.contacts.push_back({"PR" + std::to_string(k), k + 1, ring, ring_side,
+                             edges_near(meshes.ring.mesh, pos.ring, pp.centre_m, pd.tip_radius_m + band)});
+  }
+  deck.thickness_m = ps.sun.face_width_m;
+  deck.element_type = def.element_type;
+  deck.friction = def.friction;
+  deck.closing_rotation_rad = kClosingPress_m / sd.base_radius_m;
+  deck.torque_N_m = def.sun_torque_N_m;
+  deck.load_fractions = {kLowLoadFraction, 1.0};
+  deck.idler_spring_N_m_per_rad = kIdlerSpring_N_m_per_rad;
+  const Deck d = write_deck(deck);
+
+  // Solve.
+  std::filesystem::create_directories(work_dir);
+  std::ofstream(work_dir / "position.inp") << d.text;
+  const CcxRunResult run = run_ccx({def.ccx, work_dir, "position"});
+
+  // Results at the end of the low (time 2) and full (time 3) load stages.
+  const auto blocks = read_dat(run.dat_path);
+  auto rotation = [&](int body, double time) {
+    for (const DatBlock& b : blocks)
+      if (b.quantity == "displacements" && b.set == "NROT" && std::abs(b.time - time) < 1e-6)
+        return b.rows.at(d.layout[static_cast<size_t>(body)].rotation_node).at(0);
+    throw std::runtime_error("ccx results lack the rotations at time " + std::to_string(time) + " (" +
+                             run.dat_path.string() + ")");
+  };
+  PlanetaryFePosition out;
+  out.sun_turn_rad = sun_turn_rad;
+  out.te_unloaded_rad = pos.sun_closing_rad;
+  out.te_low_rad = pos.sun_closing_rad + rotation(0, 2.0);
+  out.te_loaded_rad = pos.sun_closing_rad + rotation(0, 3.0);
+  for (int k = 0; k < ps.planets; ++k) out.planet_rotation_rad.push_back(rotation(k + 1, 3.0));
+  const auto totals = read_contact_totals(run.dat_path);
+  auto force = [&](const std::string& slave) {
+    for (auto it = totals.rbegin(); it != totals.rend(); ++it)
+      if (it->slave == slave && std::abs(it->time - 3.0) < 1e-6) return norm3(it->force);
+    throw std::runtime_error("ccx results lack the contact force of " + slave);
+  };
+  for (int k = 0; k < ps.planets; ++k) {
+    out.sun_planet_force_N.push_back(force("SSP" + std::to_string(k)));
+    out.planet_ring_force_N.push_back(force("SPR" + std::to_string(k)));
+  }
+  out.wall_time_s = run.wall_time_s;
+  return out;
+}
+
+}  // namespace gearsim::fe
