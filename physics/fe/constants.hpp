@@ -118,8 +118,8 @@ namespace gearsim::fe {
 
 // Planetary FE positions: the low load stage (fraction of the torque) for the secant stiffness,
 // the press the closing step imposes on the sun's contacts (0.05 µm along the line of action),
-// the idlers' weak rotational spring (N·m/rad; a 118 N mesh force on an 18 mm planet turns it
-// against 1 N·m/rad by ~2 rad·1e-3 N·m: its torque is < 1e-3 of the mesh torque), and the
+// the idlers' weak rotational spring (N·m/rad; a planet turns ~1e-4 rad under load, so the spring
+// takes ~1e-4 N·m against a ~2 N·m mesh torque on the planet: 5e-5 of it), and the
 // contact search band beyond a partner's tip circle, in modules.
 inline constexpr double kLowLoadFraction = 0.1;
 inline constexpr double kClosingPress_m = 0.05e-6;
