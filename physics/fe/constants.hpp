@@ -58,8 +58,9 @@ inline constexpr double kDefaultCoreElementSize_m = 2.0e-3;
 inline constexpr double kDefaultSizeTransition_m = 3.0e-3;
 
 // An outline vertex that turns the boundary by more than this is kept as a mesh node (a corner),
-// rad. Normally 30°: a tooth tip corner turns ≈ 60° (90° less the tip pressure angle), while the
-// vertices of a smooth curve tessellated within 0.5 µm turn < 7° each (root fillet, ρ = 0.38 mm).
+// rad. Normally 30°: a tooth tip corner turns 61°–73° on the paper's gears (90° less the tip
+// pressure angle), while every other vertex of their outlines (0.5 µm chordal deviation) turns
+// ≤ 5.3° (root fillets, ρ = 0.38 mm, are the sharpest curves).
 inline constexpr double kOutlineCornerTurn_rad = 0.5235987755982988;
 // A boundary node placed by arc length moves onto the nearest outline vertex when that vertex is
 // within this fraction of the local spacing: vertices lie exactly on the true curve, points
