@@ -143,5 +143,16 @@ TEST(ScenarioStiffnessTables, TwoTablesForOnePair) {
              "bad.yaml:6:", "already have a stiffness table");
 }
 
+TEST(ScenarioStiffnessTables, PaperTeLoadedIsTheRigidSunLoadedFaultyRun) {
+  const physics::Scenario s = load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_te_loaded.yaml");
+  EXPECT_FALSE(s.joints.front().bearing.has_value());  // the sun's hinge: rigid, not floating
+  EXPECT_EQ(s.joints.front().body, "sun");
+  ASSERT_EQ(s.loads.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.loads[0].constant_torque_N_m, -20.0);
+  EXPECT_EQ(s.bodies[1].name, "planet_0");
+  EXPECT_EQ(s.bodies[1].gear->name, "planet_faulty");
+  EXPECT_TRUE(s.contact.stiffness_tables.empty());     // the constant ISO stiffness
+}
+
 }  // namespace
 }  // namespace gearsim::app
