@@ -189,14 +189,21 @@ void run(const RunOptions& o) {
                                {"bullet_solver_and_measuring", world.profile().step_total_s - world.profile().tooth_contact_s},
                                {"logging_and_output", wall - setup_wall - world.profile().step_total_s}};
   json pairs = json::array();
-  for (const physics::GearPairInfo& p : world.gear_pairs())
+  for (const physics::GearPairInfo& p : world.gear_pairs()) {
     pairs.push_back({{"a", p.body_a}, {"b", p.body_b}, {"stiffness_N_per_m", p.stiffness_N_per_m}, {"damping_N_s_per_m", p.damping_N_s_per_m}});
+    if (!p.stiffness_table.empty()) pairs.back()["stiffness_table"] = p.stiffness_table;
+  }
   summary["gear_pairs"] = pairs;
   // Numerical trouble, counted over the run (never printed mid-run).
   json warnings = json::array();
   if (world.dropped_contacts() > 0)
     warnings.push_back(std::to_string(world.dropped_contacts()) +
                        " tooth contacts dropped: a gear pair touched on more than 4 tooth pairs at once");
+  if (!s.contact.stiffness_tables.empty()) summary["stiffness_table_misses"] = world.stiffness_table_misses();
+  if (world.stiffness_table_misses() > 0)
+    warnings.push_back(std::to_string(world.stiffness_table_misses()) +
+                       " contact samples (per step) lay outside their pair's stiffness table and took its end row's value: "
+                       "extend the table over the flank");
   if (max_pen > kPenetrationWarning_m)
     warnings.push_back("deepest tooth penetration " + std::to_string(max_pen * 1e6) + " um exceeds " +
                        std::to_string(kPenetrationWarning_m * 1e6) +

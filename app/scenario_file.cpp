@@ -161,6 +161,8 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.damping_ratio = non_negative_or(m, "damping_ratio", c.damping_ratio, "a damping ratio");
     c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
     c.chordal_deviation_m = positive_or(m, "chordal_deviation_m", c.chordal_deviation_m, "length in m");
+    // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
+    if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
     m.reject_unknown_keys();
   }
 }
@@ -249,6 +251,9 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
     proposed = t;
   }
   s.transmission = proposed;
+  if (given(top, "contact"))
+    if (const YamlMap c = top.map("contact"); given(c, "stiffness_tables"))
+      parse_stiffness_tables(c.list_of_maps("stiffness_tables"), s, dir);
   top.reject_unknown_keys();
   return s;
 }

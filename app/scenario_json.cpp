@@ -81,6 +81,13 @@ json scenario_json(const physics::Scenario& s) {
                   {"damping_ratio", s.contact.damping_ratio},
                   {"friction", s.contact.friction},
                   {"chordal_deviation_m", s.contact.chordal_deviation_m}};
+  if (!s.contact.stiffness_tables.empty()) {
+    json tables = json::array();
+    for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)
+      tables.push_back({{"body_a", t.body_a}, {"body_b", t.body_b}, {"file", t.table.source},
+                        {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m}});
+    j["contact"]["stiffness_tables"] = tables;
+  }
   j["bodies"] = json::array();
   for (const physics::BodyDef& b : s.bodies) j["bodies"].push_back(body_json(b));
   j["joints"] = json::array();

@@ -48,6 +48,15 @@ Expansion expand_planetary(const YamlMap& m, const std::filesystem::path& dir);
 // The `pair:` macro: an external pair, driver at the origin, driven on +x.
 Expansion expand_pair(const YamlMap& m, const std::filesystem::path& dir);
 
+// contact.stiffness_tables (after the bodies are known): each entry {gears: [A, B], file: CSV}
+// becomes one physics::PairStiffnessDef per meshing body pair it matches (A names a body, or the
+// planetary macro's numbered family: "planet" is planet_0, planet_1, ...), radius on A's body.
+// InputError naming the entry when a file is missing or malformed (with its line), a name
+// matches no gear, the names match no meshing pair, a pair gets two tables, or a generated
+// pair's active flank on A (start of active profile to tip) is not inside the table's radii.
+void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenario& scenario,
+                            const std::filesystem::path& dir);
+
 // Applies "a.b[2].c=value" overrides to a parsed tree; InputError naming the override when one
 // is malformed or walks through something that is not a mapping or list.
 void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides, const std::string& file);

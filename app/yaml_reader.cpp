@@ -114,6 +114,18 @@ std::vector<double> YamlMap::numbers(const std::string& key, std::size_t count) 
   return out;
 }
 
+std::vector<std::string> YamlMap::strings(const std::string& key, std::size_t count) const {
+  const YAML::Node n = get(key);
+  const std::string expected = count ? "a list of " + std::to_string(count) + " names" : "a list of names";
+  if (!n.IsSequence() || (count && n.size() != count)) fail(key, "expected " + expected);
+  std::vector<std::string> out;
+  for (const YAML::Node& item : n) {
+    if (!item.IsScalar()) fail(key, "expected " + expected + ", got an item that is not a text value");
+    out.push_back(item.Scalar());
+  }
+  return out;
+}
+
 std::string YamlMap::string(const std::string& key) const {
   const YAML::Node n = get(key);
   if (!n.IsScalar()) fail(key, "expected a text value");

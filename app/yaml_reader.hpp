@@ -32,6 +32,8 @@ class YamlMap {
   int integer_or(const std::string& key, int fallback) const;
   // A list of numbers, e.g. a vector [x, y, z]; `count` > 0 demands exactly that many.
   std::vector<double> numbers(const std::string& key, std::size_t count = 0) const;
+  // A list of text values, e.g. names [sun, planet]; `count` > 0 demands exactly that many.
+  std::vector<std::string> strings(const std::string& key, std::size_t count = 0) const;
   std::string string(const std::string& key) const;
   std::string string_or(const std::string& key, const std::string& fallback) const;
   bool boolean_or(const std::string& key, bool fallback) const;

@@ -13,6 +13,7 @@
 #include "geometry/convex_decomposition.hpp"
 #include "geometry/gear_spec.hpp"
 #include "geometry/mesh_io.hpp"
+#include "physics/stiffness_table.hpp"
 
 namespace gearsim::physics {
 
@@ -76,10 +77,20 @@ struct LoadDef {
   double viscous_N_m_s_per_rad = 0;
 };
 
+// The stiffness table of the meshes between two gear bodies (by body name): the contact radius
+// is measured on body_a, whichever of the two the world puts first.
+struct PairStiffnessDef {
+  std::string body_a, body_b;
+  StiffnessTable table;
+};
+
 // Tooth contact: a compliant, damped, unilateral contact with one point per tooth pair.
 struct ContactDef {
   // Single-pair tooth stiffness per face width, N/m per m (ISO 6336 c' ≈ 14 N/(mm·µm) = 1.4e10).
   double stiffness_N_per_m_per_m = 1.4e10;
+  // Pairs listed here take the stiffness of each contact from their table at the contact's
+  // radius on body_a instead (the damping follows from it); the others keep the constant.
+  std::vector<PairStiffnessDef> stiffness_tables;
   double damping_ratio = 0.05;  // of the pair's critical damping along the line of action
   double friction = 0.0;        // Coulomb coefficient on the flanks
   // Chordal deviation of the outline the flank tables are built from. The tables interpolate

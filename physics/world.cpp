@@ -55,6 +55,10 @@ struct PairRec {
   GearPairInfo info;
   std::map<std::tuple<int, int, int>, double> last_impulse;  // warm start per tooth pair
   std::vector<ToothContact> current;                          // in manifold point order
+  std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
+  // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
+  const StiffnessTable* table = nullptr;
+  bool table_on_a = true;
 };
 
 struct World::Impl {
@@ -75,6 +79,7 @@ struct World::Impl {
   long steps = 0;
   double max_penetration = 0;
   long dropped_points = 0;
+  long table_misses = 0;
   World::Profile profile;
   PowerFlows power;
 
@@ -114,6 +119,8 @@ void World::Impl::generate_contacts() {
     const double z = 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
                             (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     pr.current.clear();
+    pr.current_stiffness_N_per_m.clear();
+    const PlanarPose table_gear = pr.table ? planar_pose(pr.table_on_a ? a : b) : PlanarPose{};
     for (const ToothContact& c : found) {
       max_penetration = std::max(max_penetration, c.depth_m);
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
@@ -126,13 +133,24 @@ void World::Impl::generate_contacts() {
       pt.m_combinedFriction = scenario.contact.friction;
       pt.m_combinedRestitution = 0;
       pt.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
-      pt.m_combinedContactStiffness1 = pr.info.stiffness_N_per_m;
-      pt.m_combinedContactDamping1 = pr.info.damping_N_s_per_m;
+      double k = pr.info.stiffness_N_per_m, damping = pr.info.damping_N_s_per_m;
+      if (pr.table) {
+        // The table's stiffness at the contact's radius on the table's gear (the point on that
+        // gear's own surface, half the depth from the overlap's mid-point).
+        const Eigen::Vector2d on = c.point_m + (pr.table_on_a ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
+        bool outside = false;
+        k = stiffness_at(*pr.table, (on - table_gear.centre_m).norm(), &outside) * pr.info.face_width_m;
+        if (outside) ++table_misses;
+        damping = contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, scenario.contact.damping_ratio);
+      }
+      pt.m_combinedContactStiffness1 = k;
+      pt.m_combinedContactDamping1 = damping;
       const auto key = std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a));
       if (auto it = pr.last_impulse.find(key); it != pr.last_impulse.end()) pt.m_appliedImpulse = it->second;
       pt.m_userPersistentData = nullptr;
       pr.manifold->addManifoldPoint(pt, false);
       pr.current.push_back(c);
+      pr.current_stiffness_N_per_m.push_back(k);
     }
   }
   profile.tooth_contact_s += seconds_since(start);
@@ -201,6 +219,7 @@ void World::Impl::measure() {
       cs.geometry = pr.current[static_cast<std::size_t>(k)];
       cs.normal_force_N = pt.m_appliedImpulse / dt;
       cs.friction_force_N = std::hypot(pt.m_appliedImpulseLateral1, pt.m_appliedImpulseLateral2) / dt;
+      cs.stiffness_N_per_m = pr.current_stiffness_N_per_m[static_cast<std::size_t>(k)];
       contacts.push_back(cs);
       // Each tooth pair's impulse warm-starts the same pair's point next step.
       const ToothContact& c = cs.geometry;
@@ -220,6 +239,11 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
   info.m_splitImpulse = false;
   info.m_solverMode |= SOLVER_USE_WARMSTARTING;
   m.world.setInternalTickCallback(pretick, &m, true);
+  for (const PairStiffnessDef& t : s.contact.stiffness_tables)
+    if (int row = -1; !stiffness_table_problem(t.table, &row).empty())
+      throw InputError("scenario: stiffness table " + t.table.source + " of gears '" + t.body_a + "' and '" + t.body_b +
+                       "': " + (row >= 0 ? "row " + std::to_string(row + 1) + ": " : "") +
+                       stiffness_table_problem(t.table));
 
   for (const BodyDef& def : s.bodies) {
     if (m.body_index.count(def.name)) throw InputError("scenario: duplicate body name '" + def.name + "'");
@@ -315,9 +339,25 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
       pr.manifold = m.dispatcher.getNewManifold(m.bodies[pr.a].rigid.get(), m.bodies[pr.b].rigid.get());
       pr.manifold->setContactProcessingThreshold(BT_LARGE_FLOAT);
       pr.info = pair_contact(m.bodies[pr.a], m.bodies[pr.b], s.contact);
+      for (const PairStiffnessDef& t : m.scenario.contact.stiffness_tables) {
+        const std::string &na = m.bodies[pr.a].name, &nb = m.bodies[pr.b].name;
+        if (!((t.body_a == na && t.body_b == nb) || (t.body_a == nb && t.body_b == na))) continue;
+        if (pr.table) throw InputError("scenario: contact.stiffness_tables: two tables for gears '" + na + "' and '" + nb + "'");
+        pr.table = &t.table;
+        pr.table_on_a = t.body_a == na;
+        pr.info.stiffness_table = t.table.source;
+      }
       m.pairs.push_back(std::move(pr));
       m.pair_infos.push_back(m.pairs.back().info);
     }
+  // Every table must belong to a meshing pair.
+  for (const PairStiffnessDef& t : m.scenario.contact.stiffness_tables) {
+    bool used = false;
+    for (const PairRec& pr : m.pairs) used = used || pr.table == &t.table;
+    if (!used)
+      throw InputError("scenario: stiffness table " + t.table.source + ": gears '" + t.body_a + "' and '" + t.body_b +
+                       "' do not mesh (no tooth contact between them)");
+  }
   m.measure();
 }
 
@@ -346,6 +386,7 @@ void World::step() {
 const World::Profile& World::profile() const { return impl_->profile; }
 const PowerFlows& World::power() const { return impl_->power; }
 long World::dropped_contacts() const { return impl_->dropped_points; }
+long World::stiffness_table_misses() const { return impl_->table_misses; }
 
 void World::Impl::measure_power() {
   const double dt = scenario.solver.time_step_s;

@@ -28,6 +28,7 @@ struct ContactSample {
   ToothContact geometry;
   double normal_force_N = 0;    // applied impulse / dt
   double friction_force_N = 0;  // magnitude of the lateral impulses / dt
+  double stiffness_N_per_m = 0; // the contact stiffness it was solved with (pair constant or table)
 };
 
 // Power flows of the last step, W (forces from the solver's impulses / dt, velocities after the
@@ -43,8 +44,11 @@ struct PowerFlows {
 
 struct GearPairInfo {
   std::string body_a, body_b;
-  double stiffness_N_per_m = 0;  // per tooth pair
+  double stiffness_N_per_m = 0;  // per tooth pair (the constant; a table's pair varies per contact)
   double damping_N_s_per_m = 0;
+  double face_width_m = 0;       // common face width the stiffness per width is multiplied by
+  double reduced_mass_kg = 0;    // along the line of action, for the damping c = 2ζ√(k·m)
+  std::string stiffness_table;   // the table's source when the pair has one, else empty
 };
 
 class World {
@@ -78,6 +82,9 @@ class World {
   // Tooth contacts dropped since construction because a pair had more touching tooth pairs than
   // a Bullet manifold holds (4): numerical trouble a run reports, never seen in a sound mesh.
   long dropped_contacts() const;
+  // Contacts since construction whose radius lay outside their pair's stiffness table: they took
+  // the nearest end row's value. Counted, reported in the run summary, never silent.
+  long stiffness_table_misses() const;
 
   struct Impl;
 

@@ -191,18 +191,22 @@ bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
   return true;
 }
 
+double contact_damping_N_s_per_m(double k, double m_eq, double zeta) { return 2 * zeta * std::sqrt(k * m_eq); }
+
 GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactDef& c) {
   GearPairInfo info;
   info.body_a = a.name;
   info.body_b = b.name;
-  info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * std::min(a.face_width_m, b.face_width_m);
+  info.face_width_m = std::min(a.face_width_m, b.face_width_m);
+  info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * info.face_width_m;
   // Effective mass along the line of action from the rotational inertias (J/r²); a fixed gear
   // contributes none. Planet translation on its carrier is neglected here.
   auto inv_mass = [](const BuiltBody& g) {
     return g.fixed ? 0.0 : g.contact_radius_m * g.contact_radius_m / g.inertia_axis_kg_m2;
   };
   const double m_eq = 1.0 / (inv_mass(a) + inv_mass(b));
-  info.damping_N_s_per_m = 2 * c.damping_ratio * std::sqrt(info.stiffness_N_per_m * m_eq);
+  info.reduced_mass_kg = m_eq;
+  info.damping_N_s_per_m = contact_damping_N_s_per_m(info.stiffness_N_per_m, m_eq, c.damping_ratio);
   return info;
 }
 

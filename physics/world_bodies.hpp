@@ -37,7 +37,11 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact);
 // when they could but their axes are not parallel.
 bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b);
 
-// Tooth-pair stiffness and damping of a meshing pair.
+// Damping of one tooth-pair contact, N·s/m: a fraction ζ of critical for stiffness k (N/m) on
+// the pair's reduced mass m_eq (kg): c = 2ζ√(k·m_eq).
+double contact_damping_N_s_per_m(double stiffness_N_per_m, double reduced_mass_kg, double damping_ratio);
+
+// Tooth-pair stiffness and damping of a meshing pair (the constant stiffness per face width).
 GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactDef& contact);
 
 }  // namespace gearsim::physics
