@@ -13,5 +13,6 @@ void register_run(CLI::App& app);
 void register_analyze(CLI::App& app);
 void register_report(CLI::App& app);
 void register_render(CLI::App& app);
+void register_fe_te(CLI::App& app);
 
 }  // namespace gearsim::app

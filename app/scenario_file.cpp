@@ -189,6 +189,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
   for (const auto& [e, key] : macros) {
     s.bodies.insert(s.bodies.end(), e.bodies.begin(), e.bodies.end());
     if (!e.gearset_spec.empty()) s.gearset_spec = e.gearset_spec;
+    if (e.planetary) s.planetary = e.planetary;
   }
   Names names;
   std::size_t bi = 0;
@@ -254,6 +255,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
   if (given(top, "contact"))
     if (const YamlMap c = top.map("contact"); given(c, "stiffness_tables"))
       parse_stiffness_tables(c.list_of_maps("stiffness_tables"), s, dir);
+  if (given(top, "fe")) s.fe = parse_fe(top.map("fe"), s);
   top.reject_unknown_keys();
   return s;
 }

@@ -114,6 +114,8 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
 
   Expansion e;
   e.gearset_spec = spec;
+  e.planetary = physics::PlanetaryTrainDef{ps, {}, ring_fixed};
+  for (const GearSpec* g : planets) e.planetary->planet_gears.push_back(*g);
   auto gear_body = [&](const std::string& name, const GearSpec& gear, const Eigen::Vector3d& at, double angle_rad) {
     physics::BodyDef b;
     b.name = name;

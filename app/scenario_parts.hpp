@@ -20,6 +20,7 @@ struct Expansion {
   std::vector<physics::JointDef> joints;
   std::optional<physics::TransmissionDef> transmission;
   std::filesystem::path gearset_spec;  // the gear-set spec the macro took its gears from, if any
+  std::optional<physics::PlanetaryTrainDef> planetary;  // the planetary macro's train
 };
 
 // True when `key` holds a value; marks the key as known either way (so `key:` left empty, or
@@ -56,6 +57,9 @@ Expansion expand_pair(const YamlMap& m, const std::filesystem::path& dir);
 // pair's active flank on A (start of active profile to tip) is not inside the table's radii.
 void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenario& scenario,
                             const std::filesystem::path& dir);
+
+// The `fe:` section (after the macros: the torque default needs the train and the loads).
+physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& scenario);
 
 // Applies "a.b[2].c=value" overrides to a parsed tree; InputError naming the override when one
 // is malformed or walks through something that is not a mapping or list.

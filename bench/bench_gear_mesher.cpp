@@ -1,6 +1,6 @@
 // Benchmark: quad meshes (gmsh) of the paper's gears at the flank sizes 0.4 mm (paper) and
 // 0.2 mm: node and quad counts, shape (angles, min scaled Jacobian) and median meshing wall time.
-// Usage: bench_gear_mesher [repeats=3]
+// Usage: bench_gear_mesher [repeats=3] [toothed-loop sagitta limit, m]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -39,12 +39,15 @@ int main(int argc, char** argv) {
   const double deg = 180.0 / std::numbers::pi;
   std::printf("%-7s %8s %7s %7s %9s %9s %7s %10s\n", "gear", "flank_mm", "nodes", "quads",
               "min_deg", "max_deg", "min_SJ", "median_ms");
+  const double sagitta = argc > 2 ? std::atof(argv[2]) : fe::MeshSizingDef{}.max_sagitta_m;
+  std::printf("toothed-loop sagitta limit %.2f um\n", sagitta * 1e6);
   for (double flank : {0.4e-3, 0.2e-3}) {
     for (const GearSpec& s : {gear("sun", 24, false, 8e-3), gear("planet", 36, false, 10e-3),
                               gear("ring", 96, true, 110e-3)}) {
       const GearOutline outline = make_gear_outline(s);
       fe::MeshSizingDef sizing;
       sizing.flank_size_m = flank;
+      sizing.max_sagitta_m = sagitta;
       std::vector<double> ms;
       fe::GearMesh m;
       for (int i = 0; i < repeats; ++i) {

@@ -13,6 +13,7 @@
 #include "geometry/convex_decomposition.hpp"
 #include "geometry/gear_spec.hpp"
 #include "geometry/mesh_io.hpp"
+#include "geometry/planetary.hpp"
 #include "physics/stiffness_table.hpp"
 
 namespace gearsim::physics {
@@ -128,6 +129,32 @@ struct RenderDef {
   int png_every = 10;  // every Nth frame also as PNG under DIR/frames/ (0: none)
 };
 
+// The gears the `planetary:` macro built the train from (for tools that need the train itself,
+// such as the finite-element loaded TE). Read by app/, not by the simulation.
+struct PlanetaryTrainDef {
+  PlanetarySpec spec;                  // sun, healthy planet, ring, planet count
+  std::vector<GearSpec> planet_gears;  // one per planet, faulty ones included
+  bool ring_fixed = true;
+};
+
+// `fe:` — the quasi-static loaded transmission error by finite elements (`gearsim fe-te`),
+// CalculiX + Gmsh. Read by app/, not by the simulation; the reader fills every field (defaults in
+// physics/fe/constants.hpp).
+struct FeTeDef {
+  double flank_size_m = 0;        // element size along flanks and fillets, m
+  double core_size_m = 0;         // element size in the gear bodies, m
+  double transition_m = 0;        // distance over which the size grows, m
+  double max_sagitta_m = 0;       // largest distance of a boundary edge from the outline, m
+  double thinning_per_flank_m = 0;  // added to every gear's own thinning (backlash), m
+  double sun_torque_N_m = 0;      // input torque on the sun, N·m
+  std::string torque_source;      // where sun_torque_N_m came from (for the summary)
+  double friction = 0;            // flank Coulomb coefficient
+  std::string element_type;       // CPS4R (paper) or CPS4
+  int positions_per_mesh = 0;     // solves per mesh period
+  double mesh_periods = 0;        // mesh periods swept (centred on planet 0's tooth 0)
+  int jobs = 0;                   // ccx processes at once
+};
+
 struct Scenario {
   std::string name;
   std::filesystem::path source;  // the file it came from
@@ -145,6 +172,8 @@ struct Scenario {
   // For reports that show the gear table; the simulation does not read it.
   std::filesystem::path gearset_spec;
   std::optional<RenderDef> render;
+  std::optional<PlanetaryTrainDef> planetary;  // set by the planetary macro
+  std::optional<FeTeDef> fe;                    // the `fe:` section, when given
 };
 
 }  // namespace gearsim::physics

@@ -66,6 +66,20 @@ inline constexpr double kOutlineCornerTurn_rad = 0.5235987755982988;
 // within this fraction of the local spacing: vertices lie exactly on the true curve, points
 // between them only within the outline's chordal deviation. Normally 0.2 (spacing varies ±20 %).
 inline constexpr double kSnapToVertexFraction = 0.2;
+// Largest distance of a straight mesh edge on the toothed loop from the true outline, m. Normally
+// 5 µm. A chord across a curve moves the FE boundary by up to its sagitta c²/(8ρ): at 0.4 mm
+// edges 5 µm on the paper's sun flank (ρ ≈ 4 mm) and 50 µm across a 0.38 mm root fillet — on an
+// internal gear that chord lies in the tooth space where the mate's tip passes, and the planet–
+// ring pair of the paper's set overlapped by ~6 µm where the exact outlines touch. 5 µm makes
+// fillet edges ~0.12 mm and doubles the quad count (sun 1126 → 2148, ring 5044 → 10336 at
+// 0.4 mm); 0.5 µm, the outline's own tolerance, would make 5–7× more quads. The flank chords'
+// remaining few µm are a geometric error, not an elastic one: planetary_fe takes the geometric
+// transmission error from the exact outlines and only the load-dependent part from the FE.
+inline constexpr double kDefaultMaxSagitta_m = 5e-6;
+// How fast the boundary spacing may change along the outline, m of spacing per m of arc
+// (normally 0.3: neighbouring edges differ by at most ~30 %, so the quads beside them stay well
+// shaped).
+inline constexpr double kSpacingGrading = 0.3;
 // gmsh 2D algorithm: 5 = Delaunay. Normally 5: recombined, its triangles gave the best quads on
 // the paper's gears (min scaled Jacobian 0.60–0.62 at 0.4 mm, against 0.44–0.58 for 6,
 // Frontal-Delaunay); Debian's gmsh 4.8.4 crashes with 8 (Frontal-Delaunay for quads) even on a
@@ -127,4 +141,16 @@ inline constexpr double kClosingPress_m = 0.05e-6;
 inline constexpr double kIdlerSpring_N_m_per_rad = 1.0;
 inline constexpr double kContactBand_modules = 1.0;
 
+}  // namespace gearsim::fe
+
+// ---- gearsim fe-te defaults (the scenario's fe: section) ----
+namespace gearsim::fe {
+// Flank Coulomb friction of the FE contact pairs (the paper's 0.03).
+inline constexpr double kDefaultFlankFriction = 0.03;
+// Quasi-static positions per mesh period (normally 8: the 1↔2 pair changes at ε_α ≈ 1.65 fall
+// 0.35 and 0.65 of a period apart, so each single- and double-pair zone gets 2–5 positions).
+inline constexpr int kDefaultPositionsPerMesh = 8;
+// ccx processes solving positions at once (normally 2: the reference machine's cores; each ccx
+// runs single-threaded).
+inline constexpr int kDefaultFeJobs = 2;
 }  // namespace gearsim::fe

@@ -49,6 +49,8 @@ void validate_sizing(const MeshSizingDef& s) {
               std::to_string(s.core_size_m));
   require(std::isfinite(s.transition_m) && s.transition_m >= 0, "transition_m",
           "must be a length ≥ 0 in m, got " + std::to_string(s.transition_m));
+  require(std::isfinite(s.max_sagitta_m) && s.max_sagitta_m >= 0, "max_sagitta_m",
+          "must be a length ≥ 0 in m (0: no limit), got " + std::to_string(s.max_sagitta_m));
 }
 
 double mean_radius(const Polygon2& p) {
@@ -79,7 +81,7 @@ class GmshSession {
 };
 
 // One gmsh run: each loop's nodes joined by straight lines of one element each (so gmsh adds no
-// boundary node), a plane surface, triangles of size size_of(r) recombined by Blossom.
+// boundary node), a plane surface, triangles of size size_of(x, y) recombined by Blossom.
 template <class SizeFn>
 RawMesh run_gmsh(const std::vector<Loop>& loops, SizeFn size_of) {
   GmshSession session;
@@ -102,9 +104,9 @@ RawMesh run_gmsh(const std::vector<Loop>& loops, SizeFn size_of) {
     const int surface = gmsh::model::geo::addPlaneSurface(curve_loops);
     gmsh::model::geo::synchronize();
 
-    // Size only from the radial rule; quads by Blossom recombination of Frontal-Delaunay triangles.
+    // Size only from size_of (radial rule and boundary grading); quads by Blossom recombination of Frontal-Delaunay triangles.
     gmsh::model::mesh::setSizeCallback(
-        [size_of](int, int, double x, double y, double) { return size_of(std::hypot(x, y)); });
+        [size_of](int, int, double x, double y, double) { return size_of(x, y); });
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
@@ -166,6 +168,55 @@ RawMesh run_gmsh(const std::vector<Loop>& loops, SizeFn size_of) {
     throw InputError("mesh_gear_outline: gmsh failed: " + (message.empty() ? "unknown error" : message));
   }
 }
+
+// Element size near boundary nodes whose spacing is finer than the radial rule: the size grows
+// from a node's spacing by kSpacingGrading per unit distance from it, so refined flanks and
+// fillets grade into the interior size instead of meeting it abruptly. A bucket grid finds the
+// nodes close enough to matter.
+class BoundaryGrading {
+ public:
+  BoundaryGrading(const std::vector<Loop>& loops, double coarsest_m) : cell_(coarsest_m / kSpacingGrading) {
+    for (const Loop& l : loops) {
+      const auto& p = l.nodes.points;
+      const std::size_t n = p.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const double h = 0.5 * ((p[(i + 1) % n] - p[i]).norm() + (p[i] - p[(i + n - 1) % n]).norm());
+        if (h >= coarsest_m) continue;
+        nodes_.push_back({p[i], h});
+        grid_[key(cell_of(p[i].x()), cell_of(p[i].y()))].push_back(nodes_.size() - 1);
+      }
+    }
+  }
+  // Smallest graded size at (x, y), or `limit` when no refined node is close enough.
+  double size_at(double x, double y, double limit) const {
+    if (nodes_.empty()) return limit;
+    const long cx = cell_of(x), cy = cell_of(y);
+    double h = limit;
+    for (long i = cx - 1; i <= cx + 1; ++i)
+      for (long j = cy - 1; j <= cy + 1; ++j) {
+        const auto it = grid_.find(key(i, j));
+        if (it == grid_.end()) continue;
+        for (std::size_t k : it->second) {
+          const Node& nd = nodes_[k];
+          h = std::min(h, nd.h + kSpacingGrading * std::hypot(x - nd.p.x(), y - nd.p.y()));
+        }
+      }
+    return h;
+  }
+
+ private:
+  struct Node {
+    Vector2d p;
+    double h;
+  };
+  long cell_of(double v) const { return static_cast<long>(std::floor(v / cell_)); }
+  static std::uint64_t key(long i, long j) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(i)) << 32) | static_cast<std::uint32_t>(j);
+  }
+  double cell_;
+  std::vector<Node> nodes_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> grid_;
+};
 
 std::uint64_t edge_key(int a, int b) {
   const auto lo = static_cast<std::uint64_t>(std::min(a, b));
@@ -342,9 +393,14 @@ GearMesh mesh_gear_outline(const GearOutline& gear, GearKind kind, const MeshSiz
       const double h = l.role == LoopRole::Toothed
                            ? sizing.flank_size_m
                            : mesh_size_at_radius(gear, kind, sizing, mean_radius(Polygon2{l.poly.points}));
-      l.nodes = resample_loop(l.poly, scale * h);
+      l.nodes = resample_loop(l.poly, scale * h,
+                              l.role == LoopRole::Toothed ? scale * scale * sizing.max_sagitta_m : 0.0);
     }
-    RawMesh raw = run_gmsh(loops, [&](double r) { return scale * mesh_size_at_radius(gear, kind, sizing, r); });
+    const BoundaryGrading grading(loops, scale * sizing.flank_size_m);
+    RawMesh raw = run_gmsh(loops, [&](double x, double y) {
+      const double radial = scale * mesh_size_at_radius(gear, kind, sizing, std::hypot(x, y));
+      return grading.size_at(x, y, radial);
+    });
     if (split) raw = subdivide(raw, loops);
     return raw;
   };

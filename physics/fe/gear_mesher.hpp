@@ -18,6 +18,10 @@ struct MeshSizingDef {
   double flank_size_m = kDefaultFlankElementSize_m;  // m, normally 0.4 mm (paper's converged size)
   double core_size_m = kDefaultCoreElementSize_m;    // m, normally 2 mm; ≥ flank_size_m
   double transition_m = kDefaultSizeTransition_m;    // m, normally 3 mm; ≥ 0
+  // Largest distance of a toothed-loop edge from the true outline, m (normally 0.5 µm; 0 turns the
+  // limit off and keeps flank_size_m along the whole loop). Edges shorten where the outline
+  // curves (flanks near the base circle, root fillets): see resample_loop.
+  double max_sagitta_m = kDefaultMaxSagitta_m;
   // Mesh at twice the size and split every element into quads (quads into 4, triangles into 3),
   // with new boundary nodes placed on the outline. Normally off: Blossom already returns only
   // quads, and it is used anyway when Blossom leaves a triangle.

@@ -40,6 +40,19 @@ struct ResampledLoop {
 // than kOutlineCornerTurn_rad) are nodes; each stretch between corners is cut into equal arc
 // lengths, snapped to vertices within kSnapToVertexFraction of the spacing. The node count is
 // even (a quad mesh needs an even number of boundary edges) and at least 4.
-ResampledLoop resample_loop(const ArcPolygon& poly, double spacing_m);
+//
+// With max_sagitta_m > 0 the spacing also shrinks where the outline curves, so that a straight
+// edge between two nodes stays within max_sagitta_m of the curve: the local spacing is
+// min(spacing_m, √(8 ρ max_sagitta_m)) with ρ the outline's radius of curvature there, graded so
+// that it changes by at most kSpacingGrading per unit arc length, and nodes are placed at equal
+// steps of ∫ ds / spacing(s) within each stretch.
+ResampledLoop resample_loop(const ArcPolygon& poly, double spacing_m, double max_sagitta_m = 0.0);
+
+// Local target spacing at every polygon vertex, m (the rule above; spacing_m everywhere when
+// max_sagitta_m ≤ 0). Exposed for tests and the mesher's interior sizing.
+std::vector<double> local_spacing(const ArcPolygon& poly, double spacing_m, double max_sagitta_m);
+
+// Largest distance of a straight edge between consecutive nodes from the polygon between them, m.
+double max_edge_sagitta(const ArcPolygon& poly, const ResampledLoop& loop);
 
 }  // namespace gearsim::fe

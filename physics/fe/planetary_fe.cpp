@@ -1,8 +1,17 @@
 #include "physics/fe/planetary_fe.hpp"
 
 #include <Eigen/Geometry>
+#include <atomic>
 #include <cmath>
+#include <cstdio>
+#include <exception>
 #include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <limits>
+#include <mutex>
+#include <numbers>
+#include <thread>
 
 #include "geometry/errors.hpp"
 #include "physics/fe/ccx_dat.hpp"
@@ -107,10 +116,26 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   deck.idler_spring_N_m_per_rad = kIdlerSpring_N_m_per_rad;
   const Deck d = write_deck(deck);
 
-  // Solve.
+  // Solve, unless this folder already holds a finished solve of the very same deck (a resumed
+  // run): position.done records the solve's wall time once ccx has succeeded.
   std::filesystem::create_directories(work_dir);
-  std::ofstream(work_dir / "position.inp") << d.text;
-  const CcxRunResult run = run_ccx({def.ccx, work_dir, "position"});
+  CcxRunResult run;
+  run.dat_path = work_dir / "position.dat";
+  run.log_path = work_dir / "position.log";
+  bool reused = false;
+  {
+    std::ifstream old_deck(work_dir / "position.inp"), done(work_dir / "position.done");
+    if (old_deck && done && std::filesystem::exists(run.dat_path)) {
+      const std::string text((std::istreambuf_iterator<char>(old_deck)), std::istreambuf_iterator<char>());
+      reused = text == d.text && static_cast<bool>(done >> run.wall_time_s);
+    }
+  }
+  if (!reused) {
+    std::filesystem::remove(work_dir / "position.done");
+    std::ofstream(work_dir / "position.inp") << d.text;
+    run = run_ccx({def.ccx, work_dir, "position"});
+    std::ofstream(work_dir / "position.done") << std::setprecision(17) << run.wall_time_s << '\n';
+  }
 
   // Results at the end of the low (time 2) and full (time 3) load stages.
   const auto blocks = read_dat(run.dat_path);
@@ -123,21 +148,106 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   };
   PlanetaryFePosition out;
   out.sun_turn_rad = sun_turn_rad;
-  out.te_unloaded_rad = pos.sun_closing_rad;
-  out.te_low_rad = pos.sun_closing_rad + rotation(0, 2.0);
-  out.te_loaded_rad = pos.sun_closing_rad + rotation(0, 3.0);
-  for (int k = 0; k < ps.planets; ++k) out.planet_rotation_rad.push_back(rotation(k + 1, 3.0));
+  out.te_geometric_rad = pos.sun_closing_rad;
+  const double sun_low = rotation(0, 2.0), sun_full = rotation(0, 3.0);
+  out.te_fe_low_rad = pos.sun_closing_rad + sun_low;
+  out.te_fe_full_rad = pos.sun_closing_rad + sun_full;
+  out.te_elastic_rad = (sun_full - sun_low) / (1.0 - kLowLoadFraction);
+  out.te_loaded_rad = out.te_geometric_rad + out.te_elastic_rad;
+  for (int k = 0; k < ps.planets; ++k) {
+    out.planet_rotation_low_rad.push_back(rotation(k + 1, 2.0));
+    out.planet_rotation_rad.push_back(rotation(k + 1, 3.0));
+  }
   const auto totals = read_contact_totals(run.dat_path);
-  auto force = [&](const std::string& slave) {
+  auto force = [&](const std::string& slave, double time) {
     for (auto it = totals.rbegin(); it != totals.rend(); ++it)
-      if (it->slave == slave && std::abs(it->time - 3.0) < 1e-6) return norm3(it->force);
-    throw std::runtime_error("ccx results lack the contact force of " + slave);
+      if (it->slave == slave && std::abs(it->time - time) < 1e-6) return norm3(it->force);
+    throw std::runtime_error("ccx results lack the contact force of " + slave + " at time " +
+                             std::to_string(time) + " (" + run.dat_path.string() + ")");
+  };
+  const double rbs = sd.base_radius_m, rbp = pd.base_radius_m;
+  auto secant = [](double dF, double approach) {
+    return approach != 0 ? dF / approach : std::numeric_limits<double>::quiet_NaN();
   };
   for (int k = 0; k < ps.planets; ++k) {
-    out.sun_planet_force_N.push_back(force("SSP" + std::to_string(k)));
-    out.planet_ring_force_N.push_back(force("SPR" + std::to_string(k)));
+    const std::string n = std::to_string(k);
+    out.sun_planet_force_N.push_back(force("SSP" + n, 3.0));
+    out.planet_ring_force_N.push_back(force("SPR" + n, 3.0));
+    out.sun_planet_force_low_N.push_back(force("SSP" + n, 2.0));
+    out.planet_ring_force_low_N.push_back(force("SPR" + n, 2.0));
+    const double dp = out.planet_rotation_rad[k] - out.planet_rotation_low_rad[k];
+    out.sun_planet_stiffness_N_per_m.push_back(
+        secant(out.sun_planet_force_N[k] - out.sun_planet_force_low_N[k], rbs * (sun_full - sun_low) + rbp * dp));
+    out.planet_ring_stiffness_N_per_m.push_back(
+        secant(out.planet_ring_force_N[k] - out.planet_ring_force_low_N[k], -rbp * dp));
   }
   out.wall_time_s = run.wall_time_s;
+  return out;
+}
+
+std::vector<double> sweep_turns(const PlanetaryFeDef& def, int positions_per_mesh, double mesh_periods) {
+  if (positions_per_mesh < 1)
+    throw InputError("planetary FE: positions_per_mesh must be at least 1, got " + std::to_string(positions_per_mesh));
+  if (!(mesh_periods > 0) || !std::isfinite(mesh_periods))
+    throw InputError("planetary FE: mesh_periods must be a positive number of mesh periods");
+  const PlanetarySpec& ps = def.spec;
+  const PlanetaryGeometry geo = analyse_planetary(ps);
+  const double zs = ps.sun.teeth, zp = ps.planet.teeth;
+  const PlanetPlacement& p0 = geo.placements.at(0);
+  // Planet 0 turns −φ z_s/z_p with the sun's turn φ; its tooth 0 faces the sun (polar angle
+  // carrier_angle + π) once per planet revolution, i.e. every 2π z_p/z_s of φ.
+  const double period = 2.0 * std::numbers::pi * zp / zs;
+  // The flank the sun loads (sun driving counter-clockwise) passes the pitch point a quarter of a
+  // mesh period later: half the tooth thickness at the pitch circle, π/(2 z_p) of planet turn,
+  // is π/(2 z_s) of sun turn (checked with the rigid closing of a faulty tooth 0: its extra
+  // closing spans +0.125…+0.375 of a mesh period after the centre-line passage).
+  double centre = (p0.spin_angle_rad + planet_gear(def, 0).tooth0_angle_rad - p0.carrier_angle_rad - std::numbers::pi) *
+                      zp / zs +
+                  std::numbers::pi / (2.0 * zs);
+  centre = std::fmod(centre, period);
+  if (centre < 0) centre += period;
+  const int n = std::max(1, static_cast<int>(std::lround(positions_per_mesh * mesh_periods)));
+  const double step = 2.0 * std::numbers::pi / zs / positions_per_mesh;
+  std::vector<double> turns;
+  for (int j = 0; j < n; ++j) turns.push_back(centre + (j - 0.5 * n) * step);
+  return turns;
+}
+
+std::vector<PlanetaryFePosition> solve_positions(
+    const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes, const std::vector<double>& turns_rad,
+    const std::filesystem::path& work_dir, int jobs,
+    const std::function<void(std::size_t, const PlanetaryFePosition&)>& on_done) {
+  if (jobs < 1) throw InputError("planetary FE: jobs must be at least 1, got " + std::to_string(jobs));
+  std::vector<PlanetaryFePosition> out(turns_rad.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::exception_ptr first_error;
+  std::mutex mutex;
+  auto worker = [&] {
+    for (;;) {
+      if (failed) return;
+      const std::size_t i = next++;
+      if (i >= turns_rad.size()) return;
+      char name[32];
+      std::snprintf(name, sizeof name, "pos_%03zu", i);
+      try {
+        PlanetaryFePosition p = solve_position(def, meshes, turns_rad[i], work_dir / name);
+        std::lock_guard<std::mutex> lock(mutex);
+        out[i] = p;
+        if (on_done) on_done(i, out[i]);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!first_error) first_error = std::current_exception();
+        failed = true;
+        return;
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  const int n = std::min<int>(jobs, static_cast<int>(turns_rad.size()));
+  for (int t = 0; t < n; ++t) threads.emplace_back(worker);
+  for (auto& t : threads) t.join();
+  if (first_error) std::rethrow_exception(first_error);
   return out;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "geometry/planetary.hpp"
@@ -22,16 +23,34 @@ struct PlanetaryFeDef {
   std::string ccx = "ccx";             // solver executable
 };
 
-// One solved position.
+// One solved position. TE = θ_sun − i·θ_carrier with the carrier held: the sun's rotation from
+// its kinematic angle, rad.
+//
+// The FE boundary is straight edges between nodes on the exact outline; on the flanks those
+// chords sit up to MeshSizingDef::max_sagitta_m inside the true curve, so the FE model's own
+// geometric TE (its rigid clearance) is off by a few µm on the base circles and varies with the
+// position. The loaded TE therefore takes its geometric part from the exact outlines (flank
+// tables) and its load-dependent part from the FE, as the secant between the two load stages:
+//   te_elastic = (te_fe_full − te_fe_low) / (1 − kLowLoadFraction)  (linear contact and material)
+//   te_loaded  = te_geometric + te_elastic.
+// The raw FE values are kept beside it.
 struct PlanetaryFePosition {
   double sun_turn_rad = 0;        // kinematic sun turn relative to the carrier
-  double te_unloaded_rad = 0;     // geometric TE: the clearance the sun closed (rigid teeth)
-  double te_low_rad = 0;          // TE at the low load stage (kLowLoadFraction of the torque)
-  double te_loaded_rad = 0;       // TE at the full torque: θ_sun − i·θ_carrier
-  std::vector<double> sun_planet_force_N;   // per planet, contact force magnitude on the sun mesh
-  std::vector<double> planet_ring_force_N;  // per planet, on the ring mesh
-  std::vector<double> planet_rotation_rad;  // per planet, elastic rotation at full load
-  double wall_time_s = 0;
+  double te_geometric_rad = 0;    // rigid teeth, exact outlines: the clearance the sun closed
+  double te_fe_low_rad = 0;       // FE at kLowLoadFraction of the torque (raw, FE boundary)
+  double te_fe_full_rad = 0;      // FE at the full torque (raw)
+  double te_elastic_rad = 0;      // load-dependent part at the full torque (see above)
+  double te_loaded_rad = 0;       // te_geometric_rad + te_elastic_rad
+  // Per planet, at the full torque: contact force magnitudes (N) and the planet's rotation (rad).
+  std::vector<double> sun_planet_force_N, planet_ring_force_N, planet_rotation_rad;
+  // Per planet, at the low stage.
+  std::vector<double> sun_planet_force_low_N, planet_ring_force_low_N, planet_rotation_low_rad;
+  // Per planet, secant mesh stiffness between the stages, N/m along the line of action: force
+  // change over the change of the pair's approach (sun–planet: r_b,s Δθ_s + r_b,p Δθ_p;
+  // planet–ring: −r_b,p Δθ_p, ring fixed). Includes the gear bodies between the rigid bores and
+  // the teeth. NaN when the pair's approach did not change (open pair).
+  std::vector<double> sun_planet_stiffness_N_per_m, planet_ring_stiffness_N_per_m;
+  double wall_time_s = 0;         // ccx wall time
 };
 
 // The meshes of the set (made once; positions only move them).
@@ -41,9 +60,26 @@ struct PlanetaryFeMeshes {
 };
 PlanetaryFeMeshes mesh_planetary(const PlanetaryFeDef& def);
 
-// Solves one position in `work_dir` (deck, ccx log and results stay there). Throws InputError for
+// Solves one position in `work_dir` (deck, ccx log and results stay there). A folder that already
+// holds a finished solve of the identical deck (position.inp, position.dat and position.done with
+// the solve's wall time) is read instead of solved again: an interrupted sweep resumes where it
+// stopped. Throws InputError for
 // a bad definition and std::runtime_error quoting ccx when the solve fails.
 PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes,
                                    double sun_turn_rad, const std::filesystem::path& work_dir);
+
+// Sun turns of a loaded-TE sweep over `mesh_periods` mesh periods (2π/z_s of sun turn relative
+// to the carrier each), `positions_per_mesh` per period, centred on the turn at which the flank of
+// planet 0's tooth 0 that the sun loads passes the pitch point (so a faulty tooth 0 passes
+// through the middle of the sweep; on a healthy set every window is alike). Kinematic angles, rad.
+std::vector<double> sweep_turns(const PlanetaryFeDef& def, int positions_per_mesh, double mesh_periods);
+
+// Solves the positions, `jobs` ccx processes at a time, each in work_dir/pos_NNN. on_done(i, p)
+// runs (one call at a time) as position i finishes. When a solve fails the running ones finish,
+// then the first failure is rethrown; positions finished before stay reported through on_done.
+std::vector<PlanetaryFePosition> solve_positions(
+    const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes, const std::vector<double>& turns_rad,
+    const std::filesystem::path& work_dir, int jobs,
+    const std::function<void(std::size_t, const PlanetaryFePosition&)>& on_done = {});
 
 }  // namespace gearsim::fe

@@ -1,0 +1,264 @@
+// gearsim fe-te SCENARIO --out DIR: the quasi-static loaded transmission error of a planetary
+// train by finite elements (Gmsh meshes of the gear outlines, one CalculiX solve per position),
+// after the paper's section 6. Writes te_loaded.csv, mesh_stiffness.csv, summary.json and SVG
+// plots in DIR, each ccx deck, log and result under DIR/ccx/pos_NNN. A failed solve ends the run
+// with ccx's message and log path; the positions solved before it stay in the CSV files, and
+// running the same command again reuses every position whose deck is unchanged (a resume).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <numeric>
+
+#include "app/commands.hpp"
+#include "app/gnuplot.hpp"
+#include "app/scenario_file.hpp"
+#include "geometry/errors.hpp"
+#include "geometry/gear_dimensions.hpp"
+#include "geometry/gear_mesh.hpp"
+#include "physics/fe/planetary_fe.hpp"
+#include "physics/fe/process.hpp"
+
+namespace gearsim::app {
+namespace {
+
+using json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+struct FeTeOptions {
+  std::string scenario;
+  std::string out_dir;
+  std::vector<std::string> sets;
+  std::string ccx = "ccx";
+  bool no_plots = false;
+};
+
+std::ofstream open_out(const fs::path& p) {
+  std::ofstream f(p);
+  if (!f) throw InputError(p.string() + ": cannot write");
+  f << std::setprecision(12);
+  return f;
+}
+
+json stats(const std::vector<double>& v) {
+  std::vector<double> x;
+  for (double d : v)
+    if (std::isfinite(d)) x.push_back(d);
+  if (x.empty()) return json{{"count", 0}};
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
+  return json{{"mean", mean}, {"min", *lo}, {"max", *hi}, {"count", x.size()}};
+}
+
+void write_outputs(const fs::path& dir, const physics::Scenario& s, const fe::PlanetaryFeDef& def,
+                   const std::vector<std::optional<fe::PlanetaryFePosition>>& done, double rbs,
+                   json& summary, bool plots) {
+  const int n = def.spec.planets;
+  const double mesh_period = 2.0 * M_PI / def.spec.sun.teeth;
+  std::ofstream te = open_out(dir / "te_loaded.csv");
+  te << "position,sun_turn_rad,mesh_phase,te_geometric_rad,te_elastic_rad,te_loaded_rad,te_loaded_urad,"
+        "te_loaded_base_um,te_fe_low_rad,te_fe_full_rad,ccx_wall_s\n";
+  std::ofstream ms = open_out(dir / "mesh_stiffness.csv");
+  ms << "position,sun_turn_rad,mesh_phase";
+  for (int k = 0; k < n; ++k) {
+    const std::string p = "planet_" + std::to_string(k);
+    ms << ",sun_" << p << "_force_N," << p << "_ring_force_N,sun_" << p << "_stiffness_N_per_m," << p
+       << "_ring_stiffness_N_per_m," << p << "_load_share";
+  }
+  ms << '\n';
+  std::vector<double> te_loaded, te_elastic, k_sp, k_pr, share_max, phase_col, te_col, tel_col, kcol;
+  double first_turn = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < done.size(); ++i) {
+    if (!done[i]) continue;
+    const fe::PlanetaryFePosition& p = *done[i];
+    if (std::isnan(first_turn)) first_turn = p.sun_turn_rad;
+    const double phase = (p.sun_turn_rad - first_turn) / mesh_period;
+    te << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.te_geometric_rad << ',' << p.te_elastic_rad << ','
+       << p.te_loaded_rad << ',' << p.te_loaded_rad * 1e6 << ',' << p.te_loaded_rad * rbs * 1e6 << ','
+       << p.te_fe_low_rad << ',' << p.te_fe_full_rad << ',' << p.wall_time_s << '\n';
+    te_loaded.push_back(p.te_loaded_rad);
+    te_elastic.push_back(p.te_elastic_rad);
+    phase_col.push_back(phase);
+    te_col.push_back(p.te_loaded_rad * 1e6);
+    tel_col.push_back(p.te_elastic_rad * 1e6);
+    const double total = std::accumulate(p.sun_planet_force_N.begin(), p.sun_planet_force_N.end(), 0.0);
+    ms << i << ',' << p.sun_turn_rad << ',' << phase;
+    double smax = 0;
+    for (int k = 0; k < n; ++k) {
+      const double share = total > 0 ? p.sun_planet_force_N[k] * n / total : 0.0;
+      smax = std::max(smax, share);
+      ms << ',' << p.sun_planet_force_N[k] << ',' << p.planet_ring_force_N[k] << ','
+         << p.sun_planet_stiffness_N_per_m[k] << ',' << p.planet_ring_stiffness_N_per_m[k] << ',' << share;
+      k_sp.push_back(p.sun_planet_stiffness_N_per_m[k]);
+      k_pr.push_back(p.planet_ring_stiffness_N_per_m[k]);
+    }
+    kcol.push_back(p.sun_planet_stiffness_N_per_m[0]);
+    share_max.push_back(smax);
+    ms << '\n';
+  }
+  auto range = [&](const std::vector<double>& v) {
+    if (v.empty()) return json{{"count", 0}};
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    return json{{"min_rad", *lo}, {"max_rad", *hi}, {"p2p_rad", *hi - *lo}, {"p2p_urad", (*hi - *lo) * 1e6},
+                {"p2p_base_um", (*hi - *lo) * rbs * 1e6}};
+  };
+  summary["positions_solved"] = te_loaded.size();
+  summary["te_loaded"] = range(te_loaded);
+  summary["te_elastic"] = range(te_elastic);
+  summary["mesh_stiffness_N_per_m"] = stats(k_sp);  // sun–planet meshes, all planets and positions
+  summary["planet_ring_stiffness_N_per_m"] = stats(k_pr);
+  const double face = def.spec.sun.face_width_m;
+  if (json k = stats(k_sp); k.contains("mean"))
+    summary["mesh_stiffness_N_per_mm_per_um"] = {{"mean", k["mean"].get<double>() / face * 1e-9},
+                                                 {"min", k["min"].get<double>() / face * 1e-9},
+                                                 {"max", k["max"].get<double>() / face * 1e-9}};
+  summary["load_sharing_max_over_mean"] = stats(share_max);
+
+  // Stiffness tables for the dynamics (contact.stiffness_tables): the FE's mean secant mesh
+  // stiffness of each mesh spread over its mean number of pairs in contact, constant over the
+  // active flank (rows at the root and tip radii of the table's gear A, which span it).
+  auto table = [&](const char* file, const GearSpec& a, const GearSpec& b, const json& k) {
+    if (!k.contains("mean")) return;
+    const MeshGeometry g = analyse_mesh(a, b, zero_backlash_centre_distance(a, b));
+    const double c = k["mean"].get<double>() / (g.effective_contact_ratio * face);
+    const GearDimensions d = gear_dimensions(a);
+    std::ofstream t = open_out(dir / file);
+    t << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
+    summary["stiffness_tables"][file] = {{"gear_a", a.name}, {"gear_b", b.name},
+                                         {"stiffness_N_per_m_per_m", c},
+                                         {"effective_contact_ratio", g.effective_contact_ratio},
+                                         {"from", "mean secant mesh stiffness / (effective contact ratio × face width)"}};
+  };
+  table("fe_stiffness_sun_planet.csv", def.spec.sun, def.spec.planet, stats(k_sp));
+  table("fe_stiffness_planet_ring.csv", def.spec.planet, def.spec.ring, stats(k_pr));
+  if (plots && te_loaded.size() >= 2) {
+    std::ofstream(dir / "te_loaded.svg")
+        << gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
+                       "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'TE, µrad'; set grid\n"
+                       "set y2label 'elastic part, µrad'; set y2tics; set ytics nomirror\n"
+                       "plot $d using 1:2 with linespoints title 'loaded TE (θ_s − i θ_c)', "
+                       "$d using 1:3 axes x1y2 with linespoints title 'elastic part'\n");
+    std::ofstream(dir / "mesh_stiffness.svg")
+        << gnuplot_svg(data_block("d", {phase_col, kcol}) +
+                       "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"
+                       "plot $d using 1:2 with linespoints title 'sun–planet 0 secant mesh stiffness'\n");
+  }
+  (void)s;
+}
+
+void fe_te(const FeTeOptions& o) {
+  const physics::Scenario s = load_scenario(o.scenario, o.sets);
+  if (!s.fe) throw InputError(o.scenario + ": no fe: section (fe-te needs its settings; see assets/scenarios/paper_fe_te.yaml)");
+  if (!s.planetary) throw InputError(o.scenario + ": fe-te solves planetary trains (the planetary: macro)");
+  if (fe::find_executable(o.ccx).empty())
+    throw InputError("CalculiX solver '" + o.ccx + "' not found on PATH (Debian package calculix-ccx; or give --ccx PATH)");
+  const physics::FeTeDef& f = *s.fe;
+  const fs::path dir(o.out_dir);
+  std::error_code ec;
+  fs::create_directories(dir / "ccx", ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
+
+  fe::PlanetaryFeDef def;
+  def.spec = s.planetary->spec;
+  def.planet_gears = s.planetary->planet_gears;
+  auto thin = [&](GearSpec& g) { g.thinning_per_flank_m += f.thinning_per_flank_m; };
+  thin(def.spec.sun);
+  thin(def.spec.planet);
+  thin(def.spec.ring);
+  for (GearSpec& g : def.planet_gears) thin(g);
+  def.sizing.flank_size_m = f.flank_size_m;
+  def.sizing.core_size_m = f.core_size_m;
+  def.sizing.transition_m = f.transition_m;
+  def.sizing.max_sagitta_m = f.max_sagitta_m;
+  def.sun_torque_N_m = f.sun_torque_N_m;
+  def.friction = f.friction;
+  def.element_type = f.element_type;
+  def.ccx = o.ccx;
+
+  const auto wall0 = std::chrono::steady_clock::now();
+  auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(); };
+  std::cerr << s.name << ": meshing (flank " << f.flank_size_m * 1e3 << " mm, sagitta ≤ " << f.max_sagitta_m * 1e6
+            << " µm)..." << std::flush;
+  const fe::PlanetaryFeMeshes meshes = fe::mesh_planetary(def);
+  const double mesh_wall = since();
+  std::cerr << " sun " << meshes.sun.quality.quads << ", planet " << meshes.planets[0].quality.quads << ", ring "
+            << meshes.ring.quality.quads << " quads (" << std::fixed << std::setprecision(1) << mesh_wall << " s)\n";
+  const std::vector<double> turns = fe::sweep_turns(def, f.positions_per_mesh, f.mesh_periods);
+  const double rbs = gear_dimensions(def.spec.sun).base_radius_m;
+
+  json summary;
+  summary["scenario"] = s.name;
+  summary["scenario_file"] = fs::absolute(o.scenario).lexically_normal().string();
+  summary["overrides"] = o.sets;
+  summary["fe"] = {{"flank_size_m", f.flank_size_m}, {"core_size_m", f.core_size_m}, {"transition_m", f.transition_m},
+                   {"max_sagitta_m", f.max_sagitta_m}, {"thinning_per_flank_m", f.thinning_per_flank_m},
+                   {"sun_torque_N_m", f.sun_torque_N_m}, {"torque_source", f.torque_source},
+                   {"friction", f.friction}, {"element_type", f.element_type},
+                   {"positions_per_mesh", f.positions_per_mesh}, {"mesh_periods", f.mesh_periods}, {"jobs", f.jobs},
+                   {"low_load_fraction", fe::kLowLoadFraction}};
+  summary["quads"] = {{"sun", meshes.sun.quality.quads}, {"planet", meshes.planets[0].quality.quads},
+                      {"ring", meshes.ring.quality.quads}};
+  summary["min_scaled_jacobian"] = std::min({meshes.sun.quality.min_scaled_jacobian,
+                                             meshes.planets[0].quality.min_scaled_jacobian,
+                                             meshes.ring.quality.min_scaled_jacobian});
+  summary["sun_base_radius_m"] = rbs;
+  summary["positions"] = turns.size();
+
+  std::vector<std::optional<fe::PlanetaryFePosition>> done(turns.size());
+  std::size_t finished = 0;
+  double ccx_total = 0;
+  std::string status = "completed", error;
+  try {
+    fe::solve_positions(def, meshes, turns, dir / "ccx", f.jobs, [&](std::size_t i, const fe::PlanetaryFePosition& p) {
+      done[i] = p;
+      ++finished;
+      ccx_total += p.wall_time_s;
+      std::cerr << "  position " << finished << "/" << turns.size() << " (pos_" << std::setw(3) << std::setfill('0') << i
+                << std::setfill(' ') << "): TE " << std::setprecision(2) << p.te_loaded_rad * 1e6 << " µrad, elastic "
+                << p.te_elastic_rad * 1e6 << " µrad, sun–planet " << std::setprecision(1) << p.sun_planet_force_N[0]
+                << " N; ccx " << p.wall_time_s << " s, elapsed " << since() << " s\n";
+    });
+  } catch (const std::exception& e) {
+    status = "failed";
+    error = e.what();
+  }
+  summary["status"] = status;
+  if (!error.empty()) summary["error"] = error;
+  summary["wall_seconds"] = since();
+  summary["mesh_wall_seconds"] = mesh_wall;
+  summary["ccx_seconds_total"] = ccx_total;
+  write_outputs(dir, s, def, done, rbs, summary, !o.no_plots && status == "completed");
+  std::ofstream(dir / "summary.json") << summary.dump(2) << '\n';
+  if (status != "completed")
+    throw std::runtime_error("fe-te stopped after " + std::to_string(finished) + " of " + std::to_string(turns.size()) +
+                             " positions (kept in " + dir.string() + "/te_loaded.csv): " + error);
+  const json& t = summary["te_loaded"];
+  std::cout << s.name << ": loaded TE " << std::setprecision(3) << t["min_rad"].get<double>() * 1e6 << " … "
+            << t["max_rad"].get<double>() * 1e6 << " µrad, peak-to-peak " << t["p2p_urad"].get<double>() << " µrad ("
+            << t["p2p_base_um"].get<double>() << " µm on the sun base circle); mean sun–planet mesh stiffness "
+            << summary["mesh_stiffness_N_per_m"]["mean"].get<double>() << " N/m; " << std::setprecision(0)
+            << summary["wall_seconds"].get<double>() << " s wall → " << dir.string() << "\n";
+}
+
+}  // namespace
+
+void register_fe_te(CLI::App& app) {
+  auto o = std::make_shared<FeTeOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "fe-te", "Loaded transmission error by finite elements (Gmsh + CalculiX): te_loaded.csv, mesh_stiffness.csv, summary.json in --out.");
+  sub->add_option("scenario", o->scenario, "Scenario file with a planetary: train and an fe: section.")
+      ->required()
+      ->check(CLI::ExistingFile);
+  sub->add_option("--out", o->out_dir, "Output folder (created if missing).")->required();
+  sub->add_option("--set", o->sets, "Override a scenario value: key.path=value (repeatable), e.g. fe.positions_per_mesh=4.");
+  sub->add_option("--ccx", o->ccx, "CalculiX executable (name on PATH or a path).");
+  sub->add_flag("--no-plots", o->no_plots, "Do not draw the SVG plots (gnuplot).");
+  sub->callback([o] { fe_te(*o); });
+}
+
+}  // namespace gearsim::app
