@@ -4,6 +4,7 @@
 // points, the load per tooth pair and the mesh-boundary gaps; the mean over one base pitch, the
 // single-pair value at the pitch point, and ccx wall times. Two ccx processes at a time.
 // Usage: bench_spur_fe [z1=20] [z2=31] [positions=8] [flank sizes in mm, default 0.8 0.4 0.2]
+//        [CPS4 | CPS4R (default)]
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -12,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -34,7 +36,11 @@ int main(int argc, char** argv) {
   if (argc > 2) def.pair.wheel_teeth = std::atoi(argv[2]);
   const int n = argc > 3 ? std::max(1, std::atoi(argv[3])) : 8;
   std::vector<double> sizes_mm;
-  for (int i = 4; i < argc; ++i) sizes_mm.push_back(std::atof(argv[i]));
+  for (int i = 4; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "CPS4" || a == "CPS4R") def.element_type = a;
+    else sizes_mm.push_back(std::atof(argv[i]));
+  }
   if (sizes_mm.empty()) sizes_mm = {0.8, 0.4, 0.2};
 
   const SpurPairPath path = spur_pair_path(def.pair);
@@ -63,9 +69,10 @@ int main(int argc, char** argv) {
     const auto t0 = Clock::now();
     const SpurPairMeshes meshes = mesh_spur_pair(def);
     const double mesh_s = std::chrono::duration<double>(Clock::now() - t0).count();
-    const std::filesystem::path dir = root / ("flank_" + std::to_string(size_mm));
+    const std::filesystem::path dir = root / ("flank_" + std::to_string(size_mm) + "_" + def.element_type);
     // Body torsion of both gears, then the positions, kWorkers solves at a time.
     std::vector<SpurPairFePosition> pos(rolls.size());
+    std::vector<std::string> failed(rolls.size());  // ccx's message for a position that failed
     GearBodyTorsion tp, tw;
     std::vector<std::string> errors;
     std::mutex mu;
@@ -76,6 +83,10 @@ int main(int argc, char** argv) {
           if (i == -2) tp = solve_gear_body_torsion(def, meshes, true, dir / "torsion_pinion");
           else if (i == -1) tw = solve_gear_body_torsion(def, meshes, false, dir / "torsion_wheel");
           else pos[static_cast<size_t>(i)] = solve_spur_pair_position(def, meshes, rolls[static_cast<size_t>(i)], dir / ("pos" + std::to_string(i)));
+        } catch (const std::runtime_error& e) {
+          std::lock_guard<std::mutex> lock(mu);
+          if (i >= 0) failed[static_cast<size_t>(i)] = e.what();  // a solver failure: reported in its row
+          else errors.push_back("torsion job " + std::to_string(i) + ": " + e.what());
         } catch (const std::exception& e) {
           std::lock_guard<std::mutex> lock(mu);
           errors.push_back("job " + std::to_string(i) + ": " + e.what());
@@ -101,10 +112,16 @@ int main(int argc, char** argv) {
                 "loaded", "th_low_rad", "th_full_rad", "F_low_N", "F_full_N", "F/Frb", "k_FE", "k_noTor",
                 "k_PE", "FE/PE", "pair forces N (roll mm)", "FE gaps um", "ccx_s");
     double sum = 0, sum_nt = 0, sum_pe = 0;
+    int solved = 0;
     for (size_t i = 0; i < pos.size(); ++i) {
       const SpurPairFePosition& p = pos[i];
+      if (!failed[i].empty()) {
+        std::printf("%8.4f  ccx failed: %s\n", rolls[i] * 1e3, failed[i].substr(failed[i].rfind("*ERROR")).c_str());
+        continue;
+      }
       const double k = p.stiffness_N_per_m, knt = stiffness_without_body_torsion(k, tp, tw);
       if (i < static_cast<size_t>(n)) {
+        ++solved;
         sum += k;
         sum_nt += knt;
         sum_pe += p.pe_stiffness_N_per_m;
@@ -126,19 +143,22 @@ int main(int argc, char** argv) {
                   p.pe_stiffness_N_per_m / b * kPerWidth, k / p.pe_stiffness_N_per_m, forces.c_str(),
                   gaps.c_str(), p.wall_time_s, i == pos.size() - 1 ? "  (pitch point)" : "");
     }
-    const SpurPairFePosition& pitch = pos.back();
-    const double kp = pitch.stiffness_N_per_m, kpnt = stiffness_without_body_torsion(kp, tp, tw);
-    std::printf("mean over %d positions [N/(mm um)]: FE %.2f, FE without body torsion %.2f, PE at the same "
+    std::printf("mean over %d of %d positions [N/(mm um)]: FE %.2f, FE without body torsion %.2f, PE at the same "
                 "positions %.2f (PE mean %.2f); ISO c_ga %.2f, c_ga,th %.2f\n",
-                n, sum / n / b * kPerWidth, sum_nt / n / b * kPerWidth, sum_pe / n / b * kPerWidth,
+                solved, n, sum / solved / b * kPerWidth, sum_nt / solved / b * kPerWidth, sum_pe / solved / b * kPerWidth,
                 ref.pe_mean_N_per_m2 * kPerWidth, ref.iso_mesh_N_per_m2 * kPerWidth,
                 ref.iso_mesh_theory_N_per_m2 * kPerWidth);
-    std::printf("pitch point (single pair) [N/(mm um)]: FE %.2f, without body torsion %.2f, PE %.2f; ISO c' %.2f, "
-                "c'_th %.2f\n", kp / b * kPerWidth, kpnt / b * kPerWidth, ref.pe_pitch_point_N_per_m2 * kPerWidth,
-                ref.iso_single_N_per_m2 * kPerWidth, ref.iso_single_theory_N_per_m2 * kPerWidth);
+    if (failed.back().empty()) {
+      const double kp = pos.back().stiffness_N_per_m, kpnt = stiffness_without_body_torsion(kp, tp, tw);
+      std::printf("pitch point (single pair) [N/(mm um)]: FE %.2f, without body torsion %.2f, PE %.2f; ISO c' %.2f, "
+                  "c'_th %.2f\n", kp / b * kPerWidth, kpnt / b * kPerWidth, ref.pe_pitch_point_N_per_m2 * kPerWidth,
+                  ref.iso_single_N_per_m2 * kPerWidth, ref.iso_single_theory_N_per_m2 * kPerWidth);
+    }
     std::printf("wall: study %.0f s (2 workers), ccx per position median %.1f s\n", study_s, [&] {
       std::vector<double> w;
-      for (const auto& p : pos) w.push_back(p.wall_time_s);
+      for (size_t i = 0; i < pos.size(); ++i)
+        if (failed[i].empty()) w.push_back(pos[i].wall_time_s);
+      if (w.empty()) return 0.0;
       std::sort(w.begin(), w.end());
       return w[w.size() / 2];
     }());

@@ -143,6 +143,12 @@ inline constexpr double kSpurSlotMargin_basePitches = 0.5;
 // Normally 0.02: the open pairs' tension (kOpenContactTension_Pa over a flank, ~0.1 N) stays far
 // below it at any sensible load (2 % of 1000 N is 20 N).
 inline constexpr double kLoadedPairShare = 0.02;
+// Rotational spring on the driving pinion, N·m/rad. Normally 100: ~1 % of the mesh's torsional
+// stiffness at a module-1 pinion (k r_b1² ≈ 1.3e8 N/m · (9.4 mm)² ≈ 1.1e4 N·m/rad), so when the
+// contact is still open at the first iterations of a torque step (ccx sees a node touching an edge
+// only once its faces overlap) the pinion turns ~1e-3 rad instead of being free; the spring's
+// torque (100 N·m/rad · θ) is known exactly and taken off the applied torque.
+inline constexpr double kSpurPinionSpring_N_m_per_rad = 100.0;
 // Slack on the ends of the path of contact for a requested roll length, m (normally 1e-9 m: a
 // roll length computed from the path's own ends may round by ~1e-18 m; 1 nm is still far below
 // any element).

@@ -95,6 +95,7 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   deck.closing_rotation_rad = kClosingPress_m / path.pinion_base_radius_m;
   deck.torque_N_m = def.pinion_torque_N_m;
   deck.load_fractions = {def.low_load_fraction, 1.0};
+  deck.driving_spring_N_m_per_rad = kSpurPinionSpring_N_m_per_rad;
   const Deck d = write_deck(deck);
 
   // Solve.
@@ -112,8 +113,9 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   const int rot = d.layout[0].rotation_node;
   out.pinion_rotation_low_rad = rotation_at(blocks, rot, 2.0, run.dat_path);
   out.pinion_rotation_full_rad = rotation_at(blocks, rot, 3.0, run.dat_path);
-  out.torque_low_N_m = def.low_load_fraction * def.pinion_torque_N_m;
-  out.torque_full_N_m = def.pinion_torque_N_m;
+  // The mesh carries the applied torque less the pinion spring's.
+  out.torque_low_N_m = def.low_load_fraction * def.pinion_torque_N_m - kSpurPinionSpring_N_m_per_rad * out.pinion_rotation_low_rad;
+  out.torque_full_N_m = def.pinion_torque_N_m - kSpurPinionSpring_N_m_per_rad * out.pinion_rotation_full_rad;
   Eigen::Vector2d low = Eigen::Vector2d::Zero(), full = Eigen::Vector2d::Zero();
   for (size_t i = 0; i < place.slots.size(); ++i) {
     const SpurToothSlot& s = place.slots[i];
@@ -132,6 +134,7 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   const double rb1 = path.pinion_base_radius_m;
   out.stiffness_N_per_m = (out.torque_full_N_m - out.torque_low_N_m) /
                           (rb1 * rb1 * (out.pinion_rotation_full_rad - out.pinion_rotation_low_rad));
+  out.stiffness_per_width_N_per_m2 = out.stiffness_N_per_m / pd.face_width_m;
   // The potential-energy model at the same contact points.
   const PotentialEnergyPairDef pe = potential_energy_def(pd);
   for (const SpurPairFePairLoad& p : out.pairs)

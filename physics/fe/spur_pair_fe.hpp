@@ -34,8 +34,9 @@ struct SpurPairFePairLoad {
   int pinion_tooth = 0;
   double roll_m = 0;          // roll length of this pair's contact point on the pinion flank, m
   bool on_path = false;       // within the path of contact
-  double fe_gap_m = 0;        // clearance of the mesh boundaries along the line of action at the
-                              // closed position, m (NaN off the path); 0 for the touching pair
+  double fe_gap_m = 0;        // clearance of the mesh boundaries at the closed position, as the
+                              // wheel's further turn to touch times r_b2, m: 0 for the pair that
+                              // touches first, +inf when it would not touch within kMaxClosingTurn_rad
   double force_low_N = 0;     // contact force magnitude at the low load stage, N
   double force_full_N = 0;    // at the full load, N
 };
@@ -47,12 +48,15 @@ struct SpurPairFePosition {
   double wheel_closing_fe_rad = 0;     // the same on the mesh boundaries (chords)
   double pinion_rotation_low_rad = 0;   // pinion turn from the closed position, low load stage
   double pinion_rotation_full_rad = 0;  // at the full torque
+  // Torque the mesh carries: the applied torque less the pinion spring's
+  // (kSpurPinionSpring_N_m_per_rad · rotation), N·m.
   double torque_low_N_m = 0, torque_full_N_m = 0;
   double contact_force_low_N = 0;    // magnitude of the total force of the wheel on the pinion
   double contact_force_full_N = 0;
   std::vector<SpurPairFePairLoad> pairs;
   int loaded_pairs = 0;              // pairs carrying > kLoadedPairShare of the full-load force
   double stiffness_N_per_m = 0;      // secant mesh stiffness along the line of action, bodies included
+  double stiffness_per_width_N_per_m2 = 0;  // the same per face width (1e9 N/m² = 1 N/(mm·µm))
   double pe_stiffness_N_per_m = 0;   // potential-energy mesh stiffness at this position
   int pe_pairs = 0;                  // pairs on the path of contact (PE counts these)
   double wall_time_s = 0;            // ccx wall time, s

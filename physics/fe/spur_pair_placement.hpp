@@ -69,7 +69,8 @@ struct SpurToothSlot {
   double roll_m = 0;         // roll length of this tooth's Ccw flank on the line of action, m
   bool on_path = false;
   // Clearance of this pair's mesh boundaries when the pair is closed, as the wheel's further turn
-  // times r_b2, m (0 for the pair that touches first).
+  // to touch times r_b2, m (0 for the pair that touches first, +inf when it would not touch
+  // within kMaxClosingTurn_rad).
   double fe_gap_m = 0;
   std::vector<QuadEdge> pinion_edges, wheel_edges;
 };

@@ -1,6 +1,6 @@
 // FE mesh stiffness of one spur pair (z 20/31, m = 1 mm, b = 10 mm, 20 µm backlash per flank) at
-// 0.4 mm flank size, against the potential-energy model, ISO 6336-1 and the pinion's torque
-// balance; and the placement geometry. The ccx cases solve two positions (~20 s each on one core)
+// 0.4 mm flank size, against the potential-energy model and the pinion's torque balance; and the
+// placement geometry. The ccx cases solve two positions (~20 s each on one core)
 // and are skipped when ccx is absent.
 //
 // Why 0.4 mm and not coarser: the mesh boundary is straight chords between nodes on the exact
@@ -14,7 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <optional>
+#include <utility>
 
 #include "geometry/errors.hpp"
 #include "physics/fe/process.hpp"
@@ -114,38 +114,42 @@ TEST(SpurPairFe, RejectsBadInput) {
   }
 }
 
-// Solved once for the ccx cases: the pitch point (one pair in contact: ε_α = 1.61 and the pitch
-// point lies in the single-contact zone [end − p_b, start + p_b]), a two-pair position, and both
-// gear bodies' torsion.
+// The ccx cases' solves, each made once per process and only when a test asks for it (ctest runs
+// every test in its own process): the pitch point (one pair in contact: ε_α = 1.61 and the pitch
+// point lies in the single-contact zone [end − p_b, start + p_b]) and a two-pair position.
 class SpurPairFeSolved : public ::testing::Test {
  protected:
-  struct Solved {
-    SpurPairFeDef def = make_def();
-    SpurPairPath path;
-    SpurPairReferences ref;
-    SpurPairFePosition pitch, two;
-    double two_gap_m = 0;
-    GearBodyTorsion pinion_torsion, wheel_torsion;
-  };
-  static void SetUpTestSuite() {
-    if (find_executable("ccx").empty()) return;
-    Solved s;
-    s.path = spur_pair_path(s.def.pair);
-    s.ref = spur_pair_references(s.def.pair);
-    const SpurPairMeshes m = mesh_spur_pair(s.def);
-    const double roll2 = two_pair_roll(s.def, m);
-    s.two_gap_m = largest_gap(place_spur_pair(s.def.pair, m.pinion.mesh, m.wheel.mesh, roll2));
-    s.pitch = solve_spur_pair_position(s.def, m, s.path.pitch_roll_m, work_dir("pitch"));
-    s.two = solve_spur_pair_position(s.def, m, roll2, work_dir("two"));
-    s.pinion_torsion = solve_gear_body_torsion(s.def, m, true, work_dir("torsion_pinion"));
-    s.wheel_torsion = solve_gear_body_torsion(s.def, m, false, work_dir("torsion_wheel"));
-    solved_ = s;
-  }
   void SetUp() override {
-    if (!solved_) GTEST_SKIP() << "ccx not installed";
+    if (find_executable("ccx").empty()) GTEST_SKIP() << "ccx not installed";
   }
-  static const Solved& s() { return *solved_; }
-  static inline std::optional<Solved> solved_;
+  static const SpurPairFeDef& def() {
+    static const SpurPairFeDef d = make_def();
+    return d;
+  }
+  static const SpurPairPath& path() {
+    static const SpurPairPath p = spur_pair_path(def().pair);
+    return p;
+  }
+  static const SpurPairMeshes& meshes() {
+    static const SpurPairMeshes m = mesh_spur_pair(def());
+    return m;
+  }
+  static const SpurPairFePosition& pitch() {
+    static const SpurPairFePosition p = solve_spur_pair_position(def(), meshes(), path().pitch_roll_m, work_dir("pitch"));
+    return p;
+  }
+  // The two-pair roll and the largest mesh-boundary gap of its pairs, m.
+  static const std::pair<double, double>& two_roll_gap() {
+    static const std::pair<double, double> rg = [] {
+      const double roll = two_pair_roll(def(), meshes());
+      return std::pair{roll, largest_gap(place_spur_pair(def().pair, meshes().pinion.mesh, meshes().wheel.mesh, roll))};
+    }();
+    return rg;
+  }
+  static const SpurPairFePosition& two() {
+    static const SpurPairFePosition p = solve_spur_pair_position(def(), meshes(), two_roll_gap().first, work_dir("two"));
+    return p;
+  }
 };
 
 // At the pitch point one pair carries the torque: contact force = T / r_b1 at both load stages.
@@ -154,48 +158,43 @@ class SpurPairFeSolved : public ::testing::Test {
 // of curvature there), and stick friction tilts the force by up to atan μ; either tilt changes the
 // force's lever arm about the pinion by tan α per radian: tan α (L / (2ρ) + μ) = 3.2 %.
 TEST_F(SpurPairFeSolved, PitchPointOnePairCarriesTheTorque) {
-  const SpurPairFePosition& p = s().pitch;
+  const SpurPairFePosition& p = pitch();
   EXPECT_EQ(p.loaded_pairs, 1);
-  const double tol = std::tan(s().def.pair.pressure_angle_rad) *
-                     (kFlankSize_m / (2 * s().path.pitch_roll_m) + s().def.friction);
-  const double rb1 = s().path.pinion_base_radius_m;
+  const double tol = std::tan(def().pair.pressure_angle_rad) * (kFlankSize_m / (2 * path().pitch_roll_m) + def().friction);
+  const double rb1 = path().pinion_base_radius_m;
   EXPECT_NEAR(p.contact_force_low_N * rb1 / p.torque_low_N_m, 1.0, tol);
   EXPECT_NEAR(p.contact_force_full_N * rb1 / p.torque_full_N_m, 1.0, tol);
 }
 
 // Single-pair stiffness at the pitch point against the potential-energy model at the same contact
-// point, within the 15 %. The honest comparison is the FE stiffness with its gear bodies:
+// point, within the 15 %. This, not the ISO band, is the check: the PE value is for the
+// same contact point and the same bodies, while ISO's c' is one number per pair with empirical
+// factors, and the FE value at one position moves by ±8 % with where the contact falls between
+// nodes (docs/fe.md: 12.7–15.1 N/(mm·µm) over the single-contact zone). The honest comparison is
+// the FE stiffness with its gear bodies:
 // Sainsot's fillet-foundation term of the PE model is fitted to a body held at its bore and, with
 // h_f = r_f / r_bore of these gears, already holds the body's torsion (its compliance grows with
 // h_f as the annulus torsion r_b²(1/r_bore² − 1/r_f²)/(4πGb) does: +1.35e-9 vs +1.36e-9 m/N from
 // h_f = 2 to 4 on this pinion), so nothing is subtracted here.
 TEST_F(SpurPairFeSolved, PitchPointStiffnessWithinPotentialEnergyBand) {
-  const SpurPairFePosition& p = s().pitch;
+  const SpurPairFePosition& p = pitch();
   ASSERT_EQ(p.pe_pairs, 1);
   EXPECT_NEAR(p.stiffness_N_per_m / p.pe_stiffness_N_per_m, 1.0, 0.15)
       << "FE " << p.stiffness_N_per_m << " N/m, PE " << p.pe_stiffness_N_per_m << " N/m";
 }
 
-// ISO 6336-1's c' describes teeth on a solid body with no bore: with both bodies' torsion between
-// bore and teeth taken out (solved without contact), the FE single-pair stiffness per face width
-// lies between the corrected value c' (C_M = 0.8, calibrated to measured pairs) and the theory
-// c'_th, the band the potential-energy model sits in too (docs/fe.md).
-TEST_F(SpurPairFeSolved, PitchPointWithoutBodyTorsionInIsoBand) {
-  const double k = stiffness_without_body_torsion(s().pitch.stiffness_N_per_m, s().pinion_torsion,
-                                                  s().wheel_torsion) / s().def.pair.face_width_m;
-  EXPECT_GT(k, s().ref.iso_single_N_per_m2);
-  EXPECT_LT(k, s().ref.iso_single_theory_N_per_m2);
-}
-
-// Where two pairs are in contact the mesh is stiffer than with one: the PE model gives 1.7 times
-// the pitch-point value in the two-pair zone; 1.3 leaves room for the FE's own load sharing.
-// The position is the two-pair roll whose mesh boundaries touch most closely (a chord gap of a few
-// µm would keep the second pair unloaded at the low stage: a discretisation artefact, not physics).
+// Where two pairs are in contact the mesh is stiffer than with one, both pairs carrying load. The
+// threshold 1.3 is the issue's. The PE model gives 1.72 (1.59 with the gear bodies' torsion in
+// series with both pairs instead of counted once per pair); the FE gives 1.45 at this size and
+// 1.25–1.37 at 0.2 mm depending on the single-pair position (docs/fe.md), so this guards the load
+// sharing at 0.4 mm, not a converged ratio. The position is the two-pair roll whose mesh
+// boundaries touch most closely (a chord gap of a few µm would keep the second pair unloaded at
+// the low stage: a discretisation artefact, not physics).
 TEST_F(SpurPairFeSolved, TwoPairsStifferThanOne) {
-  ASSERT_LT(s().two_gap_m, kTwoPairGap_m) << "no two-pair position with closely touching boundaries";
-  EXPECT_EQ(s().two.pe_pairs, 2);
-  EXPECT_EQ(s().two.loaded_pairs, 2);
-  EXPECT_GT(s().two.stiffness_N_per_m / s().pitch.stiffness_N_per_m, 1.3)
-      << "two pairs " << s().two.stiffness_N_per_m << " N/m at roll " << s().two.roll_m << " m, one pair "
-      << s().pitch.stiffness_N_per_m << " N/m";
+  ASSERT_LT(two_roll_gap().second, kTwoPairGap_m) << "no two-pair position with closely touching boundaries";
+  EXPECT_EQ(two().pe_pairs, 2);
+  EXPECT_EQ(two().loaded_pairs, 2);
+  EXPECT_GT(two().stiffness_N_per_m / pitch().stiffness_N_per_m, 1.3)
+      << "two pairs " << two().stiffness_N_per_m << " N/m at roll " << two().roll_m << " m, one pair "
+      << pitch().stiffness_N_per_m << " N/m";
 }
