@@ -170,12 +170,11 @@ TEST_F(SpurPairFeSolved, PitchPointOnePairCarriesTheTorque) {
 // point, within the 15 %. This, not the ISO band, is the check: the PE value is for the
 // same contact point and the same bodies, while ISO's c' is one number per pair with empirical
 // factors, and the FE value at one position moves by ±8 % with where the contact falls between
-// nodes (docs/fe.md: 12.7–15.1 N/(mm·µm) over the single-contact zone). The honest comparison is
-// the FE stiffness with its gear bodies:
-// Sainsot's fillet-foundation term of the PE model is fitted to a body held at its bore and, with
-// h_f = r_f / r_bore of these gears, already holds the body's torsion (its compliance grows with
-// h_f as the annulus torsion r_b²(1/r_bore² − 1/r_f²)/(4πGb) does: +1.35e-9 vs +1.36e-9 m/N from
-// h_f = 2 to 4 on this pinion), so nothing is subtracted here.
+// nodes (docs/fe.md: 12.96–15.07 N/(mm·µm) over the single-contact zone at 0.2 mm). The FE
+// stiffness is taken with its gear bodies: Sainsot's fillet-foundation term of the PE model, with
+// h_f = r_f / r_bore of these gears, already holds the bodies' torsion (its compliance grows with
+// h_f as the annulus torsion r_b²(1/r_bore² − 1/r_f²)/(4πGb) does: +1.345e-9 vs +1.364e-9 m/N
+// from h_f = 2 to 4 on this pinion), so nothing is subtracted here.
 TEST_F(SpurPairFeSolved, PitchPointStiffnessWithinPotentialEnergyBand) {
   const SpurPairFePosition& p = pitch();
   ASSERT_EQ(p.pe_pairs, 1);
@@ -184,10 +183,10 @@ TEST_F(SpurPairFeSolved, PitchPointStiffnessWithinPotentialEnergyBand) {
 }
 
 // Where two pairs are in contact the mesh is stiffer than with one, both pairs carrying load. The
-// threshold 1.3 is the issue's. The PE model gives 1.72 (1.59 with the gear bodies' torsion in
-// series with both pairs instead of counted once per pair); the FE gives 1.45 at this size and
-// 1.25–1.37 at 0.2 mm depending on the single-pair position (docs/fe.md), so this guards the load
-// sharing at 0.4 mm, not a converged ratio. The position is the two-pair roll whose mesh
+// threshold 1.3 is the issue's. The PE model gives 1.72 (1.59 with the gear bodies' torsion once
+// in series with both pairs instead of once per pair); the FE gives 1.45 at this size and
+// 1.22–1.31 against the pitch point at 0.2 mm (docs/fe.md), so this guards the load sharing at
+// 0.4 mm, not a converged ratio. The position is the two-pair roll whose mesh
 // boundaries touch most closely (a chord gap of a few µm would keep the second pair unloaded at
 // the low stage: a discretisation artefact, not physics).
 TEST_F(SpurPairFeSolved, TwoPairsStifferThanOne) {
