@@ -19,14 +19,17 @@ function(gearsim_add_library name)
   gearsim_target_defaults(${name})
 endfunction()
 
-# One test executable: gearsim_add_test(NAME SOURCES a.cpp DEPS geometry).
+# One test executable: gearsim_add_test(NAME SOURCES a.cpp DEPS geometry [LABELS ccx]).
 function(gearsim_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE GEARSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
                                              GEARSIM_BINARY_DIR="${PROJECT_BINARY_DIR}")
   gearsim_target_defaults(${name})
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-                       PROPERTIES ENVIRONMENT "GEARSIM_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+  set(props ENVIRONMENT "GEARSIM_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+  if(ARG_LABELS)
+    list(APPEND props LABELS "${ARG_LABELS}")
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES ${props})
 endfunction()

@@ -153,4 +153,29 @@ inline constexpr int kDefaultPositionsPerMesh = 8;
 // ccx processes solving positions at once (normally 2: the reference machine's cores; each ccx
 // runs single-threaded).
 inline constexpr int kDefaultFeJobs = 2;
+
+
+// Spur pair FE stiffness (spur_pair_fe.hpp).
+// Bore diameter over root diameter of both gears, dimensionless. Normally 0.5: Sainsot's
+// h_f = r_f / r_bore = 2, the potential-energy model's default body, inside the range of its fit.
+inline constexpr double kSpurBoreOverRoot = 0.5;
+// Pinion teeth given a contact pair: those whose driving flank meets the line of action within
+// this many base pitches beyond either end of the path of contact. Normally 0.5: a tooth entering
+// or leaving is caught (corner contact under load), the next one lies a whole pitch away.
+inline constexpr double kSpurSlotMargin_basePitches = 0.5;
+// A tooth pair "carries load" when its contact force exceeds this share of the total, dimensionless.
+// Normally 0.02: the open pairs' tension (kOpenContactTension_Pa over a flank, ~0.1 N) stays far
+// below it at any sensible load (2 % of 1000 N is 20 N).
+inline constexpr double kLoadedPairShare = 0.02;
+// Rotational spring on the driving pinion, N·m/rad. Normally 100: ~1 % of the mesh's torsional
+// stiffness at a module-1 pinion (k r_b1² ≈ 1.3e8 N/m · (9.4 mm)² ≈ 1.1e4 N·m/rad), so when the
+// contact is still open at the first iterations of a torque step (ccx sees a node touching an edge
+// only once its faces overlap) the pinion turns ~1e-3 rad instead of being free; the spring's
+// torque (100 N·m/rad · θ) is known exactly and taken off the applied torque.
+inline constexpr double kSpurPinionSpring_N_m_per_rad = 100.0;
+// Slack on the ends of the path of contact for a requested roll length, m (normally 1e-9 m: a
+// roll length computed from the path's own ends may round by ~1e-18 m; 1 nm is still far below
+// any element).
+inline constexpr double kSpurRollSlack_m = 1e-9;
+
 }  // namespace gearsim::fe

@@ -66,6 +66,8 @@ void validate(const DeckDef& def) {
     throw InputError("deck: E must be > 0 and −1 < ν < 0.5");
   if (!(def.thickness_m > 0)) throw InputError("deck: thickness_m must be > 0");
   if (!(def.friction >= 0)) throw InputError("deck: friction must be ≥ 0");
+  if (!(def.idler_spring_N_m_per_rad >= 0) || !(def.driving_spring_N_m_per_rad >= 0))
+    throw InputError("deck: idler_spring_N_m_per_rad and driving_spring_N_m_per_rad must be ≥ 0");
   if (!(def.contact_penalty_Pa_per_m > 0) || !(def.stick_slope_Pa_per_m > 0))
     throw InputError("deck: contact penalty and stick slope must be > 0");
   if (def.load_fractions.empty()) throw InputError("deck: needs at least one load stage");
@@ -175,6 +177,13 @@ Deck write_deck(const DeckDef& def) {
     o << "*ELEMENT, TYPE=SPRING1, ELSET=ESPRING\n";
     for (int n : idler_rot) o << next_el++ << ", " << n << "\n";
     o << "*SPRING, ELSET=ESPRING\n1\n" << real(def.idler_spring_N_m_per_rad * M) << "\n";
+  }
+  // The driving body's spring (SPRING1 on its rotation node's dof 1).
+  if (def.driving_spring_N_m_per_rad > 0) {
+    o << "*ELEMENT, TYPE=SPRING1, ELSET=EDRIVESPRING\n";
+    for (size_t bi = 0; bi < def.bodies.size(); ++bi)
+      if (def.bodies[bi].support == FeSupport::Driving) o << next_el++ << ", " << deck.layout[bi].rotation_node << "\n";
+    o << "*SPRING, ELSET=EDRIVESPRING\n1\n" << real(def.driving_spring_N_m_per_rad * M) << "\n";
   }
 
   // Contact surfaces and pairs.

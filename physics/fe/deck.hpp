@@ -64,6 +64,10 @@ struct DeckDef {
   std::vector<double> load_fractions = {0.1, 1.0};  // torque stages after step 1, increasing
   double idler_spring_N_m_per_rad = 0;  // weak rotational spring on idlers (keeps free rotation
                                         // of a body without contact from making K singular)
+  // Weak rotational spring on the driving body, N·m/rad (0: none). It carries spring·θ of the
+  // torque, which the caller subtracts; it keeps a torque step regular while the contacts are
+  // still open at its first iterations.
+  double driving_spring_N_m_per_rad = 0;
 };
 
 // Where a body's extra nodes and elements sit in the deck.

@@ -5,6 +5,7 @@
 
 #include "geometry/errors.hpp"
 #include "geometry/gear_profile.hpp"
+#include "physics/fe/closing_turn.hpp"
 #include "physics/fe/constants.hpp"
 
 namespace gearsim::fe {
@@ -16,31 +17,6 @@ bool touches_on(const std::vector<physics::ToothContact>& contacts, Flank flank)
   for (const auto& c : contacts)
     if (c.flank_a == flank) return true;
   return false;
-}
-
-// The smallest rotation δ ≥ 0 (in `sense`) at which `touching` turns true, by stepping then
-// bisection; when already touching at 0, the largest δ < 0 at which it is false (an overlap
-// backed out). Throws InputError when nothing changes within kMaxClosingTurn_rad.
-double close(const std::function<bool(double)>& touching, double sense, const std::string& who) {
-  const bool start = touching(0.0);
-  double lo = 0, hi = 0;
-  for (double d = kClosingStep_rad; d <= kMaxClosingTurn_rad + 1e-15; d += kClosingStep_rad) {
-    const double delta = start ? -d * sense : d * sense;
-    if (touching(delta) != start) {
-      hi = delta;
-      break;
-    }
-    lo = delta;
-  }
-  if (hi == 0)
-    throw InputError(who + ": no touching position within " + std::to_string(kMaxClosingTurn_rad) +
-                     " rad (the gears do not mesh)");
-  // Bisection: lo has the starting state, hi the other; return the touching side's bound.
-  while (std::abs(hi - lo) > kClosingTolerance_rad) {
-    const double mid = 0.5 * (lo + hi);
-    (touching(mid) == start ? lo : hi) = mid;
-  }
-  return start ? lo : hi;
 }
 
 }  // namespace
@@ -81,7 +57,7 @@ PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometr
       q.angle_rad = base + d;
       return touches_on(physics::find_tooth_contacts(tp, q, *tables.ring, pos.ring), Flank::Cw);
     };
-    const double d = close(touching, -1.0, "planet " + std::to_string(k) + " against the ring");
+    const double d = closing_turn(touching, -1.0, "planet " + std::to_string(k) + " against the ring");
     pp.angle_rad = base + d;
     pos.planet_closing_rad.push_back(d);
   }
@@ -98,7 +74,7 @@ PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometr
   };
   std::string closings;
   for (double d : pos.planet_closing_rad) closings += " " + std::to_string(d);
-  pos.sun_closing_rad = close(touching, 1.0, "sun against the planets (planets closed by" + closings + " rad)");
+  pos.sun_closing_rad = closing_turn(touching, 1.0, "sun against the planets (planets closed by" + closings + " rad)");
   pos.sun.angle_rad = base + pos.sun_closing_rad;
   physics::PlanarPose s = pos.sun;
   for (int k = 0; k < spec.planets; ++k)
