@@ -59,8 +59,7 @@ double median(std::vector<double> v) {
 
 struct Mode {
   const char* name;
-  int msaa_samples;
-  int supersampling;
+  AntiAliasing anti_aliasing;
 };
 
 enum class View { Overview, CloseUp };
@@ -91,10 +90,10 @@ int main(int argc, char** argv) {
   std::vector<Image> video_frames;
   std::printf("%s\n", Renderer(RenderSettings{}).gl_description().c_str());
   for (const View view : {View::Overview, View::CloseUp})
-  for (const Mode mode : {Mode{"MSAA 4x", 4, 1}, Mode{"supersampling 2x2", 0, 2}, Mode{"none", 0, 1}}) {
-    RenderSettings settings;  // 1280×720
-    settings.msaa_samples = mode.msaa_samples;
-    settings.supersampling = mode.supersampling;
+  for (const Mode mode : {Mode{"edge AA", AntiAliasing::Edge}, Mode{"MSAA 4x", AntiAliasing::Multisample},
+                         Mode{"supersampling 2x2", AntiAliasing::Supersample}, Mode{"none", AntiAliasing::None}}) {
+    RenderSettings settings;  // 1280×720, 4 samples when multisampling
+    settings.anti_aliasing = mode.anti_aliasing;
     Renderer renderer(settings);
     std::vector<double> times;
     double first_s = 0, cpu_s = 0;
@@ -117,7 +116,7 @@ int main(int argc, char** argv) {
         times.push_back(seconds_since(t0));
         cpu_s += process_cpu_s() - cpu0;
       }
-      if (view == View::Overview && mode.supersampling == 2) video_frames.push_back(std::move(image));
+      if (view == View::Overview && mode.anti_aliasing == AntiAliasing::Edge) video_frames.push_back(std::move(image));
     }
     double total = 0;
     for (double t : times) total += t;
