@@ -65,7 +65,8 @@ bool clip_to_frame(WindowEdge& e, int width, int height) {
     if (p < 0) t0 = std::max(t0, t); else t1 = std::min(t1, t);
     return t0 <= t1;
   };
-  if (!clip(-dx, e.x0 + 1) || !clip(dx, width + 1 - e.x0) || !clip(-dy, e.y0 + 1) || !clip(dy, height + 1 - e.y0))
+  const double x0 = e.x0, y0 = e.y0;
+  if (!clip(-dx, x0 + 1) || !clip(dx, width + 1 - x0) || !clip(-dy, y0 + 1) || !clip(dy, height + 1 - y0))
     return false;
   const WindowEdge o = e;
   const auto at = [](float a, float b, double t) { return static_cast<float>(a + t * (b - a)); };
