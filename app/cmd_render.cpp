@@ -29,7 +29,10 @@ void register_render(CLI::App& app) {
   sub->add_option("--to", o->to_s, "Last simulated time, s (default: the last logged sample).");
   sub->add_option("--width", o->def.width_px, "Frame width, px (even).")->check(CLI::Range(16, 4096));
   sub->add_option("--height", o->def.height_px, "Frame height, px (even).")->check(CLI::Range(16, 4096));
-  sub->add_option("--msaa", o->def.msaa, "Multisampling (0: off).")->check(CLI::Range(0, 16));
+  sub->add_option("--msaa", o->def.msaa,
+                  "Multisampling with this many samples (2 to 16) instead of the default edge anti-aliasing (0).")
+      ->check(CLI::Range(0, 16))
+      ->check([](const std::string& v) { return v == "1" ? std::string("one sample is no multisampling: 0 or 2 to 16") : ""; });
   sub->add_option("--png-every", o->def.png_every, "Write every Nth frame as PNG to DIR/frames/ (0: none).")
       ->check(CLI::NonNegativeNumber);
   sub->callback([o] {

@@ -148,7 +148,7 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
       if (v < 16 || v > 4096 || v % 2) m.fail(key, "expected an even size of 16 to 4096 px (H.264 halves the chroma)");
     }
     r.msaa = m.integer_or("msaa", r.msaa);
-    if (r.msaa < 0 || r.msaa > 16) m.fail("msaa", "expected 0 to 16 samples");
+    if (r.msaa < 0 || r.msaa == 1 || r.msaa > 16) m.fail("msaa", "expected 0 (edge anti-aliasing) or 2 to 16 samples");
     r.png_every = m.integer_or("png_every", r.png_every);
     if (r.png_every < 0) m.fail("png_every", "expected 0 (no PNG) or a positive frame interval");
     m.reject_unknown_keys();

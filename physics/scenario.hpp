@@ -125,7 +125,7 @@ struct RenderDef {
   double slowmo = 1;                 // the video plays this many times slower than simulated time
   std::optional<double> from_s, to_s;  // simulated span, s (default: all that was logged)
   int width_px = 1280, height_px = 720;
-  int msaa = 4;        // multisampling, 0: off
+  int msaa = 0;        // multisampling samples (2 to 16); 0: edge anti-aliasing instead
   int png_every = 10;  // every Nth frame also as PNG under DIR/frames/ (0: none)
 };
 

@@ -11,8 +11,28 @@ namespace gearsim::render::constants {
 inline constexpr int kGlMajorVersion = 3;
 inline constexpr int kGlMinorVersion = 3;
 
-// Multisample anti-aliasing samples per pixel, normally 4: llvmpipe's maximum (GL_MAX_SAMPLES).
+// Multisample anti-aliasing samples per pixel when multisampling is chosen, normally 4: llvmpipe's
+// maximum (GL_MAX_SAMPLES).
 inline constexpr int kDefaultMsaaSamples = 4;
+
+// Edge anti-aliasing (edge_antialiasing.hpp): how far, in pixel widths at the edge's distance, the
+// surface beside an edge may lie in front of the edge and the edge still count as visible.
+// Normally 4: the face next to a concave crease approaches the eye by tan(angle to the view) per
+// pixel, so 4 accepts faces up to ~70° from facing the eye at the 1.5 px the farthest pixel a
+// column blends lies from the edge; a hidden edge wrongly kept blends two pixels of the surface in
+// front, which differ little.
+inline constexpr double kEdgeDepthTolerance_px = 4.0;
+
+// Faces whose unit normals' dot product exceeds 1 − this lie in one plane for edge finding: the
+// edge between them can never be a silhouette (1e-9: about 0.003° — wall quads split in two differ
+// by rounding only).
+inline constexpr double kCoplanarCosineTolerance = 1e-9;
+
+// Share of the depth range given to contact markers and force arrows, drawn over the bodies:
+// markers take [0, this], bodies (this, 1], so markers always pass the depth test against bodies
+// yet one depth buffer holds both (edge anti-aliasing reads it). 1/256 costs the bodies 0.4 % of
+// the 24-bit depth resolution.
+inline constexpr double kMarkerDepthShare = 1.0 / 256.0;
 
 // Crease angle, rad: adjacent triangles meeting at a smaller angle share a smoothed normal, larger
 // angles stay sharp. Normally 30°: a gear's tessellated flanks turn by far less than a degree per

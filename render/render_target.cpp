@@ -1,7 +1,9 @@
 #include "render/render_target.hpp"
 
+#include <cstring>
 #include <string>
 
+#include "geometry/errors.hpp"
 #include "render/render_error.hpp"
 
 namespace gearsim::render {
@@ -74,10 +76,25 @@ Image RenderTarget::read() {
   if (full_fbo_ != draw_fbo_) blit(draw_fbo_, full_fbo_, draw_width_, draw_height_, draw_width_, draw_height_, GL_NEAREST);
   if (out_fbo_ != full_fbo_) blit(full_fbo_, out_fbo_, draw_width_, draw_height_, width_, height_, GL_LINEAR);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, out_fbo_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  // The renderbuffer's own layout (RGBA8) is a copy for llvmpipe; RGB makes it convert per pixel.
+  rgba_.resize(std::size_t(width_) * height_ * 4);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba_.data());
   Image out(width_, height_);
-  glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, out.rgb.data());
+  // RGBA → RGB: four bytes copied per pixel, each copy's fourth byte overwritten by the next pixel.
+  const std::size_t n = std::size_t(width_) * height_;
+  std::uint8_t* dst = out.rgb.data();
+  for (std::size_t i = 0; i + 1 < n; ++i) std::memcpy(dst + 3 * i, &rgba_[4 * i], 4);
+  if (n > 0) std::memcpy(dst + 3 * (n - 1), &rgba_[4 * (n - 1)], 3);
   return out;
+}
+
+void RenderTarget::read_depth(std::vector<float>& depth) {
+  GEARSIM_CHECK(draw_fbo_ == out_fbo_, "depth read-back from a multisampled or supersampled target");
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  depth.resize(std::size_t(width_) * height_);
+  glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
 }
 
 }  // namespace gearsim::render

@@ -8,6 +8,8 @@
 #include "render/gl.hpp"
 #include "render/image.hpp"
 
+#include <vector>
+
 namespace gearsim::render {
 
 class RenderTarget {
@@ -22,6 +24,9 @@ class RenderTarget {
   // Resolves, reduces and reads the pixels in GL row order (bottom-up): the renderer flips y in
   // its projection so that this order is the image's top-down order.
   Image read();
+  // The drawing buffer's depth values in [0, 1], rows as read() gives them; only for a target
+  // drawn without multisampling or supersampling (what edge anti-aliasing needs).
+  void read_depth(std::vector<float>& depth);
 
  private:
   int width_, height_, draw_width_, draw_height_;
@@ -29,6 +34,7 @@ class RenderTarget {
   // Without multisampling draw = full; without supersampling full = out.
   GLuint draw_fbo_ = 0, full_fbo_ = 0, out_fbo_ = 0;
   GLuint renderbuffers_[4] = {0, 0, 0, 0};
+  std::vector<std::uint8_t> rgba_;  // read-back buffer: GL_RGBA reads ~6× faster than GL_RGB on llvmpipe
 };
 
 }  // namespace gearsim::render

@@ -8,6 +8,7 @@
 
 #include "geometry/errors.hpp"
 #include "render/bitmap_font.hpp"
+#include "render/edge_antialiasing.hpp"
 #include "render/gl_context.hpp"
 #include "render/gl_program.hpp"
 #include "render/render_error.hpp"
@@ -28,6 +29,7 @@ struct GpuMesh {
   // Held so the cache key (the pointers) cannot be reused by another mesh while cached.
   std::shared_ptr<const TriMesh> mesh;
   std::shared_ptr<const std::vector<std::uint8_t>> highlight;
+  std::optional<MeshEdges> edges;  // found on first use by edge anti-aliasing
 };
 
 void upload(GpuMesh& g, const ShadingMesh& m, GLenum usage) {
@@ -74,18 +76,21 @@ void set_matrix4(GLint location, const Eigen::Matrix4d& m) {
   glUniformMatrix4fv(location, 1, GL_FALSE, f.data());  // Eigen is column-major, as GL expects
 }
 
+int supersampling(const RenderSettings& s) { return s.anti_aliasing == AntiAliasing::Supersample ? 2 : 1; }
+int samples(const RenderSettings& s) { return s.anti_aliasing == AntiAliasing::Multisample ? s.msaa_samples : 0; }
+
 }  // namespace
 
 void validate_render_settings(const RenderSettings& s) {
-  if (s.supersampling != 1 && s.supersampling != 2)
-    throw InputError("render settings: supersampling must be 1 or 2, got " + std::to_string(s.supersampling));
-  const auto size_ok = [&](int v) { return v >= 1 && v <= constants::kMaxImageSize_px / s.supersampling; };
+  const int ss = supersampling(s);
+  const auto size_ok = [&](int v) { return v >= 1 && v <= constants::kMaxImageSize_px / ss; };
   if (!size_ok(s.width_px) || !size_ok(s.height_px))
     throw InputError("render settings: resolution " + std::to_string(s.width_px) + "×" + std::to_string(s.height_px) +
                      " px: width_px and height_px must lie in [1, " +
-                     std::to_string(constants::kMaxImageSize_px / s.supersampling) + "]");
-  if (s.msaa_samples < 0)
-    throw InputError("render settings: msaa_samples must be ≥ 0, got " + std::to_string(s.msaa_samples));
+                     std::to_string(constants::kMaxImageSize_px / ss) + "]");
+  if (s.anti_aliasing == AntiAliasing::Multisample && s.msaa_samples < 2)
+    throw InputError("render settings: msaa_samples must be ≥ 2 with multisampling, got " +
+                     std::to_string(s.msaa_samples));
   if (!(s.crease_angle_rad >= 0 && s.crease_angle_rad <= std::numbers::pi))
     throw InputError("render settings: crease_angle_rad must lie in [0, π]");
   if (s.text_scale < 1) throw InputError("render settings: text_scale must be ≥ 1");
@@ -99,16 +104,22 @@ struct Renderer::Impl {
   std::map<std::pair<const void*, const void*>, GpuMesh> meshes;
   GpuMesh markers;
 
+  std::optional<MeshEdges> marker_edges;
+  std::vector<WindowEdge> window_edges;  // this frame's outline edges (kept to reuse the memory)
+  std::vector<float> depth;              // this frame's depth buffer, for edge anti-aliasing
+  EdgeBlendBuffers blend_buffers;
+
   explicit Impl(const RenderSettings& s) : settings(s) {
-    if (s.width_px * s.supersampling > context.max_size_px() || s.height_px * s.supersampling > context.max_size_px())
+    const int ss = supersampling(s);
+    if (s.width_px * ss > context.max_size_px() || s.height_px * ss > context.max_size_px())
       throw InputError("render settings: resolution " + std::to_string(s.width_px) + "×" +
-                       std::to_string(s.height_px) + " px × supersampling " + std::to_string(s.supersampling) + " exceeds the GL limit of " +
+                       std::to_string(s.height_px) + " px × supersampling " + std::to_string(ss) + " exceeds the GL limit of " +
                        std::to_string(context.max_size_px()) + " px");
-    if (s.msaa_samples > context.max_samples())
+    if (samples(s) > context.max_samples())
       throw InputError("render settings: msaa_samples " + std::to_string(s.msaa_samples) + " exceeds the GL limit of " +
                        std::to_string(context.max_samples()) + " on " + context.renderer());
     program.emplace();
-    target.emplace(s.width_px, s.height_px, s.msaa_samples, s.supersampling);
+    target.emplace(s.width_px, s.height_px, samples(s), ss);
   }
 
   ~Impl() {
@@ -132,7 +143,7 @@ struct Renderer::Impl {
     }
   }
 
-  const GpuMesh& gpu_mesh(const SceneBody& body) {
+  GpuMesh& gpu_mesh(const SceneBody& body) {
     const auto key = std::make_pair(static_cast<const void*>(body.mesh.get()),
                                     static_cast<const void*>(body.highlight.get()));
     auto it = meshes.find(key);
@@ -157,6 +168,7 @@ struct Renderer::Impl {
     std::vector<std::uint8_t> flags(spheres.triangles.size() - arrows.triangles.size(), 0);
     flags.insert(flags.end(), arrow_flags.begin(), arrow_flags.end());
     upload(markers, shading_mesh(spheres, kMarkerCreaseAngle_rad, &flags), GL_STREAM_DRAW);
+    if (settings.anti_aliasing == AntiAliasing::Edge) marker_edges = mesh_edges(spheres, kMarkerCreaseAngle_rad, &flags);
   }
 
   void draw(const GpuMesh& g, const Eigen::Matrix4d& model_view) {
@@ -184,12 +196,15 @@ struct Renderer::Impl {
     const double aspect = double(settings.width_px) / settings.height_px;
     // y flipped so that GL's bottom-up rows read out as the image's top-down rows.
     const Eigen::Matrix4d flip_y = Eigen::Vector4d(1, -1, 1, 1).asDiagonal();
-    set_matrix4(program->projection, flip_y * projection_matrix(camera, aspect));
+    const Eigen::Matrix4d projection = flip_y * projection_matrix(camera, aspect);
+    set_matrix4(program->projection, projection);
     glUniform1i(program->lit, settings.lighting == Lighting::BlinnPhong ? 1 : 0);
     glUniform1i(program->orthographic, camera.projection == Projection::Orthographic ? 1 : 0);
     const Eigen::Matrix4d view = view_matrix(camera);
+    // Bodies behind the markers' share of the depth range (see kMarkerDepthShare).
+    glDepthRange(constants::kMarkerDepthShare, 1.0);
     for (const SceneBody& body : scene.bodies) {
-      const GpuMesh& g = gpu_mesh(body);
+      GpuMesh& g = gpu_mesh(body);
       set_colour(program->colour, body.colour);
       set_colour(program->highlight_colour, body.highlight_colour);
       draw(g, view * body.pose.matrix());
@@ -197,14 +212,36 @@ struct Renderer::Impl {
     // Markers over the bodies: contacts lie between touching flanks, hidden otherwise.
     if (!scene.contacts.empty()) {
       upload_markers(scene);
-      glClear(GL_DEPTH_BUFFER_BIT);
+      glDepthRange(0.0, constants::kMarkerDepthShare);
       set_colour(program->colour, scene.marker_colour);
       set_colour(program->highlight_colour, scene.arrow_colour);
       draw(markers, view);
     }
+    glDepthRange(0.0, 1.0);
     if (const GLenum e = glGetError(); e != GL_NO_ERROR)
       throw RenderError("OpenGL error " + std::to_string(e) + " while drawing on " + context.renderer());
+    const bool edge_aa = settings.anti_aliasing == AntiAliasing::Edge;
+    if (edge_aa) {
+      // llvmpipe rasterises on its own threads once flushed: find the outlines meanwhile.
+      glFlush();
+      window_edges.clear();
+      EdgeProjection edge_view{projection, settings.width_px, settings.height_px, constants::kMarkerDepthShare, 1.0};
+      for (const SceneBody& body : scene.bodies) {
+        GpuMesh& g = gpu_mesh(body);
+        if (!g.edges) g.edges = mesh_edges(*g.mesh, settings.crease_angle_rad, g.highlight.get());
+        append_outline_edges(*g.edges, view * body.pose.matrix(), edge_view, window_edges);
+      }
+      if (!scene.contacts.empty()) {
+        edge_view.depth_near = 0.0;
+        edge_view.depth_far = constants::kMarkerDepthShare;
+        append_outline_edges(*marker_edges, view, edge_view, window_edges);
+      }
+    }
     Image image = target->read();
+    if (edge_aa) {
+      target->read_depth(depth);
+      antialias_edges(image, depth, window_edges, blend_buffers);
+    }
     draw_overlay(image, scene.overlay_lines, settings.text_scale);
     evict_orphans();
     return image;

@@ -1,5 +1,6 @@
 // Renderer: draws a Scene through a Camera into an Image, offscreen (OSMesa, OpenGL 3.3 core),
-// with Blinn–Phong shading (key + fill light), crease-angle normals and MSAA or supersampling.
+// with Blinn–Phong shading (key + fill light), crease-angle normals and edge anti-aliasing (or
+// MSAA, or supersampling).
 // Contact markers and force arrows are drawn over the bodies; overlay text last. Meshes are
 // uploaded once per (mesh, highlight) pointer pair and kept while anyone else still holds them.
 // Not a window or an animation loop; one Renderer per thread (its GL context is thread-bound).
@@ -20,15 +21,22 @@ enum class Lighting {
   None,        // each body in its exact base colour (coverage and silhouette measurements)
 };
 
+// How a frame is anti-aliased. CPU per 1280×720 frame of the paper's set on llvmpipe, 2 cores
+// (bench_render, overview / close-up): none 18 / 23 ms; edge 22 / 26 ms (depth read-back, ~13 000
+// outline edges, ~22 000 blended pixels); multisampling 4× 52 / 65 ms (four samples drawn and
+// cleared, a ~10 ms resolve blit); supersampling 2×2 48 / 75 ms.
+enum class AntiAliasing {
+  None,          // one sample per pixel: its centre decides (coverage measurements)
+  Edge,          // one sample per pixel, then analytic edge anti-aliasing (edge_antialiasing.hpp)
+  Multisample,   // msaa_samples samples per pixel, resolved by GL
+  Supersample,   // drawn at twice the width and height and box-filtered down (2×2 samples)
+};
+
 struct RenderSettings {
   int width_px = 1280;
   int height_px = 720;
-  // Anti-aliasing: multisampling (0 or 1: off) and/or supersampling (1: off, 2: drawn at twice
-  // the width and height and box-filtered down). On llvmpipe MSAA 4× costs a fixed ~25 ms per
-  // 1280×720 frame (clear and resolve), supersampling 2× scales with the covered pixels: the
-  // latter is faster for the overview, slower for a full-frame close-up (bench_render).
-  int msaa_samples = constants::kDefaultMsaaSamples;
-  int supersampling = 1;
+  AntiAliasing anti_aliasing = AntiAliasing::Edge;
+  int msaa_samples = constants::kDefaultMsaaSamples;  // used with AntiAliasing::Multisample
   Rgb background{28, 31, 38};
   Lighting lighting = Lighting::BlinnPhong;
   double crease_angle_rad = constants::kDefaultCreaseAngle_rad;  // 0: flat (face) normals
@@ -39,8 +47,8 @@ struct RenderSettings {
 };
 
 // Throws InputError naming the field: width/height outside [1, kMaxImageSize_px] (after
-// supersampling), negative MSAA samples, supersampling other than 1 or 2, a crease angle outside
-// [0, π], a text scale < 1.
+// supersampling), fewer than 2 MSAA samples with multisampling, a crease angle outside [0, π], a
+// text scale < 1.
 void validate_render_settings(const RenderSettings& settings);
 
 class Renderer {

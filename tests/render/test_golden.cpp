@@ -17,9 +17,11 @@ namespace gearsim::render {
 namespace {
 
 // Thresholds, per channel on 0–255. llvmpipe is deterministic on one machine (same Mesa, same
-// LLVM): reruns are bit-identical. Another Mesa/LLVM may round shading differently (±2) and move
-// MSAA coverage at edges by a sample (a quarter of a ~190 gear/background step ≈ 48), so:
-//  - max 64: one sample of four flipping at an edge passes; a missing or moved tooth highlight
+// LLVM): reruns are bit-identical. Another Mesa/LLVM may round shading differently (±2) and
+// decide a pixel whose centre lies on an edge the other way; edge anti-aliasing then moves that
+// pixel's share across the edge by its distance to the edge (< ¼ of a ~190 gear/background step
+// ≈ 48 for a centre within ¼ px of the edge), so:
+//  - max 64: a pixel at an edge decided the other way passes; a missing or moved tooth highlight
 //    (a 200+ step over many pixels) does not;
 //  - mean 0.3: scattered edge samples pass; turning the set by half a tooth pitch (mean 2.7,
 //    max 244) or shifting the picture by one pixel does not (both checked below).
@@ -29,7 +31,7 @@ constexpr double kMeanThreshold = 0.3;
 using Paper = test::PaperSet;
 
 RenderSettings golden_settings() {
-  RenderSettings s;  // MSAA 4×, Blinn–Phong, 30° crease angle
+  RenderSettings s;  // edge anti-aliasing, Blinn–Phong, 30° crease angle
   s.width_px = 320;
   s.height_px = 240;
   s.text_scale = 1;

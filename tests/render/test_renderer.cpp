@@ -18,7 +18,7 @@ RenderSettings flat() {
   s.width_px = 100;
   s.height_px = 100;
   s.lighting = Lighting::None;
-  s.msaa_samples = 0;
+  s.anti_aliasing = AntiAliasing::None;
   s.text_scale = 1;
   return s;
 }

@@ -27,7 +27,7 @@ std::pair<double, double> silhouette_and_outline_area(const GearSpec& spec) {
   scene.bodies.push_back(body);
   RenderSettings settings;
   settings.width_px = settings.height_px = kSize_px;
-  settings.msaa_samples = 0;  // each pixel is in or out: its centre decides
+  settings.anti_aliasing = AntiAliasing::None;  // each pixel is in or out: its centre decides
   settings.lighting = Lighting::None;
   settings.background = {0, 0, 0};
   Renderer renderer(settings);
