@@ -168,7 +168,8 @@ void FlankTable::share_identical_teeth() {
 
 double FlankTable::sample(const std::vector<double>& table, int tooth, double r, double* slope) const {
   const double x = (r - r_min_) * inv_dr_;
-  int i = static_cast<int>(std::floor(x));
+  // The sample below r (truncation is floor for x ≥ 0; below 0 both clamp to 0), no libm call.
+  int i = x < samples_ ? static_cast<int>(x) : samples_;
   i = std::clamp(i, 0, samples_ - 2);
   const double f = x - i;
   const double* row = table.data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
@@ -195,6 +196,14 @@ double FlankTable::flank_slope(int tooth, Flank flank, double r) const {
 Eigen::Vector2d FlankTable::flank_point(int tooth, Flank flank, double r) const {
   const double a = tooth_angle_rad(tooth) + flank_angle(tooth, flank, r);
   return r * Eigen::Vector2d(std::cos(a), std::sin(a));
+}
+
+bool FlankTable::flank_point_if_material(int tooth, Flank flank, double r, Eigen::Vector2d* point) const {
+  const double rel = flank_angle(tooth, flank, r);
+  if (std::isnan(rel)) return false;
+  const double a = tooth_angle_rad(tooth) + rel;
+  *point = r * Eigen::Vector2d(std::cos(a), std::sin(a));
+  return true;
 }
 
 FlankTable::FlankFrame FlankTable::flank_frame(int tooth, Flank flank, double r) const {

@@ -28,7 +28,7 @@ constexpr double kParabolaShrink = 1.0 / 8;
 // sun–planet curvature; 5 µm also covers module-2 teeth with 16 samples.
 constexpr double kRefineWithin_m = 5e-6;
 
-constexpr double kNone = -1e300;
+constexpr double kNone = FlankTable::kNoDepth;
 
 struct Frame {
   const FlankTable& table;
@@ -81,19 +81,21 @@ Hit probe_at(const XY& xy, int k, Flank f, double r) {
 }
 
 // First-order depth of a point of x (gear frame of x) inside y, kNone where there is nothing to
-// measure.
-double depth_of(const XY& xy, const Vector2d& p_x) {
-  const FlankTable::Probe p = xy.y.table.probe_depth(xy.in_y(p_x));
-  return (p.inside || p.has_flank) ? p.depth_m : kNone;
+// measure. `hint`: a tooth of y near the point (or −1), updated to the one it faces.
+double depth_of(const XY& xy, const Vector2d& p_x, int& hint) {
+  return xy.y.table.first_order_depth(xy.in_y(p_x), hint);
+}
+
+// First-order depth of x's flank point at radius r, kNone where the flank has no material.
+double depth_at(const XY& xy, int k, Flank f, double r, int& hint) {
+  Vector2d p;
+  return xy.x.table.flank_point_if_material(k, f, r, &p) ? depth_of(xy, p, hint) : kNone;
 }
 
 // Radius of the deepest point near r_b, the best of samples spaced `step` apart whose
 // neighbours' depths are d_lo and d_hi: successive parabola fits on shrinking brackets.
-double parabola_refine(const XY& xy, int k, Flank f, double r, double step, double d_lo, double d0, double d_hi) {
-  const Frame& x = xy.x;
-  auto depth_at = [&](double rr) {
-    return std::isnan(x.table.flank_angle(k, f, rr)) ? kNone : depth_of(xy, x.table.flank_point(k, f, rr));
-  };
+double parabola_refine(const XY& xy, int k, Flank f, double r, double step, double d_lo, double d0, double d_hi,
+                       int& hint) {
   double h = step;
   for (int fit = 0; fit < kParabolaFits; ++fit) {
     const double curvature = d_lo - 2 * d0 + d_hi;
@@ -101,7 +103,7 @@ double parabola_refine(const XY& xy, int k, Flank f, double r, double step, doub
     r += std::clamp(0.5 * h * (d_lo - d_hi) / curvature, -h, h);
     if (fit + 1 == kParabolaFits) break;
     h *= kParabolaShrink;
-    d_lo = depth_at(r - h), d0 = depth_at(r), d_hi = depth_at(r + h);
+    d_lo = depth_at(xy, k, f, r - h, hint), d0 = depth_at(xy, k, f, r, hint), d_hi = depth_at(xy, k, f, r + h, hint);
     if (d_lo <= kNone || d0 <= kNone || d_hi <= kNone) break;
   }
   return r;
@@ -109,21 +111,17 @@ double parabola_refine(const XY& xy, int k, Flank f, double r, double step, doub
 
 // Radius of the deepest point in [lo, hi] by golden-section search: for a maximum at the end of
 // the sampled flank, where the depth is not smooth.
-double golden_refine(const XY& xy, int k, Flank f, double lo, double hi) {
-  const Frame& x = xy.x;
-  auto depth_at = [&](double r) {
-    return std::isnan(x.table.flank_angle(k, f, r)) ? kNone : depth_of(xy, x.table.flank_point(k, f, r));
-  };
+double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hint) {
   constexpr double kGolden = 0.6180339887498949;
   double c = hi - kGolden * (hi - lo), d = lo + kGolden * (hi - lo);
-  double fc = depth_at(c), fd = depth_at(d);
+  double fc = depth_at(xy, k, f, c, hint), fd = depth_at(xy, k, f, d, hint);
   for (int it = 0; it < kGoldenIterations; ++it) {
     if (fc > fd) {
       hi = d, d = c, fd = fc;
-      c = hi - kGolden * (hi - lo), fc = depth_at(c);
+      c = hi - kGolden * (hi - lo), fc = depth_at(xy, k, f, c, hint);
     } else {
       lo = c, c = d, fc = fd;
-      d = lo + kGolden * (hi - lo), fd = depth_at(d);
+      d = lo + kGolden * (hi - lo), fd = depth_at(xy, k, f, d, hint);
     }
   }
   return fc > fd ? c : d;
@@ -139,9 +137,10 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only) {
   std::array<double, n> depth;
   depth.fill(kNone);
   int best_i = -1;
+  int hint = -1;  // y's tooth the last probe faced: the next ones along the flank face it or a neighbour
   auto probe_sample = [&](int i) {
     const Vector2d& p = x.table.probe_point(k, f, i);
-    depth[i] = std::isnan(p.x()) ? kNone : depth_of(xy, p);
+    depth[i] = std::isnan(p.x()) ? kNone : depth_of(xy, p, hint);
     if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
   };
   auto missing = [&](int i) { return i < 0 || i >= n || std::isnan(x.table.probe_point(k, f, i).x()); };
@@ -168,9 +167,9 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only) {
   const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);
   const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
-  double r_best = interior ? parabola_refine(xy, k, f, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1])
+  double r_best = interior ? parabola_refine(xy, k, f, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1], hint)
                            : golden_refine(xy, k, f, std::max(r_b - step, x.table.probe_radius(0)),
-                                           std::min(r_b + step, x.table.probe_radius(n - 1)));
+                                           std::min(r_b + step, x.table.probe_radius(n - 1)), hint);
   if (std::isnan(x.table.flank_angle(k, f, r_best))) r_best = r_b;
   const Hit refined = probe_at(xy, k, f, r_best);
   if (refined.depth > kNone) return refined;
