@@ -111,6 +111,8 @@ class FlankTable {
   // The nearest tooth to a point of the gear frame at radius in the teeth: from a rough atan2,
   // or, given a tooth near it, by stepping to the neighbour while the point lies more than half
   // a pitch from the tooth's centre line (no trigonometry).
+  // Unit vector at angle rel from tooth's centre line (gear frame).
+  Eigen::Vector2d direction(int tooth, double rel) const;
   int nearest_tooth(const Eigen::Vector2d& p) const;
   int nearest_tooth_from(const Eigen::Vector2d& p, int hint) const;
   // probe_depth()'s measure of a point at radius r within the teeth, against tooth k (its
