@@ -30,6 +30,12 @@ constexpr double kRefineWithin_m = 5e-6;
 
 constexpr double kNone = FlankTable::kNoDepth;
 
+// Step inward from golden section's last point that tells whether the depth still rises toward
+// the bracket's end, m. Normally 0.1 nm: below the 2.3 nm between golden section's last two
+// points (so the test speaks for the last comparison too), far above the depth's rounding
+// (~1e-17 m at gear scale) times any flank slope that matters.
+constexpr double kRisingCheck_m = 1e-10;
+
 struct Frame {
   const FlankTable& table;
   PlanarPose pose;
@@ -109,10 +115,28 @@ double parabola_refine(const XY& xy, int k, Flank f, double r, double step, doub
   return r;
 }
 
+constexpr double kGolden = 0.6180339887498949;
+
+// Where golden_refine() ends when the depth rises monotonically toward one end of [lo, hi]
+// (toward hi with `at_hi`): every comparison then goes the same way, so its brackets follow
+// without evaluating the depth. The same arithmetic as golden_refine(), so the same radius.
+double golden_end(double lo, double hi, bool at_hi) {
+  double c = hi - kGolden * (hi - lo), d = lo + kGolden * (hi - lo);
+  for (int it = 0; it < kGoldenIterations; ++it) {
+    if (at_hi) {
+      lo = c, c = d;
+      d = lo + kGolden * (hi - lo);
+    } else {
+      hi = d, d = c;
+      c = hi - kGolden * (hi - lo);
+    }
+  }
+  return at_hi ? d : c;
+}
+
 // Radius of the deepest point in [lo, hi] by golden-section search: for a maximum at the end of
 // the sampled flank, where the depth is not smooth.
 double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hint) {
-  constexpr double kGolden = 0.6180339887498949;
   double c = hi - kGolden * (hi - lo), d = lo + kGolden * (hi - lo);
   double fc = depth_at(xy, k, f, c, hint), fd = depth_at(xy, k, f, d, hint);
   for (int it = 0; it < kGoldenIterations; ++it) {
@@ -167,9 +191,25 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only) {
   const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);
   const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
-  double r_best = interior ? parabola_refine(xy, k, f, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1], hint)
-                           : golden_refine(xy, k, f, std::max(r_b - step, x.table.probe_radius(0)),
-                                           std::min(r_b + step, x.table.probe_radius(n - 1)), hint);
+  double r_best = 0;
+  if (interior) {
+    r_best = parabola_refine(xy, k, f, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1], hint);
+  } else {
+    const double lo = std::max(r_b - step, x.table.probe_radius(0)), hi = std::min(r_b + step, x.table.probe_radius(n - 1));
+    // Best at an end of the bracket (a tip corner, or the flank's end): where the depth still
+    // rises toward that end at golden section's last point, a search with one maximum in the
+    // bracket (what golden section assumes) ends exactly there, found with two evaluations
+    // instead of 22.
+    bool done = false;
+    if (r_b == hi || r_b == lo) {
+      const bool at_hi = r_b == hi;
+      const double r_end = golden_end(lo, hi, at_hi);
+      const double d_end = depth_at(xy, k, f, r_end, hint);
+      const double d_in = depth_at(xy, k, f, r_end + (at_hi ? -kRisingCheck_m : kRisingCheck_m), hint);
+      if (d_end > kNone && d_in > kNone && d_end > d_in) r_best = r_end, done = true;
+    }
+    if (!done) r_best = golden_refine(xy, k, f, lo, hi, hint);
+  }
   if (std::isnan(x.table.flank_angle(k, f, r_best))) r_best = r_b;
   const Hit refined = probe_at(xy, k, f, r_best);
   if (refined.depth > kNone) return refined;
