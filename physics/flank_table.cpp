@@ -119,6 +119,7 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
   share_identical_teeth();
   build_probe_knots();
   probe_points_.resize(static_cast<std::size_t>(layout.teeth) * 2 * kProbeRadii);
+  probe_material_.assign(static_cast<std::size_t>(layout.teeth) * 2, 0);
   tooth_centres_.resize(static_cast<std::size_t>(layout.teeth));
   const double r_mid = 0.5 * (r_min_ + r_max_), half = 0.5 * (r_max_ - r_min_);
   const double wide = r_max_ * pitch_ * 0.5;
@@ -129,8 +130,10 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
     for (Flank f : {Flank::Ccw, Flank::Cw})
       for (int i = 0; i < kProbeRadii; ++i) {
         const double r = probe_radius(i);
+        const bool material = !std::isnan(flank_angle(t, f, r));
         probe_points_[(static_cast<std::size_t>(t) * 2 + (f == Flank::Cw)) * kProbeRadii + i] =
-            std::isnan(flank_angle(t, f, r)) ? Eigen::Vector2d(kNaN, kNaN) : flank_point(t, f, r);
+            material ? flank_point(t, f, r) : Eigen::Vector2d(kNaN, kNaN);
+        if (material) probe_material_[static_cast<std::size_t>(t) * 2 + (f == Flank::Cw)] |= std::uint32_t{1} << i;
       }
   }
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 #include "geometry/convex_decomposition.hpp"
@@ -68,10 +69,15 @@ class FlankTable {
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
   // m; NaN where the flank has no material), kept so that probing a flank costs no trigonometry.
   static constexpr int kProbeRadii = 16;
+  static_assert(kProbeRadii <= 32, "probe_material() holds one bit per probe radius");
   const Eigen::Vector2d& probe_point(int tooth, Flank flank, int i) const {
     return probe_points_[(static_cast<std::size_t>(tooth) * 2 + (flank == Flank::Cw)) * kProbeRadii + i];
   }
   double probe_radius(int i) const { return r_min_ + i * (r_max_ - r_min_) / (kProbeRadii - 1); }
+  // Bit i set where the flank has material at probe radius i (its probe point is not NaN).
+  std::uint32_t probe_material(int tooth, Flank flank) const {
+    return probe_material_[static_cast<std::size_t>(tooth) * 2 + (flank == Flank::Cw)];
+  }
   // Centre of a tooth's radial extent on its centre line (gear frame), m, and the radius of a
   // circle about it that holds the whole tooth.
   const Eigen::Vector2d& tooth_centre(int tooth) const { return tooth_centres_[tooth]; }
@@ -146,6 +152,7 @@ class FlankTable {
   std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle
   Eigen::Vector2d pitch_axis_;                  // (cos, sin) of the pitch angle
   std::vector<Eigen::Vector2d> probe_points_;  // [(tooth * 2 + cw) * kProbeRadii + i]
+  std::vector<std::uint32_t> probe_material_;  // [tooth * 2 + cw]
   std::vector<Eigen::Vector2d> tooth_centres_;
   double tooth_bound_ = 0;
 };

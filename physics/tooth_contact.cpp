@@ -4,6 +4,7 @@
 #include <cmath>
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <numbers>
 #include <tuple>
 
@@ -162,31 +163,64 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only) {
   depth.fill(kNone);
   int best_i = -1;
   int hint = -1;  // y's tooth the last probe faced: the next ones along the flank face it or a neighbour
+  const std::uint32_t material = x.table.probe_material(k, f);
+  auto missing = [&](int i) { return i < 0 || i >= n || !((material >> i) & 1u); };
   auto probe_sample = [&](int i) {
-    const Vector2d& p = x.table.probe_point(k, f, i);
-    depth[i] = std::isnan(p.x()) ? kNone : depth_of(xy, p, hint);
+    depth[i] = missing(i) ? kNone : depth_of(xy, x.table.probe_point(k, f, i), hint);
     if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
   };
-  auto missing = [&](int i) { return i < 0 || i >= n || std::isnan(x.table.probe_point(k, f, i).x()); };
-  // Every other sample first (and any whose neighbour has no material, and the last): at twice
-  // the spacing the depth between samples can rise four times as far above them, so a flank
-  // whose best is more than 4·kRefineWithin_m clear cannot reach the refinement window.
   if (tip_only) {
     // The three samples nearest the free end (an internal gear's teeth point inward); a maximum
-    // at the farthest of them lies down the flank, where the other probing direction finds it.
+    // at the farthest of them lies down the flank, where the other probing direction finds it,
+    // so the third is probed only when one of the first two is within the refinement window.
     const int dir = x.table.internal() ? 1 : -1;
     int end = x.table.internal() ? 0 : n - 1;
     while (missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
-    for (int j = 0; j < 3; ++j)
+    for (int j = 0; j < 2; ++j)
       if (!missing(end + j * dir)) probe_sample(end + j * dir);
-    if (best_i < 0 || best_i == end + 2 * dir || depth[best_i] < -kRefineWithin_m) return {};
-  } else {
-    for (int i = 0; i < n; ++i)
-      if (i % 2 == 0 || i == n - 1 || missing(i - 1) || missing(i + 1)) probe_sample(i);
-    if (best_i < 0 || depth[best_i] < -4 * kRefineWithin_m) return {};
-    for (int i = 1; i < n - 1; i += 2)
-      if (depth[i] <= kNone && !missing(i)) probe_sample(i);
     if (best_i < 0 || depth[best_i] < -kRefineWithin_m) return {};
+    if (!missing(end + 2 * dir)) probe_sample(end + 2 * dir);
+    if (best_i == end + 2 * dir) return {};
+  } else {
+    // Coarse to fine, probing a sample only where it can matter. Between two samples s·step
+    // apart the depth rises at most s²·kRefineWithin_m above the higher (the parabola bound
+    // kRefineWithin_m rests on, with room to spare); a stretch next to a sample that measured
+    // nothing has no such bound and is probed. The answer is that of probing every sample:
+    // the deepest one, and no refinement when it stays more than kRefineWithin_m clear.
+    // `top[i]`: what sample i can reach, its depth once probed, or a bound when it is skipped.
+    std::array<double, n> top;
+    top.fill(kNone);
+    std::array<bool, n> probed{};
+    auto probe_at_i = [&](int i) {
+      probe_sample(i);
+      probed[i] = true;
+      top[i] = depth[i];
+    };
+    // Whether sample i, between samples lo and hi (s·step around it), can reach `level`; if not,
+    // the bound is kept for the samples between.
+    auto needed = [&](int i, int lo, int hi, double rise, double level) {
+      const bool unbounded = missing(lo) || missing(hi) || (probed[lo] && depth[lo] <= kNone) || (probed[hi] && depth[hi] <= kNone);
+      const double reach = std::max(probed[lo] ? depth[lo] + rise : top[lo], probed[hi] ? depth[hi] + rise : top[hi]);
+      if (unbounded || reach >= level) return true;
+      top[i] = reach;
+      return false;
+    };
+    // Every fourth sample, the last, and any next to a radius without material.
+    for (int i = 0; i < n; ++i)
+      if (i % 4 == 0 || i == n - 1 || missing(i - 1) || missing(i + 1)) probe_at_i(i);
+    // Every other: a flank whose best stays more than 4·kRefineWithin_m clear is done.
+    for (int i = 2; i < n - 1; i += 4)
+      if (!probed[i] && !missing(i) &&
+          needed(i, i - 2, std::min(i + 2, n - 1), 16 * kRefineWithin_m,
+                 std::max(best_i < 0 ? kNone : depth[best_i], -4 * kRefineWithin_m)))
+        probe_at_i(i);
+    if (best_i < 0 || depth[best_i] < -4 * kRefineWithin_m) return {};
+    // The rest: where they could be the best or lift it into the refinement window.
+    for (int i = 1; i < n - 1; i += 2)
+      if (!probed[i] && !missing(i) &&
+          needed(i, i - 1, i + 1, 4 * kRefineWithin_m, std::max(depth[best_i], -kRefineWithin_m)))
+        probe_at_i(i);
+    if (depth[best_i] < -kRefineWithin_m) return {};
   }
   const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);
