@@ -44,15 +44,26 @@ int compare(const char* fa, const char* fb) {
   const std::vector<Record> a = load(fa), b = load(fb);
   // Walk both in call order; contacts of one call are sorted by (tooth_a, tooth_b, flank).
   std::size_t i = 0, j = 0, same_bits = 0, matched = 0, only_a = 0, only_b = 0;
-  double max_depth = 0, max_rel_depth = 0, max_point = 0, max_normal = 0, max_depth_at = 0;
+  double max_depth = 0, max_rel_depth = 0, max_point = 0, max_normal = 0, max_depth_at = 0, deepest_unmatched = 0;
+  // Matched contacts whose depths differ by more than 1e-13, 1e-12, ... 1e-9 m.
+  std::size_t above[5] = {};
   while (i < a.size() || j < b.size()) {
     auto key = [](const Record& r) { return std::make_tuple(r.call, r.tooth_a, r.tooth_b, r.flank_a); };
-    if (j == b.size() || (i < a.size() && key(a[i]) < key(b[j]))) { ++only_a, ++i; continue; }
-    if (i == a.size() || key(b[j]) < key(a[i])) { ++only_b, ++j; continue; }
+    if (j == b.size() || (i < a.size() && key(a[i]) < key(b[j]))) {
+      deepest_unmatched = std::max(deepest_unmatched, a[i].depth);
+      ++only_a, ++i;
+      continue;
+    }
+    if (i == a.size() || key(b[j]) < key(a[i])) {
+      deepest_unmatched = std::max(deepest_unmatched, b[j].depth);
+      ++only_b, ++j;
+      continue;
+    }
     const Record &x = a[i++], &y = b[j++];
     ++matched;
     if (std::memcmp(&x, &y, sizeof x) == 0) ++same_bits;
     const double dd = std::abs(x.depth - y.depth);
+    for (int e = 0; e < 5; ++e) above[e] += dd > 1e-13 * std::pow(10.0, e);
     if (dd > max_depth) max_depth = dd, max_depth_at = x.depth;
     max_rel_depth = std::max(max_rel_depth, dd / std::max(x.depth, 1e-9));
     max_point = std::max(max_point, std::hypot(x.point_x - y.point_x, x.point_y - y.point_y));
@@ -62,6 +73,8 @@ int compare(const char* fa, const char* fb) {
               b.size(), matched, same_bits, only_a, only_b);
   std::printf("largest differences of matched contacts: depth %.3e m (at a depth of %.3e m; relative %.2e), "
               "point %.3e m, normal %.3e rad\n", max_depth, max_depth_at, max_rel_depth, max_point, max_normal);
+  std::printf("depth differences over 1e-13 / 1e-12 / 1e-11 / 1e-10 / 1e-9 m: %zu / %zu / %zu / %zu / %zu; "
+              "deepest unmatched contact %.3e m\n", above[0], above[1], above[2], above[3], above[4], deepest_unmatched);
   return 0;
 }
 
