@@ -57,19 +57,25 @@ int FlankTable::nearest_tooth(const Eigen::Vector2d& p) const {
   return wrap_tooth(static_cast<int>(round_to_even((rough_atan2(p.y(), p.x()) - layout_.tooth0_angle_rad) * inv_pitch_)));
 }
 
-int FlankTable::nearest_tooth_from(const Eigen::Vector2d& p, int k) const {
+Eigen::Vector2d FlankTable::in_tooth_frame(const Eigen::Vector2d& p, int k) const {
+  const Eigen::Vector2d& axis = tooth_axis_[static_cast<std::size_t>(k)];
+  return {axis.x() * p.x() + axis.y() * p.y(), axis.x() * p.y() - axis.y() * p.x()};
+}
+
+int FlankTable::nearest_tooth_from(const Eigen::Vector2d& p, int k, Eigen::Vector2d* q) const {
   // Within half a pitch of tooth k's centre line: |q_y| ≤ tan(π/z)·q_x in the tooth's frame. A
   // point on a tooth is far inside that cone; one near the cone's edge lies mid-way across a
   // tooth space, where either bounding tooth gives the same depth (probe_depth() compares the
   // space's two flanks).
   for (int step = 0; step < 3; ++step) {
-    const Eigen::Vector2d& axis = tooth_axis_[static_cast<std::size_t>(k)];
-    const double qx = axis.x() * p.x() + axis.y() * p.y(), qy = axis.x() * p.y() - axis.y() * p.x();
-    if (!(qx > 0)) break;
-    if (std::abs(qy) <= tan_half_pitch_ * qx) return k;
-    k = wrap_tooth(k + (qy > 0 ? 1 : -1));
+    *q = in_tooth_frame(p, k);
+    if (!(q->x() > 0)) break;
+    if (std::abs(q->y()) <= tan_half_pitch_ * q->x()) return k;
+    k = wrap_tooth(k + (q->y() > 0 ? 1 : -1));
   }
-  return nearest_tooth(p);
+  k = nearest_tooth(p);
+  *q = in_tooth_frame(p, k);
+  return k;
 }
 
 FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
@@ -86,7 +92,7 @@ FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
     out.normal = (internal_ ? -1.0 : 1.0) * p / r;
     return out;
   }
-  const FirstOrder fo = first_order(p, r, k);
+  const FirstOrder fo = first_order(in_tooth_frame(p, k), r, k);
   if (!fo.has_flank) return out;
   out.inside = fo.inside;
   out.has_flank = true;
@@ -101,18 +107,23 @@ double FlankTable::first_order_depth(const Eigen::Vector2d& p, int& tooth_hint) 
   if (internal_ ? r2 < r_min_ * r_min_ : r2 > r_max_ * r_max_) return kNoDepth;
   const double r = std::sqrt(r2);
   if (internal_ ? r > r_max_ : r < r_min_) return internal_ ? r - r_max_ : r_min_ - r;
-  const int k = tooth_hint < 0 ? nearest_tooth(p) : nearest_tooth_from(p, tooth_hint);
-  const FirstOrder fo = first_order(p, r, k);
+  Eigen::Vector2d q;
+  int k;
+  if (tooth_hint < 0) {
+    k = nearest_tooth(p);
+    q = in_tooth_frame(p, k);
+  } else {
+    k = nearest_tooth_from(p, tooth_hint, &q);
+  }
+  const FirstOrder fo = first_order(q, r, k);
   if (!fo.has_flank) return kNoDepth;
   tooth_hint = fo.tooth;
   return fo.depth_m;
 }
 
-FlankTable::FirstOrder FlankTable::first_order(const Eigen::Vector2d& p, double r, int k) const {
+FlankTable::FirstOrder FlankTable::first_order(const Eigen::Vector2d& q, double r, int k) const {
   FirstOrder out;
-  // The point in tooth k's frame (its centre line on +x), and the flanks' knots around r.
-  const Eigen::Vector2d& axis = tooth_axis_[static_cast<std::size_t>(k)];
-  const Eigen::Vector2d q(axis.x() * p.x() + axis.y() * p.y(), axis.x() * p.y() - axis.y() * p.x());
+  // q: the point in tooth k's frame (its centre line on +x); the flanks' knots around r.
   const double x = (r - r_min_) * inv_dr_;
   const int i = std::clamp(static_cast<int>(x), 0, samples_ - 2);
   const double f = x - i;
@@ -153,70 +164,11 @@ FlankTable::FirstOrder FlankTable::first_order(const Eigen::Vector2d& p, double 
   return out;
 }
 
-struct FlankTable::Located {
-  enum Kind { Free, Body, NoMaterial, Teeth } kind = Free;
-  double r = 0;
-  int tooth = -1;
-  Flank flank = Flank::Ccw;
-  bool inside = false;
-  double rel = 0;  // angle from the chosen tooth's centre line, rad
-};
-
-FlankTable::Located FlankTable::locate(const Eigen::Vector2d& p) const {
-  Located l;
-  l.r = p.norm();
-  // Beyond the teeth: free (no atan2 needed), or solid body (below an external root, outside an
-  // internal root).
-  if (internal_ ? l.r < r_min_ : l.r > r_max_) return l;
-  const double phi = std::atan2(p.y(), p.x()) - layout_.tooth0_angle_rad;
-  const double k = round_to_even(phi * inv_pitch_);
-  l.tooth = wrap_tooth(static_cast<int>(k));
-  double rel = phi - k * pitch_;  // within half a pitch of the tooth
-  if (internal_ ? l.r > r_max_ : l.r < r_min_) {
-    l.kind = Located::Body;
-    l.inside = true;
-    return l;
-  }
-  const double a_ccw = sample(ccw_, l.tooth, l.r, nullptr);
-  const double a_cw = sample(cw_, l.tooth, l.r, nullptr);
-  if (std::isnan(a_ccw) || std::isnan(a_cw)) {
-    l.kind = Located::NoMaterial;
-    return l;
-  }
-  l.kind = Located::Teeth;
-  l.inside = rel > a_cw && rel < a_ccw;
-  // Inside: the nearer flank of this tooth. Outside (in a tooth space): the flank of this tooth
-  // that faces the point, or the facing flank of the neighbour if that one is nearer in angle;
-  // the depth then comes out negative (a gap), so a prober sees the approach, not only overlap.
-  bool to_ccw = l.inside ? a_ccw - rel < rel - a_cw : rel >= a_ccw;
-  if (!l.inside) {
-    const int next = wrap_tooth(l.tooth + (to_ccw ? 1 : -1));
-    const double neighbour = sample(to_ccw ? cw_ : ccw_, next, l.r, nullptr) + (to_ccw ? pitch_ : -pitch_);
-    const double own_gap = to_ccw ? rel - a_ccw : a_cw - rel;
-    const double next_gap = to_ccw ? neighbour - rel : rel - neighbour;
-    if (!std::isnan(neighbour) && next_gap < own_gap) {
-      l.tooth = next;
-      rel += to_ccw ? -pitch_ : pitch_;
-      to_ccw = !to_ccw;
-    }
-  }
-  l.flank = to_ccw ? Flank::Ccw : Flank::Cw;
-  l.rel = rel;
-  return l;
-}
-
 FlankTable::Probe FlankTable::probe(const Eigen::Vector2d& p) const {
-  const Located l = locate(p);
-  Probe out;
-  out.tooth = l.tooth;
-  out.flank = l.flank;
-  out.inside = l.inside;
-  if (l.kind == Located::Body) {
-    out.depth_m = internal_ ? l.r - r_max_ : r_min_ - l.r;
-    out.normal = (internal_ ? -1.0 : 1.0) * p / l.r;
-  }
-  if (l.kind != Located::Teeth) return out;
-  out.has_flank = true;
+  // Which tooth and flank: as probe_depth() chooses them (the facing flank of the nearer tooth;
+  // in a tooth space, the nearer of its two flanks).
+  Probe out = probe_depth(p);
+  if (!out.has_flank) return out;
   // Foot of the normal from p on the flank: start at the flank point of the same radius, slide
   // along its tangent to the projection of p, and take the flank point at that radius. Two
   // passes leave an error third-order in the depth (the first pass alone biases where along the

@@ -96,8 +96,6 @@ class FlankTable {
 
  private:
   double sample(const std::vector<double>& table, int tooth, double r, double* slope) const;
-  // Where a point lies: its radius, the tooth and flank it faces, and its angle relative to that
-  // tooth's centre line; shared by probe() and probe_depth().
   void share_identical_teeth();
   void build_probe_knots();
   // The probe_depth() path: per shared row, flank and radius sample, the flank direction and
@@ -116,28 +114,29 @@ class FlankTable {
   }
   // The nearest tooth to a point of the gear frame at radius in the teeth: from a rough atan2,
   // or, given a tooth near it, by stepping to the neighbour while the point lies more than half
-  // a pitch from the tooth's centre line (no trigonometry).
+  // a pitch from the tooth's centre line (no trigonometry; q: the point in its frame).
   // Unit vector at angle rel from tooth's centre line (gear frame).
   Eigen::Vector2d direction(int tooth, double rel) const;
   int nearest_tooth(const Eigen::Vector2d& p) const;
-  int nearest_tooth_from(const Eigen::Vector2d& p, int hint) const;
+  int nearest_tooth_from(const Eigen::Vector2d& p, int hint, Eigen::Vector2d* q) const;
+  // A point of the gear frame in tooth k's frame (its centre line on +x).
+  Eigen::Vector2d in_tooth_frame(const Eigen::Vector2d& p, int k) const;
   // probe_depth()'s measure of a point at radius r within the teeth, against tooth k (its
-  // nearest) and the neighbour across the tooth space it may lie in.
+  // nearest) and the neighbour across the tooth space it may lie in; q: the point in tooth k's
+  // frame.
   struct FirstOrder {
     bool inside = false, has_flank = false;
     int tooth = -1;
     Flank flank = Flank::Ccw;
     double depth_m = 0;
   };
-  FirstOrder first_order(const Eigen::Vector2d& p, double r, int k) const;
+  FirstOrder first_order(const Eigen::Vector2d& q, double r, int k) const;
   // A tooth number taken modulo the tooth count (k within a few turns of the range).
   int wrap_tooth(int k) const {
     while (k < 0) k += layout_.teeth;
     while (k >= layout_.teeth) k -= layout_.teeth;
     return k;
   }
-  struct Located;
-  Located locate(const Eigen::Vector2d& p) const;
 
   ToothLayout layout_;
   bool internal_;

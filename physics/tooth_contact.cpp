@@ -65,6 +65,40 @@ bool tooth_near(const Frame& x, int k, const Frame& y) {
   return d2 < outer * outer && (inner < 0 || d2 > inner * inner);
 }
 
+// The teeth of x that tooth_near() can accept lie within an angular window about the direction
+// from x's centre to y's (tooth centres all sit on one circle about x's centre): a tooth outside
+// it is skipped without the test. `centre_k` is the tooth facing y, `half` the window's half
+// width in teeth (a tooth more for rounding); half < 0: every tooth is tested.
+struct ToothWindow {
+  int centre_k = 0, half = -1;
+  bool holds(int k, int teeth) const {
+    if (half < 0) return true;
+    int d = (k - centre_k) % teeth;
+    if (d < 0) d += teeth;
+    return d <= half || teeth - d <= half;
+  }
+};
+
+ToothWindow tooth_window(const Frame& x, const Frame& y) {
+  ToothWindow w;
+  const Vector2d to_y = y.pose.centre_m - x.pose.centre_m;
+  const double dist = to_y.norm(), r_c = x.table.tooth_centre(0).norm();
+  const double outer = y.table.r_max_m() + x.table.tooth_bound_radius_m();
+  if (!(dist > 0 && r_c > 0)) return w;
+  // |c_k − c_y|² = r_c² + dist² − 2·r_c·dist·cos Δ < outer² ⇔ cos Δ > cos_limit.
+  const double cos_limit = (r_c * r_c + dist * dist - outer * outer) / (2 * r_c * dist);
+  if (cos_limit <= -1) return w;
+  const double pitch = x.table.pitch_angle_rad();
+  const double facing = std::atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0);
+  const int teeth = x.table.teeth();
+  w.centre_k = static_cast<int>(std::lround(facing / pitch)) % teeth;
+  if (w.centre_k < 0) w.centre_k += teeth;
+  const double half_rad = cos_limit >= 1 ? 0.0 : std::acos(cos_limit);
+  w.half = static_cast<int>(std::ceil(half_rad / pitch)) + 1;
+  if (2 * w.half + 1 >= teeth) w.half = -1;
+  return w;
+}
+
 struct Hit {
   double depth = kNone;
   Vector2d point, normal_into_x;  // world: the probed point and the surface normal of y there
@@ -156,13 +190,14 @@ double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hi
 // first order, the best refined, and the result measured exactly. A flank whose best sample
 // stays more than kRefineWithin_m clear of y returns no hit. With `tip_only`, only a maximum at
 // the tooth's free end (its tip corner) is looked for.
-Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only) {
+// `hint`: y's tooth the last probe faced (or −1); the next ones along the flank, or on the next
+// flank, face it or a neighbour. Updated.
+Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
   const Frame& x = xy.x;
   constexpr int n = FlankTable::kProbeRadii;
   std::array<double, n> depth;
   depth.fill(kNone);
   int best_i = -1;
-  int hint = -1;  // y's tooth the last probe faced: the next ones along the flank face it or a neighbour
   const std::uint32_t material = x.table.probe_material(k, f);
   auto missing = [&](int i) { return i < 0 || i >= n || !((material >> i) & 1u); };
   auto probe_sample = [&](int i) {
@@ -254,9 +289,16 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only) {
 
 std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb,
                                               const PlanarPose& pb) {
+  std::vector<ToothContact> found;
+  find_tooth_contacts(ta, pa, tb, pb, found);
+  return found;
+}
+
+void find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
+                         std::vector<ToothContact>& best) {
   const Frame a{ta, pa}, b{tb, pb};
   // One per (tooth_a, tooth_b, flank of a): the deepest of both probing directions.
-  std::vector<ToothContact> best;
+  best.clear();
   auto keep = [&](int tooth_a, int tooth_b, Flank flank_a, const Hit& h, bool x_is_a) {
     if (h.depth <= 0) return;
     ToothContact c;
@@ -279,12 +321,14 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
     const Frame& x = pass == 0 ? a : b;
     const Frame& y = pass == 0 ? b : a;
     const XY xy{x, y};
+    const ToothWindow window = tooth_window(x, y);
+    int hint = -1;
     for (int k = 0; k < x.table.teeth(); ++k) {
-      if (!tooth_near(x, k, y)) continue;
+      if (!window.holds(k, x.table.teeth()) || !tooth_near(x, k, y)) continue;
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
         // An overlap of two teeth is deepest either along a's flank (a's tip corner included)
         // or at b's tip corner: a's flanks are probed whole, b's only at their tips.
-        const Hit h = deepest_on_flank(xy, k, f, pass == 1);
+        const Hit h = deepest_on_flank(xy, k, f, pass == 1, hint);
         if (h.tooth_y < 0) continue;
         // Name the contact by a's tooth and the flank of a that is touched.
         if (pass == 0) keep(k, h.tooth_y, f, h, true);
@@ -297,7 +341,6 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
     return std::make_tuple(u.tooth_a, u.tooth_b, static_cast<int>(u.flank_a)) <
            std::make_tuple(v.tooth_a, v.tooth_b, static_cast<int>(v.flank_a));
   });
-  return best;
 }
 
 }  // namespace gearsim::physics

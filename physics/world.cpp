@@ -54,6 +54,7 @@ struct PairRec {
   btPersistentManifold* manifold = nullptr;
   GearPairInfo info;
   std::map<std::tuple<int, int, int>, double> last_impulse;  // warm start per tooth pair
+  std::vector<ToothContact> found;                            // this step's, kept for its storage
   std::vector<ToothContact> current;                          // in manifold point order
   std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
   // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
@@ -108,8 +109,8 @@ void World::Impl::generate_contacts() {
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     PairRec& pr = pairs[p];
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
-    std::vector<ToothContact> found =
-        find_tooth_contacts(*a.flanks, planar_pose(a), *b.flanks, planar_pose(b));
+    std::vector<ToothContact>& found = pr.found;
+    find_tooth_contacts(*a.flanks, planar_pose(a), *b.flanks, planar_pose(b), found);
     if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
       std::sort(found.begin(), found.end(), [](const ToothContact& x, const ToothContact& y) { return x.depth_m > y.depth_m; });
       dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;
