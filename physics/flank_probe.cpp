@@ -127,39 +127,43 @@ FlankTable::FirstOrder FlankTable::first_order(const Eigen::Vector2d& q, double 
   const double x = (r - r_min_) * inv_dr_;
   const int i = std::clamp(static_cast<int>(x), 0, samples_ - 2);
   const double f = x - i;
-  // r·sin(rel − a) of a point at angle rel against a flank at angle a (tooth frame), and cos ψ.
-  struct Side {
-    double s, cos_psi;
-  };
+  // r·sin(rel − a) of a point at angle rel against a flank at angle a (tooth frame); cos ψ only
+  // for the flank chosen.
   auto side = [&](const KnotPair* kn, int flank, const Eigen::Vector2d& qq) {
     const Knot &k0 = kn[0].side[flank], &k1 = kn[1].side[flank];
     const double ca = k0.cos_a + f * (k1.cos_a - k0.cos_a);
     const double sa = k0.sin_a + f * (k1.sin_a - k0.sin_a);
-    return Side{qq.y() * ca - qq.x() * sa, k0.cos_psi + f * (k1.cos_psi - k0.cos_psi)};
+    return qq.y() * ca - qq.x() * sa;
   };
   const KnotPair* own = knots(k) + i;
-  Side ccw = side(own, 0, q), cw = side(own, 1, q);
-  if (std::isnan(ccw.s) || std::isnan(cw.s)) return out;
+  const double ccw = side(own, 0, q), cw = side(own, 1, q);
+  if (std::isnan(ccw) || std::isnan(cw)) return out;
   out.tooth = k;
-  out.inside = cw.s > 0 && ccw.s < 0;
-  // As locate(): inside, the nearer flank of this tooth; in a tooth space, the facing flank of
-  // this tooth or of the neighbour, whichever is nearer (sin is monotone over these angles).
-  bool to_ccw = out.inside ? -ccw.s < cw.s : ccw.s >= 0;
-  Side chosen = to_ccw ? ccw : cw;
+  out.inside = cw > 0 && ccw < 0;
+  // Inside: the nearer flank of this tooth. In a tooth space: the facing flank of this tooth or
+  // of the neighbour, whichever is nearer (sin is monotone over these angles); the depth then
+  // comes out negative (a gap), so a prober sees the approach, not only overlap.
+  bool to_ccw = out.inside ? -ccw < cw : ccw >= 0;
+  double chosen = to_ccw ? ccw : cw;
+  const KnotPair* chosen_knots = own;
   if (!out.inside) {
     const int next = wrap_tooth(k + (to_ccw ? 1 : -1));
     const double sp = to_ccw ? pitch_axis_.y() : -pitch_axis_.y();
     const Eigen::Vector2d qn(pitch_axis_.x() * q.x() + sp * q.y(), pitch_axis_.x() * q.y() - sp * q.x());
-    const Side facing = side(knots(next) + i, to_ccw ? 1 : 0, qn);
-    const double own_gap = to_ccw ? ccw.s : -cw.s, next_gap = to_ccw ? -facing.s : facing.s;
-    if (!std::isnan(facing.s) && next_gap < own_gap) {
+    const KnotPair* next_knots = knots(next) + i;
+    const double facing = side(next_knots, to_ccw ? 1 : 0, qn);
+    const double own_gap = to_ccw ? ccw : -cw, next_gap = to_ccw ? -facing : facing;
+    if (!std::isnan(facing) && next_gap < own_gap) {
       out.tooth = next;
       to_ccw = !to_ccw;
       chosen = facing;
+      chosen_knots = next_knots;
     }
   }
+  const Knot &k0 = chosen_knots[0].side[to_ccw ? 0 : 1], &k1 = chosen_knots[1].side[to_ccw ? 0 : 1];
+  const double cos_psi = k0.cos_psi + f * (k1.cos_psi - k0.cos_psi);
   out.flank = to_ccw ? Flank::Ccw : Flank::Cw;
-  out.depth_m = (to_ccw ? -chosen.s : chosen.s) * chosen.cos_psi;
+  out.depth_m = (to_ccw ? -chosen : chosen) * cos_psi;
   out.has_flank = true;
   return out;
 }
