@@ -4,6 +4,7 @@
 #include <cmath>
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <numbers>
 #include <tuple>
@@ -224,35 +225,44 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
     // the deepest one, and no refinement when it stays more than kRefineWithin_m clear.
     // `top[i]`: what sample i can reach, its depth once probed, or a bound when it is skipped.
     std::array<double, n> top;
-    top.fill(kNone);
-    std::array<bool, n> probed{};
+    std::uint32_t probed = 0;  // bit i: sample i probed
+    auto has = [&](int i) { return ((material >> i) & 1u) != 0; };  // i within [0, n)
     auto probe_at_i = [&](int i) {
       probe_sample(i);
-      probed[i] = true;
+      probed |= std::uint32_t{1} << i;
       top[i] = depth[i];
     };
-    // Whether sample i, between samples lo and hi (s·step around it), can reach `level`; if not,
-    // the bound is kept for the samples between.
+    // Whether sample i, between samples lo and hi (s·step around it, both probed or bounded),
+    // can reach `level`; if not, the bound is kept for the samples between.
     auto needed = [&](int i, int lo, int hi, double rise, double level) {
-      const bool unbounded = missing(lo) || missing(hi) || (probed[lo] && depth[lo] <= kNone) || (probed[hi] && depth[hi] <= kNone);
-      const double reach = std::max(probed[lo] ? depth[lo] + rise : top[lo], probed[hi] ? depth[hi] + rise : top[hi]);
-      if (unbounded || reach >= level) return true;
+      const bool lo_probed = (probed >> lo) & 1u, hi_probed = (probed >> hi) & 1u;
+      if (!has(lo) || !has(hi) || (lo_probed && depth[lo] <= kNone) || (hi_probed && depth[hi] <= kNone)) return true;
+      const double reach = std::max(lo_probed ? depth[lo] + rise : top[lo], hi_probed ? depth[hi] + rise : top[hi]);
+      if (reach >= level) return true;
       top[i] = reach;
       return false;
     };
-    // Every fourth sample, the last, and any next to a radius without material.
-    for (int i = 0; i < n; ++i)
-      if (i % 4 == 0 || i == n - 1 || missing(i - 1) || missing(i + 1)) probe_at_i(i);
+    // Every fourth sample, the last, and any next to a radius without material (bits of the
+    // material mask shifted onto their neighbours), in increasing order.
+    constexpr std::uint32_t kAll = (std::uint32_t{1} << n) - 1;
+    constexpr std::uint32_t kEveryFourth = [] {
+      std::uint32_t m = std::uint32_t{1} << (n - 1);
+      for (int i = 0; i < n; i += 4) m |= std::uint32_t{1} << i;
+      return m;
+    }();
+    const std::uint32_t without = ~material & kAll;
+    for (std::uint32_t todo = (kEveryFourth | (without << 1) | (without >> 1)) & kAll; todo != 0; todo &= todo - 1)
+      probe_at_i(std::countr_zero(todo));
     // Every other: a flank whose best stays more than 4·kRefineWithin_m clear is done.
     for (int i = 2; i < n - 1; i += 4)
-      if (!probed[i] && !missing(i) &&
+      if (!((probed >> i) & 1u) && has(i) &&
           needed(i, i - 2, std::min(i + 2, n - 1), 16 * kRefineWithin_m,
                  std::max(best_i < 0 ? kNone : depth[best_i], -4 * kRefineWithin_m)))
         probe_at_i(i);
     if (best_i < 0 || depth[best_i] < -4 * kRefineWithin_m) return {};
     // The rest: where they could be the best or lift it into the refinement window.
     for (int i = 1; i < n - 1; i += 2)
-      if (!probed[i] && !missing(i) &&
+      if (!((probed >> i) & 1u) && has(i) &&
           needed(i, i - 1, i + 1, 4 * kRefineWithin_m, std::max(depth[best_i], -kRefineWithin_m)))
         probe_at_i(i);
     if (depth[best_i] < -kRefineWithin_m) return {};
