@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 #include "geometry/convex_decomposition.hpp"
@@ -58,14 +59,25 @@ class FlankTable {
   // Its error is about depth²·curvature (1e-9 m at 1 µm, 5 µm at a 100 µm gap): for searching
   // the deepest point, three times cheaper than probe() (no trigonometry after one atan2).
   Probe probe_depth(const Eigen::Vector2d& p) const;
+  // probe_depth()'s depth alone, kNoDepth where it measures nothing (free space, no material).
+  // `tooth_hint`, a tooth near the point or −1, replaces the angle search and is set to the tooth
+  // found: for points probed in sequence along one flank. Both choose the tooth the point lies
+  // on, or one of the two that bound the tooth space it lies in, and so the same depth.
+  static constexpr double kNoDepth = -1e300;
+  double first_order_depth(const Eigen::Vector2d& p, int& tooth_hint) const;
 
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
   // m; NaN where the flank has no material), kept so that probing a flank costs no trigonometry.
   static constexpr int kProbeRadii = 16;
+  static_assert(kProbeRadii <= 32, "probe_material() holds one bit per probe radius");
   const Eigen::Vector2d& probe_point(int tooth, Flank flank, int i) const {
     return probe_points_[(static_cast<std::size_t>(tooth) * 2 + (flank == Flank::Cw)) * kProbeRadii + i];
   }
   double probe_radius(int i) const { return r_min_ + i * (r_max_ - r_min_) / (kProbeRadii - 1); }
+  // Bit i set where the flank has material at probe radius i (its probe point is not NaN).
+  std::uint32_t probe_material(int tooth, Flank flank) const {
+    return probe_material_[static_cast<std::size_t>(tooth) * 2 + (flank == Flank::Cw)];
+  }
   // Centre of a tooth's radial extent on its centre line (gear frame), m, and the radius of a
   // circle about it that holds the whole tooth.
   const Eigen::Vector2d& tooth_centre(int tooth) const { return tooth_centres_[tooth]; }
@@ -73,6 +85,8 @@ class FlankTable {
 
   // A point on a flank at radius r (gear frame), m.
   Eigen::Vector2d flank_point(int tooth, Flank flank, double r) const;
+  // The same point, false where the flank has no material at r (flank_angle() is NaN there).
+  bool flank_point_if_material(int tooth, Flank flank, double r, Eigen::Vector2d* point) const;
 
   // Point, unit tangent (toward increasing radius) and outward unit normal of a flank at r.
   struct FlankFrame {
@@ -82,8 +96,6 @@ class FlankTable {
 
  private:
   double sample(const std::vector<double>& table, int tooth, double r, double* slope) const;
-  // Where a point lies: its radius, the tooth and flank it faces, and its angle relative to that
-  // tooth's centre line; shared by probe() and probe_depth().
   void share_identical_teeth();
   void build_probe_knots();
   // The probe_depth() path: per shared row, flank and radius sample, the flank direction and
@@ -92,18 +104,39 @@ class FlankTable {
     double cos_a, sin_a;  // direction of the flank point at this radius, tooth frame (NaN: no material)
     double cos_psi;       // cosine of the flank's angle to the radial: 1/√(1 + (r·dθ/dr)²)
   };
-  const Knot* knots(int tooth, Flank flank) const {
-    return (flank == Flank::Ccw ? ccw_knots_ : cw_knots_).data() +
-           static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
+  // Both flanks' knots of one radius side by side: a probe reads both at once (one cache line
+  // pair instead of two).
+  struct KnotPair {
+    Knot side[2];  // [0] Ccw, [1] Cw
+  };
+  const KnotPair* knots(int tooth) const {
+    return knots_.data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
   }
+  // The nearest tooth to a point of the gear frame at radius in the teeth: from a rough atan2,
+  // or, given a tooth near it, by stepping to the neighbour while the point lies more than half
+  // a pitch from the tooth's centre line (no trigonometry; q: the point in its frame).
+  // Unit vector at angle rel from tooth's centre line (gear frame).
+  Eigen::Vector2d direction(int tooth, double rel) const;
+  int nearest_tooth(const Eigen::Vector2d& p) const;
+  int nearest_tooth_from(const Eigen::Vector2d& p, int hint, Eigen::Vector2d* q) const;
+  // A point of the gear frame in tooth k's frame (its centre line on +x).
+  Eigen::Vector2d in_tooth_frame(const Eigen::Vector2d& p, int k) const;
+  // probe_depth()'s measure of a point at radius r within the teeth, against tooth k (its
+  // nearest) and the neighbour across the tooth space it may lie in; q: the point in tooth k's
+  // frame.
+  struct FirstOrder {
+    bool inside = false, has_flank = false;
+    int tooth = -1;
+    Flank flank = Flank::Ccw;
+    double depth_m = 0;
+  };
+  FirstOrder first_order(const Eigen::Vector2d& q, double r, int k) const;
   // A tooth number taken modulo the tooth count (k within a few turns of the range).
   int wrap_tooth(int k) const {
     while (k < 0) k += layout_.teeth;
     while (k >= layout_.teeth) k -= layout_.teeth;
     return k;
   }
-  struct Located;
-  Located locate(const Eigen::Vector2d& p) const;
 
   ToothLayout layout_;
   bool internal_;
@@ -113,10 +146,12 @@ class FlankTable {
   std::vector<double> ccw_, cw_;  // [row * samples + i], rad relative to the tooth centre
   std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
   std::vector<int> tooth_of_row_;  // a tooth of each row
-  std::vector<Knot> ccw_knots_, cw_knots_;      // [row * samples + i]
+  std::vector<KnotPair> knots_;                 // [row * samples + i]
+  double tan_half_pitch_ = 0;
   std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle
   Eigen::Vector2d pitch_axis_;                  // (cos, sin) of the pitch angle
   std::vector<Eigen::Vector2d> probe_points_;  // [(tooth * 2 + cw) * kProbeRadii + i]
+  std::vector<std::uint32_t> probe_material_;  // [tooth * 2 + cw]
   std::vector<Eigen::Vector2d> tooth_centres_;
   double tooth_bound_ = 0;
 };

@@ -29,5 +29,8 @@ struct ToothContact {
 // All tooth-pair contacts between gear a and gear b, at most one per (tooth_a, tooth_b).
 std::vector<ToothContact> find_tooth_contacts(const FlankTable& a, const PlanarPose& pa,
                                               const FlankTable& b, const PlanarPose& pb);
+// The same into `out` (cleared first), which keeps its storage from call to call.
+void find_tooth_contacts(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
+                         const PlanarPose& pb, std::vector<ToothContact>& out);
 
 }  // namespace gearsim::physics

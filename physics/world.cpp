@@ -53,7 +53,10 @@ struct PairRec {
   int a = -1, b = -1;
   btPersistentManifold* manifold = nullptr;
   GearPairInfo info;
-  std::map<std::tuple<int, int, int>, double> last_impulse;  // warm start per tooth pair
+  // Warm start per tooth pair: last step's impulse of each (tooth_a, tooth_b, flank_a), at most
+  // kMaxPointsPerPair of them, searched in place (no allocation per step).
+  std::vector<std::pair<std::tuple<int, int, int>, double>> last_impulse;
+  std::vector<ToothContact> found;                            // this step's, kept for its storage
   std::vector<ToothContact> current;                          // in manifold point order
   std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
   // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
@@ -73,6 +76,7 @@ struct World::Impl {
   std::vector<PairRec> pairs;
   std::vector<BodyState> states;
   std::vector<ContactSample> contacts;
+  std::vector<PlanarPose> gear_poses;  // this step's, per body (gears only)
   std::vector<GearPairInfo> pair_infos;
   std::map<std::string, int> body_index;
   double time = 0;
@@ -105,11 +109,15 @@ PlanarPose planar_pose(const BuiltBody& b) {
 void World::Impl::generate_contacts() {
   const auto start = Clock::now();
   max_penetration = 0;
+  // Each gear's planar pose once per step (a gear meshes in several pairs).
+  gear_poses.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].flanks) gear_poses[i] = planar_pose(bodies[i]);
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     PairRec& pr = pairs[p];
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
-    std::vector<ToothContact> found =
-        find_tooth_contacts(*a.flanks, planar_pose(a), *b.flanks, planar_pose(b));
+    std::vector<ToothContact>& found = pr.found;
+    find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
     if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
       std::sort(found.begin(), found.end(), [](const ToothContact& x, const ToothContact& y) { return x.depth_m > y.depth_m; });
       dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;
@@ -120,7 +128,7 @@ void World::Impl::generate_contacts() {
                             (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     pr.current.clear();
     pr.current_stiffness_N_per_m.clear();
-    const PlanarPose table_gear = pr.table ? planar_pose(pr.table_on_a ? a : b) : PlanarPose{};
+    const PlanarPose table_gear = pr.table ? gear_poses[pr.table_on_a ? pr.a : pr.b] : PlanarPose{};
     for (const ToothContact& c : found) {
       max_penetration = std::max(max_penetration, c.depth_m);
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
@@ -146,7 +154,8 @@ void World::Impl::generate_contacts() {
       pt.m_combinedContactStiffness1 = k;
       pt.m_combinedContactDamping1 = damping;
       const auto key = std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a));
-      if (auto it = pr.last_impulse.find(key); it != pr.last_impulse.end()) pt.m_appliedImpulse = it->second;
+      for (const auto& [k_last, impulse] : pr.last_impulse)
+        if (k_last == key) pt.m_appliedImpulse = impulse;
       pt.m_userPersistentData = nullptr;
       pr.manifold->addManifoldPoint(pt, false);
       pr.current.push_back(c);
@@ -223,7 +232,7 @@ void World::Impl::measure() {
       contacts.push_back(cs);
       // Each tooth pair's impulse warm-starts the same pair's point next step.
       const ToothContact& c = cs.geometry;
-      pr.last_impulse[std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a))] = pt.m_appliedImpulse;
+      pr.last_impulse.emplace_back(std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a)), pt.m_appliedImpulse);
     }
   }
 }

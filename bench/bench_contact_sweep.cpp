@@ -1,0 +1,170 @@
+// Benchmark and equivalence record of tooth contact on a scenario's own gears: every meshing
+// pair of the scenario (sun–planets, planets–ring for the paper's set, the faulty planet
+// included) swept kinematically through a full relative planet turn at the simulation's step,
+// pressed by −0.5 / 0 / +0.5 / +1 / +2 µm, with the sun shifted by 0 / ±1 µm (the floating sun).
+// Prints µs per find_tooth_contacts call; with `--dump FILE` it also writes every contact of the
+// sweep (binary, host order), and `--compare A B` reports how two dumps differ: calls whose
+// tooth-pair sets differ, and the largest depth, point and normal differences. Used to show
+// that a faster contact search returns the same contacts as the one it replaces.
+// Usage: bench_contact_sweep [scenario.yaml=assets/scenarios/paper_dynamics.yaml] [--dump FILE]
+//        bench_contact_sweep --compare A B
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "app/scenario_file.hpp"
+#include "physics/tooth_contact.hpp"
+#include "physics/world_bodies.hpp"
+
+using namespace gearsim;
+using namespace gearsim::physics;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// One dumped contact: the call it belongs to and its geometry.
+struct Record {
+  std::int64_t call;
+  std::int32_t tooth_a, tooth_b, flank_a, pad;
+  double point_x, point_y, normal_x, normal_y, depth;
+};
+
+int compare(const char* fa, const char* fb) {
+  auto load = [](const char* f) {
+    std::vector<Record> v;
+    std::ifstream in(f, std::ios::binary);
+    Record r;
+    while (in.read(reinterpret_cast<char*>(&r), sizeof r)) v.push_back(r);
+    return v;
+  };
+  const std::vector<Record> a = load(fa), b = load(fb);
+  // Walk both in call order; contacts of one call are sorted by (tooth_a, tooth_b, flank).
+  std::size_t i = 0, j = 0, same_bits = 0, matched = 0, only_a = 0, only_b = 0;
+  double max_depth = 0, max_rel_depth = 0, max_point = 0, max_normal = 0, max_depth_at = 0, deepest_unmatched = 0;
+  // Matched contacts whose depths differ by more than 1e-13, 1e-12, ... 1e-9 m.
+  std::size_t above[5] = {};
+  while (i < a.size() || j < b.size()) {
+    auto key = [](const Record& r) { return std::make_tuple(r.call, r.tooth_a, r.tooth_b, r.flank_a); };
+    if (j == b.size() || (i < a.size() && key(a[i]) < key(b[j]))) {
+      deepest_unmatched = std::max(deepest_unmatched, a[i].depth);
+      ++only_a, ++i;
+      continue;
+    }
+    if (i == a.size() || key(b[j]) < key(a[i])) {
+      deepest_unmatched = std::max(deepest_unmatched, b[j].depth);
+      ++only_b, ++j;
+      continue;
+    }
+    const Record &x = a[i++], &y = b[j++];
+    ++matched;
+    if (std::memcmp(&x, &y, sizeof x) == 0) ++same_bits;
+    const double dd = std::abs(x.depth - y.depth);
+    for (int e = 0; e < 5; ++e) above[e] += dd > 1e-13 * std::pow(10.0, e);
+    if (dd > max_depth) max_depth = dd, max_depth_at = x.depth;
+    max_rel_depth = std::max(max_rel_depth, dd / std::max(x.depth, 1e-9));
+    max_point = std::max(max_point, std::hypot(x.point_x - y.point_x, x.point_y - y.point_y));
+    max_normal = std::max(max_normal, std::abs(x.normal_x * y.normal_y - x.normal_y * y.normal_x));
+  }
+  std::printf("contacts: %zu in A, %zu in B; %zu matched (%zu bit-identical), %zu only in A, %zu only in B\n", a.size(),
+              b.size(), matched, same_bits, only_a, only_b);
+  std::printf("largest differences of matched contacts: depth %.3e m (at a depth of %.3e m; relative %.2e), "
+              "point %.3e m, normal %.3e rad\n", max_depth, max_depth_at, max_rel_depth, max_point, max_normal);
+  std::printf("depth differences over 1e-13 / 1e-12 / 1e-11 / 1e-10 / 1e-9 m: %zu / %zu / %zu / %zu / %zu; "
+              "deepest unmatched contact %.3e m\n", above[0], above[1], above[2], above[3], above[4], deepest_unmatched);
+  return 0;
+}
+
+double angle_of(const Eigen::Quaterniond& q) {
+  const Eigen::Vector3d x = q * Eigen::Vector3d::UnitX();
+  return std::atan2(x.y(), x.x());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 4 && std::string(argv[1]) == "--compare") return compare(argv[2], argv[3]);
+  std::string file = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml", dump;
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--dump" && i + 1 < argc) dump = argv[++i];
+    else file = argv[i];
+  }
+  const Scenario s = app::load_scenario(file);
+  struct Gear {
+    std::string name;
+    std::shared_ptr<const FlankTable> table;
+    PlanarPose pose;
+    double ratio;  // spin in the carrier frame per unit sun spin
+  };
+  std::vector<Gear> gears;
+  int sun_teeth = 0;
+  for (const BodyDef& d : s.bodies)
+    if (d.gear && d.gear->kind == GearKind::External && d.name == "sun") sun_teeth = d.gear->teeth;
+  if (sun_teeth == 0) {
+    std::fprintf(stderr, "%s: no gear body named 'sun'\n", file.c_str());
+    return 1;
+  }
+  for (const BodyDef& d : s.bodies) {
+    if (!d.gear) continue;
+    const BuiltBody b = build_body(d, s.contact);
+    const bool internal = d.gear->kind == GearKind::Internal;
+    // Carrier-frame kinematics: the sun turns by φ, a planet by −φ·Zs/Zp, the ring by −φ·Zs/Zr.
+    const double ratio = d.name == "sun" ? 1.0 : -static_cast<double>(sun_teeth) / d.gear->teeth;
+    gears.push_back({d.name, b.flanks, {d.pose.position_m.head<2>(), angle_of(d.pose.orientation)}, ratio});
+    (void)internal;
+  }
+  // Pairs that mesh: the sun with each planet, each planet with the ring (the external gear first).
+  std::vector<std::pair<int, int>> pairs;
+  for (std::size_t i = 0; i < gears.size(); ++i)
+    for (std::size_t j = 0; j < gears.size(); ++j) {
+      if (i == j || gears[i].table->internal()) continue;
+      const double d = (gears[i].pose.centre_m - gears[j].pose.centre_m).norm();
+      const bool meshes = gears[j].table->internal() ? d + gears[i].table->r_max_m() > gears[j].table->r_min_m()
+                                                      : i < j && d < gears[i].table->r_max_m() + gears[j].table->r_max_m();
+      if (meshes) pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    }
+  // One relative planet turn in sun steps of ω·dt (104.7 rad/s in the paper's run).
+  const double step_rad = 104.7 * s.solver.time_step_s * 0.8;  // sun relative to the carrier
+  int planet_teeth = 0;
+  for (const Gear& g : gears)
+    if (g.name != "sun" && !g.table->internal()) planet_teeth = g.table->teeth();
+  const long steps = std::lround(2 * 3.141592653589793 * planet_teeth / sun_teeth / step_rad);
+  const double presses_m[] = {-0.5e-6, 0.0, 0.5e-6, 1e-6, 2e-6};
+  const double shifts_m[] = {0.0, 1e-6, -1e-6};
+  std::ofstream out;
+  if (!dump.empty()) out.open(dump, std::ios::binary);
+  long calls = 0, contacts = 0;
+  double seconds = 0;
+  for (const auto& [ia, ib] : pairs) {
+    const Gear &ga = gears[ia], &gb = gears[ib];
+    // Press: the external gear a turned forward by press/r (its tip radius, a bound on r_b).
+    const double r_press = ga.table->r_max_m();
+    for (double press : presses_m)
+      for (double shift : shifts_m)
+        for (long i = 0; i < steps; ++i) {
+          const double phi = static_cast<double>(i) * step_rad;
+          PlanarPose pa = ga.pose, pb = gb.pose;
+          pa.angle_rad += phi * ga.ratio + press / r_press;
+          pb.angle_rad += phi * gb.ratio;
+          if (ga.name == "sun") pa.centre_m.x() += shift, pa.centre_m.y() += 0.5 * shift;
+          if (gb.name == "sun") pb.centre_m.x() += shift, pb.centre_m.y() += 0.5 * shift;
+          const auto t0 = Clock::now();
+          const std::vector<ToothContact> found = find_tooth_contacts(*ga.table, pa, *gb.table, pb);
+          seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+          for (const ToothContact& c : found) {
+            const Record r{calls, c.tooth_a, c.tooth_b, c.flank_a == Flank::Ccw ? 0 : 1, 0, c.point_m.x(), c.point_m.y(),
+                           c.normal_on_b.x(), c.normal_on_b.y(), c.depth_m};
+            if (out) out.write(reinterpret_cast<const char*>(&r), sizeof r);
+          }
+          contacts += static_cast<long>(found.size());
+          ++calls;
+        }
+  }
+  std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",
+              s.name.c_str(), pairs.size(), calls, steps, step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
+              1e6 * seconds / static_cast<double>(calls));
+  return 0;
+}
