@@ -10,6 +10,7 @@
 // (docs/fe.md, "Spur pair"). At 0.4 mm the pitch point is clean and the two-pair zone has
 // positions where both pairs' boundaries touch within 0.3 µm.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -60,8 +61,10 @@ double two_pair_roll(const SpurPairFeDef& d, const SpurPairMeshes& m) {
   return best;
 }
 
+// One folder per process: ctest runs the cases of this file as separate processes at once, and
+// several of them solve the same position.
 fs::path work_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("gearsim_fe_spur_" + name);
+  const fs::path d = fs::temp_directory_path() / ("gearsim_fe_spur_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(d);
   return d;
 }
