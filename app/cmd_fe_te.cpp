@@ -119,23 +119,44 @@ void write_outputs(const fs::path& dir, const physics::Scenario& s, const fe::Pl
                                                  {"max", k["max"].get<double>() / face * 1e-9}};
   summary["load_sharing_max_over_mean"] = stats(share_max);
 
-  // Stiffness tables for the dynamics (contact.stiffness_tables): the FE's mean secant mesh
-  // stiffness of each mesh spread over its mean number of pairs in contact, constant over the
-  // active flank (rows at the root and tip radii of the table's gear A, which span it).
-  auto table = [&](const char* file, const GearSpec& a, const GearSpec& b, const json& k) {
-    if (!k.contains("mean")) return;
+  // Stiffness tables for the dynamics (contact.stiffness_tables). The FE mesh compliance is the
+  // teeth (n pairs in parallel) in series with the gear bodies, 1/k = 1/(n k_pair) + 1/k_body;
+  // with ε between 1 and 2 the stiffest position has two pairs and the softest one, so
+  // k_pair = 1/(2 (1/k_min − 1/k_max)). Bullet's bodies are rigid: its per-pair stiffness is the
+  // tooth part (the body part shifts the TE by a constant). When the extremes do not differ by
+  // kMinSeriesSpread the split is not resolved and the table holds mean k / (ε b) instead.
+  // Fit the tables on a healthy sweep: open pairs (k = 0) are skipped, partly loaded ones are not.
+  constexpr double kMinSeriesSpread = 1.05;
+  auto table = [&](const char* file, const GearSpec& a, const GearSpec& b, const std::vector<double>& ks) {
+    std::vector<double> k;
+    for (double v : ks)
+      if (std::isfinite(v) && v > 0) k.push_back(v);
+    if (k.empty()) return;
+    const auto [lo, hi] = std::minmax_element(k.begin(), k.end());
+    const double mean = std::accumulate(k.begin(), k.end(), 0.0) / static_cast<double>(k.size());
     const MeshGeometry g = analyse_mesh(a, b, zero_backlash_centre_distance(a, b));
-    const double c = k["mean"].get<double>() / (g.effective_contact_ratio * face);
+    json info = {{"gear_a", a.name}, {"gear_b", b.name}, {"k_min_N_per_m", *lo}, {"k_max_N_per_m", *hi},
+                 {"effective_contact_ratio", g.effective_contact_ratio},
+                 {"mean_over_contact_ratio_N_per_m_per_m", mean / (g.effective_contact_ratio * face)}};
+    double c;
+    if (*hi > kMinSeriesSpread * *lo) {
+      const double k_pair = 1.0 / (2.0 * (1.0 / *lo - 1.0 / *hi));
+      c = k_pair / face;
+      info["method"] = "series fit: 1/k = 1/(n k_pair) + 1/k_body, n = 1 at k_min, 2 at k_max";
+      info["k_pair_N_per_m"] = k_pair;
+      info["k_body_N_per_m"] = 1.0 / (1.0 / *lo - 1.0 / k_pair);
+    } else {
+      c = mean / (g.effective_contact_ratio * face);
+      info["method"] = "mean / (effective contact ratio × face width): k_min and k_max within 5 %";
+    }
+    info["stiffness_N_per_m_per_m"] = c;
     const GearDimensions d = gear_dimensions(a);
     std::ofstream t = open_out(dir / file);
     t << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
-    summary["stiffness_tables"][file] = {{"gear_a", a.name}, {"gear_b", b.name},
-                                         {"stiffness_N_per_m_per_m", c},
-                                         {"effective_contact_ratio", g.effective_contact_ratio},
-                                         {"from", "mean secant mesh stiffness / (effective contact ratio × face width)"}};
+    summary["stiffness_tables"][file] = info;
   };
-  table("fe_stiffness_sun_planet.csv", def.spec.sun, def.spec.planet, stats(k_sp));
-  table("fe_stiffness_planet_ring.csv", def.spec.planet, def.spec.ring, stats(k_pr));
+  table("fe_stiffness_sun_planet.csv", def.spec.sun, def.spec.planet, k_sp);
+  table("fe_stiffness_planet_ring.csv", def.spec.planet, def.spec.ring, k_pr);
   if (plots && te_loaded.size() >= 2) {
     std::ofstream(dir / "te_loaded.svg")
         << gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
