@@ -55,7 +55,7 @@ json stats(const std::vector<double>& v) {
   return json{{"mean", mean}, {"min", *lo}, {"max", *hi}, {"count", x.size()}};
 }
 
-void write_outputs(const fs::path& dir, const physics::Scenario& s, const fe::PlanetaryFeDef& def,
+void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                    const std::vector<std::optional<fe::PlanetaryFePosition>>& done, double rbs,
                    json& summary, bool plots) {
   const int n = def.spec.planets;
@@ -169,7 +169,6 @@ void write_outputs(const fs::path& dir, const physics::Scenario& s, const fe::Pl
                        "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"
                        "plot $d using 1:2 with linespoints title 'sun–planet 0 secant mesh stiffness'\n");
   }
-  (void)s;
 }
 
 void fe_te(const FeTeOptions& o) {
@@ -253,7 +252,7 @@ void fe_te(const FeTeOptions& o) {
   summary["wall_seconds"] = since();
   summary["mesh_wall_seconds"] = mesh_wall;
   summary["ccx_seconds_total"] = ccx_total;
-  write_outputs(dir, s, def, done, rbs, summary, !o.no_plots && status == "completed");
+  write_outputs(dir, def, done, rbs, summary, !o.no_plots && status == "completed");
   std::ofstream(dir / "summary.json") << summary.dump(2) << '\n';
   if (status != "completed")
     throw std::runtime_error("fe-te stopped after " + std::to_string(finished) + " of " + std::to_string(turns.size()) +

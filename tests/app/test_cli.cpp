@@ -1,6 +1,8 @@
 // The gearsim binary as a user meets it: subcommands, JSON, exit codes and error messages.
 #include <gtest/gtest.h>
 
+#include "tests/support/cli_run.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -11,20 +13,8 @@
 
 namespace {
 
-struct CliRun {
-  int exit_code;
-  std::string output;  // stdout and stderr
-};
-
-CliRun gearsim(const std::string& args) {
-  const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using gearsim::test::CliRun;
+using gearsim::test::gearsim;
 
 TEST(Cli, HelpListsEverySubcommand) {
   const CliRun r = gearsim("--help");

@@ -4,6 +4,8 @@
 // Also: a missing solver is a clear error.
 #include <gtest/gtest.h>
 
+#include "tests/support/cli_run.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -17,20 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun gearsim(const std::string& args) {
-  const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf{};
-  while (std::size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+using gearsim::test::CliRun;
+using gearsim::test::gearsim;
 
 std::string read(const fs::path& p) {
   std::ifstream f(p);

@@ -8,6 +8,7 @@
 
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
+#include "tests/support/expect_has.hpp"
 #include "physics/fe/constants.hpp"
 
 namespace gearsim::app {
@@ -24,12 +25,6 @@ std::string error_for(const std::string& file, const std::vector<std::string>& s
   }
   return "";
 }
-
-#define EXPECT_HAS(text, ...)                                                                  \
-  do {                                                                                         \
-    const std::string t_ = (text);                                                             \
-    for (const char* part : {__VA_ARGS__}) EXPECT_NE(t_.find(part), std::string::npos) << t_; \
-  } while (0)
 
 TEST(ScenarioFe, PaperTorqueIsTheCarrierLoadOverTheRatio) {
   const physics::Scenario s = load_scenario(kPaper);

@@ -8,6 +8,7 @@
 
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
+#include "tests/support/expect_has.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -50,12 +51,6 @@ std::string error_for(const fs::path& p) {
   }
   return "";
 }
-
-#define EXPECT_HAS(text, ...)                                                                  \
-  do {                                                                                         \
-    const std::string t_ = (text);                                                             \
-    for (const char* part : {__VA_ARGS__}) EXPECT_NE(t_.find(part), std::string::npos) << t_; \
-  } while (0)
 
 TEST(ScenarioStiffnessTables, PlanetNamesEveryPlanetOfTheMacro) {
   const fs::path p = scenario("    - {gears: [sun, planet], file: sun.csv}\n");
