@@ -62,7 +62,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   const double mesh_period = 2.0 * M_PI / def.spec.sun.teeth;
   std::ofstream te = open_out(dir / "te_loaded.csv");
   te << "position,sun_turn_rad,mesh_phase,te_geometric_rad,te_elastic_rad,te_loaded_rad,te_loaded_urad,"
-        "te_loaded_base_um,te_fe_low_rad,te_fe_full_rad,ccx_wall_s\n";
+        "te_loaded_base_um,te_fe_low_rad,te_fe_full_rad,sun_mesh_torque_low_N_m,sun_mesh_torque_N_m,ccx_wall_s\n";
   std::ofstream ms = open_out(dir / "mesh_stiffness.csv");
   ms << "position,sun_turn_rad,mesh_phase";
   for (int k = 0; k < n; ++k) {
@@ -71,6 +71,15 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
        << "_ring_stiffness_N_per_m," << p << "_load_share";
   }
   ms << '\n';
+  // The tracked tooth (the faulty one, else planet 0's tooth 0): its sun-side force and root stresses.
+  std::ofstream tf = open_out(dir / "tooth_forces.csv");
+  tf << "position,sun_turn_rad,mesh_phase,planet,tooth,force_N\n";
+  std::ofstream rs = open_out(dir / "root_stress.csv");
+  rs << "position,sun_turn_rad,mesh_phase,planet,tooth,side,tooth_force_N,sigma1_max_Pa,sigma2_min_Pa,"
+        "von_mises_max_Pa,sigma1_max_low_load_Pa,elements\n";
+  std::vector<double> root_c, root_w, tracked_force;
+  json root_peak;
+  std::vector<double> mesh_torque_fraction;  // torque through the teeth / applied torque
   std::vector<double> te_loaded, te_elastic, k_sp, k_pr, share_max, phase_col, te_col, tel_col, kcol;
   double first_turn = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < done.size(); ++i) {
@@ -80,7 +89,9 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     const double phase = (p.sun_turn_rad - first_turn) / mesh_period;
     te << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.te_geometric_rad << ',' << p.te_elastic_rad << ','
        << p.te_loaded_rad << ',' << p.te_loaded_rad * 1e6 << ',' << p.te_loaded_rad * rbs * 1e6 << ','
-       << p.te_fe_low_rad << ',' << p.te_fe_full_rad << ',' << p.wall_time_s << '\n';
+       << p.te_fe_low_rad << ',' << p.te_fe_full_rad << ',' << p.sun_mesh_torque_low_N_m << ','
+       << p.sun_mesh_torque_N_m << ',' << p.wall_time_s << '\n';
+    mesh_torque_fraction.push_back(p.sun_mesh_torque_N_m / def.sun_torque_N_m);
     te_loaded.push_back(p.te_loaded_rad);
     te_elastic.push_back(p.te_elastic_rad);
     phase_col.push_back(phase);
@@ -98,6 +109,23 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
       k_pr.push_back(p.planet_ring_stiffness_N_per_m[k]);
     }
     kcol.push_back(p.sun_planet_stiffness_N_per_m[0]);
+    double f_tracked = 0;
+    for (int k = 0; k < n; ++k)
+      for (const auto& [tooth, f] : p.sun_mesh_tooth_force_N[static_cast<size_t>(k)]) {
+        tf << i << ',' << p.sun_turn_rad << ',' << phase << ',' << k << ',' << tooth << ',' << f << '\n';
+        if (k == p.tracked.planet && tooth == p.tracked.tooth) f_tracked = f;
+      }
+    tracked_force.push_back(f_tracked);
+    for (const fe::RootStress& r : p.tracked_root_stress) {
+      const bool ccw = r.side == Flank::Ccw;
+      rs << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.tracked.planet << ',' << p.tracked.tooth << ','
+         << (ccw ? "ccw" : "cw") << ',' << f_tracked << ',' << r.sigma1_max_Pa << ',' << r.sigma2_min_Pa << ','
+         << r.von_mises_max_Pa << ',' << r.sigma1_max_low_Pa << ',' << r.elements << '\n';
+      (ccw ? root_c : root_w).push_back(r.sigma1_max_Pa * 1e-6);
+      if (!root_peak.contains("sigma1_max_Pa") || r.sigma1_max_Pa > root_peak["sigma1_max_Pa"].get<double>())
+        root_peak = {{"sigma1_max_Pa", r.sigma1_max_Pa}, {"side", ccw ? "ccw" : "cw"}, {"position", i},
+                     {"mesh_phase", phase}, {"tooth_force_N", f_tracked}, {"von_mises_max_Pa", r.von_mises_max_Pa}};
+    }
     share_max.push_back(smax);
     ms << '\n';
   }
@@ -118,6 +146,12 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                                                  {"min", k["min"].get<double>() / face * 1e-9},
                                                  {"max", k["max"].get<double>() / face * 1e-9}};
   summary["load_sharing_max_over_mean"] = stats(share_max);
+  summary["sun_mesh_torque_over_applied"] = stats(mesh_torque_fraction);
+  if (!tracked_force.empty()) {
+    const fe::TrackedTooth t = fe::tracked_tooth(def);
+    summary["tracked_tooth"] = {{"planet", t.planet}, {"tooth", t.tooth}, {"faulty", t.faulty},
+                                {"sun_force_N", stats(tracked_force)}, {"root_stress_peak", root_peak}};
+  }
 
   // Stiffness tables for the dynamics (contact.stiffness_tables). The FE mesh compliance is the
   // teeth (n pairs in parallel) in series with the gear bodies, 1/k = 1/(n k_pair) + 1/k_body;
@@ -164,6 +198,12 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                        "set y2label 'elastic part, µrad'; set y2tics; set ytics nomirror\n"
                        "plot $d using 1:2 with linespoints title 'loaded TE (θ_s − i θ_c)', "
                        "$d using 1:3 axes x1y2 with linespoints title 'elastic part'\n");
+    std::ofstream(dir / "root_stress.svg")
+        << gnuplot_svg(data_block("d", {phase_col, root_c, root_w, tracked_force}) +
+                       "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'largest root σ1, MPa'; set grid\n"
+                       "set y2label 'sun force on the tooth, N'; set y2tics; set ytics nomirror\n"
+                       "plot $d using 1:2 with linespoints title 'ccw-side root', $d using 1:3 with linespoints title "
+                       "'cw-side root', $d using 1:4 axes x1y2 with linespoints title 'tooth force'\n");
     std::ofstream(dir / "mesh_stiffness.svg")
         << gnuplot_svg(data_block("d", {phase_col, kcol}) +
                        "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"

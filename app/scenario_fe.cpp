@@ -18,7 +18,7 @@ physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& s) {
       m.fail(key, std::string("expected a length ") + (zero_ok ? "≥ 0" : "> 0") + " in m");
     return v;
   };
-  f.flank_size_m = length("flank_size_m", fe::kDefaultFlankElementSize_m, false);
+  f.flank_size_m = length("flank_size_m", fe::kDefaultFeTeFlankSize_m, false);
   f.core_size_m = length("core_size_m", std::max(fe::kDefaultCoreElementSize_m, f.flank_size_m), false);
   if (f.core_size_m < f.flank_size_m) m.fail("core_size_m", "expected at least flank_size_m");
   f.transition_m = length("transition_m", fe::kDefaultSizeTransition_m, true);

@@ -19,7 +19,7 @@ std::vector<DatBlock> read_dat(const std::filesystem::path& dat) {
     ++line_no;
     // Contact statistics are read by read_contact_totals; skip their numbers here.
     if (line.find("statistics for slave set") != std::string::npos) {
-      blocks.push_back(DatBlock{"contact statistics", "", 0.0, {}});
+      blocks.push_back(DatBlock{"contact statistics", "", 0.0, {}, {}});
       continue;
     }
     // A block header names its set and time.
@@ -52,6 +52,7 @@ std::vector<DatBlock> read_dat(const std::filesystem::path& dat) {
       }
     }
     blocks.back().rows[id] = v;
+    blocks.back().row_list.emplace_back(id, std::move(v));
   }
   return blocks;
 }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gearsim::fe {
@@ -15,6 +16,9 @@ struct DatBlock {
   std::string set;       // node or element set name, upper case as ccx prints it
   double time = 0.0;     // step time of the block
   std::map<int, std::vector<double>> rows;  // node/element id → values, in the deck's units
+  // Every row in file order (an *EL PRINT block has one row per integration point, all with the
+  // element's id: the integration point number is the first value).
+  std::vector<std::pair<int, std::vector<double>>> row_list;
 };
 
 // One "statistics for slave set S, master set M" block of a *CONTACT PRINT CF request: the total

@@ -76,6 +76,16 @@ void validate(const DeckDef& def) {
     if (!(f > prev)) throw InputError("deck: load_fractions must increase from above 0");
     prev = f;
   }
+  for (const FeElementSet& es : def.stress_sets) {
+    check_name("stress set", es.name);
+    if (es.body < 0 || es.body >= static_cast<int>(def.bodies.size()))
+      throw InputError("stress set " + es.name + ": body index out of range");
+    if (es.elements.empty()) throw InputError("stress set " + es.name + ": no elements");
+    for (int e : es.elements)
+      if (e < 0 || e >= static_cast<int>(def.bodies[static_cast<size_t>(es.body)].mesh.quads.size()))
+        throw InputError("stress set " + es.name + ": element " + std::to_string(e) + " is not in body " +
+                         def.bodies[static_cast<size_t>(es.body)].name);
+  }
   if (def.element_type != "CPS4R" && def.element_type != "CPS4")
     throw InputError("deck: element_type must be CPS4R or CPS4, got " + def.element_type);
 }
@@ -153,6 +163,14 @@ Deck write_deck(const DeckDef& def) {
     write_id_list(o, fixed);
   }
 
+  // Element sets whose stresses are printed.
+  for (const FeElementSet& es : def.stress_sets) {
+    o << "*ELSET, ELSET=" << es.name << "\n";
+    std::vector<int> ids;
+    for (int e : es.elements) ids.push_back(deck.layout[static_cast<size_t>(es.body)].first_element + e);
+    write_id_list(o, ids);
+  }
+
   // Rigid hubs, linearised: u_i − u_C + (y_i − y_C)·θ = 0, v_i − v_C − (x_i − x_C)·θ = 0.
   for (size_t bi = 0; bi < def.bodies.size(); ++bi) {
     const FeBody& b = def.bodies[bi];
@@ -221,6 +239,7 @@ Deck write_deck(const DeckDef& def) {
     o << "*NODE PRINT, NSET=NROT\nU\n*NODE PRINT, NSET=NCENTRE\nRF\n";
     for (const FeContact& c : def.contacts)
       o << "*CONTACT PRINT, SLAVE=S" << c.name << ", MASTER=M" << c.name << "\nCF\n";
+    for (const FeElementSet& es : def.stress_sets) o << "*EL PRINT, ELSET=" << es.name << "\nS\n";
   };
 
   // Step 1: the driving body turned by closing_rotation_rad closes the contacts.

@@ -49,6 +49,13 @@ struct FeContact {
   std::vector<std::pair<int, int>> slave_edges, master_edges;
 };
 
+// Elements of one body whose stresses are printed (*EL PRINT S) at the end of every step.
+struct FeElementSet {
+  std::string name;           // letters and digits; the ccx element set's name
+  int body = 0;               // body index
+  std::vector<int> elements;  // quad indices of that body's mesh
+};
+
 struct DeckDef {
   std::vector<FeBody> bodies;          // exactly one Driving body
   std::vector<FeContact> contacts;
@@ -68,6 +75,7 @@ struct DeckDef {
   // torque, which the caller subtracts; it keeps a torque step regular while the contacts are
   // still open at its first iterations.
   double driving_spring_N_m_per_rad = 0;
+  std::vector<FeElementSet> stress_sets;  // stress output (e.g. a tooth's root fillets)
 };
 
 // Where a body's extra nodes and elements sit in the deck.

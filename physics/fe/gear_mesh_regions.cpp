@@ -62,4 +62,21 @@ std::vector<QuadEdge> select_tooth_edges(const QuadMesh2& mesh,
   return out;
 }
 
+std::vector<int> root_elements(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags,
+                               const GearDimensions& dims, GearKind kind, int tooth, Flank side) {
+  GEARSIM_CHECK(tags.size() == mesh.toothed_edges.size(), "edge tags not made for this mesh");
+  std::vector<int> out;
+  for (std::size_t i = 0; i < tags.size(); ++i) {
+    const ToothedEdgeTag& t = tags[i];
+    if (t.tooth != tooth || t.side != side || t.on_flank) continue;
+    const auto [a, b] = edge_points(mesh, mesh.toothed_edges[i]);
+    const double r = (0.5 * (a + b)).norm();
+    const bool root_side = kind == GearKind::External ? r < dims.form_radius_m : r > dims.form_radius_m;
+    if (root_side) out.push_back(mesh.toothed_edges[i].first);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 }  // namespace gearsim::fe

@@ -39,4 +39,11 @@ std::vector<QuadEdge> select_tooth_edges(const QuadMesh2& mesh,
                                          const std::vector<ToothedEdgeTag>& tags,
                                          const ToothEdgeSelection& which);
 
+// The quads that own the toothed-loop edges of one tooth's root on one side of its centre line:
+// the fillet and root land between the form circle and the root circle (not flank, not tip
+// land). Their stresses are the tooth-root (bending) stresses on that side. Sorted, unique.
+// `kind` says on which side of the form circle the root lies (inside for external gears).
+std::vector<int> root_elements(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags,
+                               const GearDimensions& dims, GearKind kind, int tooth, Flank side);
+
 }  // namespace gearsim::fe

@@ -1,6 +1,7 @@
 #include "physics/fe/planetary_fe.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "physics/fe/ccx_dat.hpp"
 #include "physics/fe/constants.hpp"
 #include "physics/fe/deck.hpp"
+#include "physics/fe/gear_mesh_regions.hpp"
 #include "physics/fe/planetary_positions.hpp"
 #include "physics/fe/process.hpp"
 
@@ -50,9 +52,47 @@ std::vector<std::pair<int, int>> edges_near(const QuadMesh2& q, const physics::P
   return out;
 }
 
-double norm3(const double* v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+// Root-stress summary of one element set's block (rows: element, integration point, sxx, syy,
+// szz, sxy, …; deck units MPa).
+struct StressSummary {
+  double s1_max = -std::numeric_limits<double>::infinity();
+  double s2_min = std::numeric_limits<double>::infinity();
+  double vm_max = 0;
+};
+StressSummary summarise_stress(const DatBlock& b) {
+  StressSummary out;
+  for (const auto& [id, v] : b.row_list) {
+    if (v.size() < 5) throw std::runtime_error("ccx stress row of element " + std::to_string(id) + " is short");
+    const double sx = v[1], sy = v[2], txy = v[4];
+    const double c = 0.5 * (sx + sy), r = std::hypot(0.5 * (sx - sy), txy);
+    out.s1_max = std::max(out.s1_max, c + r);
+    out.s2_min = std::min(out.s2_min, c - r);
+    out.vm_max = std::max(out.vm_max, std::sqrt(sx * sx - sx * sy + sy * sy + 3 * txy * txy));
+  }
+  return out;
+}
+
+// The tooth an error names, or -1.
+int error_tooth(const GearErrors& e) {
+  for (const auto& f : e.flank_offsets)
+    if (f.normal_offset_m != 0) return f.tooth;
+  for (const auto& f : e.profile_slopes)
+    if (f.slope_m != 0 && f.tooth >= 0) return f.tooth;
+  for (const auto& f : e.pitch_errors)
+    if (f.error_m != 0) return f.tooth;
+  return -1;
+}
 
 }  // namespace
+
+TrackedTooth tracked_tooth(const PlanetaryFeDef& def) {
+  for (int k = 0; k < static_cast<int>(def.planet_gears.size()); ++k) {
+    const GearSpec& g = def.planet_gears[static_cast<size_t>(k)];
+    const int t = error_tooth(g.errors);
+    if (t >= 0) return {k, t % g.teeth, true};
+  }
+  return {0, 0, false};
+}
 
 PlanetaryFeMeshes mesh_planetary(const PlanetaryFeDef& def) {
   if (!def.planet_gears.empty() && static_cast<int>(def.planet_gears.size()) != def.spec.planets)
@@ -91,13 +131,35 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   }
   deck.bodies.push_back({"RING", to_fe_mesh(meshes.ring.mesh), pos.ring.centre_m, pos.ring.angle_rad, FeSupport::Fixed});
   const int ring = ps.planets + 1;
+  std::vector<std::vector<ToothedEdgeTag>> planet_tags;
+  for (int k = 0; k < ps.planets; ++k)
+    planet_tags.push_back(tag_toothed_edges(meshes.planets[static_cast<size_t>(k)].mesh, planet_gear(def, k),
+                                            make_gear_outline(planet_gear(def, k)).dims));
+  std::vector<std::vector<int>> sun_mesh_teeth(static_cast<size_t>(ps.planets));
   // Contacts: sun (slave) on each planet, each planet (slave) on the ring.
   for (int k = 0; k < ps.planets; ++k) {
     const auto& pp = pos.planets[static_cast<size_t>(k)];
     const QuadMesh2& pm = meshes.planets[static_cast<size_t>(k)].mesh;
-    deck.contacts.push_back({"SP" + std::to_string(k), 0, k + 1,
-                             edges_near(meshes.sun.mesh, pos.sun, pp.centre_m, pd.tip_radius_m + band),
-                             edges_near(pm, pp, pos.sun.centre_m, sd.tip_radius_m + band)});
+    // One contact pair per planet tooth within reach of the sun (the tooth as slave, the sun's
+    // edges near this planet as master), so each tooth's force is read on its own.
+    const auto sun_side = edges_near(meshes.sun.mesh, pos.sun, pp.centre_m, pd.tip_radius_m + band);
+    const auto planet_side = edges_near(pm, pp, pos.sun.centre_m, sd.tip_radius_m + band);
+    const auto& tags = planet_tags[static_cast<size_t>(k)];
+    std::vector<int> teeth;
+    for (const QuadEdge& e : planet_side) {
+      const auto it = std::find(pm.toothed_edges.begin(), pm.toothed_edges.end(), e);
+      teeth.push_back(tags[static_cast<size_t>(it - pm.toothed_edges.begin())].tooth);
+    }
+    std::vector<int> distinct = teeth;
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    for (int j : distinct) {
+      std::vector<std::pair<int, int>> slave;
+      for (std::size_t i = 0; i < planet_side.size(); ++i)
+        if (teeth[i] == j) slave.push_back(planet_side[i]);
+      deck.contacts.push_back({"SP" + std::to_string(k) + "T" + std::to_string(j), k + 1, 0, slave, sun_side});
+      sun_mesh_teeth[static_cast<size_t>(k)].push_back(j);
+    }
     std::vector<std::pair<int, int>> ring_side;
     const Eigen::Rotation2Dd rot(pp.angle_rad);
     for (const QuadEdge& e : pm.toothed_edges) {
@@ -106,6 +168,20 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
     }
     deck.contacts.push_back({"PR" + std::to_string(k), k + 1, ring, ring_side,
                              edges_near(meshes.ring.mesh, pos.ring, pp.centre_m, pd.tip_radius_m + band)});
+  }
+  // Root stresses of the tracked tooth, both sides.
+  const TrackedTooth tracked = tracked_tooth(def);
+  const GearSpec& tg = planet_gear(def, tracked.planet);
+  const char* side_name[2] = {"C", "W"};
+  for (int s = 0; s < 2; ++s) {
+    std::vector<int> els = root_elements(meshes.planets[static_cast<size_t>(tracked.planet)].mesh,
+                                         planet_tags[static_cast<size_t>(tracked.planet)],
+                                         make_gear_outline(tg).dims, GearKind::External, tracked.tooth,
+                                         s == 0 ? Flank::Ccw : Flank::Cw);
+    if (els.empty())
+      throw InputError("planetary FE: tooth " + std::to_string(tracked.tooth) + " of planet " +
+                       std::to_string(tracked.planet) + " has no root elements in its mesh");
+    deck.stress_sets.push_back({std::string("ROOT") + side_name[s], tracked.planet + 1, std::move(els)});
   }
   deck.thickness_m = ps.sun.face_width_m;
   deck.element_type = def.element_type;
@@ -152,18 +228,25 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   const double sun_low = rotation(0, 2.0), sun_full = rotation(0, 3.0);
   out.te_fe_low_rad = pos.sun_closing_rad + sun_low;
   out.te_fe_full_rad = pos.sun_closing_rad + sun_full;
-  out.te_elastic_rad = (sun_full - sun_low) / (1.0 - kLowLoadFraction);
-  out.te_loaded_rad = out.te_geometric_rad + out.te_elastic_rad;
   for (int k = 0; k < ps.planets; ++k) {
     out.planet_rotation_low_rad.push_back(rotation(k + 1, 2.0));
     out.planet_rotation_rad.push_back(rotation(k + 1, 3.0));
   }
   const auto totals = read_contact_totals(run.dat_path);
-  auto force = [&](const std::string& slave, double time) {
+  auto force_vector = [&](const std::string& slave, double time) -> Eigen::Vector3d {
     for (auto it = totals.rbegin(); it != totals.rend(); ++it)
-      if (it->slave == slave && std::abs(it->time - time) < 1e-6) return norm3(it->force);
+      if (it->slave == slave && std::abs(it->time - time) < 1e-6)
+        return {it->force[0], it->force[1], it->force[2]};  // N in the deck too
     throw std::runtime_error("ccx results lack the contact force of " + slave + " at time " +
                              std::to_string(time) + " (" + run.dat_path.string() + ")");
+  };
+  auto force = [&](const std::string& slave, double time) { return force_vector(slave, time).norm(); };
+  // The sun's force on a planet: the sum over its teeth's pairs.
+  auto sun_force = [&](int k, double time) {
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
+    for (int j : sun_mesh_teeth[static_cast<size_t>(k)])
+      f += force_vector("SSP" + std::to_string(k) + "T" + std::to_string(j), time);
+    return f.norm();
   };
   const double rbs = sd.base_radius_m, rbp = pd.base_radius_m;
   auto secant = [](double dF, double approach) {
@@ -171,15 +254,65 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   };
   for (int k = 0; k < ps.planets; ++k) {
     const std::string n = std::to_string(k);
-    out.sun_planet_force_N.push_back(force("SSP" + n, 3.0));
+    out.sun_planet_force_N.push_back(sun_force(k, 3.0));
     out.planet_ring_force_N.push_back(force("SPR" + n, 3.0));
-    out.sun_planet_force_low_N.push_back(force("SSP" + n, 2.0));
+    out.sun_planet_force_low_N.push_back(sun_force(k, 2.0));
     out.planet_ring_force_low_N.push_back(force("SPR" + n, 2.0));
     const double dp = out.planet_rotation_rad[k] - out.planet_rotation_low_rad[k];
     out.sun_planet_stiffness_N_per_m.push_back(
         secant(out.sun_planet_force_N[k] - out.sun_planet_force_low_N[k], rbs * (sun_full - sun_low) + rbp * dp));
     out.planet_ring_stiffness_N_per_m.push_back(
         secant(out.planet_ring_force_N[k] - out.planet_ring_force_low_N[k], -rbp * dp));
+  }
+  // The torque the teeth take off the sun: the moment about the sun's centre of the contact
+  // forces on the planet teeth, reversed. CPS4R bodies in ccx resist a rigid turn of their hub a
+  // little (expanded to hourglass-controlled C3D8R; docs/fe.md), so part of the applied torque
+  // never reaches the teeth; the elastic TE is the sun's turn per N·m through the teeth, times T.
+  auto sun_mesh_torque = [&](double time) {
+    const auto& c = pos.sun.centre_m;
+    double m = 0;
+    for (int k = 0; k < ps.planets; ++k)
+      for (int j : sun_mesh_teeth[static_cast<size_t>(k)])
+        for (auto it = totals.rbegin(); it != totals.rend(); ++it)
+          if (it->slave == "SSP" + std::to_string(k) + "T" + std::to_string(j) && std::abs(it->time - time) < 1e-6) {
+            const double mz = it->moment[2] / kDeckLength_per_m;  // N·mm → N·m, about the origin
+            // The sun pushes the planet tooth (slave) with the moment printed; the teeth take that
+            // much off the sun.
+            m += mz - (c.x() * it->force[1] - c.y() * it->force[0]);
+            break;
+          }
+    return m;
+  };
+  out.sun_mesh_torque_low_N_m = sun_mesh_torque(2.0);
+  out.sun_mesh_torque_N_m = sun_mesh_torque(3.0);
+  const double dm = out.sun_mesh_torque_N_m - out.sun_mesh_torque_low_N_m;
+  out.te_elastic_rad = dm > 0 ? (sun_full - sun_low) / dm * def.sun_torque_N_m
+                              : std::numeric_limits<double>::quiet_NaN();
+  out.te_loaded_rad = out.te_geometric_rad + out.te_elastic_rad;
+  for (int k = 0; k < ps.planets; ++k) {
+    std::vector<std::pair<int, double>> per_tooth;
+    for (int j : sun_mesh_teeth[static_cast<size_t>(k)])
+      per_tooth.emplace_back(j, force("SSP" + std::to_string(k) + "T" + std::to_string(j), 3.0));
+    out.sun_mesh_tooth_force_N.push_back(std::move(per_tooth));
+  }
+  out.tracked = tracked;
+  for (int s = 0; s < 2; ++s) {
+    const std::string set = std::string("ROOT") + side_name[s];
+    auto stress_at = [&](double time) -> const DatBlock& {
+      for (const DatBlock& b : blocks)
+        if (b.quantity == "stresses" && b.set == set && std::abs(b.time - time) < 1e-6) return b;
+      throw std::runtime_error("ccx results lack the stresses of " + set + " at time " + std::to_string(time) +
+                               " (" + run.dat_path.string() + ")");
+    };
+    const StressSummary full = summarise_stress(stress_at(3.0)), low = summarise_stress(stress_at(2.0));
+    RootStress r;
+    r.side = s == 0 ? Flank::Ccw : Flank::Cw;
+    r.sigma1_max_Pa = full.s1_max / kDeckStress_per_Pa;
+    r.sigma2_min_Pa = full.s2_min / kDeckStress_per_Pa;
+    r.von_mises_max_Pa = full.vm_max / kDeckStress_per_Pa;
+    r.sigma1_max_low_Pa = low.s1_max / kDeckStress_per_Pa;
+    r.elements = static_cast<int>(deck.stress_sets[static_cast<size_t>(s)].elements.size());
+    out.tracked_root_stress.push_back(r);
   }
   out.wall_time_s = run.wall_time_s;
   return out;
@@ -193,7 +326,8 @@ std::vector<double> sweep_turns(const PlanetaryFeDef& def, int positions_per_mes
   const PlanetarySpec& ps = def.spec;
   const PlanetaryGeometry geo = analyse_planetary(ps);
   const double zs = ps.sun.teeth, zp = ps.planet.teeth;
-  const PlanetPlacement& p0 = geo.placements.at(0);
+  const TrackedTooth tracked = tracked_tooth(def);
+  const PlanetPlacement& p0 = geo.placements.at(static_cast<size_t>(tracked.planet));
   // Planet 0 turns −φ z_s/z_p with the sun's turn φ; its tooth 0 faces the sun (polar angle
   // carrier_angle + π) once per planet revolution, i.e. every 2π z_p/z_s of φ.
   const double period = 2.0 * std::numbers::pi * zp / zs;
@@ -201,7 +335,8 @@ std::vector<double> sweep_turns(const PlanetaryFeDef& def, int positions_per_mes
   // mesh period later: half the tooth thickness at the pitch circle, π/(2 z_p) of planet turn,
   // is π/(2 z_s) of sun turn (checked with the rigid closing of a faulty tooth 0: its extra
   // closing spans +0.125…+0.375 of a mesh period after the centre-line passage).
-  double centre = (p0.spin_angle_rad + planet_gear(def, 0).tooth0_angle_rad - p0.carrier_angle_rad - std::numbers::pi) *
+  double centre = (p0.spin_angle_rad + planet_gear(def, tracked.planet).tooth0_angle_rad +
+                   tracked.tooth * 2.0 * std::numbers::pi / zp - p0.carrier_angle_rad - std::numbers::pi) *
                       zp / zs +
                   std::numbers::pi / (2.0 * zs);
   centre = std::fmod(centre, period);

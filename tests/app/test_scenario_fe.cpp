@@ -45,7 +45,7 @@ TEST(ScenarioFe, DefaultsAndAGivenTorque) {
   const physics::Scenario s = load_scenario(kPaper, {"fe={thinning_per_flank_m: 1.0e-5, sun_torque_N_m: 2.5}"});
   ASSERT_TRUE(s.fe);
   EXPECT_DOUBLE_EQ(s.fe->sun_torque_N_m, 2.5);
-  EXPECT_DOUBLE_EQ(s.fe->flank_size_m, fe::kDefaultFlankElementSize_m);
+  EXPECT_DOUBLE_EQ(s.fe->flank_size_m, fe::kDefaultFeTeFlankSize_m);
   EXPECT_DOUBLE_EQ(s.fe->max_sagitta_m, fe::kDefaultMaxSagitta_m);
   EXPECT_DOUBLE_EQ(s.fe->friction, fe::kDefaultFlankFriction);
   EXPECT_EQ(s.fe->positions_per_mesh, fe::kDefaultPositionsPerMesh);

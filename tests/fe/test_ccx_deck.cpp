@@ -1,5 +1,5 @@
 // Deck generator against closed-form mechanics, solved by ccx: torsion of a plane-stress annulus
-// through the rigid hub coupling, and a lever pressed on a block through a contact pair (the
+// through the rigid hub coupling (rotation and stress output), and a lever pressed on a block through a contact pair (the
 // contact's moment about the axis equals the applied torque).
 #include <gtest/gtest.h>
 
@@ -94,6 +94,57 @@ TEST(CcxDeck, AnnulusTorsionMatchesClosedForm) {
   const double expected = T / (4 * std::numbers::pi * G * t) * (1 / (ri * ri) - 1 / (ro * ro));
   const double theta = at_step(blocks, "displacements", "NROT", deck.layout[0].rotation_node, 0, 2);
   EXPECT_NEAR(theta / expected, 1.0, 0.01) << "θ = " << theta << " rad, closed form " << expected;
+}
+
+// The same annulus with a stress set on its middle ring of elements (r 9.69…10.31 mm): pure
+// shear τ = T/(2π r² t) at the element centres, so the principal stresses are ±τ (plane stress,
+// σ_r = σ_θ = 0). 2 %: τ varies as 1/r² by ±6 % across the ring; its centre value is the mean
+// within 0.5 %, plus the bilinear elements' error.
+TEST(CcxDeck, StressSetReadsTheShearOfATwistedAnnulus) {
+  const double ri = 5e-3, ro = 15e-3, t = 10e-3, T = 10.0;
+  FeBody hub;
+  hub.name = "HUB";
+  hub.support = FeSupport::Driving;
+  const int nu = 48, nv = 16;
+  hub.mesh = grid(nu, nv, [&](double u, double v) {
+    const double r = ri + (ro - ri) * v, a = -2 * std::numbers::pi * u;
+    return Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
+  });
+  for (auto& q : hub.mesh.quads)
+    for (int& n : q)
+      if (n % (nu + 1) == nu) n -= nu;
+  for (int i = 0; i < nu; ++i) {
+    hub.mesh.hub_nodes.push_back(i);
+    hub.mesh.fixed_nodes.push_back(nv * (nu + 1) + i);
+  }
+  FeElementSet ring{"MID", 0, {}};
+  const int row = nv / 2;  // elements between r = ri + 8/16 (ro − ri) and ri + 9/16 (ro − ri)
+  for (int i = 0; i < nu; ++i) ring.elements.push_back(row * nu + i);
+  DeckDef def;
+  def.bodies = {hub};
+  def.thickness_m = t;
+  def.torque_N_m = T;
+  def.load_fractions = {1.0};
+  def.element_type = "CPS4";
+  def.stress_sets = {ring};
+  const fs::path dir = fresh_dir("stress");
+  solve(def, dir);
+  const auto blocks = read_dat(dir / "job.dat");
+  const DatBlock& b = last_block(blocks, "stresses", "MID");
+  ASSERT_EQ(b.row_list.size(), static_cast<size_t>(nu) * 8);  // CPS4 → C3D8: 8 points each
+  const double r = ri + (ro - ri) * (row + 0.5) / nv;
+  const double tau = T / (2 * std::numbers::pi * r * r * t) * 1e-6;  // MPa (deck units)
+  // Means over the ring's integration points (they sit ±0.29 of an element off its centre, where
+  // the bilinear field adds a σ_r, σ_θ of either sign).
+  double s1_mean = 0, s2_mean = 0;
+  for (const auto& [id, v] : b.row_list) {
+    ASSERT_GE(v.size(), 5u);
+    const double c = 0.5 * (v[1] + v[2]), rad = std::hypot(0.5 * (v[1] - v[2]), v[4]);
+    s1_mean += (c + rad) / static_cast<double>(b.row_list.size());
+    s2_mean += (c - rad) / static_cast<double>(b.row_list.size());
+  }
+  EXPECT_NEAR(s1_mean / tau, 1.0, 0.02) << "σ1 " << s1_mean << " MPa, τ " << tau << " MPa";
+  EXPECT_NEAR(s2_mean / tau, -1.0, 0.02) << "σ2 " << s2_mean << " MPa, τ " << tau << " MPa";
 }
 
 // A lever (x 8…12 mm, y −1…1 mm) on the axis through its hub edge x = 8 mm, pressed by T = 1 N·m

@@ -232,6 +232,36 @@ TEST(gear_mesher, FlankErrorMovesThatFlankOnlyAndByItsSize) {
   EXPECT_GE(on_fault, 3);
 }
 
+// The root elements of one side of a tooth own the fillet and root-land edges between the form
+// and root circles on that side of the tooth's centre line, within half a pitch of it.
+TEST(gear_mesher, RootElementsLieInTheFilletOfTheirSide) {
+  const Case& c = meshed("planet");
+  const auto tags = tag_toothed_edges(c.mesh.mesh, c.spec, c.outline.dims);
+  const GearDimensions& d = c.outline.dims;
+  const double pitch = 2 * std::numbers::pi / c.spec.teeth;
+  for (int k : {0, 7}) {
+    std::vector<int> sides[2];
+    for (int s = 0; s < 2; ++s) {
+      const Flank f = s == 0 ? Flank::Ccw : Flank::Cw;
+      sides[s] = root_elements(c.mesh.mesh, tags, d, GearKind::External, k, f);
+      // A 0.38 mm fillet and half a root land at ≤ 0.4 mm spacing: at least 3 boundary quads.
+      EXPECT_GE(sides[s].size(), 3u) << k;
+      for (int q : sides[s]) {
+        Vector2d centre = Vector2d::Zero();
+        for (int n : c.mesh.mesh.quads[static_cast<size_t>(q)]) centre += c.mesh.mesh.nodes[static_cast<size_t>(n)] / 4;
+        // Centres lie below the form circle and above the root circle less one element.
+        EXPECT_LT(centre.norm(), d.form_radius_m) << k;
+        EXPECT_GT(centre.norm(), d.root_radius_m - 0.4e-3) << k;
+        double off = std::atan2(centre.y(), centre.x()) - c.spec.tooth0_angle_rad - k * pitch;
+        off = std::remainder(off, 2 * std::numbers::pi);
+        EXPECT_LT(std::abs(off), 0.5 * pitch + 1e-3) << k;
+        EXPECT_EQ(off > 0, f == Flank::Ccw) << "tooth " << k << " quad " << q << " offset " << off;
+      }
+    }
+    for (int q : sides[0]) EXPECT_EQ(std::count(sides[1].begin(), sides[1].end(), q), 0) << q;
+  }
+}
+
 TEST(gear_mesher, ToothTagsSelectEachFlankOfEachTooth) {
   const Case& c = meshed("faulty");
   const auto tags = tag_toothed_edges(c.mesh.mesh, c.spec, c.outline.dims);
