@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numeric>
 
@@ -77,8 +78,12 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   std::ofstream rs = open_out(dir / "root_stress.csv");
   rs << "position,sun_turn_rad,mesh_phase,planet,tooth,side,tooth_force_N,sigma1_max_Pa,sigma2_min_Pa,"
         "von_mises_max_Pa,sigma1_max_low_load_Pa,elements\n";
-  std::vector<double> root_c, root_w, tracked_force;
-  json root_peak;
+  // Largest root σ1 (either side), MPa, of teeth t−1, t, t+1 of the tracked planet, per position.
+  std::map<int, std::vector<double>> root_by_tooth;
+  std::vector<double> tracked_force;
+  json root_peaks;  // tooth → the largest σ1 over the sweep, where
+  constexpr double kLoadedPairShare = 0.02;
+  std::vector<int> n_sp;  // loaded tooth pairs per sun–planet sample (parallel to k_sp)
   std::vector<double> mesh_torque_fraction;  // torque through the teeth / applied torque
   std::vector<double> te_loaded, te_elastic, k_sp, k_pr, share_max, phase_col, te_col, tel_col, kcol;
   double first_turn = std::numeric_limits<double>::quiet_NaN();
@@ -106,26 +111,37 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
       ms << ',' << p.sun_planet_force_N[k] << ',' << p.planet_ring_force_N[k] << ','
          << p.sun_planet_stiffness_N_per_m[k] << ',' << p.planet_ring_stiffness_N_per_m[k] << ',' << share;
       k_sp.push_back(p.sun_planet_stiffness_N_per_m[k]);
+      // Loaded tooth pairs of this sun–planet mesh: teeth carrying more than kLoadedPairShare of
+      // the planet's sun-mesh force.
+      int pairs = 0;
+      for (const auto& tf_k : p.sun_mesh_tooth_force_N[static_cast<size_t>(k)])
+        if (tf_k.second > kLoadedPairShare * p.sun_planet_force_N[k]) ++pairs;
+      n_sp.push_back(pairs);
       k_pr.push_back(p.planet_ring_stiffness_N_per_m[k]);
     }
     kcol.push_back(p.sun_planet_stiffness_N_per_m[0]);
-    double f_tracked = 0;
+    std::map<int, double> tracked_planet_force;  // tooth → sun force on it, tracked planet
     for (int k = 0; k < n; ++k)
       for (const auto& [tooth, f] : p.sun_mesh_tooth_force_N[static_cast<size_t>(k)]) {
         tf << i << ',' << p.sun_turn_rad << ',' << phase << ',' << k << ',' << tooth << ',' << f << '\n';
-        if (k == p.tracked.planet && tooth == p.tracked.tooth) f_tracked = f;
+        if (k == p.tracked.planet) tracked_planet_force[tooth] = f;
       }
-    tracked_force.push_back(f_tracked);
+    tracked_force.push_back(tracked_planet_force[p.tracked.tooth]);
+    std::map<int, double> sigma1_of_tooth;
     for (const fe::RootStress& r : p.tracked_root_stress) {
       const bool ccw = r.side == Flank::Ccw;
-      rs << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.tracked.planet << ',' << p.tracked.tooth << ','
-         << (ccw ? "ccw" : "cw") << ',' << f_tracked << ',' << r.sigma1_max_Pa << ',' << r.sigma2_min_Pa << ','
+      const double f = tracked_planet_force[r.tooth];
+      rs << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.tracked.planet << ',' << r.tooth << ','
+         << (ccw ? "ccw" : "cw") << ',' << f << ',' << r.sigma1_max_Pa << ',' << r.sigma2_min_Pa << ','
          << r.von_mises_max_Pa << ',' << r.sigma1_max_low_Pa << ',' << r.elements << '\n';
-      (ccw ? root_c : root_w).push_back(r.sigma1_max_Pa * 1e-6);
-      if (!root_peak.contains("sigma1_max_Pa") || r.sigma1_max_Pa > root_peak["sigma1_max_Pa"].get<double>())
-        root_peak = {{"sigma1_max_Pa", r.sigma1_max_Pa}, {"side", ccw ? "ccw" : "cw"}, {"position", i},
-                     {"mesh_phase", phase}, {"tooth_force_N", f_tracked}, {"von_mises_max_Pa", r.von_mises_max_Pa}};
+      sigma1_of_tooth[r.tooth] = sigma1_of_tooth.contains(r.tooth) ? std::max(sigma1_of_tooth[r.tooth], r.sigma1_max_Pa)
+                                                                   : r.sigma1_max_Pa;
+      json& peak = root_peaks[std::to_string(r.tooth)];
+      if (!peak.contains("sigma1_max_Pa") || r.sigma1_max_Pa > peak["sigma1_max_Pa"].get<double>())
+        peak = {{"sigma1_max_Pa", r.sigma1_max_Pa}, {"side", ccw ? "ccw" : "cw"}, {"position", i},
+                {"mesh_phase", phase}, {"tooth_force_N", f}, {"von_mises_max_Pa", r.von_mises_max_Pa}};
     }
+    for (const auto& [tooth, s1] : sigma1_of_tooth) root_by_tooth[tooth].push_back(s1 * 1e-6);
     share_max.push_back(smax);
     ms << '\n';
   }
@@ -150,38 +166,72 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   if (!tracked_force.empty()) {
     const fe::TrackedTooth t = fe::tracked_tooth(def);
     summary["tracked_tooth"] = {{"planet", t.planet}, {"tooth", t.tooth}, {"faulty", t.faulty},
-                                {"sun_force_N", stats(tracked_force)}, {"root_stress_peak", root_peak}};
+                                {"sun_force_N", stats(tracked_force)}, {"root_stress_peak_by_tooth", root_peaks}};
   }
 
   // Stiffness tables for the dynamics (contact.stiffness_tables). The FE mesh compliance is the
-  // teeth (n pairs in parallel) in series with the gear bodies, 1/k = 1/(n k_pair) + 1/k_body;
-  // with ε between 1 and 2 the stiffest position has two pairs and the softest one, so
-  // k_pair = 1/(2 (1/k_min − 1/k_max)). Bullet's bodies are rigid: its per-pair stiffness is the
-  // tooth part (the body part shifts the TE by a constant). When the extremes do not differ by
-  // kMinSeriesSpread the split is not resolved and the table holds mean k / (ε b) instead.
+  // teeth (n pairs in parallel) in series with the gear bodies, 1/k = 1/(n k_pair) + 1/k_body,
+  // fitted by least squares in (1/n, 1/k) over every solved position and planet. n is the FE's
+  // own count of loaded pairs where the deck splits the mesh per tooth (sun–planet); elsewhere
+  // (planet–ring) the samples split into the softer and the stiffer half of their range, n = 1
+  // and 2 (contact ratio between 1 and 2). Bullet's bodies are rigid: its per-pair stiffness is
+  // the tooth part k_pair (the body part shifts the TE by a constant). Without two pair counts
+  // or with a non-physical fit (k_pair or k_body ≤ 0) the table holds mean k / (ε b) instead.
   // Fit the tables on a healthy sweep: open pairs (k = 0) are skipped, partly loaded ones are not.
-  constexpr double kMinSeriesSpread = 1.05;
-  auto table = [&](const char* file, const GearSpec& a, const GearSpec& b, const std::vector<double>& ks) {
+  auto table = [&](const char* file, const GearSpec& a, const GearSpec& b, const std::vector<double>& ks,
+                   std::vector<int> ns, const char* count_source) {
     std::vector<double> k;
-    for (double v : ks)
-      if (std::isfinite(v) && v > 0) k.push_back(v);
+    std::vector<int> pairs_of;
+    if (ns.empty()) {  // split by range
+      std::vector<double> ok;
+      for (double v : ks)
+        if (std::isfinite(v) && v > 0) ok.push_back(v);
+      if (ok.empty()) return;
+      const auto [lo, hi] = std::minmax_element(ok.begin(), ok.end());
+      for (double v : ks) ns.push_back(v > 0.5 * (*lo + *hi) ? 2 : 1);
+    }
+    for (std::size_t i = 0; i < ks.size(); ++i)
+      if (std::isfinite(ks[i]) && ks[i] > 0 && ns[i] > 0) {
+        k.push_back(ks[i]);
+        pairs_of.push_back(ns[i]);
+      }
     if (k.empty()) return;
     const auto [lo, hi] = std::minmax_element(k.begin(), k.end());
     const double mean = std::accumulate(k.begin(), k.end(), 0.0) / static_cast<double>(k.size());
     const MeshGeometry g = analyse_mesh(a, b, zero_backlash_centre_distance(a, b));
     json info = {{"gear_a", a.name}, {"gear_b", b.name}, {"k_min_N_per_m", *lo}, {"k_max_N_per_m", *hi},
-                 {"effective_contact_ratio", g.effective_contact_ratio},
+                 {"samples", k.size()}, {"effective_contact_ratio", g.effective_contact_ratio},
                  {"mean_over_contact_ratio_N_per_m_per_m", mean / (g.effective_contact_ratio * face)}};
+    // Least squares y = s x + c with x = 1/n, y = 1/k.
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    std::map<int, int> per_n;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      const double x = 1.0 / pairs_of[i], y = 1.0 / k[i];
+      sx += x, sy += y, sxx += x * x, sxy += x * y;
+      ++per_n[pairs_of[i]];
+    }
+    const double m = static_cast<double>(k.size()), det = m * sxx - sx * sx;
+    const double slope = det > 0 ? (m * sxy - sx * sy) / det : 0.0, icpt = det > 0 ? (sy - slope * sx) / m : 0.0;
+    json counts;
+    for (const auto& [pairs, c] : per_n) counts[std::to_string(pairs)] = c;
+    info["pair_counts"] = counts;
+    info["pair_count_source"] = count_source;
     double c;
-    if (*hi > kMinSeriesSpread * *lo) {
-      const double k_pair = 1.0 / (2.0 * (1.0 / *lo - 1.0 / *hi));
+    if (per_n.size() >= 2 && slope > 0 && icpt > 0) {
+      const double k_pair = 1.0 / slope, k_body = 1.0 / icpt;
+      double rms = 0;
+      for (std::size_t i = 0; i < k.size(); ++i) {
+        const double fit = 1.0 / (1.0 / (pairs_of[i] * k_pair) + 1.0 / k_body);
+        rms += std::pow(k[i] / fit - 1.0, 2) / m;
+      }
       c = k_pair / face;
-      info["method"] = "series fit: 1/k = 1/(n k_pair) + 1/k_body, n = 1 at k_min, 2 at k_max";
+      info["method"] = "series fit over all samples: 1/k = 1/(n k_pair) + 1/k_body, least squares in (1/n, 1/k)";
       info["k_pair_N_per_m"] = k_pair;
-      info["k_body_N_per_m"] = 1.0 / (1.0 / *lo - 1.0 / k_pair);
+      info["k_body_N_per_m"] = k_body;
+      info["fit_rms_relative"] = std::sqrt(rms);
     } else {
       c = mean / (g.effective_contact_ratio * face);
-      info["method"] = "mean / (effective contact ratio × face width): k_min and k_max within 5 %";
+      info["method"] = "mean / (effective contact ratio × face width): no series fit (one pair count, or k_pair/k_body ≤ 0)";
     }
     info["stiffness_N_per_m_per_m"] = c;
     const GearDimensions d = gear_dimensions(a);
@@ -189,8 +239,8 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     t << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
     summary["stiffness_tables"][file] = info;
   };
-  table("fe_stiffness_sun_planet.csv", def.spec.sun, def.spec.planet, k_sp);
-  table("fe_stiffness_planet_ring.csv", def.spec.planet, def.spec.ring, k_pr);
+  table("fe_stiffness_sun_planet.csv", def.spec.sun, def.spec.planet, k_sp, n_sp, "FE: teeth carrying > 2 % of the mesh force");
+  table("fe_stiffness_planet_ring.csv", def.spec.planet, def.spec.ring, k_pr, {}, "softer/stiffer half of the sampled range");
   if (plots && te_loaded.size() >= 2) {
     std::ofstream(dir / "te_loaded.svg")
         << gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
@@ -198,12 +248,21 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                        "set y2label 'elastic part, µrad'; set y2tics; set ytics nomirror\n"
                        "plot $d using 1:2 with linespoints title 'loaded TE (θ_s − i θ_c)', "
                        "$d using 1:3 axes x1y2 with linespoints title 'elastic part'\n");
-    std::ofstream(dir / "root_stress.svg")
-        << gnuplot_svg(data_block("d", {phase_col, root_c, root_w, tracked_force}) +
-                       "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'largest root σ1, MPa'; set grid\n"
-                       "set y2label 'sun force on the tooth, N'; set y2tics; set ytics nomirror\n"
-                       "plot $d using 1:2 with linespoints title 'ccw-side root', $d using 1:3 with linespoints title "
-                       "'cw-side root', $d using 1:4 axes x1y2 with linespoints title 'tooth force'\n");
+    if (root_by_tooth.size() == 3) {
+      const fe::TrackedTooth t = fe::tracked_tooth(def);
+      const int z = def.planet_gears.empty() ? def.spec.planet.teeth : def.planet_gears[0].teeth;
+      const int before = (t.tooth + z - 1) % z, after = (t.tooth + 1) % z;
+      std::ofstream(dir / "root_stress.svg")
+          << gnuplot_svg(data_block("d", {phase_col, root_by_tooth[before], root_by_tooth[t.tooth], root_by_tooth[after],
+                                          tracked_force}) +
+                         "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'largest root σ1, MPa'; set grid\n"
+                         "set y2label 'sun force on the tracked tooth, N'; set y2tics; set ytics nomirror\n"
+                         "plot $d using 1:2 with linespoints title 'tooth " + std::to_string(before) +
+                         "', $d using 1:3 with linespoints title 'tooth " + std::to_string(t.tooth) +
+                         (t.faulty ? " (faulty)" : "") + "', $d using 1:4 with linespoints title 'tooth " +
+                         std::to_string(after) + "', $d using 1:5 axes x1y2 with linespoints title 'force on tooth " +
+                         std::to_string(t.tooth) + "'\n");
+    }
     std::ofstream(dir / "mesh_stiffness.svg")
         << gnuplot_svg(data_block("d", {phase_col, kcol}) +
                        "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"

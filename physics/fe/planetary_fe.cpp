@@ -169,19 +169,29 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
     deck.contacts.push_back({"PR" + std::to_string(k), k + 1, ring, ring_side,
                              edges_near(meshes.ring.mesh, pos.ring, pp.centre_m, pd.tip_radius_m + band)});
   }
-  // Root stresses of the tracked tooth, both sides.
+  // Root stresses of the tracked tooth and its two neighbours (which carry the planet's share
+  // alone where a faulty tooth does not touch), both sides of each.
   const TrackedTooth tracked = tracked_tooth(def);
   const GearSpec& tg = planet_gear(def, tracked.planet);
-  const char* side_name[2] = {"C", "W"};
-  for (int s = 0; s < 2; ++s) {
-    std::vector<int> els = root_elements(meshes.planets[static_cast<size_t>(tracked.planet)].mesh,
-                                         planet_tags[static_cast<size_t>(tracked.planet)],
-                                         make_gear_outline(tg).dims, GearKind::External, tracked.tooth,
-                                         s == 0 ? Flank::Ccw : Flank::Cw);
-    if (els.empty())
-      throw InputError("planetary FE: tooth " + std::to_string(tracked.tooth) + " of planet " +
-                       std::to_string(tracked.planet) + " has no root elements in its mesh");
-    deck.stress_sets.push_back({std::string("ROOT") + side_name[s], tracked.planet + 1, std::move(els)});
+  struct RootSet {
+    std::string name;
+    int tooth;
+    Flank side;
+  };
+  std::vector<RootSet> root_sets;
+  for (int dt : {-1, 0, 1}) {
+    const int tooth = ((tracked.tooth + dt) % tg.teeth + tg.teeth) % tg.teeth;
+    for (Flank side : {Flank::Ccw, Flank::Cw}) {
+      RootSet rs{"ROOT" + std::to_string(tooth) + (side == Flank::Ccw ? "C" : "W"), tooth, side};
+      std::vector<int> els = root_elements(meshes.planets[static_cast<size_t>(tracked.planet)].mesh,
+                                           planet_tags[static_cast<size_t>(tracked.planet)],
+                                           make_gear_outline(tg).dims, GearKind::External, tooth, side);
+      if (els.empty())
+        throw InputError("planetary FE: tooth " + std::to_string(tooth) + " of planet " +
+                         std::to_string(tracked.planet) + " has no root elements in its mesh");
+      deck.stress_sets.push_back({rs.name, tracked.planet + 1, std::move(els)});
+      root_sets.push_back(rs);
+    }
   }
   deck.thickness_m = ps.sun.face_width_m;
   deck.element_type = def.element_type;
@@ -296,8 +306,8 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
     out.sun_mesh_tooth_force_N.push_back(std::move(per_tooth));
   }
   out.tracked = tracked;
-  for (int s = 0; s < 2; ++s) {
-    const std::string set = std::string("ROOT") + side_name[s];
+  for (std::size_t i = 0; i < root_sets.size(); ++i) {
+    const std::string& set = root_sets[i].name;
     auto stress_at = [&](double time) -> const DatBlock& {
       for (const DatBlock& b : blocks)
         if (b.quantity == "stresses" && b.set == set && std::abs(b.time - time) < 1e-6) return b;
@@ -306,12 +316,13 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
     };
     const StressSummary full = summarise_stress(stress_at(3.0)), low = summarise_stress(stress_at(2.0));
     RootStress r;
-    r.side = s == 0 ? Flank::Ccw : Flank::Cw;
+    r.tooth = root_sets[i].tooth;
+    r.side = root_sets[i].side;
     r.sigma1_max_Pa = full.s1_max / kDeckStress_per_Pa;
     r.sigma2_min_Pa = full.s2_min / kDeckStress_per_Pa;
     r.von_mises_max_Pa = full.vm_max / kDeckStress_per_Pa;
     r.sigma1_max_low_Pa = low.s1_max / kDeckStress_per_Pa;
-    r.elements = static_cast<int>(deck.stress_sets[static_cast<size_t>(s)].elements.size());
+    r.elements = static_cast<int>(deck.stress_sets[i].elements.size());
     out.tracked_root_stress.push_back(r);
   }
   out.wall_time_s = run.wall_time_s;

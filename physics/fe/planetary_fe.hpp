@@ -38,6 +38,7 @@ TrackedTooth tracked_tooth(const PlanetaryFeDef& def);
 // integration points: CPS4R has one, at the element centre, so a fillet value lies half an
 // element inside the surface), Pa. Plane stress: σ1 ≥ σ2 the in-plane principal stresses.
 struct RootStress {
+  int tooth = 0;              // tooth of the tracked planet
   Flank side = Flank::Ccw;    // side of the tooth's centre line
   double sigma1_max_Pa = 0;   // largest tensile principal stress
   double sigma2_min_Pa = 0;   // most compressive principal stress
@@ -83,7 +84,9 @@ struct PlanetaryFePosition {
   // (tooth index, N; every tooth within reach, loaded or not).
   std::vector<std::vector<std::pair<int, double>>> sun_mesh_tooth_force_N;
   TrackedTooth tracked;
-  std::vector<RootStress> tracked_root_stress;  // the tracked tooth's two sides (Ccw, Cw), full torque
+  // Root stresses at the full torque of the tracked tooth's neighbour before it, the tracked
+  // tooth and the neighbour after it (teeth t−1, t, t+1 of the tracked planet), Ccw then Cw side.
+  std::vector<RootStress> tracked_root_stress;
   double wall_time_s = 0;         // ccx wall time
 };
 
