@@ -185,6 +185,42 @@ TEST(CcxDeck, ContactCarriesTheTorque) {
   EXPECT_GT(theta, 0.0);
 }
 
+// A free annulus (nothing holds it but its hub) turned by a torque has no equilibrium: with CPS4
+// the solve returns a rotation of order 1e8 rad (a singular system). With CPS4R ccx (plane-stress
+// quads expanded to hourglass-controlled C3D8R bricks) resists the rigid turn: here 0.4 N·m turns
+// it 0.027 rad (15 N·m/rad). This is why gearsim's planetary FE takes the torque through the teeth
+// from the contact moments and not the applied one (docs/fe.md, "Hub leak").
+TEST(CcxDeck, ReducedIntegrationResistsARigidTurnOfTheHub) {
+  double theta[2] = {0, 0};
+  const char* types[2] = {"CPS4R", "CPS4"};
+  for (int k = 0; k < 2; ++k) {
+    FeBody ring;
+    ring.name = "FREE";
+    ring.support = FeSupport::Driving;
+    const int nu = 48, nv = 6;
+    ring.mesh = grid(nu, nv, [&](double u, double v) {
+      const double r = 5e-3 + 5e-3 * v, a = -2 * std::numbers::pi * u;
+      return Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
+    });
+    for (auto& q : ring.mesh.quads)
+      for (int& n : q)
+        if (n % (nu + 1) == nu) n -= nu;
+    for (int i = 0; i < nu; ++i) ring.mesh.hub_nodes.push_back(i);
+    DeckDef def;
+    def.bodies = {ring};
+    def.torque_N_m = 0.4;
+    def.load_fractions = {1.0};
+    def.element_type = types[k];
+    const fs::path dir = fresh_dir(std::string("free_") + types[k]);
+    const Deck deck = solve(def, dir);
+    theta[k] = at_step(read_dat(dir / "job.dat"), "displacements", "NROT", deck.layout[0].rotation_node, 0, 2);
+  }
+  const double k_cps4r = 0.4 / theta[0];  // N·m/rad
+  EXPECT_GT(k_cps4r, 1.0) << "θ " << theta[0];
+  EXPECT_LT(k_cps4r, 100.0) << "θ " << theta[0];
+  EXPECT_GT(std::abs(theta[1]), 1e4 * std::abs(theta[0])) << "CPS4 θ " << theta[1];
+}
+
 // A driving body held by nothing but its rotational spring turns θ = T / k (the hub equations make
 // the whole plate rigid): the spring element sits on the rotation node with the stiffness given,
 // in N·m/rad. Tolerance 1e-6: a linear solve, 7 printed digits.

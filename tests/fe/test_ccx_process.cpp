@@ -1,5 +1,6 @@
 // ccx subprocess and .dat reader: a plane-stress bar in tension against u = F L / (E A), and the
-// error paths (missing ccx, missing deck, a failing deck surfaces the log's *ERROR line).
+// error paths (missing ccx, missing deck, a failing deck or an unfinished nonlinear step surfaces
+// the log's *ERROR line and the log path).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -92,5 +93,29 @@ TEST(CcxProcess, FailingDeckSurfacesLogError) {
     FAIL() << "a solver failure is not an input error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("*ERROR"), std::string::npos) << e.what();
+  }
+}
+
+// A nonlinear step that cannot finish in the increments it is allowed (10 fixed increments of 0.1,
+// at most 2): ccx stops with "max. # of increments reached"; the error quotes that line and names
+// the log file, the way a non-converged increment (too many cutbacks) is reported.
+TEST(CcxProcess, UnfinishedIncrementsAreASolverError) {
+  if (find_executable("ccx").empty()) GTEST_SKIP() << "ccx not installed";
+  const fs::path dir = fresh_dir("increments");
+  write_bar_deck(dir / "inc.inp", 0.01, 0.001, 0.001, 2, 1.0);
+  std::stringstream ss;
+  ss << std::ifstream(dir / "inc.inp").rdbuf();
+  std::string deck = ss.str();
+  deck.replace(deck.find("*STEP\n*STATIC\n"), 14, "*STEP, NLGEOM, INC=2\n*STATIC\n0.1, 1., 0.1, 0.1\n");
+  std::ofstream(dir / "inc.inp") << deck;
+  try {
+    run_ccx({"ccx", dir, "inc"});
+    FAIL() << "expected ccx failure";
+  } catch (const InputError&) {
+    FAIL() << "a solver failure is not an input error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("max. # of increments"), std::string::npos) << what;
+    EXPECT_NE(what.find((dir / "inc.log").string()), std::string::npos) << what;
   }
 }
