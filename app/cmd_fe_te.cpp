@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -229,6 +230,11 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
       info["k_pair_N_per_m"] = k_pair;
       info["k_body_N_per_m"] = k_body;
       info["fit_rms_relative"] = std::sqrt(rms);
+      // The entry for contact.stiffness_tables: the tooth part per pair, the bodies in series.
+      char entry[256];
+      std::snprintf(entry, sizeof entry, "{gears: [%s, %s], file: %s, body_stiffness_N_per_m: %.6g}", a.name.c_str(),
+                    b.name.c_str(), file, k_body);
+      info["scenario_entry"] = entry;
     } else {
       c = mean / (g.effective_contact_ratio * face);
       info["method"] = "mean / (effective contact ratio × face width): no series fit (one pair count, or k_pair/k_body ≤ 0)";

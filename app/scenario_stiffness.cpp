@@ -90,6 +90,12 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
   for (const YamlMap& m : entries) {
     const std::vector<std::string> names = m.strings("gears", 2);
     const physics::StiffnessTable table = read_table(m, dir);
+    double body = 0;
+    if (given(m, "body_stiffness_N_per_m")) {
+      body = m.number("body_stiffness_N_per_m");
+      if (!(body > 0) || !std::isfinite(body))
+        m.fail("body_stiffness_N_per_m", "expected a stiffness > 0 in N/m (omit the key for rigid gear bodies)");
+    }
     m.reject_unknown_keys();
     for (int side = 0; side < 2; ++side) {
       bool any = false;
@@ -120,7 +126,7 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
                                " mm on '" + a.name + "', but its active flank meshing '" + b.name + "' spans " +
                                mm(flank.first) + "–" + mm(flank.second) + " mm (start of active profile to tip)");
         }
-        s.contact.stiffness_tables.push_back({a.name, b.name, table});
+        s.contact.stiffness_tables.push_back({a.name, b.name, table, body});
         ++pairs;
       }
     if (pairs == 0) m.fail("gears", "gears '" + names[0] + "' and '" + names[1] + "' do not mesh anywhere in this scenario");

@@ -80,9 +80,14 @@ struct LoadDef {
 
 // The stiffness table of the meshes between two gear bodies (by body name): the contact radius
 // is measured on body_a, whichever of the two the world puts first.
+// body_stiffness_N_per_m (0: none) is the compliance of the two gear bodies between their bores
+// and the teeth, in series with all tooth pairs of the mesh at once, along the line of action:
+// with n pairs in contact the mesh stiffness is 1/(1/(n k) + 1/k_body) (the FE series fit,
+// docs/fe.md), so each pair is given k / (1 + n k / k_body). Exact for the mesh's total force.
 struct PairStiffnessDef {
   std::string body_a, body_b;
   StiffnessTable table;
+  double body_stiffness_N_per_m = 0;
 };
 
 // Tooth contact: a compliant, damped, unilateral contact with one point per tooth pair.

@@ -62,6 +62,7 @@ struct PairRec {
   // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
   const StiffnessTable* table = nullptr;
   bool table_on_a = true;
+  double body_stiffness_N_per_m = 0;  // gear bodies in series with the pairs (0: rigid)
 };
 
 struct World::Impl {
@@ -129,8 +130,42 @@ void World::Impl::generate_contacts() {
     pr.current.clear();
     pr.current_stiffness_N_per_m.clear();
     const PlanarPose table_gear = pr.table ? gear_poses[pr.table_on_a ? pr.a : pr.b] : PlanarPose{};
-    for (const ToothContact& c : found) {
+    // Each pair's own stiffness: the constant, or its table's at the contact radius on the table's
+    // gear (the point on that gear's own surface, half the depth from the overlap's mid-point).
+    std::vector<double> k_pair(found.size(), pr.info.stiffness_N_per_m);
+    if (pr.table)
+      for (std::size_t i = 0; i < found.size(); ++i) {
+        const ToothContact& c = found[i];
+        const Eigen::Vector2d on = c.point_m + (pr.table_on_a ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
+        bool outside = false;
+        k_pair[i] = stiffness_at(*pr.table, (on - table_gear.centre_m).norm(), &outside) * pr.info.face_width_m;
+        if (outside) ++table_misses;
+      }
+    // Gear bodies in series with all pairs (PairStiffnessDef::body_stiffness_N_per_m, compliance
+    // c): F_i = k_i (δ_i − c F), F = Σ k_i δ_i / (1 + c Σ k_i) over the pairs with δ_i > c F (found
+    // by dropping the others until none is left to drop). Each active pair then gets the secant
+    // stiffness F_i/δ_i = k_i (1 − c F/δ_i), continuous as a pair comes into load; the others are
+    // not passed to the solver.
+    std::vector<char> active(found.size(), 1);
+    if (pr.body_stiffness_N_per_m > 0) {
+      const double c_body = 1.0 / pr.body_stiffness_N_per_m;
+      double F = 0;
+      for (bool dropped = true; dropped;) {
+        double num = 0, den = 1;
+        for (std::size_t i = 0; i < found.size(); ++i)
+          if (active[i]) num += k_pair[i] * found[i].depth_m, den += c_body * k_pair[i];
+        F = num / den;
+        dropped = false;
+        for (std::size_t i = 0; i < found.size(); ++i)
+          if (active[i] && found[i].depth_m <= c_body * F) active[i] = 0, dropped = true;
+      }
+      for (std::size_t i = 0; i < found.size(); ++i)
+        if (active[i]) k_pair[i] *= 1.0 - c_body * F / found[i].depth_m;
+    }
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const ToothContact& c = found[i];
       max_penetration = std::max(max_penetration, c.depth_m);
+      if (!active[i]) continue;
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
       const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
       const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
@@ -141,16 +176,10 @@ void World::Impl::generate_contacts() {
       pt.m_combinedFriction = scenario.contact.friction;
       pt.m_combinedRestitution = 0;
       pt.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
-      double k = pr.info.stiffness_N_per_m, damping = pr.info.damping_N_s_per_m;
-      if (pr.table) {
-        // The table's stiffness at the contact's radius on the table's gear (the point on that
-        // gear's own surface, half the depth from the overlap's mid-point).
-        const Eigen::Vector2d on = c.point_m + (pr.table_on_a ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
-        bool outside = false;
-        k = stiffness_at(*pr.table, (on - table_gear.centre_m).norm(), &outside) * pr.info.face_width_m;
-        if (outside) ++table_misses;
-        damping = contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, scenario.contact.damping_ratio);
-      }
+      const double k = k_pair[i];
+      const double damping = pr.table || pr.body_stiffness_N_per_m > 0
+                                 ? contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, scenario.contact.damping_ratio)
+                                 : pr.info.damping_N_s_per_m;
       pt.m_combinedContactStiffness1 = k;
       pt.m_combinedContactDamping1 = damping;
       const auto key = std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a));
@@ -354,6 +383,7 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
         if (pr.table) throw InputError("scenario: contact.stiffness_tables: two tables for gears '" + na + "' and '" + nb + "'");
         pr.table = &t.table;
         pr.table_on_a = t.body_a == na;
+        pr.body_stiffness_N_per_m = t.body_stiffness_N_per_m;
         pr.info.stiffness_table = t.table.source;
       }
       m.pairs.push_back(std::move(pr));

@@ -74,6 +74,48 @@ def main(argv):
         for ph, a, b in zip(phase, te_fe, samples):
             print(f"  phase {ph:.4f}: FE {a * 1e6:9.2f}  Bullet {b * 1e6:9.2f} µrad")
     else:
+        # Place the FE phases on the Bullet record by planet 0's sun-mesh pair count: the offsets
+        # (in 1/200 of a period) at which Bullet's count differs from the FE's own count (teeth
+        # carrying > 2 % of the mesh force, tooth_forces.csv) at the fewest FE phases; the centre
+        # of the longest run of such offsets.
+        counts = {}
+        for r in csv.DictReader(open(fe + '/tooth_forces.csv')):
+            if r['planet'] == '0':
+                counts.setdefault(int(r['position']), []).append(float(r['force_N']))
+        n_fe = [sum(1 for f in counts[i] if f > 0.02 * sum(counts[i])) for i in sorted(counts)]
+        pairs = column(contacts, 'sun__planet_0_tooth_pairs')
+        t0 = window[0]
+
+        def pairs_at(x):
+            i = min(range(len(tc)), key=lambda j: abs(tc[j] - x)) if len(tc) < 50 else \
+                max(0, min(len(tc) - 1, round((x - tc[0]) / (tc[1] - tc[0]))))
+            return pairs[i]
+        miss = [sum(1 for ph, n in zip(phase, n_fe) if pairs_at(t0 + (k / 200 + ph) * period) != n)
+                for k in range(200)]
+        good = [k for k in range(200) if miss[k] == min(miss)]
+        print(f"fewest FE phases whose pair count Bullet does not share: {min(miss)} of {len(phase)}")
+        print(f"FE pair counts of planet 0's sun mesh at its phases: {n_fe}")
+        if good:
+            runs, cur = [], [good[0]]
+            for k in good[1:]:
+                if k == cur[-1] + 1:
+                    cur.append(k)
+                else:
+                    runs.append(cur)
+                    cur = [k]
+            runs.append(cur)
+            best = max(runs, key=len)
+            off = (best[0] + best[-1]) / 2 / 200
+            n = int((window[1] - window[0]) / period) - 1
+            sampled = []
+            for k in range(n):
+                v = [interp(t0 + (k + off + ph) * period) for ph in phase]
+                sampled.append(p2p(v))
+            print(f"Bullet at the FE's phases (offset {off:.3f} of a period; pair counts agree over "
+                  f"{len(best) / 200:.3f} of a period): p2p {min(sampled):.2f}…{max(sampled):.2f}, "
+                  f"mean {sum(sampled) / len(sampled):.2f} µrad over {n} periods")
+        else:
+            print("no offset makes Bullet's pair counts equal the FE's at every FE phase")
         span = [v for x, v in zip(t, te) if window[0] <= x <= window[1]]
         n = int((window[1] - window[0]) / period)
         per = []

@@ -121,6 +121,16 @@ TEST(ScenarioStiffnessTables, UnknownKey) {
              "contact.stiffness_tables[0].smoothing: unknown key");
 }
 
+TEST(ScenarioStiffnessTables, BodyStiffnessIsReadAndMustBePositive) {
+  write(test_dir() / "sun.csv", kSunTable);
+  const physics::Scenario s =
+      load_scenario(scenario("    - {gears: [sun, planet], file: sun.csv, body_stiffness_N_per_m: 1.35e8}\n"));
+  ASSERT_FALSE(s.contact.stiffness_tables.empty());
+  EXPECT_DOUBLE_EQ(s.contact.stiffness_tables[0].body_stiffness_N_per_m, 1.35e8);
+  EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: sun.csv, body_stiffness_N_per_m: 0}\n")),
+             "bad.yaml:5:", "contact.stiffness_tables[0].body_stiffness_N_per_m", "expected a stiffness > 0");
+}
+
 TEST(ScenarioStiffnessTables, GearsThatDoNotMesh) {
   write(test_dir() / "sun.csv", kSunTable);
   EXPECT_HAS(error_for(scenario("    - {gears: [sun, ring], file: sun.csv}\n")), "bad.yaml:5:", "'sun' and 'ring' do not mesh");

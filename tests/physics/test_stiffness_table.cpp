@@ -157,6 +157,45 @@ TEST(StiffnessTableWorld, StaticTeScalesAsOneOverStiffness) {
   EXPECT_NEAR(stiff.contact.normal_force_N, plain.contact.normal_force_N, 0.005 * plain.contact.normal_force_N);
 }
 
+// Gear bodies in series with the pairs (body_stiffness_N_per_m): one pair of stiffness k with a
+// body of stiffness k deflects twice as far, δ = F (1/k + 1/k_body), under the same force.
+TEST(StiffnessTableWorld, BodyInSeriesAddsItsCompliance) {
+  const Held plain = settle(held_pair());
+  Scenario s = held_pair();
+  PairStiffnessDef t = table("sun", "planet", {0.011, 0.0135}, {1.4e10, 1.4e10});
+  t.body_stiffness_N_per_m = 1.4e10 * kFace_m;
+  s.contact.stiffness_tables.push_back(t);
+  const Held soft = settle(s);
+  ASSERT_EQ(soft.contacts, 1);
+  EXPECT_NEAR(soft.te_rad / plain.te_rad, 2.0, 0.01);
+  EXPECT_NEAR(soft.contact.normal_force_N, plain.contact.normal_force_N, 0.005 * plain.contact.normal_force_N);
+}
+
+// Two pairs share one body: the mesh compliance is 1/(2k) + 1/k_body, so with k_body = 2k the
+// static TE is twice that of the two pairs alone (not 1/(2k) + 2/k_body as a body per pair would
+// give). The macro's own pose, where two pairs touch.
+TEST(StiffnessTableWorld, TwoPairsShareOneBody) {
+  auto two_pairs = [] {
+    Scenario s = held_pair();
+    auto turn = [](Pose& p, double angle_rad) {
+      p.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ())) * p.orientation;
+    };
+    turn(s.bodies[0].pose, -kTurnSun_rad);
+    turn(s.bodies[1].pose, kTurnSun_rad * 24.0 / 36.0);
+    return s;
+  };
+  const Held plain = settle(two_pairs());
+  Scenario s = two_pairs();
+  PairStiffnessDef t = table("sun", "planet", {0.011, 0.0135}, {1.4e10, 1.4e10});
+  t.body_stiffness_N_per_m = 2 * 1.4e10 * kFace_m;
+  s.contact.stiffness_tables.push_back(t);
+  const Held soft = settle(s);
+  ASSERT_EQ(plain.contacts, 2);
+  ASSERT_EQ(soft.contacts, 2);
+  // 2 %: the two pairs' lever arms differ (rolls 1.89 and 4.84 mm), so their shares do too.
+  EXPECT_NEAR(soft.te_rad / plain.te_rad, 2.0, 0.02);
+}
+
 TEST(StiffnessTableWorld, VaryingTableGivesItsValueAtTheContactRadius) {
   Scenario s = held_pair();
   // 1e10 at 11 mm rising to 2e10 at 13 mm: 1.489e10 at the contact's 11.978 mm.
