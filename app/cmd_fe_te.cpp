@@ -179,7 +179,9 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   // the tooth part k_pair (the body part shifts the TE by a constant). Without two pair counts
   // or with a non-physical fit (k_pair or k_body ≤ 0) the table holds mean k / (ε b) instead.
   // Fit the tables on a healthy sweep: open pairs (k = 0) are skipped, partly loaded ones are not.
-  auto table = [&](const char* file, const GearSpec& a, const GearSpec& b, const std::vector<double>& ks,
+  // body_a, body_b: the planetary macro's body names (sun, planet, ring) for the scenario entry.
+  auto table = [&](const char* file, const char* body_a, const char* body_b, const GearSpec& a, const GearSpec& b,
+                   const std::vector<double>& ks,
                    std::vector<int> ns, const char* count_source) {
     std::vector<double> k;
     std::vector<int> pairs_of;
@@ -232,8 +234,8 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
       info["fit_rms_relative"] = std::sqrt(rms);
       // The entry for contact.stiffness_tables: the tooth part per pair, the bodies in series.
       char entry[256];
-      std::snprintf(entry, sizeof entry, "{gears: [%s, %s], file: %s, body_stiffness_N_per_m: %.6g}", a.name.c_str(),
-                    b.name.c_str(), file, k_body);
+      std::snprintf(entry, sizeof entry, "{gears: [%s, %s], file: %s, body_stiffness_N_per_m: %.6g}", body_a,
+                    body_b, file, k_body);
       info["scenario_entry"] = entry;
     } else {
       c = mean / (g.effective_contact_ratio * face);
@@ -245,8 +247,8 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     t << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
     summary["stiffness_tables"][file] = info;
   };
-  table("fe_stiffness_sun_planet.csv", def.spec.sun, def.spec.planet, k_sp, n_sp, "FE: teeth carrying > 2 % of the mesh force");
-  table("fe_stiffness_planet_ring.csv", def.spec.planet, def.spec.ring, k_pr, {}, "softer/stiffer half of the sampled range");
+  table("fe_stiffness_sun_planet.csv", "sun", "planet", def.spec.sun, def.spec.planet, k_sp, n_sp, "FE: teeth carrying > 2 % of the mesh force");
+  table("fe_stiffness_planet_ring.csv", "planet", "ring", def.spec.planet, def.spec.ring, k_pr, {}, "softer/stiffer half of the sampled range");
   if (plots && te_loaded.size() >= 2) {
     std::ofstream(dir / "te_loaded.svg")
         << gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
