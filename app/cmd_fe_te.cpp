@@ -171,14 +171,14 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   }
 
   // Stiffness tables for the dynamics (contact.stiffness_tables). The FE mesh compliance is the
-  // teeth (n pairs in parallel) in series with the gear bodies, 1/k = 1/(n k_pair) + 1/k_body,
-  // fitted by least squares in (1/n, 1/k) over every solved position and planet. n is the FE's
-  // own count of loaded pairs where the deck splits the mesh per tooth (sun–planet); elsewhere
-  // (planet–ring) the samples split into the softer and the stiffer half of their range, n = 1
-  // and 2 (contact ratio between 1 and 2). Bullet's bodies are rigid: its per-pair stiffness is
-  // the tooth part k_pair (the body part shifts the TE by a constant). Without two pair counts
-  // or with a non-physical fit (k_pair or k_body ≤ 0) the table holds mean k / (ε b) instead.
-  // Fit the tables on a healthy sweep: open pairs (k = 0) are skipped, partly loaded ones are not.
+  // teeth (n pairs in parallel) in series with the gear bodies, 1/k = 1/(n k_pair) + 1/k_body.
+  // n is the FE's own count of loaded pairs where the deck splits the mesh per tooth
+  // (sun–planet); elsewhere (planet–ring) the samples split into the softer and the stiffer half
+  // of their range, n = 1 and 2 (contact ratio between 1 and 2). The table holds the tooth part
+  // per pair and the scenario entry the bodies (body_stiffness_N_per_m: Bullet's bodies are
+  // rigid). Without two pair counts, or when k_min and k_max are within kMinSeriesSpread, the
+  // table holds mean k / (ε b) instead. Fit on a healthy sweep: open pairs (k = 0) are skipped.
+  constexpr double kMinSeriesSpread = 1.05;
   // body_a, body_b: the planetary macro's body names (sun, planet, ring) for the scenario entry.
   auto table = [&](const char* file, const char* body_a, const char* body_b, const GearSpec& a, const GearSpec& b,
                    const std::vector<double>& ks,
@@ -219,19 +219,28 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     for (const auto& [pairs, c] : per_n) counts[std::to_string(pairs)] = c;
     info["pair_counts"] = counts;
     info["pair_count_source"] = count_source;
-    double c;
+    // The least-squares fit over all samples, for reference.
     if (per_n.size() >= 2 && slope > 0 && icpt > 0) {
-      const double k_pair = 1.0 / slope, k_body = 1.0 / icpt;
       double rms = 0;
       for (std::size_t i = 0; i < k.size(); ++i) {
-        const double fit = 1.0 / (1.0 / (pairs_of[i] * k_pair) + 1.0 / k_body);
+        const double fit = 1.0 / (slope / pairs_of[i] + icpt);  // 1/(1/(n k_pair) + 1/k_body)
         rms += std::pow(k[i] / fit - 1.0, 2) / m;
       }
+      info["least_squares"] = {{"k_pair_N_per_m", 1.0 / slope}, {"k_body_N_per_m", 1.0 / icpt},
+                               {"fit_rms_relative", std::sqrt(rms)}};
+    }
+    // The table: the series model through the softest sample (one pair) and the stiffest (two
+    // pairs), 1/k_min − 1/k_max = 1/(2 k_pair). The loaded TE's ripple is set by these two
+    // states; the samples between are partly engaged second pairs (chord gaps of the FE boundary,
+    // docs/fe.md) that pull a least-squares fit towards stiffer teeth and a smaller ripple.
+    double c;
+    if (per_n.size() >= 2 && *hi > kMinSeriesSpread * *lo) {
+      const double k_pair = 1.0 / (2.0 * (1.0 / *lo - 1.0 / *hi));
+      const double k_body = 1.0 / (1.0 / *lo - 1.0 / k_pair);
       c = k_pair / face;
-      info["method"] = "series fit over all samples: 1/k = 1/(n k_pair) + 1/k_body, least squares in (1/n, 1/k)";
+      info["method"] = "series fit 1/k = 1/(n k_pair) + 1/k_body through k_min (n = 1) and k_max (n = 2)";
       info["k_pair_N_per_m"] = k_pair;
       info["k_body_N_per_m"] = k_body;
-      info["fit_rms_relative"] = std::sqrt(rms);
       // The entry for contact.stiffness_tables: the tooth part per pair, the bodies in series.
       char entry[256];
       std::snprintf(entry, sizeof entry, "{gears: [%s, %s], file: %s, body_stiffness_N_per_m: %.6g}", body_a,
@@ -239,7 +248,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
       info["scenario_entry"] = entry;
     } else {
       c = mean / (g.effective_contact_ratio * face);
-      info["method"] = "mean / (effective contact ratio × face width): no series fit (one pair count, or k_pair/k_body ≤ 0)";
+      info["method"] = "mean / (effective contact ratio × face width): one pair count, or k_min and k_max within 5 %";
     }
     info["stiffness_N_per_m_per_m"] = c;
     const GearDimensions d = gear_dimensions(a);
