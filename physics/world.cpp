@@ -57,6 +57,8 @@ struct PairRec {
   // kMaxPointsPerPair of them, searched in place (no allocation per step).
   std::vector<std::pair<std::tuple<int, int, int>, double>> last_impulse;
   std::vector<ToothContact> found;                            // this step's, kept for its storage
+  std::vector<double> pair_stiffness;                         // per found contact, N/m (storage kept)
+  std::vector<char> active;                                   // per found contact: passed to the solver
   std::vector<ToothContact> current;                          // in manifold point order
   std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
   // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
@@ -132,7 +134,8 @@ void World::Impl::generate_contacts() {
     const PlanarPose table_gear = pr.table ? gear_poses[pr.table_on_a ? pr.a : pr.b] : PlanarPose{};
     // Each pair's own stiffness: the constant, or its table's at the contact radius on the table's
     // gear (the point on that gear's own surface, half the depth from the overlap's mid-point).
-    std::vector<double> k_pair(found.size(), pr.info.stiffness_N_per_m);
+    std::vector<double>& k_pair = pr.pair_stiffness;
+    k_pair.assign(found.size(), pr.info.stiffness_N_per_m);
     if (pr.table)
       for (std::size_t i = 0; i < found.size(); ++i) {
         const ToothContact& c = found[i];
@@ -146,7 +149,8 @@ void World::Impl::generate_contacts() {
     // by dropping the others until none is left to drop). Each active pair then gets the secant
     // stiffness F_i/δ_i = k_i (1 − c F/δ_i), continuous as a pair comes into load; the others are
     // not passed to the solver.
-    std::vector<char> active(found.size(), 1);
+    std::vector<char>& active = pr.active;
+    active.assign(found.size(), 1);
     if (pr.body_stiffness_N_per_m > 0) {
       const double c_body = 1.0 / pr.body_stiffness_N_per_m;
       double F = 0;

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "geometry/errors.hpp"
+#include "geometry/gear_dimensions.hpp"
 #include "physics/fe/ccx_dat.hpp"
 #include "physics/fe/constants.hpp"
 #include "physics/fe/deck.hpp"
@@ -134,7 +135,7 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   std::vector<std::vector<ToothedEdgeTag>> planet_tags;
   for (int k = 0; k < ps.planets; ++k)
     planet_tags.push_back(tag_toothed_edges(meshes.planets[static_cast<size_t>(k)].mesh, planet_gear(def, k),
-                                            make_gear_outline(planet_gear(def, k)).dims));
+                                            gear_dimensions(planet_gear(def, k))));
   std::vector<std::vector<int>> sun_mesh_teeth(static_cast<size_t>(ps.planets));
   // Contacts: sun (slave) on each planet, each planet (slave) on the ring.
   for (int k = 0; k < ps.planets; ++k) {
@@ -173,6 +174,7 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   // alone where a faulty tooth does not touch), both sides of each.
   const TrackedTooth tracked = tracked_tooth(def);
   const GearSpec& tg = planet_gear(def, tracked.planet);
+  const GearDimensions tracked_dims = gear_dimensions(tg);
   struct RootSet {
     std::string name;
     int tooth;
@@ -185,7 +187,7 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
       RootSet rs{"ROOT" + std::to_string(tooth) + (side == Flank::Ccw ? "C" : "W"), tooth, side};
       std::vector<int> els = root_elements(meshes.planets[static_cast<size_t>(tracked.planet)].mesh,
                                            planet_tags[static_cast<size_t>(tracked.planet)],
-                                           make_gear_outline(tg).dims, GearKind::External, tooth, side);
+                                           tracked_dims, GearKind::External, tooth, side);
       if (els.empty())
         throw InputError("planetary FE: tooth " + std::to_string(tooth) + " of planet " +
                          std::to_string(tracked.planet) + " has no root elements in its mesh");
@@ -243,12 +245,15 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
     out.planet_rotation_rad.push_back(rotation(k + 1, 3.0));
   }
   const auto totals = read_contact_totals(run.dat_path);
-  auto force_vector = [&](const std::string& slave, double time) -> Eigen::Vector3d {
+  auto totals_of = [&](const std::string& slave, double time) -> const ContactTotals& {
     for (auto it = totals.rbegin(); it != totals.rend(); ++it)
-      if (it->slave == slave && std::abs(it->time - time) < 1e-6)
-        return {it->force[0], it->force[1], it->force[2]};  // N in the deck too
+      if (it->slave == slave && std::abs(it->time - time) < 1e-6) return *it;
     throw std::runtime_error("ccx results lack the contact force of " + slave + " at time " +
                              std::to_string(time) + " (" + run.dat_path.string() + ")");
+  };
+  auto force_vector = [&](const std::string& slave, double time) -> Eigen::Vector3d {
+    const ContactTotals& t = totals_of(slave, time);
+    return {t.force[0], t.force[1], t.force[2]};  // N in the deck too
   };
   auto force = [&](const std::string& slave, double time) { return force_vector(slave, time).norm(); };
   // The sun's force on a planet: the sum over its teeth's pairs.
@@ -282,15 +287,12 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
     const auto& c = pos.sun.centre_m;
     double m = 0;
     for (int k = 0; k < ps.planets; ++k)
-      for (int j : sun_mesh_teeth[static_cast<size_t>(k)])
-        for (auto it = totals.rbegin(); it != totals.rend(); ++it)
-          if (it->slave == "SSP" + std::to_string(k) + "T" + std::to_string(j) && std::abs(it->time - time) < 1e-6) {
-            const double mz = it->moment[2] / kDeckLength_per_m;  // N·mm → N·m, about the origin
-            // The sun pushes the planet tooth (slave) with the moment printed; the teeth take that
-            // much off the sun.
-            m += mz - (c.x() * it->force[1] - c.y() * it->force[0]);
-            break;
-          }
+      for (int j : sun_mesh_teeth[static_cast<size_t>(k)]) {
+        const ContactTotals& t = totals_of("SSP" + std::to_string(k) + "T" + std::to_string(j), time);
+        // The sun pushes the planet tooth (slave) with the moment printed (N·mm about the origin);
+        // the teeth take that much off the sun.
+        m += (t.moment[2] - (c.x() * t.force[1] - c.y() * t.force[0]) * kDeckLength_per_m) / kDeckLength_per_m;
+      }
     return m;
   };
   out.sun_mesh_torque_low_N_m = sun_mesh_torque(2.0);

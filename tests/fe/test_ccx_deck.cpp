@@ -42,6 +42,27 @@ FeMesh grid(int nu, int nv, const std::function<Eigen::Vector2d(double, double)>
   return m;
 }
 
+// A ring r_i…r_o of nu × nv quads (nu around, counter-clockwise), its inner edge the hub; the
+// outer edge held when hold_outer.
+FeBody annulus(const std::string& name, double ri, double ro, int nu, int nv, bool hold_outer) {
+  FeBody b;
+  b.name = name;
+  b.support = FeSupport::Driving;
+  b.mesh = grid(nu, nv, [&](double u, double v) {
+    const double r = ri + (ro - ri) * v, a = -2 * std::numbers::pi * u;  // clockwise in u: ccw quads
+    return Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
+  });
+  // The u = 1 column repeats u = 0: merge it by pointing at the first column's nodes.
+  for (auto& q : b.mesh.quads)
+    for (int& n : q)
+      if (n % (nu + 1) == nu) n -= nu;
+  for (int i = 0; i < nu; ++i) {
+    b.mesh.hub_nodes.push_back(i);
+    if (hold_outer) b.mesh.fixed_nodes.push_back(nv * (nu + 1) + i);
+  }
+  return b;
+}
+
 Deck solve(const DeckDef& def, const fs::path& dir) {
   const Deck deck = write_deck(def);
   std::ofstream(dir / "job.inp") << deck.text;
@@ -65,22 +86,8 @@ double at_step(const std::vector<DatBlock>& blocks, const std::string& q, const 
 // 48 × 16 bilinear elements resolve the 1/r² shear within a few tenths of a percent.
 TEST(CcxDeck, AnnulusTorsionMatchesClosedForm) {
   const double ri = 5e-3, ro = 15e-3, t = 10e-3, T = 10.0;
-  FeBody hub;
-  hub.name = "HUB";
-  hub.support = FeSupport::Driving;
   const int nu = 48, nv = 16;
-  hub.mesh = grid(nu, nv, [&](double u, double v) {
-    const double r = ri + (ro - ri) * v, a = -2 * std::numbers::pi * u;  // clockwise in u: ccw quads
-    return Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
-  });
-  // The u = 1 column repeats u = 0: merge it by pointing at the first column's nodes.
-  for (auto& q : hub.mesh.quads)
-    for (int& n : q)
-      if (n % (nu + 1) == nu) n -= nu;
-  for (int i = 0; i < nu; ++i) {
-    hub.mesh.hub_nodes.push_back(i);
-    hub.mesh.fixed_nodes.push_back(nv * (nu + 1) + i);
-  }
+  const FeBody hub = annulus("HUB", ri, ro, nu, nv, true);
   DeckDef def;
   def.bodies = {hub};
   def.thickness_m = t;
@@ -102,21 +109,8 @@ TEST(CcxDeck, AnnulusTorsionMatchesClosedForm) {
 // within 0.5 %, plus the bilinear elements' error.
 TEST(CcxDeck, StressSetReadsTheShearOfATwistedAnnulus) {
   const double ri = 5e-3, ro = 15e-3, t = 10e-3, T = 10.0;
-  FeBody hub;
-  hub.name = "HUB";
-  hub.support = FeSupport::Driving;
   const int nu = 48, nv = 16;
-  hub.mesh = grid(nu, nv, [&](double u, double v) {
-    const double r = ri + (ro - ri) * v, a = -2 * std::numbers::pi * u;
-    return Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
-  });
-  for (auto& q : hub.mesh.quads)
-    for (int& n : q)
-      if (n % (nu + 1) == nu) n -= nu;
-  for (int i = 0; i < nu; ++i) {
-    hub.mesh.hub_nodes.push_back(i);
-    hub.mesh.fixed_nodes.push_back(nv * (nu + 1) + i);
-  }
+  const FeBody hub = annulus("HUB", ri, ro, nu, nv, true);
   FeElementSet ring{"MID", 0, {}};
   const int row = nv / 2;  // elements between r = ri + 8/16 (ro − ri) and ri + 9/16 (ro − ri)
   for (int i = 0; i < nu; ++i) ring.elements.push_back(row * nu + i);
@@ -194,18 +188,7 @@ TEST(CcxDeck, ReducedIntegrationResistsARigidTurnOfTheHub) {
   double theta[2] = {0, 0};
   const char* types[2] = {"CPS4R", "CPS4"};
   for (int k = 0; k < 2; ++k) {
-    FeBody ring;
-    ring.name = "FREE";
-    ring.support = FeSupport::Driving;
-    const int nu = 48, nv = 6;
-    ring.mesh = grid(nu, nv, [&](double u, double v) {
-      const double r = 5e-3 + 5e-3 * v, a = -2 * std::numbers::pi * u;
-      return Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
-    });
-    for (auto& q : ring.mesh.quads)
-      for (int& n : q)
-        if (n % (nu + 1) == nu) n -= nu;
-    for (int i = 0; i < nu; ++i) ring.mesh.hub_nodes.push_back(i);
+    const FeBody ring = annulus("FREE", 5e-3, 10e-3, 48, 6, false);
     DeckDef def;
     def.bodies = {ring};
     def.torque_N_m = 0.4;
