@@ -1,6 +1,7 @@
 // gearsim run SCENARIO --out DIR: a headless simulation. Writes state.csv and contacts.csv at
 // the scenario's output rate and summary.json; a progress line on a terminal; Ctrl-C stops
-// cleanly and keeps valid logs; a NaN stops the run with an error and keeps what was written.
+// cleanly and keeps valid logs; a run that leaves its physical bounds (physics/run_bounds.hpp)
+// stops at that step with status "diverged" and exit code kExitDiverged, its logs kept.
 #include <unistd.h>
 
 #include <chrono>
@@ -14,12 +15,14 @@
 
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
+#include "app/exit_codes.hpp"
 #include "app/render_run.hpp"
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
 #include "physics/power_balance.hpp"
+#include "physics/run_bounds.hpp"
 #include "physics/step_log.hpp"
 #include "physics/world.hpp"
 
@@ -98,46 +101,49 @@ void run(const RunOptions& o) {
   physics::PowerBalance power;
   std::vector<double> speed_sum(world.bodies().size(), 0.0);
   long speed_count = 0;
-  double max_pen = 0, ramp_end = 0;
-  for (const physics::MotorDef& m : s.motors) ramp_end = std::max(ramp_end, m.ramp_time_s);
-  std::string status = "completed", error;
+  double max_pen = 0;
+  const double ramp_end = physics::ramps_end_s(s);
+  std::string status = "completed";
+  std::optional<physics::Divergence> diverged;
+  physics::RunBounds bounds(s, world);
   const bool tty = isatty(STDERR_FILENO);
   g_interrupted = 0;
   auto old_handler = std::signal(SIGINT, on_sigint);
   int last_percent = -1;
+  // One row of state.csv and contacts.csv at the world's present time.
+  auto write_rows = [&] {
+    state << world.time_s();
+    for (const physics::BodyState& b : world.bodies()) state << ',' << b.angle_rad << ',' << b.speed_rad_s;
+    if (s.transmission)
+      state << ',' << world.bodies()[te_in].angle_rad - s.transmission->ratio * world.bodies()[te_out].angle_rad;
+    state << '\n';
+    contacts << world.time_s();
+    for (std::size_t p = 0; p < world.gear_pairs().size(); ++p) {
+      double force = 0, depth = 0;
+      int n = 0;
+      for (const physics::ContactSample& c : world.contacts())
+        if (c.pair == static_cast<int>(p)) force += c.normal_force_N, depth = std::max(depth, c.geometry.depth_m), ++n;
+      contacts << ',' << force << ',' << n << ',' << depth * 1e6;
+    }
+    contacts << '\n';
+  };
   for (long i = 1; i <= total; ++i) {
     world.step();
     if (step_log) step_log->append(world);
     max_pen = std::max(max_pen, world.max_penetration_m());
-    bool finite = true;
-    for (const physics::BodyState& b : world.bodies()) finite = finite && std::isfinite(b.speed_rad_s) && std::isfinite(b.angle_rad);
-    if (!finite) {
-      status = "aborted";
-      error = "a body's speed or angle became NaN/infinite at t = " + std::to_string(world.time_s()) + " s (step " +
-              std::to_string(i) + "): the run is numerically unstable (time step too large for the contact stiffness?)";
-      break;
+    // A run out of its physical bounds stops at this step, its last rows written.
+    diverged = bounds.check(world);
+    if (diverged) {
+      status = "diverged";
+      if (i % every != 0) write_rows();
     }
-    if (world.time_s() >= ramp_end) {
+    if (!diverged && world.time_s() >= ramp_end) {
       for (std::size_t b = 0; b < world.bodies().size(); ++b) speed_sum[b] += world.bodies()[b].speed_rad_s;
       power.add(world.power(), world.time_s());
       ++speed_count;
     }
-    if (i % every == 0) {
-      state << world.time_s();
-      for (const physics::BodyState& b : world.bodies()) state << ',' << b.angle_rad << ',' << b.speed_rad_s;
-      if (s.transmission)
-        state << ',' << world.bodies()[te_in].angle_rad - s.transmission->ratio * world.bodies()[te_out].angle_rad;
-      state << '\n';
-      contacts << world.time_s();
-      for (std::size_t p = 0; p < world.gear_pairs().size(); ++p) {
-        double force = 0, depth = 0;
-        int n = 0;
-        for (const physics::ContactSample& c : world.contacts())
-          if (c.pair == static_cast<int>(p)) force += c.normal_force_N, depth = std::max(depth, c.geometry.depth_m), ++n;
-        contacts << ',' << force << ',' << n << ',' << depth * 1e6;
-      }
-      contacts << '\n';
-    }
+    if (i % every == 0) write_rows();
+    if (diverged) break;
     const int percent = static_cast<int>(100 * i / total);
     if (tty && percent != last_percent) {
       std::cerr << "\r  " << s.name << ": " << percent << "% (t = " << std::fixed << std::setprecision(4) << world.time_s() << " s)" << std::flush;
@@ -145,6 +151,7 @@ void run(const RunOptions& o) {
     }
     if (g_interrupted) {
       status = "interrupted";
+      if (i % every != 0) write_rows();
       break;
     }
   }
@@ -159,7 +166,11 @@ void run(const RunOptions& o) {
   summary["scenario_file"] = std::filesystem::absolute(o.scenario).lexically_normal().string();
   summary["overrides"] = o.sets;
   summary["status"] = status;
-  if (!error.empty()) summary["error"] = error;
+  if (diverged)
+    summary["divergence"] = {{"what", diverged->what},   {"where", diverged->where}, {"message", diverged->message},
+                             {"time_s", diverged->time_s}, {"step", diverged->step},   {"value", diverged->value},
+                             {"limit", diverged->limit}};
+  summary["created_energy_J"] = bounds.created_energy_J();
   summary["sim_seconds"] = world.time_s();
   summary["steps"] = world.steps();
   summary["time_step_s"] = dt;
@@ -223,7 +234,11 @@ void run(const RunOptions& o) {
   std::ofstream(dir / "summary.json") << summary.dump(2) << "\n";
   std::cout << s.name << ": " << status << ", " << world.time_s() << " s simulated in " << std::setprecision(3) << wall
             << " s wall; logs in " << dir.string() << "\n";
-  if (status == "aborted") throw InputError(error + " (logs up to that point kept in " + dir.string() + ")");
+  for (const auto& w : warnings) std::cout << "warning: " << w.get<std::string>() << "\n";
+  if (diverged)
+    throw RunStopped(kExitDiverged, "diverged at t = " + std::to_string(diverged->time_s) + " s (step " +
+                                        std::to_string(diverged->step) + "): " + diverged->message +
+                                        ". Logs up to that step are in " + dir.string());
   if (status == "interrupted") std::cout << "interrupted: the logs hold the run up to t = " << world.time_s() << " s\n";
   // The analysis and the scenario's renders of the finished run; a run too short (or of a train
   // the analysis does not know) keeps its logs and says why it was not analysed or rendered.

@@ -1,15 +1,19 @@
-// gearsim: one binary, many subcommands. Bad input ends with exit code 2 and a message that names
-// the file, key or value at fault; an internal error (a bug) with exit code 3.
+// gearsim: one binary, many subcommands. Exit codes (app/exit_codes.hpp): 0 done; 2 bad input,
+// with a message that names the file, key or value at fault; 3 an internal error (a bug); 4 a run
+// that diverged (left its physical bounds), its logs kept up to that step.
 #include <exception>
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/exit_codes.hpp"
 #include "geometry/errors.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
       "gearsim: planetary gearbox dynamics with manufacturing errors.\n"
-      "SI units at every interface unless an option says otherwise."};
+      "SI units at every interface unless an option says otherwise.\n"
+      "Exit codes: 0 done, 2 bad input, 3 internal error (a bug), 4 a run diverged (non-physical;\n"
+      "summary.json says where; logs kept up to that step)."};
   app.require_subcommand(1);
   gearsim::app::register_tolerance(app);
   gearsim::app::register_gears(app);
@@ -23,12 +27,15 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
+  } catch (const gearsim::app::RunStopped& e) {
+    std::cerr << "gearsim: " << e.what() << "\n";
+    return e.code();
   } catch (const gearsim::InputError& e) {
     std::cerr << "gearsim: error: " << e.what() << "\n";
-    return 2;
+    return gearsim::app::kExitInputError;
   } catch (const gearsim::InternalError& e) {
     std::cerr << "gearsim: internal error (please report): " << e.what() << "\n";
-    return 3;
+    return gearsim::app::kExitInternalError;
   } catch (const std::exception& e) {
     std::cerr << "gearsim: error: " << e.what() << "\n";
     return 1;

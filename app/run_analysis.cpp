@@ -115,8 +115,7 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
   const GearTrain train = gear_train_of(s);
   double from_s = o.from_s;
-  if (from_s < 0)
-    for (const physics::MotorDef& m : s.motors) from_s = std::max(from_s, m.ramp_time_s);
+  if (from_s < 0) from_s = physics::ramps_end_s(s);
   from_s = std::max(from_s, 0.0);
   const CsvTable state = read_csv(run.dir / "state.csv"), contacts = read_csv(run.dir / "contacts.csv");
   const std::vector<double>& tc = contacts.column("time_s");

@@ -228,6 +228,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       l.joint = joint_ref(m, "joint", names);
       l.constant_torque_N_m = m.number_or("constant_torque_N_m", 0.0);
       l.viscous_N_m_s_per_rad = non_negative_or(m, "viscous_N_m_s_per_rad", 0.0, "a viscous coefficient in N·m·s/rad");
+      l.ramp_time_s = non_negative_or(m, "ramp_time_s", 0.0, "a ramp time in s");
       m.reject_unknown_keys();
       s.loads.push_back(l);
     }

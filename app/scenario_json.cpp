@@ -99,7 +99,7 @@ json scenario_json(const physics::Scenario& s) {
   j["loads"] = json::array();
   for (const physics::LoadDef& l : s.loads)
     j["loads"].push_back({{"joint", l.joint}, {"constant_torque_N_m", l.constant_torque_N_m},
-                          {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}});
+                          {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}, {"ramp_time_s", l.ramp_time_s}});
   if (s.render) {
     const physics::RenderDef& r = *s.render;
     j["render"] = {{"camera", r.camera}, {"fps", r.fps}, {"slowmo", r.slowmo}, {"width_px", r.width_px},

@@ -71,12 +71,21 @@ struct MotorDef {
 };
 
 // Torque on a joint's body about the joint axis, opposing nothing in particular: a constant
-// part (sign as given, positive about +axis) and a viscous part −c·ω (relative to the parent).
+// part (sign as given, positive about +axis), reached by a linear ramp like a motor's so that a
+// light gear is not flung into its mate before contact forms, and a viscous part −c·ω
+// (relative to the parent).
 struct LoadDef {
   std::string joint;
   double constant_torque_N_m = 0;
   double viscous_N_m_s_per_rad = 0;
+  double ramp_time_s = 0;  // s; 0: the whole constant torque from t = 0
 };
+
+// The load's torque at time t on a joint turning at `speed_rad_s`, N·m.
+inline double load_torque_N_m(const LoadDef& l, double time_s, double speed_rad_s) {
+  const double ramp = l.ramp_time_s > 0 && time_s < l.ramp_time_s ? time_s / l.ramp_time_s : 1.0;
+  return ramp * l.constant_torque_N_m - l.viscous_N_m_s_per_rad * speed_rad_s;
+}
 
 // The stiffness table of the meshes between two gear bodies (by body name): the contact radius
 // is measured on body_a, whichever of the two the world puts first.
@@ -180,5 +189,14 @@ struct Scenario {
   std::optional<PlanetaryTrainDef> planetary;  // set by the planetary macro
   std::optional<FeTeDef> fe;                    // the `fe:` section, when given
 };
+
+// When every motor and load has reached its target (the end of the longest ramp), s: steady
+// figures (mean speeds, power balance, spectra) are taken after it.
+inline double ramps_end_s(const Scenario& s) {
+  double t = 0;
+  for (const MotorDef& m : s.motors) t = t > m.ramp_time_s ? t : m.ramp_time_s;
+  for (const LoadDef& l : s.loads) t = t > l.ramp_time_s ? t : l.ramp_time_s;
+  return t;
+}
 
 }  // namespace gearsim::physics

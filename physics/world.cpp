@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <tuple>
 
 #include "geometry/errors.hpp"
@@ -90,11 +91,25 @@ struct World::Impl {
   World::Profile profile;
   PowerFlows power;
 
+  // Takes constraints, manifolds and bodies out of Bullet's world before its members go: also
+  // when World's constructor throws half way (then ~World never runs, but ~Impl does).
+  ~Impl();
   void generate_contacts();
   void apply_motors_and_loads();
   void measure();
   void measure_power();
 };
+
+World::Impl::~Impl() {
+  for (JointRec& j : joints) {
+    if (!j.constraint) continue;
+    world.removeConstraint(j.constraint);
+    delete j.constraint;
+  }
+  for (PairRec& p : pairs) dispatcher.releaseManifold(p.manifold);
+  for (BuiltBody& b : bodies)
+    if (b.rigid && b.rigid->getBroadphaseHandle()) world.removeRigidBody(b.rigid.get());
+}
 
 namespace {
 
@@ -213,7 +228,7 @@ void World::Impl::apply_motors_and_loads() {
     }
     if (j.load) {
       const double speed = states.empty() ? 0.0 : states[j.body].speed_rad_s;
-      const double torque = j.load->constant_torque_N_m - j.load->viscous_N_m_s_per_rad * speed;
+      const double torque = load_torque_N_m(*j.load, time, speed);
       const btVector3 t = bt(j.axis_world * torque);
       bodies[j.body].rigid->applyTorque(t);
       if (j.parent >= 0 && !bodies[j.parent].fixed) bodies[j.parent].rigid->applyTorque(-t);
@@ -393,6 +408,25 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
       m.pairs.push_back(std::move(pr));
       m.pair_infos.push_back(m.pairs.back().info);
     }
+  // Gears overlapping at the start would be flung apart by a force of k·depth in the first step.
+  for (std::size_t i = 0; i < m.bodies.size(); ++i)
+    if (m.bodies[i].flanks) m.gear_poses.resize(m.bodies.size()), m.gear_poses[i] = planar_pose(m.bodies[i]);
+  for (PairRec& pr : m.pairs) {
+    const BuiltBody &a = m.bodies[pr.a], &b = m.bodies[pr.b];
+    pr.info.tooth_height_m = std::min(a.flanks->r_max_m() - a.flanks->r_min_m(), b.flanks->r_max_m() - b.flanks->r_min_m());
+    m.pair_infos[static_cast<std::size_t>(&pr - m.pairs.data())].tooth_height_m = pr.info.tooth_height_m;
+    find_tooth_contacts(*a.flanks, m.gear_poses[pr.a], *b.flanks, m.gear_poses[pr.b], pr.found);
+    for (const ToothContact& c : pr.found)
+      if (c.depth_m > kStartOverlapLimit_m) {
+        std::ostringstream msg;
+        msg << "scenario: gears '" << a.name << "' and '" << b.name << "' overlap at t = 0: tooth " << c.tooth_a << " of '"
+            << a.name << "' is " << c.depth_m * 1e6 << " um deep in tooth " << c.tooth_b << " of '" << b.name << "' at ("
+            << c.point_m.x() * 1e3 << ", " << c.point_m.y() * 1e3 << ") mm (limit " << kStartOverlapLimit_m * 1e6
+            << " um): the centre distance is too small for these gears, or a tooth layout (teeth, tooth0_deg) does "
+               "not match the mesh";
+        throw InputError(msg.str());
+      }
+  }
   // Every table must belong to a meshing pair.
   for (const PairStiffnessDef& t : m.scenario.contact.stiffness_tables) {
     bool used = false;
@@ -404,15 +438,7 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
   m.measure();
 }
 
-World::~World() {
-  if (!impl_) return;
-  for (JointRec& j : impl_->joints) {
-    impl_->world.removeConstraint(j.constraint);
-    delete j.constraint;
-  }
-  for (PairRec& p : impl_->pairs) impl_->dispatcher.releaseManifold(p.manifold);
-  for (BuiltBody& b : impl_->bodies) impl_->world.removeRigidBody(b.rigid.get());
-}
+World::~World() = default;
 
 void World::step() {
   Impl& m = *impl_;
@@ -457,7 +483,7 @@ void World::Impl::measure_power() {
     }
     pw.motor_W += motor;
     pw.joint_W += total - motor;
-    if (j.load) pw.load_W += (j.load->constant_torque_N_m - j.load->viscous_N_m_s_per_rad * speed) * speed;
+    if (j.load) pw.load_W += load_torque_N_m(*j.load, time - dt, speed) * speed;  // as applied in the step
   }
   for (const PairRec& pr : pairs) {
     const btRigidBody &a = *bodies[pr.a].rigid, &b = *bodies[pr.b].rigid;

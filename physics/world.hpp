@@ -48,12 +48,18 @@ struct GearPairInfo {
   double damping_N_s_per_m = 0;
   double face_width_m = 0;       // common face width the stiffness per width is multiplied by
   double reduced_mass_kg = 0;    // along the line of action, for the damping c = 2ζ√(k·m)
+  double tooth_height_m = 0;     // radial extent of the smaller of the two gears' teeth
   std::string stiffness_table;   // the table's source when the pair has one, else empty
 };
 
 class World {
  public:
+  // Throws InputError when the scenario cannot be built, also when two gears overlap at t = 0
+  // by more than kStartOverlapLimit_m (the message names the pair, the teeth and the depth).
   explicit World(const Scenario& scenario);
+  // Overlap of two gears' teeth at t = 0 that is the meshes' resolution rather than a placement
+  // error, m: a flank table may depart this far from its mesh (a zero-backlash pair touches).
+  static constexpr double kStartOverlapLimit_m = 2e-6;
   ~World();
   World(const World&) = delete;
   World& operator=(const World&) = delete;

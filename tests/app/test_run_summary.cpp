@@ -1,12 +1,16 @@
 // What `gearsim run` reports in summary.json: the measured ratio and power balance of a short
-// paper run, and numerical trouble counted as warnings.
+// paper run, numerical trouble counted as warnings, and a run that leaves its physical bounds
+// stopped as "diverged" with exit code 4 and its logs complete up to that step.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+
+#include "tests/support/cli_run.hpp"
 
 namespace {
 
@@ -39,6 +43,38 @@ TEST(RunSummary, ASoftContactIsReportedAsDeepPenetration) {
   EXPECT_GT(s["max_penetration_um"].get<double>(), 10.0);
   ASSERT_FALSE(s["warnings"].empty());
   EXPECT_NE(s["warnings"][0].get<std::string>().find("penetration"), std::string::npos) << s["warnings"].dump();
+}
+
+// The last time_s of a CSV log.
+double last_time(const fs::path& csv) {
+  std::ifstream f(csv);
+  std::string line, last;
+  while (std::getline(f, line))
+    if (!line.empty()) last = line;
+  return std::stod(last.substr(0, last.find(',')));
+}
+
+TEST(RunSummary, ADivergingRunStopsWithItsOwnExitCodeAndCompleteLogs) {
+  // dt 0.5 ms against the 1.4e8 N/m tooth contact: the teeth pass through each other at once.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_summary_diverged";
+  fs::remove_all(dir);
+  const gearsim::test::CliRun r = gearsim::test::gearsim(
+      std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
+      " --duration 0.05 --set solver.time_step_s=5e-4 --set output.sample_rate_hz=500");
+  EXPECT_EQ(r.exit_code, 4) << r.output;
+  EXPECT_NE(r.output.find("diverged at t ="), std::string::npos) << r.output;
+  std::ifstream f(dir / "summary.json");
+  const nlohmann::json s = nlohmann::json::parse(f);
+  EXPECT_EQ(s["status"], "diverged");
+  ASSERT_TRUE(s.contains("divergence"));
+  EXPECT_FALSE(s["divergence"]["message"].get<std::string>().empty());
+  const double t = s["sim_seconds"].get<double>();
+  EXPECT_LT(t, 0.05);
+  EXPECT_EQ(s["divergence"]["time_s"].get<double>(), t);
+  // Both CSV logs end at the step the run stopped at.
+  EXPECT_DOUBLE_EQ(last_time(dir / "state.csv"), t);
+  EXPECT_DOUBLE_EQ(last_time(dir / "contacts.csv"), t);
+  EXPECT_FALSE(fs::exists(dir / "analysis.json"));  // a diverged run is not analysed
 }
 
 }  // namespace

@@ -1,0 +1,25 @@
+// The exit codes of the gearsim binary, and the exception a subcommand throws to end with one
+// of them after it has written its outputs. Documented in `gearsim --help` and the README.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace gearsim::app {
+
+constexpr int kExitOk = 0;
+constexpr int kExitInputError = 2;     // bad input: the message names the file, key or value
+constexpr int kExitInternalError = 3;  // a broken invariant: a bug, please report
+constexpr int kExitDiverged = 4;       // the run left its physical bounds; logs kept up to that step
+
+// A run that ended early but wrote valid outputs (summary.json says why).
+class RunStopped : public std::runtime_error {
+ public:
+  RunStopped(int code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_;
+};
+
+}  // namespace gearsim::app
