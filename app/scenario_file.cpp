@@ -161,6 +161,7 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.damping_ratio = non_negative_or(m, "damping_ratio", c.damping_ratio, "a damping ratio");
     c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
     c.chordal_deviation_m = positive_or(m, "chordal_deviation_m", c.chordal_deviation_m, "length in m");
+    c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
     // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
     if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
     m.reject_unknown_keys();

@@ -80,7 +80,8 @@ json scenario_json(const physics::Scenario& s) {
   j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
                   {"damping_ratio", s.contact.damping_ratio},
                   {"friction", s.contact.friction},
-                  {"chordal_deviation_m", s.contact.chordal_deviation_m}};
+                  {"chordal_deviation_m", s.contact.chordal_deviation_m},
+                  {"max_flank_departure_m", s.contact.max_flank_departure_m}};
   if (!s.contact.stiffness_tables.empty()) {
     json tables = json::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "geometry/errors.hpp"
+#include "physics/flank_knots.hpp"
 
 namespace gearsim::physics {
 namespace {
@@ -25,9 +26,13 @@ constexpr int kSlopeSpan = 2;
 // rounding between a generated gear's rotated copies of one tooth.
 constexpr double kSharedToothTolerance_m = 1e-10;
 
-// Consecutive flank vertices closer in radius than this are one knot, m: float32 noise of an
-// imported tip or root arc (~1e-9 m at gear scale) must not pass for a flank.
+// Flank vertices closer than this to the last knot are passed over, m: float32 noise of an
+// imported outline (~1e-9 m at gear scale) must not make a knot of its own.
 constexpr double kKnotSpacing_m = 1e-8;
+
+// Vertices closer than this many times the outline's measured resolution (knot_resolution_m)
+// are merged: at that spacing their noise, not the flank, sets the slope between them.
+constexpr double kNoiseMerge = 4;
 
 }  // namespace
 
@@ -49,72 +54,19 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
   ccw_.assign(static_cast<std::size_t>(layout.teeth) * samples, kNaN);
   cw_ = ccw_;
   // The loop's vertices lie on the true curves (its chords do not): each flank is rebuilt from
-  // its vertices as knots of a cubic in r, then sampled. Per tooth sector, the Cw flank is the
-  // longest run of vertices whose radius strictly increases (walking the loop counter-clockwise)
-  // and the Ccw flank the longest strictly decreasing run, for an external gear; the other way
-  // round for an internal one, whose teeth point inward.
-  std::vector<Eigen::Vector2d> pts = loop.points;
-  if (signed_area(loop) < 0) std::reverse(pts.begin(), pts.end());
-  const std::size_t n = pts.size();
-  std::vector<int> tooth_of(n);
-  std::vector<double> rel_of(n), r_of(n);
-  for (std::size_t q = 0; q < n; ++q) {
-    const double phi = std::atan2(pts[q].y(), pts[q].x()) - layout.tooth0_angle_rad;
-    const long k = std::lround(phi / pitch_);
-    tooth_of[q] = static_cast<int>(((k % layout.teeth) + layout.teeth) % layout.teeth);
-    rel_of[q] = std::remainder(phi - static_cast<double>(k) * pitch_, 2 * kPi);
-    r_of[q] = pts[q].norm();
-  }
-  // Longest strictly monotone runs per (tooth, side), as index ranges into the loop.
-  struct Run { std::size_t start = 0, length = 0; };
-  std::vector<Run> best(static_cast<std::size_t>(layout.teeth) * 2);
-  for (int dir : {+1, -1}) {
-    std::size_t q = 0;
-    while (q < n) {
-      std::size_t len = 1;
-      while (len < n && tooth_of[(q + len) % n] == tooth_of[q] &&
-             dir * (r_of[(q + len) % n] - r_of[(q + len - 1) % n]) > kKnotSpacing_m)
-        ++len;
-      // Ascending r along the loop: Cw side of an external tooth, Ccw side of an internal one.
-      const bool cw_side = (dir > 0) != internal;
-      Run& b = best[static_cast<std::size_t>(tooth_of[q]) * 2 + (cw_side ? 1 : 0)];
-      if (len > b.length) b = {q, len};
-      q += std::max<std::size_t>(len - 1, 1);
-    }
-  }
+  // its vertices as knots of a cubic in r, then sampled (flank_knots.hpp). Knots closer than a
+  // few times the outline's measured noise are merged before the cubic sees them.
+  std::vector<FlankKnots> flanks = flank_knots(loop, layout, internal, kKnotSpacing_m);
+  knot_resolution_m_ = physics::knot_resolution_m(flanks);
+  if (kNoiseMerge * knot_resolution_m_ > kKnotSpacing_m)
+    flanks = flank_knots(loop, layout, internal, kNoiseMerge * knot_resolution_m_);
   for (int t = 0; t < layout.teeth; ++t)
     for (int side = 0; side < 2; ++side) {
-      const Run& run = best[static_cast<std::size_t>(t) * 2 + side];
-      if (run.length < 4)
-        throw InputError("flank table: tooth " + std::to_string(t) + " has no flank of at least 4 vertices whose "
-                         "radius grows monotonically: the toothed outline is not star-shaped about the axis, "
-                         "or the tooth layout does not match it");
-      std::vector<double> kr, ka;
-      for (std::size_t m = 0; m < run.length; ++m) {
-        const std::size_t q = (run.start + m) % n;
-        kr.push_back(r_of[q]);
-        ka.push_back(rel_of[q]);
-      }
-      if (kr.front() > kr.back()) {
-        std::reverse(kr.begin(), kr.end());
-        std::reverse(ka.begin(), ka.end());
-      }
-      std::vector<double>& table = side == 0 ? ccw_ : cw_;
-      for (int i = 0; i < samples; ++i) {
-        const double r = r_min_ + i * dr_;
-        if (r < kr.front() || r > kr.back()) continue;  // no material of this flank here
-        // Cubic through the four knots around r (Lagrange, non-uniform).
-        std::size_t j = static_cast<std::size_t>(std::upper_bound(kr.begin(), kr.end(), r) - kr.begin());
-        j = std::clamp<std::size_t>(j, 2, kr.size() - 2) - 2;
-        double value = 0;
-        for (std::size_t a = j; a < j + 4; ++a) {
-          double w = 1;
-          for (std::size_t b = j; b < j + 4; ++b)
-            if (b != a) w *= (r - kr[b]) / (kr[a] - kr[b]);
-          value += w * ka[a];
-        }
-        table[static_cast<std::size_t>(t) * samples + i] = value;
-      }
+      const FlankKnots& k = flanks[static_cast<std::size_t>(t) * 2 + side];
+      double* row = (side == 0 ? ccw_ : cw_).data() + static_cast<std::size_t>(t) * samples;
+      sample_flank(k, r_min_, dr_, samples, row);
+      const FlankDeparture d = flank_departure(k, r_min_, dr_, samples, row);
+      if (d.departure_m > departure_.departure_m) departure_ = {d.departure_m, t, side == 0 ? Flank::Ccw : Flank::Cw, d.r_m};
     }
   share_identical_teeth();
   build_probe_knots();

@@ -23,6 +23,19 @@ class FlankTable {
   FlankTable(const Polygon2& loop, const ToothLayout& layout, bool internal, int samples);
 
   int teeth() const { return layout_.teeth; }
+  // How far the table strays from the polyline of its loop beyond the sagitta of a smooth curve
+  // through the loop's vertices (flank_knots.hpp), and where: a table built from a mesh it does
+  // not describe (a wrong tooth layout, a flank cut by noise) shows here.
+  struct Departure {
+    double departure_m = 0;
+    int tooth = -1;
+    Flank flank = Flank::Ccw;
+    double r_m = 0;
+  };
+  const Departure& departure() const { return departure_; }
+  // How well each vertex of the loop's flanks is predicted by its neighbours, m
+  // (knot_resolution_m in flank_knots.hpp): coarse facets or coordinate noise.
+  double knot_resolution_m() const { return knot_resolution_m_; }
   bool internal() const { return internal_; }
   // True when both tables describe the same flanks (same layout, radii and samples, bit for bit).
   bool same_as(const FlankTable& o) const {
@@ -140,6 +153,8 @@ class FlankTable {
 
   ToothLayout layout_;
   bool internal_;
+  Departure departure_;
+  double knot_resolution_m_ = 0;
   double pitch_;
   double r_min_, r_max_, dr_, inv_dr_, inv_pitch_;
   int samples_;

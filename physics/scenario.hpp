@@ -112,6 +112,10 @@ struct ContactDef {
   // the outline's vertices (which lie on the true flanks) with cubics, so the default outline
   // already resolves depths to ~2 nm (tests/physics/test_tooth_contact.cpp).
   double chordal_deviation_m = 0.5e-6;
+  // A gear whose flank table strays further than this from the outline it was built from
+  // (FlankTable::departure) is refused, m: beyond it the contact no longer acts on the mesh's
+  // teeth. 2 µm: the static deflection of a loaded mesh, ten times a CAD export's resolution.
+  double max_flank_departure_m = 2e-6;
 };
 
 struct SolverDef {

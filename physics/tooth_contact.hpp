@@ -34,3 +34,20 @@ void find_tooth_contacts(const FlankTable& a, const PlanarPose& pa, const FlankT
                          const PlanarPose& pb, std::vector<ToothContact>& out);
 
 }  // namespace gearsim::physics
+
+namespace gearsim::physics {
+
+// The deepest tooth overlap of two gears turned through one mesh period (one pitch of a) about
+// their fixed centres at the ideal ratio of their tooth counts (opposite senses for two
+// external gears, the same sense for an external gear in a ring), from their poses pa and pb:
+// interference of tip and fillet, or flanks fuller than conjugate, shows here before a run.
+struct MeshCycleOverlap {
+  ToothContact deepest;       // depth_m 0 when the teeth never overlap
+  double turn_a_rad = 0;      // a's turn from pa at which it is deepest
+  double radius_a_m = 0;      // of the contact point on a, and on b
+  double radius_b_m = 0;
+};
+MeshCycleOverlap mesh_cycle_overlap(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
+                                    const PlanarPose& pb, int steps);
+
+}  // namespace gearsim::physics

