@@ -7,7 +7,6 @@
 #include <cmath>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <tuple>
 
 #include "geometry/errors.hpp"
@@ -28,9 +27,6 @@ constexpr int kShapelessGroup = 1 << 8;
 // A Bullet manifold holds at most 4 points: enough for one point per tooth pair at contact
 // ratios below 4. Extra pairs (never seen in a healthy mesh) are dropped and counted.
 constexpr int kMaxPointsPerPair = 4;
-// Positions per mesh period at which a pair's overlap is checked before a run (a tip's path
-// across the mate's fillet spans tens of them at this spacing).
-constexpr int kMeshCycleSteps = 256;
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -418,36 +414,7 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
     const BuiltBody &a = m.bodies[pr.a], &b = m.bodies[pr.b];
     pr.info.tooth_height_m = std::min(a.flanks->r_max_m() - a.flanks->r_min_m(), b.flanks->r_max_m() - b.flanks->r_min_m());
     m.pair_infos[static_cast<std::size_t>(&pr - m.pairs.data())].tooth_height_m = pr.info.tooth_height_m;
-    // Bodies inside each other (a wrong unit, a centre distance for other gears): beyond what
-    // tooth contact can see, so refused on the radii alone.
-    const double d = (m.gear_poses[pr.b].centre_m - m.gear_poses[pr.a].centre_m).norm();
-    const FlankTable &fa = *a.flanks, &fb = *b.flanks;
-    const bool ring = fb.internal();
-    if (ring ? d + fa.r_max_m() > fb.r_max_m() : d < fa.r_min_m() + fb.r_min_m()) {
-      std::ostringstream msg;
-      msg << "scenario: gears '" << a.name << "' and '" << b.name << "' are " << d * 1e3 << " mm apart but "
-          << (ring ? "the external gear's tip circle (" + std::to_string(fa.r_max_m() * 1e3) + " mm) crosses the ring's root circle (" +
-                         std::to_string(fb.r_max_m() * 1e3) + " mm)"
-                   : "their root circles (" + std::to_string(fa.r_min_m() * 1e3) + " and " + std::to_string(fb.r_min_m() * 1e3) +
-                         " mm) overlap: one body lies inside the other")
-          << ". Check the centre distance and the meshes' unit";
-      throw InputError(msg.str());
-    }
-    const MeshCycleOverlap o = mesh_cycle_overlap(*a.flanks, m.gear_poses[pr.a], *b.flanks, m.gear_poses[pr.b], kMeshCycleSteps);
-    if (o.deepest.depth_m > kStartOverlapLimit_m) {
-      const ToothContact& c = o.deepest;
-      std::ostringstream msg;
-      msg << "scenario: gears '" << a.name << "' and '" << b.name << "' overlap " << (o.turn_a_rad == 0 ? "at t = 0" : "over their mesh cycle")
-          << ": tooth " << c.tooth_a << " of '" << a.name << "' is " << c.depth_m * 1e6 << " um deep in tooth " << c.tooth_b
-          << " of '" << b.name << "'";
-      if (o.turn_a_rad != 0) msg << " after '" << a.name << "' turns " << o.turn_a_rad * 180 / kPi << " deg at the ideal ratio";
-      msg << ", at r = " << o.radius_a_m * 1e3 << " mm on '" << a.name << "' (teeth " << a.flanks->r_min_m() * 1e3 << "–"
-          << a.flanks->r_max_m() * 1e3 << " mm) and r = " << o.radius_b_m * 1e3 << " mm on '" << b.name << "' (teeth "
-          << b.flanks->r_min_m() * 1e3 << "–" << b.flanks->r_max_m() * 1e3 << " mm); limit " << kStartOverlapLimit_m * 1e6
-          << " um. The centre distance is too small for these gears, a tip cuts into the mate's fillet (interference), "
-             "or a tooth layout (teeth, tooth0_deg) does not match the mesh";
-      throw InputError(msg.str());
-    }
+    require_clear_mesh(a, m.gear_poses[pr.a], b, m.gear_poses[pr.b]);
   }
   // Every table must belong to a meshing pair.
   for (const PairStiffnessDef& t : m.scenario.contact.stiffness_tables) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "geometry/errors.hpp"
@@ -208,23 +209,60 @@ bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
   return true;
 }
 
+// Positions per mesh period at which a pair's overlap is checked before a run (a tip's path
+// across the mate's fillet spans tens of them at this spacing).
+constexpr int kMeshCycleSteps = 256;
+
+void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const BuiltBody& b, const PlanarPose& pose_b) {
+  // Bodies inside each other (a wrong unit, a centre distance for other gears): beyond what
+  // tooth contact can see, so refused on the radii alone.
+  const double d = (pose_b.centre_m - pose_a.centre_m).norm();
+  const FlankTable &fa = *a.flanks, &fb = *b.flanks;
+  const bool ring = fb.internal();
+  if (ring ? d + fa.r_max_m() > fb.r_max_m() : d < fa.r_min_m() + fb.r_min_m()) {
+    std::ostringstream msg;
+    msg << "scenario: gears '" << a.name << "' and '" << b.name << "' are " << d * 1e3 << " mm apart but "
+        << (ring ? "the external gear's tip circle (" + std::to_string(fa.r_max_m() * 1e3) + " mm) crosses the ring's root circle (" +
+                       std::to_string(fb.r_max_m() * 1e3) + " mm)"
+                 : "their root circles (" + std::to_string(fa.r_min_m() * 1e3) + " and " + std::to_string(fb.r_min_m() * 1e3) +
+                       " mm) overlap: one body lies inside the other")
+        << ". Check the centre distance and the meshes' unit";
+    throw InputError(msg.str());
+  }
+  const MeshCycleOverlap o = mesh_cycle_overlap(*a.flanks, pose_a, *b.flanks, pose_b, kMeshCycleSteps);
+  if (o.deepest.depth_m > World::kStartOverlapLimit_m) {
+    const ToothContact& c = o.deepest;
+    std::ostringstream msg;
+    msg << "scenario: gears '" << a.name << "' and '" << b.name << "' overlap " << (o.turn_a_rad == 0 ? "at t = 0" : "over their mesh cycle")
+        << ": tooth " << c.tooth_a << " of '" << a.name << "' is " << c.depth_m * 1e6 << " um deep in tooth " << c.tooth_b
+        << " of '" << b.name << "'";
+    if (o.turn_a_rad != 0) msg << " after '" << a.name << "' turns " << o.turn_a_rad * 180 / std::numbers::pi << " deg at the ideal ratio";
+    msg << ", at r = " << o.radius_a_m * 1e3 << " mm on '" << a.name << "' (teeth " << a.flanks->r_min_m() * 1e3 << "–"
+        << a.flanks->r_max_m() * 1e3 << " mm) and r = " << o.radius_b_m * 1e3 << " mm on '" << b.name << "' (teeth "
+        << b.flanks->r_min_m() * 1e3 << "–" << b.flanks->r_max_m() * 1e3 << " mm); limit " << World::kStartOverlapLimit_m * 1e6
+        << " um. The centre distance is too small for these gears, a tip cuts into the mate's fillet (interference), "
+           "or a tooth layout (teeth, tooth0_deg) does not match the mesh";
+    throw InputError(msg.str());
+  }
+}
+
 double contact_damping_N_s_per_m(double k, double m_eq, double zeta) { return 2 * zeta * std::sqrt(k * m_eq); }
 
 GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactDef& c) {
-  GearPairInfo info;
-  info.body_a = a.name;
-  info.body_b = b.name;
-  info.face_width_m = std::min(a.face_width_m, b.face_width_m);
-  info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * info.face_width_m;
-  // Effective mass along the line of action from the rotational inertias (J/r²); a fixed gear
-  // contributes none. Planet translation on its carrier is neglected here.
-  auto inv_mass = [](const BuiltBody& g) {
-    return g.fixed ? 0.0 : g.contact_radius_m * g.contact_radius_m / g.inertia_axis_kg_m2;
-  };
-  const double m_eq = 1.0 / (inv_mass(a) + inv_mass(b));
-  info.reduced_mass_kg = m_eq;
-  info.damping_N_s_per_m = contact_damping_N_s_per_m(info.stiffness_N_per_m, m_eq, c.damping_ratio);
-  return info;
+GearPairInfo info;
+info.body_a = a.name;
+info.body_b = b.name;
+info.face_width_m = std::min(a.face_width_m, b.face_width_m);
+info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * info.face_width_m;
+// Effective mass along the line of action from the rotational inertias (J/r²); a fixed gear
+// contributes none. Planet translation on its carrier is neglected here.
+auto inv_mass = [](const BuiltBody& g) {
+  return g.fixed ? 0.0 : g.contact_radius_m * g.contact_radius_m / g.inertia_axis_kg_m2;
+};
+const double m_eq = 1.0 / (inv_mass(a) + inv_mass(b));
+info.reduced_mass_kg = m_eq;
+info.damping_N_s_per_m = contact_damping_N_s_per_m(info.stiffness_N_per_m, m_eq, c.damping_ratio);
+return info;
 }
 
 }  // namespace gearsim::physics

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "physics/flank_table.hpp"
+#include "physics/tooth_contact.hpp"
 #include "physics/scenario.hpp"
 #include "physics/world.hpp"
 
@@ -36,6 +37,11 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact);
 // Can the two gears' toothed zones reach each other (at their initial poses)? Throws InputError
 // when they could but their axes are not parallel.
 bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b);
+
+// Refuses (InputError naming the pair, teeth, radii and depth) two gears whose bodies lie inside
+// each other, or whose teeth overlap by more than World::kStartOverlapLimit_m at their poses or
+// anywhere over a mesh period turned at the ideal ratio (mesh_cycle_overlap: interference).
+void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const BuiltBody& b, const PlanarPose& pose_b);
 
 // Damping of one tooth-pair contact, N·s/m: a fraction ζ of critical for stiffness k (N/m) on
 // the pair's reduced mass m_eq (kg): c = 2ζ√(k·m_eq).
