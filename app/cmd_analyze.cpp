@@ -5,6 +5,7 @@
 
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
+#include "app/input_limits.hpp"
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
 
@@ -42,7 +43,8 @@ void register_analyze(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("analyze", "Analyse a run folder: force spectra, mesh harmonics, sidebands, "
                                                 "fault-frequency family, transmission error, per-tooth loads.");
   sub->add_option("dir", *dir, "A folder written by `gearsim run --out`.")->required()->check(CLI::ExistingDirectory);
-  sub->add_option("--from", *from, "Start of the analysed window, s (default: the end of the motors' ramp).");
+  sub->add_option("--from", *from, "Start of the analysed window, s (default: the end of the motors' ramp).")
+      ->check(cli_within(limits::kRunTime_s));
   sub->callback([dir, from] {
     const RunDir run = open_run_dir(*dir);
     print_analysis(analyze_run(run, {*from}), std::cout);

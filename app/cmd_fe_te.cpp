@@ -19,6 +19,7 @@
 
 #include "app/commands.hpp"
 #include "app/gnuplot.hpp"
+#include "app/run_dir.hpp"
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
 #include "geometry/gear_dimensions.hpp"
@@ -40,13 +41,6 @@ struct FeTeOptions {
   bool no_plots = false;
 };
 
-std::ofstream open_out(const fs::path& p) {
-  std::ofstream f(p);
-  if (!f) throw InputError(p.string() + ": cannot write");
-  f << std::setprecision(12);
-  return f;
-}
-
 json stats(const std::vector<double>& v) {
   std::vector<double> x;
   for (double d : v)
@@ -62,10 +56,10 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                    json& summary, bool plots) {
   const int n = def.spec.planets;
   const double mesh_period = 2.0 * M_PI / def.spec.sun.teeth;
-  std::ofstream te = open_out(dir / "te_loaded.csv");
+  std::ofstream te = open_output(dir / "te_loaded.csv", 12);
   te << "position,sun_turn_rad,mesh_phase,te_geometric_rad,te_elastic_rad,te_loaded_rad,te_loaded_urad,"
         "te_loaded_base_um,te_fe_low_rad,te_fe_full_rad,sun_mesh_torque_low_N_m,sun_mesh_torque_N_m,ccx_wall_s\n";
-  std::ofstream ms = open_out(dir / "mesh_stiffness.csv");
+  std::ofstream ms = open_output(dir / "mesh_stiffness.csv", 12);
   ms << "position,sun_turn_rad,mesh_phase";
   for (int k = 0; k < n; ++k) {
     const std::string p = "planet_" + std::to_string(k);
@@ -74,9 +68,9 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   }
   ms << '\n';
   // The tracked tooth (the faulty one, else planet 0's tooth 0): its sun-side force and root stresses.
-  std::ofstream tf = open_out(dir / "tooth_forces.csv");
+  std::ofstream tf = open_output(dir / "tooth_forces.csv", 12);
   tf << "position,sun_turn_rad,mesh_phase,planet,tooth,force_N\n";
-  std::ofstream rs = open_out(dir / "root_stress.csv");
+  std::ofstream rs = open_output(dir / "root_stress.csv", 12);
   rs << "position,sun_turn_rad,mesh_phase,planet,tooth,side,tooth_force_N,sigma1_max_Pa,sigma2_min_Pa,"
         "von_mises_max_Pa,sigma1_max_low_load_Pa,elements\n";
   // Largest root σ1 (either side), MPa, of teeth t−1, t, t+1 of the tracked planet, per position.
@@ -252,7 +246,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     }
     info["stiffness_N_per_m_per_m"] = c;
     const GearDimensions d = gear_dimensions(a);
-    std::ofstream t = open_out(dir / file);
+    std::ofstream t = open_output(dir / file, 12);
     t << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
     summary["stiffness_tables"][file] = info;
   };

@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/gear_report.hpp"
+#include "app/safe_name.hpp"
 #include "geometry/errors.hpp"
 #include "geometry/mesh_io.hpp"
 
@@ -27,12 +28,17 @@ void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
-  for (const auto& [name, body] : a.bodies)
+  for (const auto& [name, body] : a.bodies) {
+    // Files only inside DIR: the spec reader refuses other names; this guards every other source.
+    if (!is_safe_name(name, NameUse::File))
+      throw InputError("gear '" + shown_name(name) + "': expected " + safe_name_rule(NameUse::File) +
+                       " (it names a file in " + dir.string() + ")");
     for (const std::string& f : o.formats) {
       const MeshFormat fmt = f == "obj" ? MeshFormat::Obj : f == "stl-ascii" ? MeshFormat::StlAscii : MeshFormat::StlBinary;
       const std::string ext = f == "obj" ? ".obj" : f == "stl-ascii" ? ".ascii.stl" : ".stl";
       export_mesh(body.mesh, dir / (name + ext), fmt, LengthUnit::Millimetre);
     }
+  }
   json doc = a.doc;
   doc["mesh_files"] = {{"folder", dir.string()}, {"unit", "mm"}, {"formats", o.formats}};
   std::ofstream js(dir / "gearset.json");

@@ -1,6 +1,7 @@
 // gearsim inspect MESH: what a CAD mesh is, before it becomes a body. Topology checks, exact mass
 // properties, and the convex decomposition the physics would use (exact for prisms), with the
 // decomposition's deviation measured against the mesh.
+#include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -15,8 +16,10 @@
 #include "geometry/hausdorff.hpp"
 #include "geometry/mass_properties.hpp"
 #include "geometry/mesh_io.hpp"
+#include "geometry/mesh_gear.hpp"
 #include "geometry/mesh_validate.hpp"
 #include "geometry/prism.hpp"
+#include "physics/flank_table.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -31,6 +34,77 @@ struct InspectOptions {
   double spacing_mm = 0.5;
   bool json_only = false;
 };
+
+using gearsim::constants::kDegPerRad;
+
+json flank_fit_json(const InvoluteFit& f) {
+  json j;
+  j["involute"] = f.involute;
+  j["base_radius_mm"] = f.base_radius_m * 1e3;
+  j["base_half_angle_deg"] = f.base_half_angle_rad * kDegPerRad;
+  j["rms_um"] = f.rms_m * 1e6;
+  j["active_from_mm"] = f.active_from_m * 1e3;
+  j["active_to_mm"] = f.active_to_m * 1e3;
+  j["points"] = f.points;
+  j["outlier_teeth"] = f.outlier_teeth;
+  j["largest_outlier_um"] = f.largest_outlier_m * 1e6;
+  return j;
+}
+
+// The gear the outline is, and how faithfully the contact's flank table follows its teeth.
+json gear_json(const MeshGear& mg, const std::optional<ToothLayout>& given, LengthUnit unit) {
+  json j;
+  if (!mg.recognition.gear) {
+    j["recognised"] = false;
+    j["reason"] = mg.recognition.reason;
+    return j;
+  }
+  const RecognisedGear& g = *mg.recognition.gear;
+  j["recognised"] = true;
+  j["teeth"] = g.teeth;
+  j["tooth0_deg"] = g.tooth0_angle_rad * kDegPerRad;
+  j["internal"] = g.internal;
+  j["toothed_loop"] = g.loop < 0 ? std::string("outer") : "hole " + std::to_string(g.loop);
+  j["axis_offset_mm"] = {mg.axis_offset_m.x() * 1e3, mg.axis_offset_m.y() * 1e3};
+  j["tip_radius_mm"] = g.tip_radius_m * 1e3;
+  j["root_radius_mm"] = g.root_radius_m * 1e3;
+  j["symmetry_residual_um"] = g.symmetry_residual_m * 1e6;
+  j["involute"] = g.involute;
+  j["flank_ccw"] = flank_fit_json(g.ccw);
+  j["flank_cw"] = flank_fit_json(g.cw);
+  if (g.involute) {
+    j["base_radius_mm"] = g.base_radius_m * 1e3;
+    j["base_pitch_mm"] = g.base_pitch_m * 1e3;
+    j["module_mm"] = g.module_m * 1e3;
+    j["pressure_angle_deg"] = g.pressure_angle_rad * kDegPerRad;
+    j["standard_module_and_angle"] = g.standard;
+    j["reference_radius_mm"] = g.reference_radius_m * 1e3;
+    j["reference_thickness_mm"] = g.reference_thickness_m * 1e3;
+    if (!g.internal) j["profile_shift_incl_backlash_allowance"] = g.profile_shift;
+  }
+  json warnings = json::array();
+  if (const std::string u = implausible_unit(g, unit); !u.empty()) warnings.push_back(u);
+  const ToothLayout layout = given.value_or(ToothLayout{g.teeth, g.tooth0_angle_rad});
+  if (given)
+    if (const std::string m = layout_mismatch(g, *given); !m.empty()) warnings.push_back("--teeth/--tooth0-deg: " + m);
+  if (layout.teeth == g.teeth) {
+    // The contact's flank table of these teeth, and how far it strays from the outline.
+    const Polygon2& loop = g.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(g.loop)];
+    try {
+      const physics::FlankTable t(loop, layout, g.internal, 4096);
+      const physics::FlankTable::Departure& d = t.departure();
+      j["flank_table"] = {{"departure_um", d.departure_m * 1e6},
+                          {"at_tooth", d.tooth},
+                          {"at_flank", d.flank == Flank::Ccw ? "ccw" : "cw"},
+                          {"at_radius_mm", d.r_m * 1e3},
+                          {"outline_resolution_um", t.knot_resolution_m() * 1e6}};
+    } catch (const InputError& e) {
+      warnings.push_back(std::string("flank table: ") + e.what());
+    }
+  }
+  j["warnings"] = warnings;
+  return j;
+}
 
 json inspect(const InspectOptions& o) {
   const std::optional<LengthUnit> unit = parse_length_unit(o.unit);
@@ -96,11 +170,21 @@ json inspect(const InspectOptions& o) {
   j["deviation_sample_spacing_mm"] = o.spacing_mm;
   j["relative_volume_error"] = dev.relative_volume_error;
   j["warnings"] = json::array();
+  std::optional<ToothLayout> given;
+  if (o.teeth > 0) given = ToothLayout{o.teeth, o.tooth0_deg * std::numbers::pi / 180.0};
+  j["gear"] = gear_json(mesh_gear(*pr.prism), given, *unit);
   return j;
 }
 
-void print(const json& j) {
-  for (const auto& [k, v] : j.items()) std::cout << "  " << pad(k, 28) << v.dump() << "\n";
+void print(const json& j, const std::string& indent = "  ") {
+  for (const auto& [k, v] : j.items()) {
+    if (v.is_object()) {
+      std::cout << indent << k << ":\n";
+      print(v, indent + "  ");
+    } else {
+      std::cout << indent << pad(k, static_cast<std::size_t>(std::max(8, 30 - static_cast<int>(indent.size())))) << v.dump() << "\n";
+    }
+  }
 }
 
 }  // namespace
@@ -110,7 +194,9 @@ void register_inspect(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "inspect",
       "Inspect a CAD mesh (any format Assimp reads: STL, OBJ, PLY, ...): topology checks, mass "
-      "properties, and the convex decomposition Bullet would get, with its measured deviation.");
+      "properties, the convex decomposition Bullet would get with its measured deviation, and the gear "
+      "recognised from the outline (tooth count, tooth 0, involute fit, module, pressure angle, thickness) with "
+      "the departure of the contact's flank table from it.");
   sub->add_option("mesh", o->mesh, "Mesh file.")->required()->check(CLI::ExistingFile);
   sub->add_option("--unit", o->unit, "Length unit of the file's coordinates: m, cm, mm, um, in, ft. Default mm (CAD).");
   sub->add_option("--density", o->density_kg_m3, "Density in kg/m³ for the mass properties. Default 7580 (the paper's steel).")

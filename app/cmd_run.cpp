@@ -16,6 +16,7 @@
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
+#include "app/input_limits.hpp"
 #include "app/render_run.hpp"
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
@@ -38,8 +39,28 @@ constexpr double kPenetrationWarning_m = 10e-6;
 // (the 2 % acceptance figure; converged runs show ~1e-5).
 constexpr double kPowerImbalanceWarning = 0.02;
 
+// The signal (SIGINT or SIGTERM) that asked the run to stop, 0 while none did.
 volatile std::sig_atomic_t g_interrupted = 0;
-void on_sigint(int) { g_interrupted = 1; }
+void on_stop_signal(int sig) { g_interrupted = sig; }
+
+// The files a run, its analysis, report and renders write into the run folder. A run into a
+// folder that holds them from an earlier run removes them first, so that no summary or analysis
+// of the old run sits beside the new logs. Returns how many were removed; other files stay.
+int clear_previous_outputs(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  static const char* const kFiles[] = {"summary.json", "state.csv",    "contacts.csv", "steps.h5",   "analysis.json",
+                                       "spectrum.csv", "sidebands.csv", "teeth.csv",    "report.html"};
+  int removed = 0;
+  std::error_code ec;
+  for (const char* f : kFiles)
+    if (fs::is_regular_file(fs::symlink_status(dir / f))) removed += fs::remove(dir / f, ec) ? 1 : 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string n = e.path().filename().string();
+    if (e.is_regular_file() && n.starts_with("video") && n.ends_with(".mp4")) removed += fs::remove(e.path(), ec) ? 1 : 0;
+  }
+  if (fs::is_directory(fs::symlink_status(dir / "frames"))) removed += fs::remove_all(dir / "frames", ec) > 0 ? 1 : 0;
+  return removed;
+}
 
 struct RunOptions {
   std::string scenario;
@@ -49,13 +70,6 @@ struct RunOptions {
   bool no_analyze = false;
 };
 
-std::ofstream open_out(const std::filesystem::path& p) {
-  std::ofstream f(p);
-  if (!f) throw InputError(p.string() + ": cannot write");
-  f << std::setprecision(17);
-  return f;
-}
-
 int body_of_joint(const physics::Scenario& s, const std::string& joint) {
   for (const physics::JointDef& j : s.joints)
     if (j.name == joint)
@@ -64,13 +78,27 @@ int body_of_joint(const physics::Scenario& s, const std::string& joint) {
   throw InputError(s.source.string() + ": transmission: no joint named '" + joint + "'");
 }
 
+// --duration in place of the scenario's duration_s: longer than a time step, and at least one
+// output row (the scenario file's own duration was checked as it was read).
+void set_duration(physics::Scenario& s, double duration_s) {
+  s.duration_s = duration_s;
+  if (!(duration_s > s.solver.time_step_s))
+    throw InputError("--duration " + std::to_string(duration_s) + ": expected more than one time step (" +
+                     std::to_string(s.solver.time_step_s) + " s in " + s.source.string() + ")");
+  if (s.output.sample_rate_hz * duration_s < 1)
+    throw InputError("--duration " + std::to_string(duration_s) + ": shorter than one output interval (1/" +
+                     std::to_string(s.output.sample_rate_hz) + " Hz in " + s.source.string() + ")");
+}
+
 void run(const RunOptions& o) {
   physics::Scenario s = load_scenario(o.scenario, o.sets);
-  if (o.duration_s > 0) s.duration_s = o.duration_s;
+  if (o.duration_s > 0) set_duration(s, o.duration_s);
   const std::filesystem::path dir(o.out_dir);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
+  if (const int n = clear_previous_outputs(dir); n > 0)
+    std::cout << "removed " << n << " outputs of a previous run in " << dir.string() << "\n";
 
   const auto wall0 = std::chrono::steady_clock::now();
   physics::World world(s);
@@ -82,7 +110,7 @@ void run(const RunOptions& o) {
     te_in = body_of_joint(s, s.transmission->input_joint);
     te_out = body_of_joint(s, s.transmission->output_joint);
   }
-  std::ofstream state = open_out(dir / "state.csv"), contacts = open_out(dir / "contacts.csv");
+  std::ofstream state = open_output(dir / "state.csv", 17), contacts = open_output(dir / "contacts.csv", 17);
   state << "time_s";
   for (const physics::BodyState& b : world.bodies()) state << ',' << b.name << "_angle_rad," << b.name << "_speed_rad_s";
   if (s.transmission) state << ",te_rad";
@@ -108,7 +136,8 @@ void run(const RunOptions& o) {
   physics::RunBounds bounds(s, world);
   const bool tty = isatty(STDERR_FILENO);
   g_interrupted = 0;
-  auto old_handler = std::signal(SIGINT, on_sigint);
+  auto old_int = std::signal(SIGINT, on_stop_signal);
+  auto old_term = std::signal(SIGTERM, on_stop_signal);
   int last_percent = -1;
   // One row of state.csv and contacts.csv at the world's present time.
   auto write_rows = [&] {
@@ -155,7 +184,9 @@ void run(const RunOptions& o) {
       break;
     }
   }
-  std::signal(SIGINT, old_handler);
+  std::signal(SIGINT, old_int);
+  std::signal(SIGTERM, old_term);
+  const int stop_signal = g_interrupted;
   if (tty) std::cerr << "\n";
   state.flush();
   contacts.flush();
@@ -166,6 +197,7 @@ void run(const RunOptions& o) {
   summary["scenario_file"] = std::filesystem::absolute(o.scenario).lexically_normal().string();
   summary["overrides"] = o.sets;
   summary["status"] = status;
+  if (status == "interrupted") summary["signal"] = stop_signal == SIGTERM ? "SIGTERM" : "SIGINT";
   if (diverged)
     summary["divergence"] = {{"what", diverged->what},   {"where", diverged->where}, {"message", diverged->message},
                              {"time_s", diverged->time_s}, {"step", diverged->step},   {"value", diverged->value},
@@ -205,6 +237,19 @@ void run(const RunOptions& o) {
     if (!p.stiffness_table.empty()) pairs.back()["stiffness_table"] = p.stiffness_table;
   }
   summary["gear_pairs"] = pairs;
+  // The pair macro's gear table at the centre distance it used (mesh members: from their fits).
+  json tables = json::array();
+  for (const physics::PairTableDef& t : s.pair_tables)
+    tables.push_back({{"driver", t.driver},
+                      {"driven", t.driven},
+                      {"centre_distance_m", t.figures.centre_distance_m},
+                      {"centre_distance_derived", t.centre_distance_derived},
+                      {"zero_backlash_centre_distance_m", t.figures.zero_backlash_centre_distance_m},
+                      {"operating_pressure_angle_rad", t.figures.operating_pressure_angle_rad},
+                      {"normal_backlash_m", t.figures.normal_backlash_m},
+                      {"contact_ratio", t.figures.contact_ratio},
+                      {"base_pitch_mismatch_m", t.figures.base_pitch_mismatch_m}});
+  if (!tables.empty()) summary["pair_tables"] = tables;
   // Numerical trouble, counted over the run (never printed mid-run).
   json warnings = json::array();
   if (world.dropped_contacts() > 0)
@@ -239,7 +284,10 @@ void run(const RunOptions& o) {
     throw RunStopped(kExitDiverged, "diverged at t = " + std::to_string(diverged->time_s) + " s (step " +
                                         std::to_string(diverged->step) + "): " + diverged->message +
                                         ". Logs up to that step are in " + dir.string());
-  if (status == "interrupted") std::cout << "interrupted: the logs hold the run up to t = " << world.time_s() << " s\n";
+  if (status == "interrupted")
+    throw RunStopped(stop_signal == SIGTERM ? kExitSigterm : kExitSigint, std::string("interrupted by ") + (stop_signal == SIGTERM ? "SIGTERM" : "SIGINT") +
+                                           ": the logs hold the run up to t = " + std::to_string(world.time_s()) +
+                                           " s in " + dir.string() + " (not analysed)");
   // The analysis and the scenario's renders of the finished run; a run too short (or of a train
   // the analysis does not know) keeps its logs and says why it was not analysed or rendered.
   if (!o.no_analyze) try {
@@ -265,7 +313,8 @@ void register_run(CLI::App& app) {
       ->check(CLI::ExistingFile);
   sub->add_option("--out", o->out_dir, "Output folder (created if missing).")->required();
   sub->add_option("--set", o->sets, "Override a scenario value: key.path=value (repeatable), e.g. solver.time_step_s=1e-5.");
-  sub->add_option("--duration", o->duration_s, "Simulated seconds, overriding the scenario's duration_s.")->check(CLI::PositiveNumber);
+  sub->add_option("--duration", o->duration_s, "Simulated seconds, overriding the scenario's duration_s (at most 1e4 s).")
+      ->check(cli_within(limits::kDuration_s));
   sub->add_flag("--no-analyze", o->no_analyze, "Do not analyse the run at the end (see `gearsim analyze`).");
   sub->callback([o] { run(*o); });
 }

@@ -7,11 +7,12 @@
 #include "geometry/hausdorff.hpp"
 #include "geometry/mesh_validate.hpp"
 #include "geometry/planetary.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::app {
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
+using gearsim::constants::kDegPerRad;
 
 json gear_json(const GearBody& b, double spacing) {
   const GearSpec& s = b.spec;
@@ -20,7 +21,7 @@ json gear_json(const GearBody& b, double spacing) {
   g["kind"] = s.kind == GearKind::External ? "external" : "internal";
   g["teeth"] = s.teeth;
   g["module_m"] = s.module_m;
-  g["pressure_angle_deg"] = s.pressure_angle_rad * kDeg;
+  g["pressure_angle_deg"] = s.pressure_angle_rad * kDegPerRad;
   g["face_width_m"] = s.face_width_m;
   g["profile_shift"] = s.profile_shift;
   g["reference_diameter_m"] = 2 * d.reference_radius_m;
@@ -58,7 +59,7 @@ json gear_json(const GearBody& b, double spacing) {
 
 json mesh_json(const MeshGeometry& m) {
   return {{"centre_distance_m", m.centre_distance_m},
-          {"working_pressure_angle_deg", m.working_pressure_angle_rad * kDeg},
+          {"working_pressure_angle_deg", m.working_pressure_angle_rad * kDegPerRad},
           {"contact_ratio", m.contact_ratio},
           {"effective_contact_ratio", m.effective_contact_ratio},
           {"active_start_roll_a_m", m.active_start_roll_a_m},
@@ -94,7 +95,7 @@ GearSetAnalysis analyse_gearset(const GearSetFile& f, double spacing) {
     const PlanetaryGeometry p = analyse_planetary(*f.planetary);
     json placements = json::array();
     for (const PlanetPlacement& pl : p.placements)
-      placements.push_back({{"carrier_angle_deg", pl.carrier_angle_rad * kDeg}, {"spin_angle_deg", pl.spin_angle_rad * kDeg}});
+      placements.push_back({{"carrier_angle_deg", pl.carrier_angle_rad * kDegPerRad}, {"spin_angle_deg", pl.spin_angle_rad * kDegPerRad}});
     doc["train"] = {{"type", "planetary"},
                     {"sun", f.planetary->sun.name},
                     {"planet", f.planetary->planet.name},
@@ -105,7 +106,7 @@ GearSetAnalysis analyse_gearset(const GearSetFile& f, double spacing) {
                     {"assembly_quotient", p.assembly_quotient},
                     {"equally_spaced_assembly", p.equally_spaced_assembly},
                     {"adjacency_clearance_m", p.adjacency_clearance_m},
-                    {"ring_angle_deg", p.ring_angle_rad * kDeg},
+                    {"ring_angle_deg", p.ring_angle_rad * kDegPerRad},
                     {"placements", placements},
                     {"sun_planet", mesh_json(p.sun_planet)},
                     {"planet_ring", mesh_json(p.planet_ring)},

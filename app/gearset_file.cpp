@@ -2,12 +2,15 @@
 
 #include <numbers>
 
+#include "app/input_limits.hpp"
+#include "app/safe_name.hpp"
 #include "geometry/errors.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::app {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using gearsim::constants::kRadPerDeg;
 
 Flank parse_flank(const YamlMap& m) {
   return m.choice("flank", {"ccw", "cw"}) == "ccw" ? Flank::Ccw : Flank::Cw;
@@ -44,7 +47,7 @@ GearErrors parse_errors(const YamlMap& e) {
 double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad) {
   const bool deg = m.has(base + "_deg"), rad = m.has(base + "_rad");
   if (deg && rad) m.fail(base + "_deg", "give the angle once: " + base + "_deg or " + base + "_rad");
-  if (deg) return m.number(base + "_deg") * kDeg;
+  if (deg) return m.number(base + "_deg") * kRadPerDeg;
   if (rad) return m.number(base + "_rad");
   m.number_or(base + "_deg", 0);  // mark both spellings as known keys
   m.number_or(base + "_rad", 0);
@@ -69,7 +72,7 @@ GearSpec parse_gear(const YamlMap& g, const std::string& name, const YamlMap* de
   GearSpec s;
   s.name = name;
   s.kind = g.choice("kind", {"external", "internal"}) == "internal" ? GearKind::Internal : GearKind::External;
-  s.teeth = g.integer("teeth");
+  s.teeth = integer_within(g, "teeth", limits::kTeeth);
   s.module_m = num("module_m", std::nullopt);
   s.pressure_angle_rad = angle("pressure_angle", constants::kDefaultPressureAngle_rad);
   s.face_width_m = num("face_width_m", std::nullopt);
@@ -79,6 +82,8 @@ GearSpec parse_gear(const YamlMap& g, const std::string& name, const YamlMap* de
   s.root_fillet_coeff = num("root_fillet_coeff", constants::kRootFilletCoeff);
   s.thinning_per_flank_m = num("thinning_per_flank_m", 0.0);
   s.chordal_deviation_m = num("chordal_deviation_m", constants::kDefaultChordalDeviation_m);
+  if (!within(s.chordal_deviation_m, limits::kChordalDeviation_m))
+    g.fail("chordal_deviation_m", limit_message(limits::kChordalDeviation_m, s.chordal_deviation_m));
   s.bore_diameter_m = g.number_or("bore_diameter_m", 0.0);
   s.rim_diameter_m = g.number_or("rim_diameter_m", 0.0);
   s.tooth0_angle_rad = angle_rad_or(g, "tooth0_angle", 0.0);
@@ -103,12 +108,16 @@ GearSetFile load_gearset(const std::filesystem::path& path) {
   GearSetFile f;
   f.path = path;
   f.name = top.string("name");
+  require_label(top, "name", f.name);
   f.density_kg_m3 = top.number("density_kg_m3");
   if (!(f.density_kg_m3 > 0)) top.fail("density_kg_m3", "expected a positive density in kg/m³");
   std::optional<YamlMap> defaults;
   if (top.has("defaults")) defaults = top.map("defaults");
-  for (const auto& [name, g] : top.map("gears").entries())
+  const YamlMap gears = top.map("gears");
+  for (const auto& [name, g] : gears.entries()) {
+    require_safe_name(gears, name, name, NameUse::File);  // `gears --out DIR` writes DIR/<name>.stl
     f.gears.push_back(parse_gear(g, name, defaults ? &*defaults : nullptr));
+  }
   if (f.gears.empty()) top.fail("gears", "expected at least one gear");
   if (defaults) defaults->reject_unknown_keys();
   auto named = [&](const YamlMap& m, const std::string& key) -> const GearSpec& {
@@ -121,8 +130,7 @@ GearSetFile load_gearset(const std::filesystem::path& path) {
     const YamlMap t = top.map("train");
     const std::string type = t.choice("type", {"planetary", "pair"});
     if (type == "planetary") {
-      PlanetarySpec p{named(t, "sun"), named(t, "planet"), named(t, "ring"), t.integer("planets")};
-      if (p.planets < 1) t.fail("planets", "expected at least 1");
+      PlanetarySpec p{named(t, "sun"), named(t, "planet"), named(t, "ring"), integer_within(t, "planets", limits::kPlanets)};
       f.planetary = p;
     } else {
       f.pair = std::make_pair(named(t, "driver").name, named(t, "driven").name);

@@ -8,6 +8,8 @@
 
 namespace gearsim::app {
 
+// Text as HTML: & < > " ' replaced by their entities (safe in element content and in quoted
+// attribute values). Every name or value from an input file passes through it.
 std::string html_escape(const std::string& s);
 // A table: header cells, then rows of already-escaped (or plain) cell text.
 std::string html_table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);

@@ -1,5 +1,5 @@
 // gearsim: one binary, many subcommands. Exit codes (app/exit_codes.hpp): 0 done; 2 bad input,
-// with a message that names the file, key or value at fault; 3 an internal error (a bug); 4 a run
+// with a message that names the file, key, option or value at fault; 3 an internal error (a bug); 4 a run
 // that diverged (left its physical bounds), its logs kept up to that step.
 #include <exception>
 #include <iostream>
@@ -12,8 +12,9 @@ int main(int argc, char** argv) {
   CLI::App app{
       "gearsim: planetary gearbox dynamics with manufacturing errors.\n"
       "SI units at every interface unless an option says otherwise.\n"
-      "Exit codes: 0 done, 2 bad input, 3 internal error (a bug), 4 a run diverged (non-physical;\n"
-      "summary.json says where; logs kept up to that step)."};
+      "Exit codes: 0 done, 2 bad input (file or command line), 3 internal error (a bug), 4 a run diverged (non-physical;\n"
+      "summary.json says where; logs kept up to that step), 130/143 a run stopped by SIGINT/SIGTERM\n"
+      "(summary.json status interrupted; logs kept up to that step)."};
   app.require_subcommand(1);
   gearsim::app::register_tolerance(app);
   gearsim::app::register_gears(app);
@@ -26,7 +27,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 prints the help or the error; a bad command line is bad input (not CLI11's 105–109).
+    return app.exit(e) == 0 ? gearsim::app::kExitOk : gearsim::app::kExitInputError;
   } catch (const gearsim::app::RunStopped& e) {
     std::cerr << "gearsim: " << e.what() << "\n";
     return e.code();

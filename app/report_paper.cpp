@@ -36,7 +36,7 @@ std::string report_paper_section(const RunDir& run) {
   for (const auto& b : p["mesh_harmonics"][0]["sidebands"])
     if (std::abs(b["offset_hz"].get<double>()) < best) {
       best = std::abs(b["offset_hz"].get<double>());
-      nearest = num(b["offset_hz"].get<double>(), 3) + " Hz" + (b.contains("match") ? " = " + b["match"].get<std::string>() : " (unmatched)");
+      nearest = num(b["offset_hz"].get<double>(), 3) + " Hz" + (b.contains("match") ? " = " + html_escape(b["match"].get<std::string>()) : " (unmatched)");
     }
   std::string family = "no line";
   if (p.contains("planet_fault_family") && p["planet_fault_family"][0].contains("amplitude_N"))

@@ -40,7 +40,7 @@ std::string force_plots(const RunDir& run, const json& a, const std::string& pai
     if (t[i] >= from && t[i] < from + 0.025) tz.push_back(t[i]), fz.push_back(f[i]);
   std::string h = "<h3>Contact force, " + html_escape(pair) + " (paper Fig. 4)</h3>\n";
   h += gnuplot_svg(data_block("d", {t, f}) + "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
-                   "plot $d using 1:2 with lines lw 1 title '" + pair + "'\n");
+                   "plot $d using 1:2 with lines lw 1 title " + gnuplot_string(pair) + "\n");
   h += gnuplot_svg(data_block("d", {tz, fz}) + "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
                    "plot $d using 1:2 with linespoints pt 7 ps 0.3 title '25 ms at speed (output samples)'\n", 900, 300);
   return h;
@@ -50,11 +50,11 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
   const CsvTable s = read_csv(run.dir / "spectrum.csv");
   const double fm = a["gear_train"]["mesh_hz"].get<double>();
   std::string script = data_block("s", {s.column("frequency_hz"), s.column(pair + "_amplitude_N")});
-  std::string plot = "plot $s using 1:2 with lines lw 1 title '" + run.scenario.name + "'";
+  std::string plot = "plot $s using 1:2 with lines lw 1 title " + gnuplot_string(run.scenario.name);
   if (cmp) {
     const CsvTable s2 = read_csv(cmp->dir / "spectrum.csv");
     script += data_block("c", {s2.column("frequency_hz"), s2.column(pair + "_amplitude_N")});
-    plot += ", $c using 1:2 with lines lw 1 title '" + cmp->scenario.name + "'";
+    plot += ", $c using 1:2 with lines lw 1 title " + gnuplot_string(cmp->scenario.name);
   }
   std::string marks;
   for (int k = 1; k <= 3; ++k)
@@ -74,8 +74,10 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
     for (const json& b : sb) {
       if (std::abs(b["offset_hz"].get<double>()) > span || n >= 6) continue;
       ++n;
-      labels += "set label '" + num(b["offset_hz"].get<double>(), 3) + " Hz" +
-                (b.contains("match") ? " " + b["match"].get<std::string>() : std::string(" (unmatched)")) + "' at " +
+      labels += "set label " +
+                gnuplot_string(num(b["offset_hz"].get<double>(), 3) + " Hz" +
+                               (b.contains("match") ? " " + b["match"].get<std::string>() : std::string(" (unmatched)"))) +
+                " at " +
                 num(b["frequency_hz"].get<double>(), 6) + "," + num(b["amplitude_N"].get<double>(), 6) +
                 " rotate by 60 font ',8' offset 0,0.5\n";
     }
@@ -112,7 +114,7 @@ std::string tooth_plot(const json& a, const std::optional<json>& other, const st
     std::vector<double> k2, f2;
     for (const auto& e : (*other)["tooth_loads"][0]["teeth"]) k2.push_back(e["tooth"].get<double>()), f2.push_back(e["mean_force_N"].get<double>());
     script += data_block("o", {k2, f2});
-    plot += ", $o using 1:2 with linespoints pt 7 ps 0.5 lc rgb 'black' title '" + other_name + "'";
+    plot += ", $o using 1:2 with linespoints pt 7 ps 0.5 lc rgb 'black' title " + gnuplot_string(other_name);
   }
   return "<h3>Per-tooth load, " + html_escape(t["gear"].get<std::string>()) + " in " + html_escape(t["pair"].get<std::string>()) +
          " (over " + num(t["revolutions"].get<double>()) + " whole revolutions; flagged: |z| &gt; " + num(t["z_threshold"].get<double>()) +

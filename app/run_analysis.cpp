@@ -19,12 +19,13 @@
 #include "app/tooth_loads.hpp"
 #include "geometry/errors.hpp"
 #include "physics/step_log_reader.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::app {
 namespace {
 
 using json = nlohmann::ordered_json;
-constexpr double kTwoPi = 2 * std::numbers::pi;
+using gearsim::constants::kTwoPi;
 
 // Zero padding of the force spectra: 8× the record, rounded up to a power of two, puts the
 // highest bin of a line within 1/16 of the record's resolution of the true frequency (0.06 Hz
@@ -35,6 +36,9 @@ constexpr std::size_t kPadding = 8;
 constexpr double kBandTop_hz = 1000;
 // Multiples of the planet local-fault frequency reported (the 8.89 Hz family: f_m/36 · k).
 constexpr int kFaultMultiples = 5;
+// Fewest output rows after the ramps, in state.csv and in contacts.csv, that are analysed: a
+// spectrum of 32 bins; at the paper's 2 kHz, 32 ms or about 10 mesh periods.
+constexpr std::size_t kMinSamples = 64;
 
 std::vector<double> window(const std::vector<double>& x, const std::vector<double>& t, double from_s) {
   std::vector<double> out;
@@ -109,6 +113,105 @@ std::pair<double, int> whole_revolutions(const std::vector<double>& t, const std
   return {t[i1 - 1] + (t[i1] - t[i1 - 1]) * (target - d0) / (d1 - d0), turns};
 }
 
+// The contact-force spectrum of every gear pair (contacts.csv columns <pair>_force_N) over the
+// window; InputError naming the file when there is none.
+json pairs_json(const CsvTable& contacts, double from_s, double rate_hz, const GearTrain& train,
+                std::vector<std::pair<std::string, Spectrum>>& spectra) {
+  const std::vector<double>& tc = contacts.column("time_s");
+  const std::string suffix = "_force_N";
+  json pairs = json::object();
+  for (const std::string& col : contacts.columns) {
+    if (col.size() <= suffix.size() || col.compare(col.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
+    const std::string pair = col.substr(0, col.size() - suffix.size());
+    const std::vector<double> f = window(contacts.column(col), tc, from_s);
+    double mean = 0, zeros = 0;
+    for (double v : f) mean += v, zeros += v == 0;
+    mean /= static_cast<double>(f.size());
+    const Spectrum sp = amplitude_spectrum(f, rate_hz, {WindowKind::Hann, padded_length(f.size()), true});
+    json pj = spectrum_json(sp, train);
+    spectra.emplace_back(pair, sp);
+    pj["mean_force_N"] = mean;
+    pj["zero_force_share"] = zeros / static_cast<double>(f.size());
+    pairs[pair] = pj;
+  }
+  if (pairs.empty())
+    throw InputError(contacts.path.string() + ": no <pair>_force_N column: expected one contact-force column per gear " +
+                     "pair, as gearsim run writes them (a run with no gear pairs has nothing to analyse)");
+  return pairs;
+}
+
+// Mean, extremes, peak-to-peak and RMS of the transmission error over the window (not empty).
+json te_json(const std::vector<double>& te) {
+  double lo = te.front(), hi = te.front(), mean = 0;
+  for (double v : te) lo = std::min(lo, v), hi = std::max(hi, v), mean += v;
+  mean /= static_cast<double>(te.size());
+  double ss = 0;
+  for (double v : te) ss += (v - mean) * (v - mean);
+  return {{"mean_rad", mean}, {"min_rad", lo}, {"max_rad", hi}, {"peak_to_peak_rad", hi - lo},
+          {"rms_rad", std::sqrt(ss / static_cast<double>(te.size()))}};
+}
+
+// The angle-synchronous average per planet from the output-rate logs (the standard view).
+json synchronous_json(const RunDir& run, const GearTrain& train, const CsvTable& state, const CsvTable& contacts,
+                      double from_s) {
+  json tsa = json::array();
+  const std::vector<double>& ts = state.column("time_s");
+  const std::vector<double>& tc = contacts.column("time_s");
+  for (const std::string& planet : train.planets) {
+    const std::string col = train.sun + "__" + planet + "_force_N";
+    if (!contacts.has(col) || !state.has(planet + "_angle_rad")) continue;
+    const std::vector<double> force = window(contacts.column(col), tc, from_s);
+    const std::vector<double> angle = window(state.column(planet + "_angle_rad"), ts, from_s);
+    if (force.size() != angle.size()) throw InputError(run.dir.string() + ": state.csv and contacts.csv differ in rows");
+    // Where the sun lies seen from the planet at t = 0 (carrier frame = world frame then).
+    double sun_direction = 0;
+    for (const physics::BodyDef& b : run.scenario.bodies)
+      if (b.name == planet) {
+        const Eigen::Vector3d& p = b.pose.position_m;
+        sun_direction = std::atan2(-p.y(), -p.x()) - (b.gear ? b.gear->tooth0_angle_rad : 0.0);
+      }
+    tsa.push_back(synchronous_teeth(train.sun + "__" + planet, planet, force, angle, train.planet_teeth, sun_direction));
+  }
+  return tsa;
+}
+
+// Per-tooth loads from the per-step log: each planet (or the driven gear of a pair) over whole
+// revolutions relative to the body carrying its axis.
+json tooth_loads_json(const RunDir& run, const GearTrain& train, const CsvTable& state, double from_s) {
+  const physics::StepLogContacts log = physics::read_step_log_contacts(run.dir / "steps.h5");
+  json loads = json::array();
+  const std::vector<double>& ts = state.column("time_s");
+  for (std::size_t p = 0; p < log.pairs.size(); ++p) {
+    const std::string& name = log.pairs[p];
+    const std::size_t cut = name.find("__");
+    if (cut == std::string::npos) throw InputError((run.dir / "steps.h5").string() + ": pair '" + name + "' is not named a__b");
+    const std::string a = name.substr(0, cut), b = name.substr(cut + 2);
+    for (int side = 0; side < 2; ++side) {
+      const std::string& gear = side == 0 ? a : b;
+      const bool is_planet = std::find(train.planets.begin(), train.planets.end(), gear) != train.planets.end();
+      if (train.planetary ? !is_planet : gear != train.driven) continue;
+      const auto [to_s, turns] = whole_revolutions(ts, state.column(gear + "_angle_rad"), from_s);
+      if (turns < 1) continue;
+      int teeth = 0;
+      for (const physics::BodyDef& bd : run.scenario.bodies)
+        if (bd.name == gear) teeth = teeth_of(bd);
+      loads.push_back(to_json(tooth_loads(log, static_cast<int>(p), side == 0, teeth, from_s, to_s, turns)));
+    }
+  }
+  return loads;
+}
+
+// Refuses a log with fewer than kMinSamples rows from `from_s` on, naming file and window.
+std::vector<double> windowed_times(const CsvTable& table, double from_s) {
+  const std::vector<double>& t = table.column("time_s");
+  std::vector<double> w = window(t, t, from_s);
+  if (w.size() < kMinSamples)
+    throw InputError(table.path.string() + ": only " + std::to_string(w.size()) + " rows after t = " +
+                     std::to_string(from_s) + " s (the end of the motors' and loads' ramps, or --from): at least " +
+                     std::to_string(kMinSamples) + " are needed to analyse; run longer");
+  return w;
+}
+
 }  // namespace
 
 json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
@@ -118,11 +221,8 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
   if (from_s < 0) from_s = physics::ramps_end_s(s);
   from_s = std::max(from_s, 0.0);
   const CsvTable state = read_csv(run.dir / "state.csv"), contacts = read_csv(run.dir / "contacts.csv");
-  const std::vector<double>& tc = contacts.column("time_s");
-  const std::vector<double> tw = window(tc, tc, from_s);
-  if (tw.size() < 64)
-    throw InputError(run.dir.string() + ": only " + std::to_string(tw.size()) + " output samples after t = " +
-                     std::to_string(from_s) + " s: too short to analyse");
+  const std::vector<double> tw = windowed_times(contacts, from_s);
+  windowed_times(state, from_s);
   const double rate = uniform_sample_rate_hz(tw);
 
   json j;
@@ -134,84 +234,11 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
     freqs.push_back({{"key", f.key}, {"name", f.name}, {"value_hz", f.value_hz}, {"formula", f.formula}});
   j["gear_train"] = {{"kind", train.planetary ? "planetary" : "external pair"}, {"mesh_hz", train.frequencies.mesh_hz},
                      {"characteristic_frequencies", freqs}};
-
-  json pairs = json::object();
   std::vector<std::pair<std::string, Spectrum>> spectra;
-  for (const std::string& col : contacts.columns) {
-    const std::string suffix = "_force_N";
-    if (col.size() <= suffix.size() || col.compare(col.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
-    const std::string pair = col.substr(0, col.size() - suffix.size());
-    const std::vector<double> f = window(contacts.column(col), tc, from_s);
-    double mean = 0, zeros = 0;
-    for (double v : f) mean += v, zeros += v == 0;
-    mean /= static_cast<double>(f.size());
-    const Spectrum sp = amplitude_spectrum(f, rate, {WindowKind::Hann, padded_length(f.size()), true});
-    json pj = spectrum_json(sp, train);
-    spectra.emplace_back(pair, sp);
-    pj["mean_force_N"] = mean;
-    pj["zero_force_share"] = zeros / static_cast<double>(f.size());
-    pairs[pair] = pj;
-  }
-  j["pairs"] = pairs;
-
-  if (state.has("te_rad")) {
-    const std::vector<double>& ts = state.column("time_s");
-    const std::vector<double> te = window(state.column("te_rad"), ts, from_s);
-    double lo = te.front(), hi = te.front(), mean = 0;
-    for (double v : te) lo = std::min(lo, v), hi = std::max(hi, v), mean += v;
-    mean /= static_cast<double>(te.size());
-    double ss = 0;
-    for (double v : te) ss += (v - mean) * (v - mean);
-    j["transmission_error"] = {{"mean_rad", mean}, {"min_rad", lo}, {"max_rad", hi}, {"peak_to_peak_rad", hi - lo},
-                               {"rms_rad", std::sqrt(ss / static_cast<double>(te.size()))}};
-  }
-
-  // The angle-synchronous average per planet from the output-rate logs (the standard view).
-  if (train.planetary) {
-    json tsa = json::array();
-    const std::vector<double>& ts = state.column("time_s");
-    for (const std::string& planet : train.planets) {
-      const std::string col = train.sun + "__" + planet + "_force_N";
-      if (!contacts.has(col) || !state.has(planet + "_angle_rad")) continue;
-      const std::vector<double> force = window(contacts.column(col), tc, from_s);
-      const std::vector<double> angle = window(state.column(planet + "_angle_rad"), ts, from_s);
-      if (force.size() != angle.size()) throw InputError(run.dir.string() + ": state.csv and contacts.csv differ in rows");
-      // Where the sun lies seen from the planet at t = 0 (carrier frame = world frame then).
-      double sun_direction = 0;
-      for (const physics::BodyDef& b : s.bodies)
-        if (b.name == planet) {
-          const Eigen::Vector3d& p = b.pose.position_m;
-          sun_direction = std::atan2(-p.y(), -p.x()) - (b.gear ? b.gear->tooth0_angle_rad : 0.0);
-        }
-      tsa.push_back(synchronous_teeth(train.sun + "__" + planet, planet, force, angle, train.planet_teeth, sun_direction));
-    }
-    j["synchronous_average"] = tsa;
-  }
-
-  // Per-tooth loads, when the per-step log is there: each planet (or each gear of a pair) over
-  // whole revolutions relative to the body carrying its axis.
-  const std::filesystem::path h5 = run.dir / "steps.h5";
-  if (std::filesystem::exists(h5)) {
-    const physics::StepLogContacts log = physics::read_step_log_contacts(h5);
-    json loads = json::array();
-    const std::vector<double>& ts = state.column("time_s");
-    for (std::size_t p = 0; p < log.pairs.size(); ++p) {
-      const std::string& name = log.pairs[p];
-      const std::string a = name.substr(0, name.find("__")), b = name.substr(name.find("__") + 2);
-      for (int side = 0; side < 2; ++side) {
-        const std::string& gear = side == 0 ? a : b;
-        const bool is_planet = std::find(train.planets.begin(), train.planets.end(), gear) != train.planets.end();
-        if (train.planetary ? !is_planet : gear != train.driven) continue;
-        const auto [to_s, turns] = whole_revolutions(ts, state.column(gear + "_angle_rad"), from_s);
-        if (turns < 1) continue;
-        int teeth = 0;
-        for (const physics::BodyDef& bd : s.bodies)
-          if (bd.name == gear) teeth = teeth_of(bd);
-        loads.push_back(to_json(tooth_loads(log, static_cast<int>(p), side == 0, teeth, from_s, to_s, turns)));
-      }
-    }
-    j["tooth_loads"] = loads;
-  }
+  j["pairs"] = pairs_json(contacts, from_s, rate, train, spectra);
+  if (state.has("te_rad")) j["transmission_error"] = te_json(window(state.column("te_rad"), state.column("time_s"), from_s));
+  if (train.planetary) j["synchronous_average"] = synchronous_json(run, train, state, contacts, from_s);
+  if (std::filesystem::exists(run.dir / "steps.h5")) j["tooth_loads"] = tooth_loads_json(run, train, state, from_s);
   std::ofstream(run.dir / "analysis.json") << j.dump(2) << "\n";
   write_spectrum_csv(run.dir / "spectrum.csv", spectra, kBandTop_hz);
   write_sidebands_csv(run.dir / "sidebands.csv", j);

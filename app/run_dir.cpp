@@ -1,6 +1,7 @@
 #include "app/run_dir.hpp"
 
 #include <fstream>
+#include <iomanip>
 
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
@@ -43,6 +44,13 @@ void save_summary(const RunDir& run) {
   std::ofstream out(p);
   if (!out) throw InputError(p.string() + ": cannot write");
   out << run.summary.dump(2) << "\n";
+}
+
+std::ofstream open_output(const std::filesystem::path& p, int precision) {
+  std::ofstream f(p);
+  if (!f) throw InputError(p.string() + ": cannot write");
+  f << std::setprecision(precision);
+  return f;
 }
 
 }  // namespace gearsim::app

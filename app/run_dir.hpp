@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,9 @@ RunDir open_run_dir(const std::filesystem::path& dir);
 
 // Writes DIR/summary.json back (2-space JSON), e.g. after analyze added its keys.
 void save_summary(const RunDir& run);
+
+// An output file of a run folder, opened for writing with `precision` significant digits;
+// InputError naming the path when it cannot be written.
+std::ofstream open_output(const std::filesystem::path& p, int precision);
 
 }  // namespace gearsim::app

@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "app/gearset_file.hpp"
+#include "app/input_limits.hpp"
+#include "app/safe_name.hpp"
 #include "app/scenario_parts.hpp"
 #include "geometry/errors.hpp"
 
@@ -41,6 +43,7 @@ physics::Pose parse_pose(const YamlMap& m) {
 physics::BodyDef parse_body(const YamlMap& m, const fs::path& dir) {
   physics::BodyDef b;
   b.name = m.string("name");
+  require_safe_name(m, "name", b.name, NameUse::Body);
   b.fixed = m.boolean_or("fixed", false);
   parse_shape_and_mass(m, b, dir);
   b.pose = parse_pose(m);
@@ -113,9 +116,8 @@ std::string joint_ref(const YamlMap& m, const std::string& key, const Names& nam
 void parse_settings(const YamlMap& top, physics::Scenario& s) {
   if (given(top, "solver")) {
     const YamlMap m = top.map("solver");
-    s.solver.time_step_s = positive_or(m, "time_step_s", s.solver.time_step_s, "time step in s");
-    s.solver.iterations = m.integer_or("iterations", s.solver.iterations);
-    if (s.solver.iterations < 1) m.fail("iterations", "expected at least 1 solver iteration");
+    s.solver.time_step_s = number_within_or(m, "time_step_s", s.solver.time_step_s, limits::kTimeStep_s);
+    s.solver.iterations = integer_within_or(m, "iterations", s.solver.iterations, limits::kSolverIterations);
     m.reject_unknown_keys();
   }
   if (given(top, "output")) {
@@ -127,6 +129,9 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
           << 1 / s.solver.time_step_s << " Hz";
       m.fail("sample_rate_hz", msg.str());
     }
+    if (s.output.sample_rate_hz * s.duration_s < 1)
+      m.fail("sample_rate_hz", "expected at least one output row in duration_s: a rate ≥ 1/duration_s = " +
+                                   std::to_string(1 / s.duration_s) + " Hz");
     s.output.per_step_log = m.boolean_or("per_step_log", s.output.per_step_log);
     m.reject_unknown_keys();
   }
@@ -136,10 +141,11 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     r.camera = m.choice_or("camera", {"overview", "tilted", "sun_mesh", "ring_mesh"}, r.camera);
     r.fps = m.integer_or("fps", r.fps);
     if (r.fps < 1 || r.fps > 240) m.fail("fps", "expected 1 to 240 frames per second");
-    r.slowmo = positive_or(m, "slowmo", r.slowmo, "slow-motion factor");
+    r.slowmo = number_within_or(m, "slowmo", r.slowmo, limits::kSlowMotion);
     r.from_s = m.optional_number("from_s");
     r.to_s = m.optional_number("to_s");
-    if (r.from_s && *r.from_s < 0) m.fail("from_s", "expected a time ≥ 0 s");
+    if (r.from_s && !within(*r.from_s, limits::kRunTime_s)) m.fail("from_s", limit_message(limits::kRunTime_s, *r.from_s));
+    if (r.to_s && !within(*r.to_s, limits::kRunTime_s)) m.fail("to_s", limit_message(limits::kRunTime_s, *r.to_s));
     if (r.from_s && r.to_s && !(*r.to_s > *r.from_s)) m.fail("to_s", "expected a time after from_s");
     r.width_px = m.integer_or("width_px", r.width_px);
     r.height_px = m.integer_or("height_px", r.height_px);
@@ -160,7 +166,7 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.stiffness_N_per_m_per_m = positive_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, "stiffness in N/m per m");
     c.damping_ratio = non_negative_or(m, "damping_ratio", c.damping_ratio, "a damping ratio");
     c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
-    c.chordal_deviation_m = positive_or(m, "chordal_deviation_m", c.chordal_deviation_m, "length in m");
+    c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
     c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
     // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
     if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
@@ -173,7 +179,8 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
   physics::Scenario s;
   s.source = file;
   s.name = top.string_or("name", file.stem().string());
-  s.duration_s = positive(top, "duration_s", "duration in s");
+  require_label(top, "name", s.name);
+  s.duration_s = number_within(top, "duration_s", limits::kDuration_s);
   const int seed = top.integer_or("seed", 0);
   if (seed < 0) top.fail("seed", "expected a seed ≥ 0");
   s.seed = static_cast<std::uint64_t>(seed);
@@ -191,6 +198,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
     s.bodies.insert(s.bodies.end(), e.bodies.begin(), e.bodies.end());
     if (!e.gearset_spec.empty()) s.gearset_spec = e.gearset_spec;
     if (e.planetary) s.planetary = e.planetary;
+    for (const physics::PairTableDef& t : e.pair_tables) s.pair_tables.push_back(t);
   }
   Names names;
   std::size_t bi = 0;
@@ -217,7 +225,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       d.joint = joint_ref(m, "joint", names);
       if (!driven.insert(d.joint).second) m.fail("joint", "joint '" + d.joint + "' already has a motor");
       d.target_speed_rad_s = m.number("target_speed_rad_s");
-      d.ramp_time_s = non_negative_or(m, "ramp_time_s", 0.0, "a ramp time in s");
+      d.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
       d.max_torque_N_m = positive(m, "max_torque_N_m", "torque limit in N·m");
       m.reject_unknown_keys();
       s.motors.push_back(d);
@@ -229,7 +237,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       l.joint = joint_ref(m, "joint", names);
       l.constant_torque_N_m = m.number_or("constant_torque_N_m", 0.0);
       l.viscous_N_m_s_per_rad = non_negative_or(m, "viscous_N_m_s_per_rad", 0.0, "a viscous coefficient in N·m·s/rad");
-      l.ramp_time_s = non_negative_or(m, "ramp_time_s", 0.0, "a ramp time in s");
+      l.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
       m.reject_unknown_keys();
       s.loads.push_back(l);
     }
@@ -265,18 +273,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
 }  // namespace
 
 physics::Scenario load_scenario(const fs::path& file, const std::vector<std::string>& overrides) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot open the scenario file");
-  std::stringstream text;
-  text << in.rdbuf();
-  YAML::Node root;
-  try {
-    root = YAML::Load(text.str());
-  } catch (const YAML::Exception& e) {
-    throw InputError(file.string() + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
-  }
-  if (!root.IsMap()) throw InputError(file.string() + ": expected a mapping (key: value) at the top level");
+  YAML::Node root = load_yaml_mapping(file);  // size, syntax, text keys, no key twice
   apply_overrides(root, overrides, file.string());
   try {
     return parse(YamlMap::from_node(root, file.string()), file);

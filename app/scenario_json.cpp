@@ -49,6 +49,9 @@ json body_json(const physics::BodyDef& b) {
     if (b.mesh->teeth) {
       j["mesh"]["teeth"] = b.mesh->teeth->teeth;
       j["mesh"]["tooth0_angle_rad"] = b.mesh->teeth->tooth0_angle_rad;
+      j["mesh"]["teeth_from"] = b.mesh->teeth_recognised ? "recognised from the mesh" : "the scenario";
+    } else {
+      j["mesh"]["teeth"] = "none";
     }
   }
   if (b.density_kg_m3) j["density_kg_m3"] = *b.density_kg_m3;

@@ -6,16 +6,21 @@
 #include <sstream>
 
 #include "app/gearset_file.hpp"
+#include "app/input_limits.hpp"
+#include "app/safe_name.hpp"
 #include "app/scenario_parts.hpp"
 #include "geometry/errors.hpp"
 #include "geometry/gear_dimensions.hpp"
+#include "geometry/involute_pair.hpp"
 #include "geometry/planetary.hpp"
+#include "physics/world.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::app::scenario_detail {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 Eigen::Quaterniond about_z(double angle_rad) {
   return Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()));
@@ -70,9 +75,11 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   const GearSetFile f = load_gearset(spec);
   // Gear names and planet count default to the spec's planetary train.
   const auto& t = f.planetary;
+  // The planet count is checked before planet_gears allocates a slot per planet.
+  const int planet_count =
+      t ? integer_within_or(m, "planets", t->planets, limits::kPlanets) : integer_within(m, "planets", limits::kPlanets);
   PlanetarySpec ps{named_gear(m, "sun", f, t ? t->sun.name : ""), named_gear(m, "planet", f, t ? t->planet.name : ""),
-                   named_gear(m, "ring", f, t ? t->ring.name : ""), t ? m.integer_or("planets", t->planets) : m.integer("planets")};
-  if (ps.planets < 1) m.fail("planets", "expected at least 1 planet");
+                   named_gear(m, "ring", f, t ? t->ring.name : ""), planet_count};
   const std::vector<const GearSpec*> planets = planet_gears(m, f, ps.planet, ps.planets);
   const YamlMap c = m.map("carrier");
   const double carrier_mass_kg = positive(c, "mass_kg", "carrier mass in kg");
@@ -115,7 +122,7 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   Expansion e;
   e.gearset_spec = spec;
   e.planetary = physics::PlanetaryTrainDef{ps, {}, ring_fixed};
-  for (const GearSpec* g : planets) e.planetary->planet_gears.push_back(*g);
+  for (const GearSpec* pg : planets) e.planetary->planet_gears.push_back(*pg);
   auto gear_body = [&](const std::string& name, const GearSpec& gear, const Eigen::Vector3d& at, double angle_rad) {
     physics::BodyDef b;
     b.name = name;
@@ -159,12 +166,16 @@ namespace {
 physics::BodyDef pair_member(const YamlMap& m, const std::string& fallback_name, const fs::path& dir) {
   physics::BodyDef b;
   b.name = m.string_or("name", fallback_name);
+  require_safe_name(m, "name", b.name, NameUse::Body);
   parse_shape_and_mass(m, b, dir);
   m.reject_unknown_keys();
   if (!b.gear && !b.mesh) m.fail_here("a pair member needs a shape: gear, gear_from or mesh");
   if (b.gear && b.gear->kind != GearKind::External)
     m.fail_here("the pair macro meshes two external gears; place an internal gear with explicit bodies");
-  if (b.mesh && !b.mesh->teeth) m.fail("mesh", "a mesh in a pair needs `teeth` (and tooth0_deg) for its ratio and phasing");
+  if (b.mesh && !b.mesh->teeth) m.fail("mesh", "a toothless mesh (teeth: none) cannot be a pair member");
+  if (b.mesh && b.mesh->recognised && b.mesh->recognised->internal)
+    m.fail("mesh", "the pair macro meshes two external gears; " + b.mesh->path.string() +
+                       " is internal: place it with explicit bodies");
   return b;
 }
 
@@ -179,6 +190,7 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
   physics::BodyDef b = pair_member(m.map("driven"), "driven", dir);
   if (a.name == b.name) m.fail("driven", "driver and driven have the same name '" + a.name + "'");
   double centre_distance_m = 0;
+  std::optional<physics::PairTableDef> table;
   if (a.gear && b.gear) {
     // Generated gears: the zero-backlash distance unless given; either way the mesh must work.
     try {
@@ -188,9 +200,41 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
       m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
     }
   } else {
-    if (!m.has("centre_distance_m"))
-      m.fail("centre_distance_m", "missing (required when a member is a mesh: there is no gear data to derive it)");
-    centre_distance_m = m.number("centre_distance_m");
+    // A mesh member: its recognised involutes give the same figures.
+    auto teeth = [&](const physics::BodyDef& x, const char* key) {
+      if (x.gear) return involute_teeth(*x.gear);
+      if (!x.mesh->recognised || !x.mesh->recognised->involute) {
+        if (!m.has("centre_distance_m"))
+          m.fail(key, x.mesh->path.string() + ": its flanks are not recognised involutes, so the centre distance "
+                      "cannot be derived: give centre_distance_m");
+        return InvoluteTeeth{};
+      }
+      return involute_teeth(*x.mesh->recognised);
+    };
+    const InvoluteTeeth ta = teeth(a, "driver"), tb = teeth(b, "driven");
+    centre_distance_m = m.number_or("centre_distance_m", 0.0);
+    if (ta.teeth > 0 && tb.teeth > 0) {
+      table = physics::PairTableDef{a.name, b.name, !m.has("centre_distance_m"), {}};
+      try {
+        table->figures = involute_pair(ta, tb, centre_distance_m, "pair '" + a.name + "'–'" + b.name + "'");
+      } catch (const InputError& e) {
+        m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
+      }
+      centre_distance_m = table->figures.centre_distance_m;
+      if (table->figures.normal_backlash_m < -physics::World::kStartOverlapLimit_m) {
+        std::ostringstream msg;
+        msg << "at " << centre_distance_m * 1e3 << " mm the teeth overlap by " << -table->figures.normal_backlash_m * 1e6
+            << " um along the line of action (zero backlash at " << table->figures.zero_backlash_centre_distance_m * 1e3
+            << " mm)";
+        m.fail("centre_distance_m", msg.str());
+      }
+      if (!(table->figures.contact_ratio > 0)) {
+        std::ostringstream msg;
+        msg << "at " << centre_distance_m * 1e3 << " mm the tips do not reach the line of action (contact ratio "
+            << table->figures.contact_ratio << ")";
+        m.fail("centre_distance_m", msg.str());
+      }
+    }
   }
   if (!(centre_distance_m > 0)) m.fail("centre_distance_m", "expected a positive centre distance in m");
   const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
@@ -212,6 +256,7 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
   // te = θ_input − ratio·θ_output the ratio is negative.
   e.transmission = physics::TransmissionDef{a.name, b.name, -zb / za};
   e.bodies = {a, b};
+  if (table) e.pair_tables.push_back(*table);
   return e;
 }
 

@@ -21,6 +21,7 @@ struct Expansion {
   std::optional<physics::TransmissionDef> transmission;
   std::filesystem::path gearset_spec;  // the gear-set spec the macro took its gears from, if any
   std::optional<physics::PlanetaryTrainDef> planetary;  // the planetary macro's train
+  std::vector<physics::PairTableDef> pair_tables;       // the pair macro's gear-table figures
 };
 
 // True when `key` holds a value; marks the key as known either way (so `key:` left empty, or

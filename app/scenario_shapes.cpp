@@ -1,10 +1,14 @@
 // A scenario body's shape and mass: an inline gear, a gear of a gear-set spec file, a mesh file
 // with its tooth layout, or nothing (a carrier-like body with given mass and inertia).
+#include <cmath>
+#include <numbers>
 #include <sstream>
 
 #include "app/gearset_file.hpp"
+#include "app/input_limits.hpp"
 #include "app/scenario_parts.hpp"
 #include "geometry/errors.hpp"
+#include "geometry/mesh_gear.hpp"
 
 namespace gearsim::app::scenario_detail {
 namespace fs = std::filesystem;
@@ -56,6 +60,33 @@ GearSpec gear_from(const YamlMap& m, const fs::path& dir, double& density_kg_m3)
   m.fail("gear", "no gear named '" + name + "' in " + spec.string() + " (it has: " + names + ")");
 }
 
+// A gear mesh recognised: the tooth layout filled in when not given, refused when it disagrees
+// with the mesh, when the mesh is no recognisable gear, or when its size says the unit is wrong.
+void check_gear_mesh(const YamlMap& m, physics::MeshSource& src) {
+  const std::string file = src.path.string();
+  const MeshGearFile f = read_mesh_gear(src.path, src.unit);
+  if (!f.gear) m.fail("file", file + " is not a prism (" + f.not_prism + "): a gear must be a spur-gear extrusion; give `teeth: none` for a toothless body");
+  if (!f.gear->recognition.gear)
+    m.fail(src.teeth ? "teeth" : "file", file + " is not recognised as a spur gear: " + f.gear->recognition.reason +
+                                             (src.teeth ? "" : "; give `teeth: none` for a toothless body"));
+  const RecognisedGear& g = *f.gear->recognition.gear;
+  src.recognised = g;
+  if (const std::string u = implausible_unit(g, src.unit); !u.empty()) m.fail("unit", file + ": " + u);
+  if (!src.teeth) {
+    src.teeth = ToothLayout{g.teeth, g.tooth0_angle_rad};
+    src.teeth_recognised = true;
+  } else if (const std::string mm = layout_mismatch(g, *src.teeth); !mm.empty()) {
+    m.fail(src.teeth->teeth != g.teeth ? "teeth" : (m.has("tooth0_rad") ? "tooth0_rad" : "tooth0_deg"), file + ": " + mm);
+  } else {
+    // A given tooth 0 within the tolerance names the tooth; its angle is the mesh's: a rounded
+    // angle (0.3° on a 12-tooth pinion is 31 µm at its pitch circle) would phase a pair off by
+    // more than the backlash of fine gears.
+    const double pitch = 2 * std::numbers::pi / g.teeth;
+    src.teeth->tooth0_angle_rad =
+        g.tooth0_angle_rad + pitch * std::round((src.teeth->tooth0_angle_rad - g.tooth0_angle_rad) / pitch);
+  }
+}
+
 physics::MeshSource mesh_source(const YamlMap& m, const fs::path& dir) {
   physics::MeshSource src;
   src.path = resolve(dir, m.string("file"));
@@ -64,15 +95,17 @@ physics::MeshSource mesh_source(const YamlMap& m, const fs::path& dir) {
   const std::optional<LengthUnit> u = parse_length_unit(unit);
   if (!u) m.fail("unit", "expected a length unit (m, cm, mm, um, in, ft), got '" + unit + "'");
   src.unit = *u;
-  if (given(m, "teeth")) {
-    const int z = m.integer("teeth");
-    if (z < 3) m.fail("teeth", "expected at least 3 teeth");
+  // Teeth: given (and checked against the mesh), `none` (a toothless body), or recognised.
+  const bool toothless = given(m, "teeth") && m.string("teeth") == "none";
+  if (given(m, "teeth") && !toothless) {
+    const int z = integer_within(m, "teeth", limits::kTeeth);
     src.teeth = ToothLayout{z, angle_rad_or(m, "tooth0", 0.0)};
   } else {
     if (m.has("tooth0_deg") || m.has("tooth0_rad"))
       m.fail(m.has("tooth0_deg") ? "tooth0_deg" : "tooth0_rad", "a tooth angle needs `teeth`");
     angle_rad_or(m, "tooth0", 0.0);  // null spellings: known keys
   }
+  if (!toothless) check_gear_mesh(m, src);
   m.reject_unknown_keys();
   return src;
 }

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
+#include "app/input_limits.hpp"
 #include "geometry/errors.hpp"
 
 namespace gearsim::app {
@@ -12,29 +14,87 @@ YamlMap::YamlMap(YAML::Node node, std::string path, std::shared_ptr<const std::s
     : node_(std::move(node)), path_(std::move(path)), source_(std::move(source)),
       read_(std::make_shared<std::set<std::string>>()) {}
 
-YamlMap YamlMap::load_file(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot open the file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return from_string(text.str(), path.string());
-}
+namespace {
 
-YamlMap YamlMap::from_string(const std::string& text, const std::string& source_name) {
-  auto source = std::make_shared<const std::string>(source_name);
+// Every mapping key below `node` is text and appears once in its mapping; at most
+// kMaxYamlValues values are visited (an alias counts each time it is met).
+class KeyCheck {
+ public:
+  explicit KeyCheck(const std::string& source) : source_(source) {}
+
+  void walk(const YAML::Node& node, const std::string& path) {
+    if (++visited_ > limits::kMaxYamlValues)
+      throw InputError(source_ + ": more than " + std::to_string(limits::kMaxYamlValues) +
+                       " values (aliases repeating a list?): not a scenario or gear-set file");
+    if (node.IsSequence())
+      for (std::size_t i = 0; i < node.size(); ++i) walk(node[i], path + "[" + std::to_string(i) + "]");
+    if (!node.IsMap()) return;
+    std::map<std::string, int> lines;
+    for (const auto& kv : node) {
+      if (!kv.first.IsScalar())
+        throw InputError(at(kv.first) + ": " + (path.empty() ? "" : path + ": ") + "expected a text key, got a " +
+                         (kv.first.IsSequence() ? "list" : kv.first.IsMap() ? "mapping" : "null value"));
+      const std::string key = kv.first.Scalar();
+      const std::string key_path = path.empty() ? key : path + "." + key;
+      const auto [first, fresh] = lines.emplace(key, kv.first.Mark().line + 1);
+      if (!fresh)
+        throw InputError(at(kv.first) + ": " + key_path + ": the key appears twice in one mapping (first at line " +
+                         std::to_string(first->second) + "): give it once");
+      walk(kv.second, key_path);
+    }
+  }
+
+ private:
+  std::string at(const YAML::Node& n) const {
+    const YAML::Mark m = n.Mark();
+    return m.line < 0 ? source_ : source_ + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
+  }
+  const std::string& source_;
+  std::size_t visited_ = 0;
+};
+
+}  // namespace
+
+YAML::Node parse_yaml_mapping(const std::string& text, const std::string& source_name) {
+  if (text.size() > limits::kMaxYamlBytes)
+    throw InputError(source_name + ": " + std::to_string(text.size()) + " bytes: larger than the " +
+                     std::to_string(limits::kMaxYamlBytes) + " bytes a scenario or gear-set file may have");
   YAML::Node root;
   try {
     root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw InputError(source_name + ":" + std::to_string(e.mark.line + 1) + ":" +
-                     std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
+    throw InputError(source_name + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                     ": YAML syntax error: " + e.msg);
   }
   if (!root.IsMap()) throw InputError(source_name + ": expected a mapping (key: value) at the top level");
-  return YamlMap(root, "", source);
+  KeyCheck(source_name).walk(root, "");
+  return root;
+}
+
+YAML::Node load_yaml_mapping(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+  if (!ec && bytes > limits::kMaxYamlBytes)
+    throw InputError(path.string() + ": " + std::to_string(bytes) + " bytes: larger than the " +
+                     std::to_string(limits::kMaxYamlBytes) + " bytes a scenario or gear-set file may have");
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": cannot open the file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_yaml_mapping(text.str(), path.string());
+}
+
+YamlMap YamlMap::load_file(const std::filesystem::path& path) {
+  return YamlMap(load_yaml_mapping(path), "", std::make_shared<const std::string>(path.string()));
+}
+
+YamlMap YamlMap::from_string(const std::string& text, const std::string& source_name) {
+  return YamlMap(parse_yaml_mapping(text, source_name), "", std::make_shared<const std::string>(source_name));
 }
 
 YamlMap YamlMap::from_node(const YAML::Node& root, const std::string& source_name) {
   if (!root.IsMap()) throw InputError(source_name + ": expected a mapping (key: value) at the top level");
+  KeyCheck(source_name).walk(root, "");
   return YamlMap(root, "", std::make_shared<const std::string>(source_name));
 }
 
@@ -181,7 +241,7 @@ std::vector<YamlMap> YamlMap::list_of_maps(const std::string& key) const {
 
 std::vector<std::string> YamlMap::keys() const {
   std::vector<std::string> out;
-  for (const auto& kv : node_) out.push_back(kv.first.as<std::string>());
+  for (const auto& kv : node_) out.push_back(kv.first.Scalar());  // text keys: checked when parsed
   return out;
 }
 
@@ -193,7 +253,7 @@ std::vector<std::pair<std::string, YamlMap>> YamlMap::entries() const {
 
 void YamlMap::reject_unknown_keys() const {
   for (const auto& kv : node_) {
-    const std::string k = kv.first.as<std::string>();
+    const std::string k = kv.first.Scalar();
     if (!read_->count(k))
       throw InputError(where(kv.first) + ": " + key_path(k) + ": unknown key");
   }

@@ -14,6 +14,14 @@
 
 namespace gearsim::app {
 
+// Parses YAML text whose top level is a mapping, named `source_name` in errors. InputError with
+// file:line:column when the text is larger than limits::kMaxYamlBytes, is not valid YAML, or
+// holds more than limits::kMaxYamlValues values (aliases included), a mapping key that is not
+// text (`[a]: 1`), or a key twice in one mapping (yaml-cpp would keep the first silently).
+YAML::Node parse_yaml_mapping(const std::string& text, const std::string& source_name);
+// The same for a file: InputError naming it when it cannot be read or is too large.
+YAML::Node load_yaml_mapping(const std::filesystem::path& path);
+
 class YamlMap {
  public:
   // Loads a file whose top level is a mapping. Throws InputError naming the file on I/O or

@@ -1,9 +1,18 @@
 // Every tolerance and default of the geometry library, written once with its unit and why.
 #pragma once
 
+#include <limits>
 #include <numbers>
 
 namespace gearsim::constants {
+
+// π and the degree conversions, once (sources say `using gearsim::constants::kPi;` rather than
+// defining their own, so that a unity build may compile several of them as one unit).
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
+inline constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+inline constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Largest distance between a tessellated curve and its chord, m. Normally 0.5 µm: the errors we
 // model are tens of µm (the paper's single flank error is 43 µm), so 0.5 µm keeps them two

@@ -6,11 +6,12 @@
 
 #include "geometry/errors.hpp"
 #include "geometry/involute.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 std::string gear_name(const GearSpec& s) { return s.name.empty() ? "gear" : "gear '" + s.name + "'"; }
 

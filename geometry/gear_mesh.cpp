@@ -10,12 +10,13 @@
 #include "geometry/gear_profile.hpp"
 #include "geometry/involute.hpp"
 #include "geometry/tessellate.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
 namespace {
 
 using Eigen::Vector2d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // Error-free copy of a spec: the interference check is about the design, not the errors.
 GearSpec nominal(GearSpec s) {

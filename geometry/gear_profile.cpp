@@ -8,12 +8,13 @@
 #include "geometry/errors.hpp"
 #include "geometry/involute.hpp"
 #include "geometry/tessellate.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
 namespace {
 
 using Eigen::Vector2d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 Vector2d rotate(const Vector2d& p, double a) {
   const double c = std::cos(a), s = std::sin(a);

@@ -6,11 +6,12 @@
 
 #include "geometry/errors.hpp"
 #include "geometry/gear_dimensions.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // Fractional part in [0, 1).
 double frac(double v) { return v - std::floor(v); }

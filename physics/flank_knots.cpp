@@ -7,12 +7,13 @@
 #include <string>
 
 #include "geometry/errors.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::physics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using gearsim::constants::kPi;
+using gearsim::constants::kNaN;
 
 // A step along a flank rises in radius by more than this share of its length: sin 1°. A tip land
 // or root arc is flat (its noise, even 1 µm over 0.1 mm, stays below 0.01); an involute's chords

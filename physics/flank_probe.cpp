@@ -6,11 +6,12 @@
 #include <limits>
 
 #include "physics/flank_table.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::physics {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using gearsim::constants::kNaN;
 
 // atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49 on [0, 1], reduced by octant): enough to
 // pick the tooth a point faces; the angle within the tooth is then exact.

@@ -7,12 +7,13 @@
 
 #include "geometry/errors.hpp"
 #include "physics/flank_knots.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::physics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using gearsim::constants::kPi;
+using gearsim::constants::kNaN;
 
 // Radial margin kept inside the loop's extent, as a share of it: the root and tip arcs are
 // chords whose sagitta dips below the nominal circle; 1e-4 of a 2 mm tooth is 0.2 µm.

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "geometry/convex_decomposition.hpp"
+#include "geometry/gear_recognition.hpp"
 #include "geometry/gear_spec.hpp"
+#include "geometry/involute_pair.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/planetary.hpp"
 #include "physics/stiffness_table.hpp"
@@ -29,7 +31,11 @@ struct Pose {
 struct MeshSource {
   std::filesystem::path path;
   LengthUnit unit = LengthUnit::Millimetre;
+  // The tooth layout the contact uses (none: a toothless body). Given in the scenario and
+  // checked against the mesh, or recognised from it (teeth_recognised).
   std::optional<ToothLayout> teeth;
+  bool teeth_recognised = false;
+  std::optional<RecognisedGear> recognised;  // the mesh as a gear (set when the scenario was read)
 };
 
 struct BodyDef {
@@ -173,6 +179,14 @@ struct FeTeDef {
   int jobs = 0;                   // ccx processes at once
 };
 
+// A pair macro's gear-table figures at the centre distance it used (involute_pair.hpp): what the
+// run summary reports of the mesh before any dynamics.
+struct PairTableDef {
+  std::string driver, driven;
+  bool centre_distance_derived = false;  // the zero-backlash distance, not a given one
+  InvolutePair figures;
+};
+
 struct Scenario {
   std::string name;
   std::filesystem::path source;  // the file it came from
@@ -192,6 +206,7 @@ struct Scenario {
   std::optional<RenderDef> render;
   std::optional<PlanetaryTrainDef> planetary;  // set by the planetary macro
   std::optional<FeTeDef> fe;                    // the `fe:` section, when given
+  std::vector<PairTableDef> pair_tables;        // set by the pair macro
 };
 
 // When every motor and load has reached its target (the end of the longest ramp), s: steady

@@ -11,11 +11,12 @@
 
 #include "geometry/errors.hpp"
 #include "physics/world_bodies.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::physics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // Collision groups: gears reach each other only through tooth contact, never through Bullet's
 // own narrowphase (whose point counts and GJK chatter are what tooth contact replaces).

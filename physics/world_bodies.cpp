@@ -8,6 +8,7 @@
 #include "geometry/errors.hpp"
 #include "geometry/gear_body.hpp"
 #include "geometry/mass_properties.hpp"
+#include "geometry/mesh_gear.hpp"
 #include "geometry/mesh_validate.hpp"
 #include "geometry/prism.hpp"
 
@@ -22,9 +23,6 @@ constexpr double kPieceMargin_m = 10e-6;
 // Flank-table radial samples: 4096 over a tooth height of 2.25 modules is ~0.5 µm per sample at
 // m = 1 mm; the cubic through the outline's vertices carries the accuracy, this the resolution.
 constexpr int kFlankSamples = 4096;
-
-// Prism recovery tolerance for CAD meshes, m: STL stores float32 (~3 nm at 50 mm).
-constexpr double kPrismTolerance_m = 0.1e-6;
 
 btTransform to_bt(const Pose& p) {
   btTransform t;
@@ -41,18 +39,15 @@ btTransform com_frame(const MassProperties& m) {
   return btTransform(basis, btVector3(m.centre_of_mass_m.x(), m.centre_of_mass_m.y(), m.centre_of_mass_m.z()));
 }
 
-// The loop that carries the teeth: the one whose radius varies most about the axis.
-const Polygon2& toothed_loop(const Outline2& o, bool* internal) {
-  auto extent = [](const Polygon2& p) {
-    double lo = 1e300, hi = 0;
-    for (const Eigen::Vector2d& v : p.points) lo = std::min(lo, v.norm()), hi = std::max(hi, v.norm());
-    return hi - lo;
-  };
-  const Polygon2* best = &o.outer;
-  *internal = false;
-  for (const Polygon2& h : o.holes)
-    if (extent(h) > extent(*best)) best = &h, *internal = true;
-  return *best;
+// The layout the tooth contact uses: the scenario's (filled from the mesh when it gave none),
+// refused when the mesh is not a recognised gear, shows other teeth, or has an implausible size.
+ToothLayout checked_layout(const MeshGear& mg, const MeshSource& src, const std::string& who) {
+  if (!mg.recognition.gear)
+    throw InputError(who + ": not recognised as a spur gear: " + mg.recognition.reason);
+  const RecognisedGear& g = *mg.recognition.gear;
+  if (const std::string u = implausible_unit(g, src.unit); !u.empty()) throw InputError(who + ": " + u);
+  if (const std::string m = layout_mismatch(g, *src.teeth); !m.empty()) throw InputError(who + ": " + m);
+  return *src.teeth;
 }
 
 void add_pieces(BuiltBody& b, const ConvexPieces3& pieces, const btTransform& com_from_shape) {
@@ -108,59 +103,36 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
     b.face_width_m = spec.face_width_m;
     b.contact_radius_m = g.outline.dims.base_radius_m;
   } else if (def.mesh) {
-    const TriMesh mesh = import_mesh(def.mesh->path, def.mesh->unit);
-    require_valid_solid(validate_mesh(mesh), def.mesh->path.string());
-    const PrismRecovery pr = recover_prism(mesh, kPrismTolerance_m);
+    const MeshGearFile f = read_mesh_gear(def.mesh->path, def.mesh->unit);
+    const TriMesh& mesh = f.mesh;
     double density = def.density_kg_m3.value_or(0);
     const MassProperties unit = mass_properties(mesh, 1.0);
     if (def.mass_kg) density = *def.mass_kg / unit.volume_m3;
     if (!(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
     if (def.mesh->teeth) {
-      if (!pr.prism) throw InputError(who + ": " + def.mesh->path.string() + " has teeth but is not a prism (" + pr.reason +
-                                      "); tooth contact needs a spur-gear extrusion");
-      // Gear frame: origin on the axis at mid face width, z along the extrusion, oriented to
-      // the mesh's own positive direction (+z for a gear modelled about z) so that the tooth
-      // layout, given in mesh coordinates, reads the same; x along the prism's x.
-      const Prism& prism = *pr.prism;
-      Eigen::Vector3d gx = prism.frame.x, gy = prism.frame.y, gz = gx.cross(gy);
-      Outline2 outline = prism.outline;
-      int dominant = 0;
-      gz.cwiseAbs().maxCoeff(&dominant);
-      if (gz[dominant] < 0) {
-        // Mirror: flip y and z; the outline's v coordinates flip and its loops reverse.
-        gy = -gy;
-        gz = -gz;
-        auto mirror = [](Polygon2& poly) {
-          for (Eigen::Vector2d& v : poly.points) v.y() = -v.y();
-          std::reverse(poly.points.begin(), poly.points.end());
-        };
-        mirror(outline.outer);
-        for (Polygon2& h : outline.holes) mirror(h);
-      }
-      const Eigen::Vector3d mid = prism.frame.origin_m + 0.5 * prism.height_m * prism.frame.z;
-      Eigen::Matrix3d rot;
-      rot.col(0) = gx;
-      rot.col(1) = gy;
-      rot.col(2) = gz;
+      const std::string file = def.mesh->path.string();
+      if (!f.gear) throw InputError(who + ": " + file + " has teeth but is not a prism (" + f.not_prism +
+                                    "); tooth contact needs a spur-gear extrusion");
+      const MeshGear& mg = *f.gear;
+      const ToothLayout layout = checked_layout(mg, *def.mesh, who + " (" + file + ")");
+      const RecognisedGear& rg = *mg.recognition.gear;
       DecompositionOptions opt;
-      opt.tooth_layout = *def.mesh->teeth;
-      const double half = 0.5 * prism.height_m;
-      pieces = extrude_pieces(decompose(outline, opt), PrismFrame{}, -half, half);  // gear frame
-      bool internal = false;
-      const Polygon2& loop = toothed_loop(outline, &internal);
-      b.flanks = std::make_shared<const FlankTable>(loop, *def.mesh->teeth, internal, kFlankSamples);
-      require_faithful(*b.flanks, who + " (" + def.mesh->path.string() + ")", contact);
-      b.face_width_m = prism.height_m;
+      opt.tooth_layout = layout;
+      const double half = 0.5 * mg.face_width_m;
+      pieces = extrude_pieces(decompose(mg.outline, opt), PrismFrame{}, -half, half);  // gear frame
+      const Polygon2& loop = rg.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(rg.loop)];
+      b.flanks = std::make_shared<const FlankTable>(loop, layout, rg.internal, kFlankSamples);
+      require_faithful(*b.flanks, who + " (" + file + ")", contact);
+      b.face_width_m = mg.face_width_m;
       b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
-      // Mass properties in the gear frame.
       TriMesh in_gear = mesh;
-      for (Eigen::Vector3d& v : in_gear.vertices) v = rot.transpose() * (v - mid);
+      for (Eigen::Vector3d& v : in_gear.vertices) v = mg.to_gear(v);
       mass = mass_properties(in_gear, density);
     } else {
       // A toothless mesh body: its own coordinates are its frame.
       mass = mass_properties(mesh, density);
-      if (pr.prism) pieces = extrude_pieces(decompose(pr.prism->outline), *pr.prism);
-      else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + pr.reason +
+      if (f.prism) pieces = extrude_pieces(decompose(f.prism->outline), *f.prism);
+      else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + f.not_prism +
                             "); only prismatic meshes are simulated so far");
     }
   } else {

@@ -5,11 +5,12 @@
 #include <string>
 
 #include "geometry/errors.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::render {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 Eigen::Isometry3d about_z(double angle_rad, const Eigen::Vector3d& centre_m = Eigen::Vector3d::Zero()) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();

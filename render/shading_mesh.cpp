@@ -1,4 +1,5 @@
 #include "render/shading_mesh.hpp"
+#include "geometry/constants.hpp"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -9,7 +10,7 @@ namespace gearsim::render {
 namespace {
 
 using Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // Area-weighted (unnormalised) triangle normal.
 Vector3d area_normal(const TriMesh& m, std::size_t t) {

@@ -9,11 +9,12 @@
 #include "geometry/extrude.hpp"
 #include "geometry/gear_profile.hpp"
 #include "geometry/triangulate.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::render {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // Angle difference wrapped to (−π, π].
 double wrap(double a) { return a - 2 * kPi * std::floor((a + kPi) / (2 * kPi)); }

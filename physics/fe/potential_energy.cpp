@@ -7,11 +7,12 @@
 
 #include "geometry/errors.hpp"
 #include "geometry/involute.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::fe {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // Reject what the model does not cover, naming the field.
 void validate(const PotentialEnergyPairDef& d) {

@@ -12,11 +12,12 @@
 #include "physics/fe/closing_turn.hpp"
 #include "physics/fe/gear_mesh_regions.hpp"
 #include "physics/fe/planetary_positions.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::fe {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 GearSpec spec_of(const SpurPairDef& d, const char* name, int teeth) {
   GearSpec s;

@@ -11,7 +11,7 @@
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_angle_average {
 
 using test::kTwoPi;
 
@@ -117,5 +117,5 @@ TEST(AngleAverage, BadInputIsRejected) {
   EXPECT_THROW(angle_synchronous_average({1, 2, 3}, {0, 1, 2}, 64), InputError);         // < 1 turn
 }
 
-}  // namespace
+}  // namespace test_angle_average
 }  // namespace gearsim

@@ -9,7 +9,7 @@
 #include "geometry/errors.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_characteristic_frequencies {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kSunSpeed = 104.7;  // rad/s, the paper's input
@@ -104,5 +104,5 @@ TEST(CharacteristicFrequencies, BadTrainsAreRejected) {
   EXPECT_THROW(planetary_frequencies(s), InputError);
 }
 
-}  // namespace
+}  // namespace test_characteristic_frequencies
 }  // namespace gearsim

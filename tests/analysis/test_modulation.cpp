@@ -9,7 +9,7 @@
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_modulation {
 
 using test::kTwoPi;
 
@@ -88,5 +88,5 @@ TEST(Modulation, FrequencyModulationGivesBesselSidebands) {
   }
 }
 
-}  // namespace
+}  // namespace test_modulation
 }  // namespace gearsim

@@ -10,7 +10,7 @@
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_resample {
 
 using test::kTwoPi;
 
@@ -67,5 +67,5 @@ TEST(Resample, BadInputIsRejected) {
   EXPECT_THROW(interpolate_linear({0.0, 1.0}, {1, 2}, {1.5}), InputError);  // outside
 }
 
-}  // namespace
+}  // namespace test_resample
 }  // namespace gearsim

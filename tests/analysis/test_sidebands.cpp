@@ -12,7 +12,7 @@
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_sidebands {
 
 using test::kTwoPi;
 
@@ -105,5 +105,5 @@ TEST(SidebandAnalysis, HarmonicAboveTheSpectrumIsRejected) {
   EXPECT_THROW(analyse_sidebands(s, 100.0, {}, o), InputError);
 }
 
-}  // namespace
+}  // namespace test_sidebands
 }  // namespace gearsim

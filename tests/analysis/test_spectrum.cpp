@@ -11,7 +11,7 @@
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_spectrum {
 
 using test::tone;
 
@@ -106,5 +106,5 @@ TEST(Spectrum, BadInputIsRejected) {
   EXPECT_THROW(amplitude_spectrum({1.0, 2.0, 3.0}, kFs, {WindowKind::Hann, 2}), InputError);
 }
 
-}  // namespace
+}  // namespace test_spectrum
 }  // namespace gearsim

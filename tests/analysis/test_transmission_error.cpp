@@ -11,7 +11,7 @@
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_transmission_error {
 
 using test::kTwoPi;
 
@@ -71,5 +71,5 @@ TEST(TransmissionError, BadInputIsRejected) {
   EXPECT_THROW(te_stats(synthetic_te(), -1.0), InputError);
 }
 
-}  // namespace
+}  // namespace test_transmission_error
 }  // namespace gearsim

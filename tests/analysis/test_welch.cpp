@@ -8,7 +8,7 @@
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_welch {
 
 TEST(Welch, WhiteNoiseHasSingleSidedDensitySigmaSquaredOverHalfTheRate) {
   // σ² spread over 0 … fs/2: PSD = σ²/(fs/2). Mean over the 511 interior bins of K = 255 Hann
@@ -53,5 +53,5 @@ TEST(Welch, BadSegmentingIsRejected) {
   EXPECT_THROW(welch_spectrum(x, 100.0, o), InputError);
 }
 
-}  // namespace
+}  // namespace test_welch
 }  // namespace gearsim

@@ -5,7 +5,7 @@
 #include "geometry/errors.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_window {
 
 TEST(Window, RectangularHasUnitGainAndOneBinOfNoiseBandwidth) {
   const Window w = make_window(WindowKind::Rectangular, 1000);
@@ -35,5 +35,5 @@ TEST(Window, EmptyOrSingleSampleTaperIsRejected) {
   EXPECT_THROW(make_window(WindowKind::Hann, 1), InputError);
 }
 
-}  // namespace
+}  // namespace test_window
 }  // namespace gearsim

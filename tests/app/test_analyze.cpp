@@ -11,7 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace {
+namespace test_analyze {
 
 namespace fs = std::filesystem;
 
@@ -126,4 +126,4 @@ TEST_F(Analyze, DamagedStateCsvIsRefusedNamingFileAndLine) {
   EXPECT_NE(out.find("not a number"), std::string::npos) << out;
 }
 
-}  // namespace
+}  // namespace test_analyze

@@ -11,7 +11,7 @@
 #include "geometry/mesh_io.hpp"
 
 namespace gearsim::app {
-namespace {
+namespace test_assets_current {
 
 std::string bytes(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -44,5 +44,5 @@ TEST(Assets, SpurPairMeshesMatchTheirSpec) {
   expect_current("assets/specs/spur_pair_gearset.yaml", "assets/gears/spur_pair");
 }
 
-}  // namespace
+}  // namespace test_assets_current
 }  // namespace gearsim::app

@@ -11,7 +11,7 @@
 #include <string>
 #include <sys/wait.h>
 
-namespace {
+namespace test_cli {
 
 using gearsim::test::CliRun;
 using gearsim::test::gearsim;
@@ -62,4 +62,4 @@ TEST(Cli, InspectOfTheCommittedRingFindsAnExactPrism) {
   EXPECT_LE(j["max_deviation_um"].get<double>(), 1.0);
 }
 
-}  // namespace
+}  // namespace test_cli

@@ -16,7 +16,7 @@
 #include <string>
 #include <sys/wait.h>
 
-namespace {
+namespace test_fe_te_cli {
 
 namespace fs = std::filesystem;
 
@@ -122,4 +122,4 @@ TEST(FeTeCli, ScenarioWithoutAnFeSectionIsRefused) {
   EXPECT_NE(r.output.find("no fe: section"), std::string::npos) << r.output;
 }
 
-}  // namespace
+}  // namespace test_fe_te_cli

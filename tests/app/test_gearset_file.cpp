@@ -11,7 +11,7 @@
 #include "geometry/errors.hpp"
 
 namespace gearsim::app {
-namespace {
+namespace test_gearset_file {
 
 const std::string kPaperSpec = std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/paper_gearset.yaml";
 
@@ -107,7 +107,10 @@ TEST(GearSetFile, ImpossibleGearNamesTheGearAndField) {
   std::string text = kGood;
   text.replace(text.find("teeth: 20"), 9, "teeth: 2");
   const std::string e = error_for(text);
-  EXPECT_NE(e.find("gear 'pinion': teeth"), std::string::npos) << e;
+  // file:line:column, then the key path of the gear and field, then what was expected.
+  EXPECT_NE(e.find(".yaml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("gears.pinion.teeth: expected a number of teeth in [3, "), std::string::npos) << e;
+  EXPECT_NE(e.find("got 2"), std::string::npos) << e;
 }
 
 TEST(GearSetFile, YamlSyntaxErrorGivesLineAndColumn) {
@@ -124,5 +127,5 @@ TEST(GearSetFile, MissingFileIsNamed) {
   }
 }
 
-}  // namespace
+}  // namespace test_gearset_file
 }  // namespace gearsim::app

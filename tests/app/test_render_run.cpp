@@ -18,7 +18,7 @@
 #include "app/run_dir.hpp"
 
 namespace gearsim::app {
-namespace {
+namespace test_render_run {
 
 namespace fs = std::filesystem;
 
@@ -110,5 +110,5 @@ TEST(RenderRun, BadOptionsAreRefusedByName) {
   EXPECT_NE(o3.find("outside the logged"), std::string::npos) << o3;
 }
 
-}  // namespace
+}  // namespace test_render_run
 }  // namespace gearsim::app

@@ -9,7 +9,7 @@
 #include <iterator>
 #include <string>
 
-namespace {
+namespace test_report {
 
 namespace fs = std::filesystem;
 
@@ -48,4 +48,4 @@ TEST(Report, HoldsEverySectionInOneSelfContainedFile) {
   EXPECT_EQ(html.find("fault line f<sub>m</sub>/36: no line"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace test_report

@@ -11,7 +11,7 @@
 #include <iterator>
 #include <string>
 
-namespace {
+namespace test_run_determinism {
 
 namespace fs = std::filesystem;
 
@@ -58,4 +58,4 @@ TEST(RunDeterminism, ShortPaperRunMatchesTheCommittedHash) {
   EXPECT_EQ(h, kGoldenHash) << "logs of the short paper run changed; new hash " << hex;
 }
 
-}  // namespace
+}  // namespace test_run_determinism

@@ -12,7 +12,7 @@
 
 #include "tests/support/cli_run.hpp"
 
-namespace {
+namespace test_run_summary {
 
 namespace fs = std::filesystem;
 
@@ -77,4 +77,4 @@ TEST(RunSummary, ADivergingRunStopsWithItsOwnExitCodeAndCompleteLogs) {
   EXPECT_FALSE(fs::exists(dir / "analysis.json"));  // a diverged run is not analysed
 }
 
-}  // namespace
+}  // namespace test_run_summary

@@ -12,7 +12,7 @@
 #include "physics/fe/constants.hpp"
 
 namespace gearsim::app {
-namespace {
+namespace test_scenario_fe {
 
 namespace fs = std::filesystem;
 const std::string kPaper = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_te_loaded.yaml";
@@ -78,5 +78,5 @@ TEST(ScenarioFe, OnlyPlanetaryTrains) {
   EXPECT_HAS(error_for(pair, {"fe={thinning_per_flank_m: 2.0e-5}"}), "planetary");
 }
 
-}  // namespace
+}  // namespace test_scenario_fe
 }  // namespace gearsim::app

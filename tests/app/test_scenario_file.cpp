@@ -10,12 +10,13 @@
 
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::app {
-namespace {
+namespace test_scenario_file {
 
 namespace fs = std::filesystem;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 const fs::path kSource(GEARSIM_SOURCE_DIR);
 const fs::path kScenarios = kSource / "assets/scenarios";
 
@@ -239,5 +240,5 @@ TEST(ScenarioOverrides, MalformedOverrideIsAnErrorQuotingIt) {
   EXPECT_NE(override_error({"duration_s.x=1"}).find("'duration_s' does not hold a mapping"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace test_scenario_file
 }  // namespace gearsim::app

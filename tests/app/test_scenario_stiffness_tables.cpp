@@ -11,7 +11,7 @@
 #include "tests/support/expect_has.hpp"
 
 namespace gearsim::app {
-namespace {
+namespace test_scenario_stiffness_tables {
 
 namespace fs = std::filesystem;
 
@@ -159,5 +159,5 @@ TEST(ScenarioStiffnessTables, PaperTeLoadedIsTheRigidSunLoadedFaultyRun) {
   EXPECT_TRUE(s.contact.stiffness_tables.empty());     // the constant ISO stiffness
 }
 
-}  // namespace
+}  // namespace test_scenario_stiffness_tables
 }  // namespace gearsim::app

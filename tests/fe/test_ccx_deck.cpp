@@ -18,7 +18,7 @@ using namespace gearsim;
 using namespace gearsim::fe;
 namespace fs = std::filesystem;
 
-namespace {
+namespace test_ccx_deck {
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("gearsim_fe_deck_" + name);
@@ -79,7 +79,6 @@ double at_step(const std::vector<DatBlock>& blocks, const std::string& q, const 
   return NAN;
 }
 
-}  // namespace
 
 // Annulus r_i = 5 mm, r_o = 15 mm, t = 10 mm, outer edge held, hub turned by T = 10 N·m:
 // θ = T/(4π G t)·(1/r_i² − 1/r_o²) = 3.502e-5 rad (plane stress, G = E/2(1+ν)). Tolerance 1 %:
@@ -238,3 +237,5 @@ TEST(CcxDeck, RejectsBadDefinitions) {
   def.load_fractions = {1.0, 0.5};
   EXPECT_THROW(write_deck(def), InputError);  // load stages not increasing
 }
+
+}  // namespace test_ccx_deck

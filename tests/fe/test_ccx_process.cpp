@@ -16,7 +16,7 @@ using namespace gearsim;
 using namespace gearsim::fe;
 namespace fs = std::filesystem;
 
-namespace {
+namespace test_ccx_process {
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path d = fs::temp_directory_path() / ("gearsim_fe_" + name);
@@ -43,7 +43,6 @@ void write_bar_deck(const fs::path& file, double L, double h, double t, int nx, 
     << F / 2 << "\n*NODE PRINT, NSET=RIGHT\nU\n*END STEP\n";
 }
 
-}  // namespace
 
 // Uniform tension is reproduced exactly by bilinear plane-stress elements, so the FE tip
 // displacement equals F L / (E h t) to the solver's print precision (7 significant digits → 1e-6
@@ -119,3 +118,5 @@ TEST(CcxProcess, UnfinishedIncrementsAreASolverError) {
     EXPECT_NE(what.find((dir / "inc.log").string()), std::string::npos) << what;
   }
 }
+
+}  // namespace test_ccx_process

@@ -16,12 +16,13 @@
 #include "physics/fe/outline_resample.hpp"
 #include "tests/support/gear_specs.hpp"
 #include "tests/support/outline_probe.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::fe {
-namespace {
+namespace test_gear_mesher {
 
 using Eigen::Vector2d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 constexpr double kFlank = 0.4e-3;  // m, the default flank element size
 
 // The paper's gears (assets/specs/paper_gearset.yaml): sun 24 / bore 8 mm, planet 36 / bore
@@ -348,5 +349,5 @@ TEST(gear_mesher, RejectsBadSizingAndMismatchedOutlines) {
   EXPECT_THROW(mesh_gear_outline(solid, GearKind::Internal, MeshSizingDef{}), InputError);
 }
 
-}  // namespace
+}  // namespace test_gear_mesher
 }  // namespace gearsim::fe

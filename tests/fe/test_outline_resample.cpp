@@ -10,7 +10,7 @@
 #include "physics/fe/outline_resample.hpp"
 
 namespace gearsim::fe {
-namespace {
+namespace test_outline_resample {
 
 // A circle of radius r as a polygon of n exact points.
 ArcPolygon circle(double r, int n) {
@@ -78,5 +78,5 @@ TEST(outline_resample, SpacingIsGradedAwayFromACurve) {
   EXPECT_LT(max_edge_sagitta(poly, loop), 1.5 * s);
 }
 
-}  // namespace
+}  // namespace test_outline_resample
 }  // namespace gearsim::fe

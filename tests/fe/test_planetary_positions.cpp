@@ -11,7 +11,7 @@
 using namespace gearsim;
 using namespace gearsim::fe;
 
-namespace {
+namespace test_planetary_positions {
 
 GearSpec gear(const std::string& name, GearKind kind, int z, double thinning) {
   GearSpec g;
@@ -29,7 +29,6 @@ GearSpec gear(const std::string& name, GearKind kind, int z, double thinning) {
   return g;
 }
 
-}  // namespace
 
 // Sun 24 / planet 36 / ring 96, m = 1 mm, x = 0, each flank thinned by t = 20 µm: the standard set
 // meshes without backlash, so a planet turns (t_p + t_r)/r_b,p before it touches the ring and then
@@ -56,3 +55,5 @@ TEST(PlanetaryPositions, ClosingTurnsEqualTheBacklash) {
       EXPECT_FALSE(physics::find_tooth_contacts(ts, s, tp, pos.planets[k]).empty()) << "planet " << k;
   }
 }
+
+}  // namespace test_planetary_positions

@@ -14,7 +14,7 @@
 using namespace gearsim;
 using namespace gearsim::fe;
 
-namespace {
+namespace test_potential_energy {
 
 // Samples per mesh period for the curve tests: 1/400 of a period resolves the contact ratio to 0.0025.
 constexpr int kSamples = 400;
@@ -41,7 +41,6 @@ IsoPairDef iso_pair(const PotentialEnergyPairDef& d) {
   return iso;
 }
 
-}  // namespace
 
 // k_h = π E b / (4 (1 − ν²)) (Yang & Lin); tolerance 1e-12 relative: rounding only.
 TEST(PotentialEnergy, HertzTermIsClosedForm) {
@@ -189,3 +188,5 @@ TEST(PotentialEnergy, RejectsBadInput) {
   EXPECT_THROW(single_pair_stiffness(d, 12e-3), InputError);  // beyond the pinion tip
   EXPECT_THROW(mesh_stiffness_curve(d, 3), InputError);
 }
+
+}  // namespace test_potential_energy

@@ -25,7 +25,7 @@ using namespace gearsim;
 using namespace gearsim::fe;
 namespace fs = std::filesystem;
 
-namespace {
+namespace test_spur_pair_fe {
 
 constexpr double kFlankSize_m = 0.4e-3;
 // Candidate roll lengths scanned in the two-pair zone for the two-pair position (geometry only).
@@ -69,7 +69,6 @@ fs::path work_dir(const std::string& name) {
   return d;
 }
 
-}  // namespace
 
 // Standard gears with every flank thinned by t: at the kinematic position each side has 2t of
 // clearance along the line of action, so the wheel turns 2t / r_b2 to touch the pinion's driving
@@ -210,3 +209,5 @@ TEST_F(SpurPairFeSolved, TwoPairsStifferThanOne) {
       << "two pairs " << two().stiffness_N_per_m << " N/m at roll " << two().roll_m << " m, one pair "
       << pitch().stiffness_N_per_m << " N/m";
 }
+
+}  // namespace test_spur_pair_fe

@@ -16,12 +16,13 @@
 
 #include "geometry/errors.hpp"
 #include "geometry/mass_properties.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_approx_decomposition {
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // A closed solid of revolution about z: the profile (radius, z) from the bottom cap to the top
 // cap, each ring a regular `segments`-gon (counter-clockwise from +z), both caps fanned.
@@ -204,6 +205,5 @@ TEST(ApproxDecomposition, RejectsEmptyAndNonFiniteMeshes) {
   EXPECT_THROW(convex_hull({Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), Vec3(1, 1, 0)}), InputError);
 }
 
-}  // namespace
+}  // namespace test_approx_decomposition
 }  // namespace gearsim
-

@@ -16,12 +16,13 @@
 #include "geometry/extrude.hpp"
 #include "geometry/hausdorff.hpp"
 #include "geometry/prism.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_convex_decomposition {
 
 using Vec2 = Eigen::Vector2d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 std::string sci(double v) {
   std::ostringstream s;
@@ -244,5 +245,5 @@ TEST(ConvexDecomposition, RejectsTooFewTeeth) {
   EXPECT_THROW(decompose(external_gear(24, 16), {ToothLayout{2, 0.0}}), InputError);
 }
 
-}  // namespace
+}  // namespace test_convex_decomposition
 }  // namespace gearsim

@@ -8,7 +8,7 @@
 #include "geometry/extrude.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_extrude {
 
 // Signed volume by the divergence theorem: positive when the triangles face outward.
 double signed_volume(const TriMesh& m) {
@@ -76,5 +76,5 @@ TEST(Extrude, RejectsBadInput) {
   EXPECT_THROW(extrude(sq, 2.0, 1.0), InputError);  // inverted range
 }
 
-}  // namespace
+}  // namespace test_extrude
 }  // namespace gearsim

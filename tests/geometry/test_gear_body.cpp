@@ -10,7 +10,7 @@
 #include "tests/support/gear_specs.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_gear_body {
 
 class PaperGear : public ::testing::TestWithParam<GearSpec> {};
 
@@ -60,5 +60,5 @@ INSTANTIATE_TEST_SUITE_P(Paper, PaperGear,
                            return std::string(i.index == 2 ? "faulty_planet" : i.param.name);
                          });
 
-}  // namespace
+}  // namespace test_gear_body
 }  // namespace gearsim

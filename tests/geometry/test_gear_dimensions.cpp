@@ -8,11 +8,12 @@
 #include "geometry/gear_dimensions.hpp"
 #include "geometry/involute.hpp"
 #include "tests/support/gear_specs.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_gear_dimensions {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 const double kAlpha = 20.0 * kPi / 180.0;
 
 TEST(GearDimensions, BaseRadiusIsReferenceRadiusTimesCosAlpha) {
@@ -100,5 +101,5 @@ TEST(GearDimensions, ImpossibleSpecsNameTheirField) {
   expect_field(s, "tooth index 36");
 }
 
-}  // namespace
+}  // namespace test_gear_dimensions
 }  // namespace gearsim

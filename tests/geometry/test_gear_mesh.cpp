@@ -11,7 +11,7 @@
 #include "tests/support/gear_specs.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_gear_mesh {
 
 const double kAlpha = 20.0 * std::numbers::pi / 180.0;
 
@@ -75,5 +75,5 @@ TEST(GearMesh, MismatchedModulesCannotMesh) {
   EXPECT_THROW(analyse_mesh(test::external_gear(24), b, 30e-3), InputError);
 }
 
-}  // namespace
+}  // namespace test_gear_mesh
 }  // namespace gearsim

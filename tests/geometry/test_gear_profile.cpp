@@ -8,12 +8,13 @@
 #include "geometry/gear_profile.hpp"
 #include "tests/support/gear_specs.hpp"
 #include "tests/support/outline_probe.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_gear_profile {
 
 using Eigen::Vector2d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 constexpr double kChord = 0.5e-6;  // the specs' chordal deviation, m
 
 const Polygon2& toothed(const GearOutline& g, const GearSpec& s) {
@@ -208,5 +209,5 @@ TEST(GearProfile, EccentricityGivesARunoutOfTwiceTheOffset) {
   EXPECT_NEAR(rmax - rmin, 2 * 30e-6, 30e-6 * (1 - std::cos(5 * kPi / 180)) * 2 + 1e-9);
 }
 
-}  // namespace
+}  // namespace test_gear_profile
 }  // namespace gearsim

@@ -8,7 +8,7 @@
 #include "geometry/hausdorff.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_hausdorff {
 
 TriMesh cube(double side_m, const Eigen::Vector3d& offset) {
   Outline2 sq;
@@ -89,5 +89,5 @@ TEST(Hausdorff, RejectsBadInput) {
   EXPECT_THROW(hausdorff_distance(m, m, 1e-9), InputError);  // ~1e13 samples
 }
 
-}  // namespace
+}  // namespace test_hausdorff
 }  // namespace gearsim

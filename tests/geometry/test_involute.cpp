@@ -7,7 +7,7 @@
 #include "geometry/involute.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_involute {
 
 TEST(Involute, TwentyDegreesMatchesTheTabulatedValue) {
   // inv 20° = 0.014904383867336 (tables of the involute function); exact double arithmetic.
@@ -29,5 +29,5 @@ TEST(Involute, RollLengthIsThePythagoreanTangent) {
   EXPECT_DOUBLE_EQ(pressure_angle_at(3.0, 5.0), std::acos(0.6));
 }
 
-}  // namespace
+}  // namespace test_involute
 }  // namespace gearsim

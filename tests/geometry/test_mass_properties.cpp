@@ -9,11 +9,12 @@
 
 #include "geometry/errors.hpp"
 #include "geometry/mass_properties.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_mass_properties {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 constexpr double kSteel_kg_m3 = 7850.0;
 
 // Ring of n points of radius r at height z, first at angle 0, counter-clockwise from +z.
@@ -221,5 +222,5 @@ TEST(MassProperties, InsideOutMeshIsAnInternalError) {
   EXPECT_THROW(mass_properties(m, 1000.0), InternalError);
 }
 
-}  // namespace
+}  // namespace test_mass_properties
 }  // namespace gearsim

@@ -17,7 +17,7 @@
 #include "geometry/mesh_io.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_mesh_io {
 
 namespace fs = std::filesystem;
 
@@ -309,5 +309,5 @@ TEST_F(MeshIo, UnwritablePathNamesThePath) {
   EXPECT_CONTAINS(msg, p.string() + ": cannot open for writing");
 }
 
-}  // namespace
+}  // namespace test_mesh_io
 }  // namespace gearsim

@@ -10,7 +10,7 @@
 #include "geometry/mesh_validate.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_mesh_validate {
 
 // Unit cube [0,1]³ in m; vertex index = x + 2y + 4z; faces counter-clockwise from outside.
 TriMesh cube(const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
@@ -186,5 +186,5 @@ TEST(MeshValidate, IndexOutOfRangeIsAnInternalError) {
   EXPECT_THROW(validate_mesh(m), InternalError);
 }
 
-}  // namespace
+}  // namespace test_mesh_validate
 }  // namespace gearsim

@@ -6,7 +6,7 @@
 #include "geometry/outline.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_outline {
 
 TEST(Outline, UnitSquareAreaIsOneAndSignFollowsOrientation) {
   Polygon2 sq{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
@@ -22,5 +22,5 @@ TEST(Outline, HoleIsSubtracted) {
   EXPECT_DOUBLE_EQ(area(o), 15.0);
 }
 
-}  // namespace
+}  // namespace test_outline
 }  // namespace gearsim

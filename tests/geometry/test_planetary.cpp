@@ -12,7 +12,7 @@
 #include "tests/support/outline_probe.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_planetary {
 
 using Eigen::Vector2d;
 
@@ -79,5 +79,5 @@ TEST(Planetary, RingThatCannotCloseTheTrainIsRefused) {
   EXPECT_THROW(analyse_planetary(s), InputError);
 }
 
-}  // namespace
+}  // namespace test_planetary
 }  // namespace gearsim

@@ -10,7 +10,7 @@
 #include "geometry/prism.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_prism {
 
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
@@ -116,5 +116,5 @@ TEST(Prism, MalformedInputThrows) {
   EXPECT_THROW(recover_prism(m, 1e-9), InputError);
 }
 
-}  // namespace
+}  // namespace test_prism
 }  // namespace gearsim

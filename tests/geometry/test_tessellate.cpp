@@ -7,7 +7,7 @@
 #include "geometry/tessellate.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_tessellate {
 
 using Eigen::Vector2d;
 
@@ -56,5 +56,5 @@ TEST(Tessellate, SBendIsRefinedEvenWhenItsMidpointLiesOnTheChord) {
   EXPECT_LE(max_deviation(s, 0.0, 1.0, pts), 0.5e-6);
 }
 
-}  // namespace
+}  // namespace test_tessellate
 }  // namespace gearsim

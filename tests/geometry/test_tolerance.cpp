@@ -10,7 +10,7 @@
 #include "geometry/tolerance.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_tolerance {
 
 // Hand computations below carry 4-5 significant digits: 1e-3 µm covers their last digit.
 constexpr double kHandTol_um = 1e-3;
@@ -206,5 +206,5 @@ TEST(Tolerance, IsoRangeAppliesToPaperFormulasWithIsoStep) {
   EXPECT_NO_THROW((void)paper_tolerances({0.3, 36, 36.0, 8, {}}, ToleranceStandard::Din3961));
 }
 
-}  // namespace
+}  // namespace test_tolerance
 }  // namespace gearsim

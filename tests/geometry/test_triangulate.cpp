@@ -10,7 +10,7 @@
 #include "geometry/triangulate.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_triangulate {
 
 using Vec2 = Eigen::Vector2d;
 using Tris = std::vector<std::array<int, 3>>;
@@ -152,5 +152,5 @@ TEST(Triangulate, RejectsHolesThatCrossOrLieOutside) {
   EXPECT_THROW(triangulate(o), InputError);
 }
 
-}  // namespace
+}  // namespace test_triangulate
 }  // namespace gearsim

@@ -10,11 +10,12 @@
 
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
+#include "geometry/involute_pair.hpp"
 #include "physics/run_bounds.hpp"
 #include "physics/world.hpp"
 
 namespace gearsim::physics {
-namespace {
+namespace test_cad_gears {
 
 namespace fs = std::filesystem;
 
@@ -22,29 +23,38 @@ namespace fs = std::filesystem;
 const double kRbWheel = 0.5 * 24e-3 * std::cos(20 * M_PI / 180);
 const double kForce_N = 100;
 
-Scenario mcad_pair(const std::string& pinion_extra, const std::string& wheel_extra, double centre_distance_m,
-                   const std::string& unit = "mm") {
+// The pair file: `pinion`/`wheel`: extra keys of each mesh (teeth, tooth0_deg); centre distance
+// ≤ 0: none given (the macro derives it from the recognised gears).
+fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, double centre_distance_m,
+                        const std::string& unit = "mm") {
   const fs::path dir = fs::temp_directory_path() / "gearsim_cad_gears";
   fs::create_directories(dir);
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
-  std::ofstream(dir / "pair.yaml") << "name: mcad_pair\nduration_s: 0.03\n"
-                                      "solver: {time_step_s: 1.0e-5, iterations: 50}\n"
-                                      "output: {sample_rate_hz: 2000, per_step_log: false}\n"
-                                      "pair:\n"
-                                      "  driver: {name: pinion, mesh: {file: " << data << "mcad_m1_z12_a20_f5_b005.stl, unit: " << unit
-                                   << ", teeth: 12" << pinion_extra << "}, density_kg_m3: 7850}\n"
-                                      "  driven: {name: wheel, mesh: {file: " << data << "mcad_m1_z24_a20_f5_b005.stl, unit: " << unit
-                                   << ", teeth: 24" << wheel_extra << "}, density_kg_m3: 7850}\n"
-                                      "  centre_distance_m: " << centre_distance_m << "\n"
-                                      "motors: [{joint: pinion, target_speed_rad_s: 20, ramp_time_s: 0.01, max_torque_N_m: 5}]\n"
-                                      "loads: [{joint: wheel, constant_torque_N_m: " << kForce_N * kRbWheel << ", ramp_time_s: 0.01}]\n";
-  return app::load_scenario(dir / "pair.yaml", {});
+  std::ofstream f(dir / "pair.yaml");
+  f << "name: mcad_pair\nduration_s: 0.03\n"
+       "solver: {time_step_s: 1.0e-5, iterations: 50}\n"
+       "output: {sample_rate_hz: 2000, per_step_log: false}\n"
+       "pair:\n"
+       "  driver: {name: pinion, mesh: {file: " << data << "mcad_m1_z12_a20_f5_b005.stl, unit: " << unit << pinion
+    << "}, density_kg_m3: 7850}\n"
+       "  driven: {name: wheel, mesh: {file: " << data << "mcad_m1_z24_a20_f5_b005.stl, unit: " << unit << wheel
+    << "}, density_kg_m3: 7850}\n";
+  if (centre_distance_m > 0) f << "  centre_distance_m: " << centre_distance_m << "\n";
+  f << "motors: [{joint: pinion, target_speed_rad_s: 20, ramp_time_s: 0.01, max_torque_N_m: 5}]\n"
+       "loads: [{joint: wheel, constant_torque_N_m: " << kForce_N * kRbWheel << ", ramp_time_s: 0.01}]\n";
+  return dir / "pair.yaml";
 }
 
-// The InputError a World built from s throws ("" when it builds).
-std::string refusal(const Scenario& s) {
+Scenario mcad_pair(const std::string& pinion, const std::string& wheel, double centre_distance_m,
+                   const std::string& unit = "mm") {
+  return app::load_scenario(mcad_pair_file(pinion, wheel, centre_distance_m, unit), {});
+}
+
+// The InputError reading the scenario or building its World throws ("" when both succeed).
+std::string refusal(const std::string& pinion, const std::string& wheel, double centre_distance_m,
+                    const std::string& unit = "mm") {
   try {
-    World w(s);
+    World w(mcad_pair(pinion, wheel, centre_distance_m, unit));
   } catch (const InputError& e) {
     return e.what();
   }
@@ -52,7 +62,7 @@ std::string refusal(const Scenario& s) {
 }
 
 TEST(CadGears, McadPairCarriesItsLoadAlongTheLineOfAction) {
-  const Scenario s = mcad_pair("", "", 18e-3);
+  const Scenario s = mcad_pair(", teeth: 12", ", teeth: 24", 18e-3);
   World w(s);
   RunBounds bounds(s, w);
   double force = 0, depth = 0;
@@ -72,32 +82,79 @@ TEST(CadGears, McadPairCarriesItsLoadAlongTheLineOfAction) {
   EXPECT_LT(depth, kForce_N / (1.4e10 * 6e-3) + 2e-6);
 }
 
-TEST(CadGears, AHalfPitchToothLayoutErrorIsRefused) {
-  // tooth0 15° on the 12-tooth pinion: the macro then puts a pinion tooth into a wheel tooth.
-  const std::string m = refusal(mcad_pair(", tooth0_deg: 15", "", 18e-3));
-  EXPECT_NE(m.find("overlap"), std::string::npos) << m;
-  EXPECT_NE(m.find("'pinion'"), std::string::npos) << m;
+TEST(CadGears, AHalfPitchToothLayoutErrorIsRefusedWithTheToothTheMeshShows) {
+  // tooth0 15° on the 12-tooth pinion (pitch 30°): the layout's sector boundaries through the teeth.
+  const std::string m = refusal(", teeth: 12, tooth0_deg: 15", "", 18e-3);
+  EXPECT_NE(m.find("driver.mesh.tooth0_deg"), std::string::npos) << m;
+  EXPECT_NE(m.find("50 % of a pitch"), std::string::npos) << m;
+  EXPECT_NE(m.find("tooth 0 at"), std::string::npos) << m;
 }
 
-TEST(CadGears, ACentreDistanceTooSmallIsRefusedWithTheDepth) {
-  // 0.2 mm short of the standard 18 mm: the backlash (0.1 mm along the pitch circles, ≈ 0.07 mm
-  // radially) is used up and the teeth overlap by tens of µm.
-  const std::string m = refusal(mcad_pair("", "", 17.8e-3));
-  EXPECT_NE(m.find("overlap"), std::string::npos) << m;
-  EXPECT_NE(m.find("um deep"), std::string::npos) << m;
+TEST(CadGears, ARoundedToothZeroNamesTheToothAndTakesTheMeshAngle) {
+  // 0.3° off MCAD's tooth 0 (1 % of the pitch): within kTooth0Tolerance (2 %), so it names tooth
+  // 0; the angle used is the mesh's (0.3° would phase the pair 31 µm off at the pinion's pitch
+  // circle, more than the 25 µm of backlash on each side).
+  EXPECT_EQ(refusal(", teeth: 12, tooth0_deg: 0.3", "", 18e-3), "");
+  EXPECT_EQ(refusal(", teeth: 12, tooth0_deg: 30.3", "", 18e-3), "");
+  const Scenario s = mcad_pair(", teeth: 12, tooth0_deg: 30.3", "", 18e-3);
+  ASSERT_TRUE(s.bodies[0].mesh && s.bodies[0].mesh->teeth && s.bodies[0].mesh->recognised);
+  EXPECT_FALSE(s.bodies[0].mesh->teeth_recognised);
+  // Tooth 0 is the tooth centred at 30° in the file (MCAD's teeth are centred on multiples of 30°).
+  EXPECT_NEAR(s.bodies[0].mesh->teeth->tooth0_angle_rad, s.bodies[0].mesh->recognised->tooth0_angle_rad + M_PI / 6, 1e-12);
 }
 
-TEST(CadGears, AMillimetreFileReadAsMetresIsRefused) {
-  // Gears 12 m across 18 mm apart.
-  EXPECT_NE(refusal(mcad_pair("", "", 18e-3, "m")), "");
+TEST(CadGears, ACentreDistanceTooSmallIsRefusedWithTheOverlap) {
+  // 0.2 mm short of the standard 18 mm: the backlash (0.05 mm along the pitch circles) is used up.
+  const std::string m = refusal("", "", 17.8e-3);
+  EXPECT_NE(m.find("centre_distance_m"), std::string::npos) << m;
+  EXPECT_NE(m.find("overlap by"), std::string::npos) << m;
+  EXPECT_NE(m.find("zero backlash at"), std::string::npos) << m;
 }
 
-TEST(CadGears, AWrongToothCountIsRefused) {
-  // 13 teeth on a 12-tooth mesh: sectors hold no whole flank, or the teeth land on teeth.
-  Scenario s = mcad_pair("", "", 18e-3);
-  s.bodies[0].mesh->teeth->teeth = 13;
-  EXPECT_NE(refusal(s), "");
+TEST(CadGears, AMillimetreFileReadAsMetresIsRefusedNamingTheUnit) {
+  // Gears 12 m across: no standard module that large, so the module is the tooth depth / 2.25
+  // (MCAD's depth is 2.2906 modules: 7 − 4.7094 mm at z 12), about 1.018 m.
+  const std::string m = refusal("", "", 18e-3, "m");
+  EXPECT_NE(m.find("driver.mesh.unit"), std::string::npos) << m;
+  EXPECT_NE(m.find("module is about 1018"), std::string::npos) << m;
+  EXPECT_NE(m.find("read as mm it would be about 1.018"), std::string::npos) << m;
 }
 
-}  // namespace
+TEST(CadGears, AWrongToothCountIsRefusedWithTheCountTheMeshShows) {
+  const std::string m = refusal(", teeth: 13", "", 18e-3);
+  EXPECT_NE(m.find("driver.mesh.teeth"), std::string::npos) << m;
+  EXPECT_NE(m.find("13 teeth given, the mesh shows 12"), std::string::npos) << m;
+}
+
+TEST(CadGears, MeshesWithoutTeethOrCentreDistanceSetThemselvesUp) {
+  const Scenario s = mcad_pair("", "", 0.0);
+  ASSERT_EQ(s.bodies.size(), 2u);
+  for (const BodyDef& b : s.bodies) {
+    ASSERT_TRUE(b.mesh && b.mesh->teeth && b.mesh->recognised);
+    EXPECT_TRUE(b.mesh->teeth_recognised);
+    // MCAD's tooth 0 lies on +x.
+    EXPECT_NEAR(std::remainder(b.mesh->teeth->tooth0_angle_rad, 2 * M_PI / b.mesh->teeth->teeth), 0.0, 1e-5);
+    EXPECT_DOUBLE_EQ(b.mesh->recognised->module_m, 1e-3);
+    EXPECT_NEAR(b.mesh->recognised->pressure_angle_rad, 20 * M_PI / 180, 1e-12);
+  }
+  EXPECT_EQ(s.bodies[0].mesh->teeth->teeth, 12);
+  EXPECT_EQ(s.bodies[1].mesh->teeth->teeth, 24);
+  ASSERT_EQ(s.pair_tables.size(), 1u);
+  const InvolutePair& p = s.pair_tables[0].figures;
+  // MCAD's backlash (involute_gears.scad: half_thick_angle = (360/z − backlash_angle)/4, the
+  // backlash as an arc on the pitch circle) thins each tooth by half of it, 0.025 mm: 0.05 mm of
+  // circular backlash for the pair at 18 mm, 0.05·cos 20° along the line of action. The
+  // zero-backlash distance closes it: Δa = j_n / (2 sin α_w) to first order, 0.069 mm.
+  const InvolutePair at18 = involute_pair(involute_teeth(*s.bodies[0].mesh->recognised),
+                                          involute_teeth(*s.bodies[1].mesh->recognised), 18e-3, "test");
+  EXPECT_NEAR(at18.normal_backlash_m, 0.05e-3 * std::cos(20 * M_PI / 180), 1e-6);
+  EXPECT_NEAR(p.centre_distance_m, 18e-3 - at18.normal_backlash_m / (2 * std::sin(20 * M_PI / 180)), 2e-6);
+  EXPECT_NEAR(p.normal_backlash_m, 0.0, 1e-9);
+  // Transverse contact ratio at 18 mm from the nominal tip and base circles: 1.511.
+  const double rb1 = 6e-3 * std::cos(20 * M_PI / 180), rb2 = 2 * rb1, pb = M_PI * 1e-3 * std::cos(20 * M_PI / 180);
+  const double eps = (std::sqrt(49e-6 - rb1 * rb1) + std::sqrt(169e-6 - rb2 * rb2) - 18e-3 * std::sin(20 * M_PI / 180)) / pb;
+  EXPECT_NEAR(at18.contact_ratio, eps, 0.01);
+}
+
+}  // namespace test_cad_gears
 }  // namespace gearsim::physics

@@ -13,7 +13,7 @@
 #include "physics/flank_table.hpp"
 
 namespace gearsim::physics {
-namespace {
+namespace test_flank_knots {
 
 // The outer loop of an MCAD mesh's outline (about its own z axis), m.
 Polygon2 mcad_loop(int teeth) {
@@ -94,9 +94,11 @@ TEST(FlankTable, ATipLandWhoseCornersDifferByRoundingIsNoFlank) {
   for (int k = 0; k < 12; ++k)
     for (Flank f : {Flank::Ccw, Flank::Cw}) {
       const double a = t.flank_angle(k, f, t.r_max_m() - 1e-6);
-      if (!std::isnan(a)) EXPECT_LT(std::abs(a), M_PI / 12) << "tooth " << k;
+      if (!std::isnan(a)) {
+        EXPECT_LT(std::abs(a), M_PI / 12) << "tooth " << k;
+      }
     }
 }
 
-}  // namespace
+}  // namespace test_flank_knots
 }  // namespace gearsim::physics

@@ -8,7 +8,7 @@
 #include "physics/power_balance.hpp"
 
 namespace gearsim::physics {
-namespace {
+namespace test_power_balance {
 
 // The paper's healthy scenario, sun at 50 rad/s reached in 2 ms, averaged over 2–10 ms.
 PowerBalance balance(double friction) {
@@ -51,5 +51,5 @@ TEST(PowerBalance, FlankFrictionIsWhatTheContactsDissipate) {
               0.02 * (dry.motor_W() - frictionless.motor_W()));
 }
 
-}  // namespace
+}  // namespace test_power_balance
 }  // namespace gearsim::physics

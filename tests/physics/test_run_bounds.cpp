@@ -11,7 +11,7 @@
 #include "physics/world.hpp"
 
 namespace gearsim::physics {
-namespace {
+namespace test_run_bounds {
 
 Scenario paper(std::vector<std::string> sets) {
   sets.push_back("motors[0].ramp_time_s=0.002");
@@ -100,5 +100,5 @@ TEST(LoadTorque, RampsLinearlyLikeAMotor) {
   EXPECT_DOUBLE_EQ(ramps_end_s(s), 0.1);
 }
 
-}  // namespace
+}  // namespace test_run_bounds
 }  // namespace gearsim::physics

@@ -10,7 +10,7 @@
 #include "physics/step_log.hpp"
 
 namespace gearsim::physics {
-namespace {
+namespace test_step_log {
 
 std::vector<double> read_doubles(hid_t file, const char* name, hsize_t* dims_out = nullptr) {
   const hid_t d = H5Dopen2(file, name, H5P_DEFAULT);
@@ -110,5 +110,5 @@ TEST(StepLog, LoggedContactsCarryTheMotorTorque) {
   EXPECT_NEAR(contact, -motor, 0.005 * motor);
 }
 
-}  // namespace
+}  // namespace test_step_log
 }  // namespace gearsim::physics

@@ -15,7 +15,7 @@
 #include "physics/world.hpp"
 
 namespace gearsim::physics {
-namespace {
+namespace test_stiffness_table {
 
 namespace fs = std::filesystem;
 
@@ -241,5 +241,5 @@ TEST(StiffnessTableWorld, TableForGearsThatDoNotMeshIsRefused) {
   EXPECT_THROW(World w(s), InputError);
 }
 
-}  // namespace
+}  // namespace test_stiffness_table
 }  // namespace gearsim::physics

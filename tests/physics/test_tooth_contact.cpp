@@ -11,11 +11,12 @@
 #include "geometry/planetary.hpp"
 #include "physics/tooth_contact.hpp"
 #include "tests/support/gear_specs.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::physics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 constexpr double kChord = 0.5e-6;  // the outline's default chordal deviation, m: flank knots lie on the curve
 constexpr int kSamples = 4096;    // flank-table radii
 

@@ -8,7 +8,7 @@
 #include "physics/world.hpp"
 
 namespace gearsim::physics {
-namespace {
+namespace test_world {
 
 // The paper's healthy scenario (assets/scenarios), shortened and sped down for a unit test: sun
 // at 50 rad/s reached in 2 ms, friction off so that normal forces alone carry the torque.
@@ -104,5 +104,5 @@ TEST(World, SpurPairFromStlFilesTurnsAtItsToothRatio) {
   EXPECT_NEAR(-pinion / wheel, 31.0 / 20.0, 0.005 * 31.0 / 20.0);
 }
 
-}  // namespace
+}  // namespace test_world
 }  // namespace gearsim::physics

@@ -7,7 +7,7 @@
 #include "render/contact_sheet.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_contact_sheet {
 
 std::vector<Image> coloured_frames(int n, int w, int h) {
   std::vector<Image> frames;
@@ -76,5 +76,5 @@ TEST(BitmapFont, TextStaysInItsCellsAndUnknownCharactersDrawAsQuestionMarks) {
   EXPECT_EQ(a, b);
 }
 
-}  // namespace
+}  // namespace test_contact_sheet
 }  // namespace gearsim::render

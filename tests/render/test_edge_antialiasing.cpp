@@ -18,7 +18,7 @@
 #include "tests/render/paper_scene.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_edge_antialiasing {
 
 using Eigen::Vector2d;
 
@@ -292,5 +292,5 @@ TEST(EdgeAntiAliasing, CubeSeenAlongItsAxisIsOutlinedByItsTopFaceOnly) {
   }
 }
 
-}  // namespace
+}  // namespace test_edge_antialiasing
 }  // namespace gearsim::render

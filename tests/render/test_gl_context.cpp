@@ -11,7 +11,7 @@
 #include "render/render_error.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_gl_context {
 
 TEST(GlContext, GivesACoreProfileOfAtLeast33) {
   GlContext context;
@@ -41,5 +41,5 @@ TEST(GlContextDeathTest, RefusalIsARenderErrorWithOsMesasReason) {
       ::testing::ExitedWithCode(3), "");
 }
 
-}  // namespace
+}  // namespace test_gl_context
 }  // namespace gearsim::render

@@ -14,7 +14,7 @@
 #include "tests/render/paper_scene.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_golden {
 
 // Thresholds, per channel on 0–255. llvmpipe is deterministic on one machine (same Mesa, same
 // LLVM): reruns are bit-identical. Another Mesa/LLVM may round shading differently (±2) and
@@ -102,5 +102,5 @@ TEST(Golden, ThresholdsCatchAOnePixelShift) {
   EXPECT_GT(d.mean, kMeanThreshold);
 }
 
-}  // namespace
+}  // namespace test_golden
 }  // namespace gearsim::render

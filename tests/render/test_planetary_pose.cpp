@@ -11,12 +11,13 @@
 #include "render/planetary_pose.hpp"
 #include "tests/render/paper_scene.hpp"
 #include "tests/support/outline_probe.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_planetary_pose {
 
 using Eigen::Vector2d;
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 // Angle of the body's x axis about z.
 double angle_of(const Eigen::Isometry3d& t) { return std::atan2(t.linear()(1, 0), t.linear()(0, 0)); }
@@ -122,5 +123,5 @@ TEST(PlanetaryScene, PoseForAnotherSetIsRefused) {
   EXPECT_THROW(kinematic_planetary_pose(s, g, std::nan("")), InputError);
 }
 
-}  // namespace
+}  // namespace test_planetary_pose
 }  // namespace gearsim::render

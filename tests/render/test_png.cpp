@@ -14,7 +14,7 @@
 #include "tests/render/paper_scene.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_png {
 
 // A 160×120 overview of the paper's set, from a renderer of its own.
 Image paper_frame() {
@@ -67,5 +67,5 @@ TEST(Png, NonPngFileIsRefused) {
   EXPECT_THROW(read_png(test::output_dir("png") / "absent.png"), InputError);
 }
 
-}  // namespace
+}  // namespace test_png
 }  // namespace gearsim::render

@@ -9,7 +9,7 @@
 #include "render/shading_mesh.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_renderer {
 
 constexpr Rgb kRed{200, 10, 10};
 
@@ -121,5 +121,5 @@ TEST(Renderer, MeshCacheFollowsTheMeshOwners) {
   EXPECT_EQ(r.cached_mesh_count(), 1u);
 }
 
-}  // namespace
+}  // namespace test_renderer
 }  // namespace gearsim::render

@@ -12,7 +12,7 @@
 #include "render/shading_mesh.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_renderer_errors {
 
 // The message of the InputError `f` throws (empty when it throws nothing).
 template <class F>
@@ -117,5 +117,5 @@ TEST(RendererErrors, NegativeArrowScaleIsRefused) {
   EXPECT_NE(input_error([&] { r.render(s, camera()); }).find("arrow_m_per_N"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace test_renderer_errors
 }  // namespace gearsim::render

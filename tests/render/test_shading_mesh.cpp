@@ -16,11 +16,12 @@
 #include "render/shading_mesh.hpp"
 #include "render/tooth_highlight.hpp"
 #include "tests/render/paper_scene.hpp"
+#include "geometry/constants.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_shading_mesh {
 
-constexpr double kPi = std::numbers::pi;
+using gearsim::constants::kPi;
 
 TriMesh sun_mesh() {
   const GearSpec s = test::external_gear(24);
@@ -114,5 +115,5 @@ TEST(ToothHighlight, AdjacentInternalTeethKeepTheSolid) {
   EXPECT_THROW(gear_mesh_with_highlighted_teeth(ring, {96}), InputError);
 }
 
-}  // namespace
+}  // namespace test_shading_mesh
 }  // namespace gearsim::render

@@ -12,7 +12,7 @@
 #include "tests/render/paper_scene.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_silhouette {
 
 constexpr int kSize_px = 400;
 
@@ -59,5 +59,5 @@ TEST(Silhouette, RingAreaMatchesItsOutline) {
   EXPECT_NEAR(rendered / analytic, 1.0, kRelativeTolerance) << rendered << " vs " << analytic << " m²";
 }
 
-}  // namespace
+}  // namespace test_silhouette
 }  // namespace gearsim::render

@@ -17,7 +17,7 @@
 #include "tests/render/paper_scene.hpp"
 
 namespace gearsim::render {
-namespace {
+namespace test_video {
 
 constexpr int kFrames = 12;
 constexpr int kFps = 12;
@@ -103,5 +103,5 @@ TEST(Video, OddSizeAndWrongFrameSizeAreRefused) {
   EXPECT_THROW(writer.add_frame(Image(80, 60)), InputError);
 }
 
-}  // namespace
+}  // namespace test_video
 }  // namespace gearsim::render

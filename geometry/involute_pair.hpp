@@ -1,0 +1,48 @@
+// The mesh of two involute gears from their measured teeth alone: the centre distance at which
+// they mesh without backlash, and at a given distance the operating pressure angle, the normal
+// backlash and the contact ratio. For recognised CAD gears (gear_recognition.hpp) as much as for
+// generated ones. Not a dynamics model: tooth_contact does the contact; this is the gear table.
+#pragma once
+
+#include <string>
+
+#include "geometry/gear_recognition.hpp"
+#include "geometry/gear_spec.hpp"
+
+namespace gearsim {
+
+// What the mesh arithmetic needs of one gear's teeth.
+struct InvoluteTeeth {
+  int teeth = 0;
+  bool internal = false;
+  double base_radius_m = 0;
+  // Half the tooth's angular thickness at the base circle (both flanks' base_half_angle_rad
+  // averaged): an external tooth narrows as inv(α_r) grows, an internal one widens.
+  double base_half_angle_rad = 0;
+  double tip_radius_m = 0;  // where the involute ends at the tip (its active end), m
+};
+
+InvoluteTeeth involute_teeth(const RecognisedGear& g);
+InvoluteTeeth involute_teeth(const GearSpec& spec);
+
+struct InvolutePair {
+  double centre_distance_m = 0;             // the distance these figures are for
+  double zero_backlash_centre_distance_m = 0;
+  double operating_pressure_angle_rad = 0;  // at centre_distance_m
+  double normal_backlash_m = 0;             // along the line of action; < 0: the teeth overlap
+  double contact_ratio = 0;                 // transverse, from the active tip radii
+  double base_pitch_mismatch_m = 0;         // |p_b1 − p_b2|
+};
+
+// Base pitches may differ by this much and still mesh (conjugate action needs equal base pitch;
+// DIN 3961 class 8 allows single pitch deviations of ~10 µm), m.
+inline constexpr double kMaxBasePitchMismatch_m = 5e-6;
+
+// The mesh of a (external) with b (external, or internal with a inside it). centre_distance_m
+// ≤ 0: at the zero-backlash distance. Throws InputError naming `who` when the base pitches
+// differ by more than kMaxBasePitchMismatch_m, both are internal, or the distance is one at
+// which the involutes cannot act (closer than the base circles allow).
+InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, double centre_distance_m,
+                           const std::string& who);
+
+}  // namespace gearsim

@@ -1,0 +1,362 @@
+#!/usr/bin/env python3
+"""Runs every pair of a cad_corpus (generate.py) through `gearsim run` and classifies the outcome.
+
+Usage: run_pairs.py CORPUS_DIR OUT_DIR [--gearsim PATH] [--filter SUBSTR] [--duration S]
+                    [--load-ramp S] [--speed RAD_S] [--force-per-module N_PER_MM] [--dt S]
+                    [--timeout S] [--keep-logs]
+
+Per pair: OUT_DIR/runs/<pair id>/scenario.yaml, then `gearsim run scenario.yaml --out DIR
+--no-analyze` (one run at a time). The driver (pinion) turns at --speed (default 20 rad/s, motor
+ramp 0.05 s); the driven gear carries a constant torque T = F·r_b,driven resisting its rotation,
+F = --force-per-module × module in mm (default 100 N at m = 1 mm), no viscous part, ramped over
+--load-ramp only when it is given. Time step: the largest of 2e-5, 1e-5, 5e-6, 2.5e-6, 1e-6 s with
+ω_c·dt ≤ 1, ω_c = √(k/m_eq) the contact frequency estimated from disc inertias (or --dt).
+
+Classes:
+  physical            completed; after the ramp the mean tooth force is within 3 % of T/r_b, no
+                      contact was dropped, and the deepest contact is ≤ F/k + 2 µm (k: the pair's
+                      stiffness_N_per_m in summary.json, one tooth pair)
+  exploded-completed  completed, but not physical (the bad case): `why` says which test failed
+  refused             exit 2 before the first step (no summary.json); `message` is gearsim's
+  diverged            exit 4, status diverged (summary.json divergence: what, message)
+  internal-error, timeout, crashed, other  as the names say
+Writes OUT_DIR/results.csv and OUT_DIR/results.md (a row per pair, then counts per class and per
+generating parameter, the worst rows, wall time). contacts.csv/state.csv are gzipped unless
+--keep-logs.
+"""
+import csv
+import gzip
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.normpath(os.path.join(HERE, '..', '..'))
+DENSITY = 7850.0              # kg/m³, steel
+STIFFNESS_PER_FACE = 1.4e10   # N/m per m face width (the scenarios' contact.stiffness_N_per_m_per_m)
+MOTOR_RAMP_S = 0.05
+FORCE_TOL = 0.03              # share of T/r_b
+PEN_MARGIN_UM = 2.0           # µm above F/k
+DT_CHOICES = (2e-5, 1e-5, 5e-6, 2.5e-6, 1e-6)
+OMEGA_DT_MAX = 1.0           # ω_c·dt bound of the time-step rule (contact period ≥ 2π steps)
+CLASSES = ['physical', 'refused', 'exploded-completed', 'diverged', 'internal-error', 'timeout', 'crashed', 'other']
+
+
+def opt(args, key, default, conv=str):
+    return conv(args[args.index(key) + 1]) if key in args else default
+
+
+def inertia_kg_m2(mesh):
+    """Axial inertia estimate: an external gear as an annulus bore → pitch radius, a ring as an
+    annulus pitch radius → rim, face width from the manifest."""
+    r = mesh['module_m'] * mesh['teeth'] / 2
+    b = mesh['face_width_m']
+    if mesh['internal']:
+        ro = mesh.get('outer_radius_m') or mesh['generator_args'].get('rim_diameter_m', 2.4 * r) / 2
+        ri = r
+    else:
+        ro = r
+        ri = (mesh.get('bore_diameter_m') or mesh['generator_args'].get('bore_diameter_m') or 0.0) / 2
+    return DENSITY * math.pi * b * (ro ** 4 - ri ** 4) / 2
+
+
+def plan(pair, a, b, args):
+    """The run's figures: forces, torques, time step."""
+    m = a['module_m']
+    F = opt(args, '--force-per-module', 100.0, float) * m * 1e3
+    speed = opt(args, '--speed', 20.0, float)
+    Ja, Jb = inertia_kg_m2(a), inertia_kg_m2(b)
+    k = STIFFNESS_PER_FACE * min(a['face_width_m'], b['face_width_m'])
+    m_eq = 1 / (a['base_radius_m'] ** 2 / Ja + b['base_radius_m'] ** 2 / Jb)
+    omega_c = math.sqrt(k / m_eq)
+    dt = opt(args, '--dt', None, float)
+    if dt is None:
+        dt = next((d for d in DT_CHOICES if omega_c * d <= OMEGA_DT_MAX), DT_CHOICES[-1])
+    T_load = F * b['base_radius_m']
+    T_drive = F * a['base_radius_m']
+    # Motor limit: 3 × (steady torque + the torque to bring both gears up to speed over the ramp).
+    ratio = b['teeth'] / a['teeth']
+    accel = speed / MOTOR_RAMP_S
+    T_max = 3 * (T_drive + (Ja + Jb / ratio ** 2) * accel)
+    return dict(F_N=F, T_load=T_load, T_max=T_max, speed=speed, dt=dt, omega_c=omega_c, k_est=k,
+                load_ramp=opt(args, '--load-ramp', None, float), duration=opt(args, '--duration', 0.15, float))
+
+
+RECOGNISE = False  # --recognise: meshes without teeth/tooth0, external pairs without centre distance
+
+
+def mesh_yaml(mesh, corpus_dir):
+    path = os.path.join(corpus_dir, mesh['file'])
+    if RECOGNISE:
+        return '{file: %s, unit: %s}' % (json.dumps(path), mesh['unit'])
+    return '{file: %s, unit: %s, teeth: %d, tooth0_deg: %r}' % (json.dumps(path), mesh['unit'], mesh['teeth'],
+                                                                mesh['tooth0_deg'])
+
+
+def scenario_text(pair, a, b, p, corpus_dir):
+    head = ['# cad_corpus pair %s (written by run_pairs.py)' % pair['id'],
+            'name: %s' % json.dumps(pair['id']), 'duration_s: %r' % p['duration'], 'seed: 0',
+            'solver: {time_step_s: %r, iterations: 50}' % p['dt'],
+            'output: {sample_rate_hz: %r, per_step_log: false}' % float(round(1 / p['dt'])),
+            'contact: {stiffness_N_per_m_per_m: %r, damping_ratio: 0.05, friction: 0.05}' % STIFFNESS_PER_FACE]
+    ramp = ', ramp_time_s: %r' % p['load_ramp'] if p['load_ramp'] is not None else ''
+    motor = ('motors: [{joint: pinion, target_speed_rad_s: %r, ramp_time_s: %r, max_torque_N_m: %.6g}]'
+             % (p['speed'], MOTOR_RAMP_S, p['T_max']))
+    if not pair['internal']:
+        # An external pair: the wheel turns the other way (−z), so the resisting torque is +T about +z.
+        body = ['pair:',
+                '  driver: {name: pinion, density_kg_m3: %r, mesh: %s}' % (DENSITY, mesh_yaml(a, corpus_dir)),
+                '  driven: {name: wheel, density_kg_m3: %r, mesh: %s}' % (DENSITY, mesh_yaml(b, corpus_dir)),
+                *([] if RECOGNISE else ['  centre_distance_m: %r' % pair['centre_distance_m']]),
+                motor,
+                'loads: [{joint: wheel, constant_torque_N_m: %.9g, viscous_N_m_s_per_rad: 0%s}]' % (p['T_load'], ramp)]
+        return '\n'.join(head + body) + '\n'
+    # An internal pair (explicit bodies: the pair macro takes external gears only). Ring at the
+    # origin turned so that a gap is centred on +x; pinion at +x with a tooth centred on +x.
+    # Both turn about +z the same way, so the ring's resisting torque is −T.
+    ring_angle = 180.0 / b['teeth'] - b['tooth0_deg']
+    body = ['bodies:',
+            '  - {name: pinion, density_kg_m3: %r, position_m: [%r, 0, 0], angle_deg: %r, mesh: %s}'
+            % (DENSITY, pair['centre_distance_m'], -a['tooth0_deg'], mesh_yaml(a, corpus_dir)),
+            '  - {name: ring, density_kg_m3: %r, position_m: [0, 0, 0], angle_deg: %r, mesh: %s}'
+            % (DENSITY, ring_angle, mesh_yaml(b, corpus_dir)),
+            'joints: [{name: pinion, body: pinion}, {name: ring, body: ring}]',
+            'transmission: {input_joint: pinion, output_joint: ring, ratio: %r}' % (b['teeth'] / a['teeth']),
+            motor,
+            'loads: [{joint: ring, constant_torque_N_m: %.9g, viscous_N_m_s_per_rad: 0%s}]' % (-p['T_load'], ramp)]
+    return '\n'.join(head + body) + '\n'
+
+
+def read_contacts(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    head, rows = rows[0], rows[1:]
+    fi = next(i for i, h in enumerate(head) if h.endswith('_force_N'))
+    prefix = head[fi][:-len('_force_N')]
+    ni, di = head.index(prefix + '_tooth_pairs'), head.index(prefix + '_max_depth_um')
+    return [(float(r[0]), float(r[fi]), float(r[ni]), float(r[di])) for r in rows if r]
+
+
+def classify(row, rc, summary, contacts, p, ramp_end, stderr):
+    """Fills the row's figures and class from the run's outputs."""
+    row['exit'] = rc
+    if summary:
+        row['status'] = summary.get('status', '')
+        row['pen_run_um'] = summary.get('max_penetration_um')
+        pairs = summary.get('gear_pairs') or []
+        k = pairs[0]['stiffness_N_per_m'] if pairs else p['k_est']
+        row['limit_um'] = p['F_N'] / k * 1e6 + PEN_MARGIN_UM
+        warnings = summary.get('warnings', [])
+        div = summary.get('divergence')
+        dropped = any('dropped' in w for w in warnings) or (div and div.get('what') == 'dropped contacts')
+        row['dropped'] = 'yes' if dropped else 'no'
+        row['wall_s'] = round(summary.get('wall_seconds', 0), 2)
+        if div:
+            row['message'] = '%s at t=%.4g s: %s' % (div.get('what'), div.get('time_s', 0), div.get('message', ''))
+        elif warnings:
+            row['message'] = ' | '.join(warnings)
+    if contacts:
+        after = [c for c in contacts if c[0] >= ramp_end - 1e-12]
+        if after:
+            row['F_mean_N'] = sum(c[1] for c in after) / len(after)
+            row['F_err_pct'] = 100 * (row['F_mean_N'] / p['F_N'] - 1)
+            row['pen_after_um'] = max(c[3] for c in after)
+            row['tooth_pairs_mean'] = sum(c[2] for c in after) / len(after)
+            row['no_contact_share'] = sum(1 for c in after if c[2] == 0) / len(after)
+        row['pen_before_um'] = max((c[3] for c in contacts if c[0] < ramp_end), default=0.0)
+    if rc == 'timeout':
+        row['class'] = 'timeout'
+    elif isinstance(rc, int) and rc < 0:
+        row['class'] = 'crashed'
+        row['message'] = 'signal %d: %s' % (-rc, stderr[-300:])
+    elif rc == 2 and not summary:
+        row['class'] = 'refused'
+        row['message'] = stderr.strip().splitlines()[-1] if stderr.strip() else '(no message)'
+    elif rc == 3:
+        row['class'] = 'internal-error'
+        row['message'] = stderr.strip()[-300:]
+    elif rc == 4 or row.get('status') == 'diverged':
+        row['class'] = 'diverged'
+    elif rc == 0 and row.get('status') == 'completed':
+        why = []
+        if 'F_mean_N' not in row:
+            why.append('no samples after the ramp')
+        else:
+            if abs(row['F_err_pct']) > 100 * FORCE_TOL:
+                why.append('force %+.1f%%' % row['F_err_pct'])
+            if row['pen_after_um'] > row['limit_um']:
+                why.append('penetration %.2f > %.2f um' % (row['pen_after_um'], row['limit_um']))
+        if row['dropped'] == 'yes':
+            why.append('dropped contacts')
+        row['why'] = '; '.join(why)
+        row['class'] = 'exploded-completed' if why else 'physical'
+        # A load applied at t = 0 kicks the driven gear across its backlash before the motor holds:
+        # reported, not classified (the class looks at the run after the ramp).
+        if row.get('pen_before_um', 0) > row['limit_um']:
+            row['note'] = 'start kick: %.2f um before the ramp end' % row['pen_before_um']
+    else:
+        row['class'] = 'other'
+        row['message'] = (row.get('message') or stderr.strip()[-300:])
+    return row
+
+
+def severity(r):
+    """How bad a row is, for the worst-rows table: completed-but-wrong first, by its excess."""
+    if r['class'] == 'exploded-completed':
+        f = abs(r.get('F_err_pct') or 0) / (100 * FORCE_TOL)
+        pen = (r.get('pen_after_um') or 0) / (r.get('limit_um') or 1)
+        return (3, max(f, pen))
+    if r['class'] in ('crashed', 'internal-error', 'timeout', 'other'):
+        return (2, 0)
+    if r['class'] == 'diverged':
+        return (1, r.get('pen_run_um') or 0)
+    return (0, 0)
+
+
+COLUMNS = ['id', 'family', 'internal', 'module_mm', 'pa_deg', 'facets', 'format', 'backlash_mm', 'z_driver', 'z_driven',
+           'noise', 'web_holes', 'dt_s', 'omega_c_dt', 'exit', 'status', 'class', 'F_nom_N', 'F_mean_N', 'F_err_pct',
+           'tooth_pairs_mean', 'no_contact_share', 'pen_after_um', 'pen_before_um', 'pen_run_um', 'limit_um', 'dropped',
+           'wall_s', 'why', 'note', 'message']
+
+
+def fmt(v, digits=3):
+    if v is None or v == '':
+        return ''
+    if isinstance(v, float):
+        return '%.*g' % (digits, v)
+    return str(v)
+
+
+def write_results(out_dir, rows, wall, args):
+    with open(os.path.join(out_dir, 'results.csv'), 'w', newline='') as f:
+        w = csv.DictWriter(f, COLUMNS, extrasaction='ignore')
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: fmt(r.get(k), 6) for k in COLUMNS})
+    md = ['# cad_corpus results', '',
+          '%d pairs, harness wall %.0f s (%s). Driver %s rad/s, F = %s N per mm of module, load ramp %s, '
+          'duration %s s. physical: |F_mean/(T/r_b) − 1| ≤ 3 %% after the ramp, no dropped contacts, '
+          'deepest contact after the ramp ≤ F/k + 2 µm.'
+          % (len(rows), wall, time.strftime('%Y-%m-%d %H:%M'), opt(args, '--speed', '20'),
+             opt(args, '--force-per-module', '100'), opt(args, '--load-ramp', 'none'), opt(args, '--duration', '0.15')),
+          '', '## Counts', '']
+    counts = {c: sum(1 for r in rows if r['class'] == c) for c in CLASSES}
+    md += ['| class | pairs |', '|---|---|'] + ['| %s | %d |' % (c, n) for c, n in counts.items() if n] + ['']
+    present = [c for c in CLASSES if counts[c]]
+    for key in ('family', 'internal', 'module_mm', 'pa_deg', 'facets', 'format', 'backlash_mm', 'z_driver', 'z_driven',
+                'noise', 'web_holes'):
+        md += ['### by %s' % key, '', '| %s | %s |' % (key, ' | '.join(present)), '|---' * (len(present) + 1) + '|']
+        values = sorted({fmt(r.get(key)) for r in rows}, key=lambda s: (len(s) > 0 and s[0].isdigit(), _num(s), s))
+        for v in values:
+            sel = [r for r in rows if fmt(r.get(key)) == v]
+            md.append('| %s | %s |' % (v or '–', ' | '.join(str(sum(1 for r in sel if r['class'] == c)) for c in present)))
+        md.append('')
+    refusals = {}
+    for r in rows:
+        if r['class'] == 'refused':
+            kind = _message_kind(r.get('message', ''))
+            refusals[kind] = refusals.get(kind, 0) + 1
+    if refusals:
+        md += ['## Refusals by message', '', '| message (start) | pairs |', '|---|---|']
+        md += ['| %s | %d |' % (k.replace('|', '/'), n) for k, n in sorted(refusals.items(), key=lambda kv: -kv[1])] + ['']
+    short = ['id', 'class', 'dt_s', 'F_err_pct', 'tooth_pairs_mean', 'pen_after_um', 'pen_run_um', 'limit_um',
+             'dropped', 'why', 'message']
+    worst = sorted([r for r in rows if severity(r)[0] > 0], key=severity, reverse=True)[:10]
+    md += ['## Worst rows', '', _table(worst, short), '', '## Every pair', '', _table(rows, short), '']
+    open(os.path.join(out_dir, 'results.md'), 'w').write('\n'.join(md))
+
+
+def _num(s):
+    try:
+        return float(s)
+    except ValueError:
+        return 0.0
+
+
+def _message_kind(msg):
+    """The message up to its first figure: groups refusals of the same kind."""
+    msg = msg.replace('gearsim: error: ', '')
+    for i, ch in enumerate(msg):
+        if ch.isdigit() and i > 20:
+            return msg[:i].rsplit(' ', 1)[0][:120]
+    return msg[:120]
+
+
+def _table(rows, cols):
+    out = ['| ' + ' | '.join(cols) + ' |', '|---' * len(cols) + '|']
+    for r in rows:
+        cells = [fmt(r.get(c)).replace('|', '/').replace('\n', ' ') for c in cols]
+        cells[-1] = cells[-1][:220]
+        out.append('| ' + ' | '.join(cells) + ' |')
+    return '\n'.join(out)
+
+
+def main(argv):
+    args = argv[1:]
+    if len(args) < 2 or args[0].startswith('-'):
+        print(__doc__)
+        return 2
+    corpus_dir, out_dir = os.path.abspath(args[0]), os.path.abspath(args[1])
+    gearsim = os.path.abspath(opt(args, '--gearsim', os.path.join(REPO, 'build', 'bin', 'gearsim')))
+    timeout = opt(args, '--timeout', 300.0, float)
+    global RECOGNISE
+    RECOGNISE = '--recognise' in args
+    manifest = json.load(open(os.path.join(corpus_dir, 'corpus.json')))
+    meshes = {m['name']: m for m in manifest['meshes']}
+    pairs = [p for p in manifest['pairs'] if opt(args, '--filter', '') in p['id']]
+    os.makedirs(out_dir, exist_ok=True)
+    rows, t0 = [], time.monotonic()
+    for n, pair in enumerate(pairs):
+        a, b = meshes[pair['driver']], meshes[pair['driven']]
+        p = plan(pair, a, b, args)
+        run_dir = os.path.join(out_dir, 'runs', pair['id'])
+        if os.path.isdir(run_dir):
+            shutil.rmtree(run_dir)
+        os.makedirs(run_dir)
+        scen = os.path.join(run_dir, 'scenario.yaml')
+        open(scen, 'w').write(scenario_text(pair, a, b, p, corpus_dir))
+        out = os.path.join(run_dir, 'out')
+        try:
+            r = subprocess.run([gearsim, 'run', scen, '--out', out, '--no-analyze'], capture_output=True, text=True,
+                               timeout=timeout)
+            rc, stdout, stderr = r.returncode, r.stdout, r.stderr
+        except subprocess.TimeoutExpired as e:
+            rc, stdout, stderr = 'timeout', str(e.stdout or ''), str(e.stderr or '')
+        open(os.path.join(run_dir, 'stdout.txt'), 'w').write(stdout)
+        open(os.path.join(run_dir, 'stderr.txt'), 'w').write(stderr)
+        sp = os.path.join(out, 'summary.json')
+        summary = json.load(open(sp)) if os.path.exists(sp) else None
+        cp = os.path.join(out, 'contacts.csv')
+        contacts = read_contacts(cp) if os.path.exists(cp) and os.path.getsize(cp) > 0 else None
+        ramp_end = max(MOTOR_RAMP_S, p['load_ramp'] or 0.0)
+        noise = a['noise']['mode'] if a.get('noise') else ''
+        row = {'id': pair['id'], 'family': pair['family'], 'internal': 'yes' if pair['internal'] else 'no',
+               'module_mm': a['module_m'] * 1e3, 'pa_deg': a['pressure_angle_deg'], 'facets': a['facets'] or 'gearsim',
+               'format': a['format'] if a['format'] == b['format'] else a['format'] + '+' + b['format'],
+               'backlash_mm': pair['backlash_m'] * 1e3, 'z_driver': a['teeth'], 'z_driven': b['teeth'], 'noise': noise,
+               'web_holes': 'yes' if a.get('web_holes') or b.get('web_holes') else 'no',
+               'dt_s': p['dt'], 'omega_c_dt': p['omega_c'] * p['dt'], 'F_nom_N': p['F_N']}
+        classify(row, rc, summary, contacts, p, ramp_end, stderr)
+        rows.append(row)
+        if '--keep-logs' not in args:
+            for name in ('contacts.csv', 'state.csv'):
+                f = os.path.join(out, name)
+                if os.path.exists(f):
+                    with open(f, 'rb') as src, gzip.open(f + '.gz', 'wb') as dst:
+                        shutil.copyfileobj(src, dst)
+                    os.remove(f)
+        print('[%d/%d] %-70s %-18s %s' % (n + 1, len(pairs), pair['id'][:70], row['class'],
+                                          row.get('why') or (row.get('message') or '')[:100]), flush=True)
+        write_results(out_dir, rows, time.monotonic() - t0, args)
+    write_results(out_dir, rows, time.monotonic() - t0, args)
+    counts = {c: sum(1 for r in rows if r['class'] == c) for c in CLASSES}
+    print('done in %.0f s: %s' % (time.monotonic() - t0, ', '.join('%s %d' % kv for kv in counts.items() if kv[1])))
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))

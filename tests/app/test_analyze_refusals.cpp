@@ -1,0 +1,62 @@
+// `gearsim analyze` and `gearsim report` on run folders that do not hold enough to analyse: a
+// state.csv with no rows after the motors' ramp while contacts.csv has them, or a contacts.csv
+// without a force column. Each is refused with exit code 2 and a message naming the file —
+// never a crash. The folders are made by hand: a summary.json naming the paper scenario, and
+// logs at its 2 kHz output rate.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/support/asset_scenario.hpp"
+#include "tests/support/cli_run.hpp"
+
+namespace test_analyze_refusals {
+
+namespace fs = std::filesystem;
+
+// A run folder of paper_dynamics_healthy.yaml (ramps end at 0.05 s): contacts.csv with
+// `contacts_header` and rows every 0.5 ms to 0.3 s, state.csv (time_s, te_rad) up to `state_to_s`.
+fs::path hand_made_run(const std::string& contacts_header, double state_to_s) {
+  const fs::path dir = gearsim::test::fresh_test_dir();
+  std::ofstream(dir / "summary.json") << "{\"scenario_file\": \"" << GEARSIM_SOURCE_DIR
+                                      << "/assets/scenarios/paper_dynamics_healthy.yaml\", \"overrides\": [], "
+                                         "\"status\": \"completed\", \"sim_seconds\": 0.3}\n";
+  std::ofstream contacts(dir / "contacts.csv"), state(dir / "state.csv");
+  contacts << contacts_header << "\n";
+  state << "time_s,te_rad\n";
+  for (int k = 1; k <= 600; ++k) {
+    const double t = 0.0005 * k;
+    contacts << t << ",118.0,1,0.9\n";
+    if (t <= state_to_s) state << t << ",1e-5\n";
+  }
+  return dir;
+}
+
+void expect_refused(const fs::path& dir, const std::string& file, const std::string& why) {
+  for (const char* cmd : {"analyze ", "report "}) {
+    const gearsim::test::CliRun r = gearsim::test::gearsim(cmd + dir.string());
+    EXPECT_EQ(r.exit_code, 2) << cmd << r.output;
+    EXPECT_NE(r.output.find((dir / file).string() + ": "), std::string::npos) << cmd << r.output;
+    EXPECT_NE(r.output.find(why), std::string::npos) << cmd << r.output;
+  }
+  EXPECT_FALSE(fs::exists(dir / "report.html"));
+}
+
+TEST(AnalyzeRefusals, StateWithoutRowsAfterTheRampIsRefusedNotACrash) {
+  const fs::path dir = hand_made_run("time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um", 0.04);
+  expect_refused(dir, "state.csv", "only 0 rows after t = 0.05");
+}
+
+TEST(AnalyzeRefusals, StateWithTooFewRowsAfterTheRampIsRefused) {
+  const fs::path dir = hand_made_run("time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um", 0.06);
+  expect_refused(dir, "state.csv", "at least 64 are needed");
+}
+
+TEST(AnalyzeRefusals, ContactsWithoutAForceColumnIsRefused) {
+  const fs::path dir = hand_made_run("time_s,a,b,c", 0.3);
+  expect_refused(dir, "contacts.csv", "no <pair>_force_N column");
+}
+
+}  // namespace test_analyze_refusals

@@ -1,0 +1,134 @@
+// A run stopped from outside (SIGTERM, SIGINT) ends at one step with every log complete up to it,
+// status "interrupted" and the signal's exit code (128 + signal); a run into a folder that holds an
+// earlier run's outputs removes them first, so no stale summary or analysis sits beside new logs.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "tests/support/cli_run.hpp"
+
+namespace test_run_stop {
+
+namespace fs = std::filesystem;
+
+// Data rows of a CSV log (after the header), and whether the file ends with a complete line.
+struct CsvTail {
+  std::size_t columns_header = 0;
+  std::size_t rows = 0;
+  bool every_row_complete = true;
+  double last_time_s = -1;
+};
+
+std::size_t count_columns(const std::string& line) {
+  return static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1;
+}
+
+CsvTail read_csv(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream all;
+  all << f.rdbuf();
+  const std::string text = all.str();
+  CsvTail t;
+  if (text.empty()) return t;
+  t.every_row_complete = text.back() == '\n';
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  t.columns_header = count_columns(line);
+  while (std::getline(in, line)) {
+    ++t.rows;
+    if (count_columns(line) != t.columns_header) t.every_row_complete = false;
+    t.last_time_s = std::stod(line.substr(0, line.find(',')));
+  }
+  return t;
+}
+
+// Starts `gearsim run` on the healthy paper scenario for 2 s, waits until it has logged rows, sends
+// it `sig` and returns its exit status.
+int run_and_signal(const fs::path& dir, int sig) {
+  fs::remove_all(dir);
+  const std::string bin = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim";
+  const std::string scenario = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execl(bin.c_str(), bin.c_str(), "run", scenario.c_str(), "--out", dir.c_str(), "--duration", "2",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Wait for a few rows past the header (the run logs at 2 kHz), at most 5 minutes.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fs::exists(dir / "state.csv") && fs::file_size(dir / "state.csv") > 4096) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  kill(pid, sig);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void expect_interrupted(const fs::path& dir, const std::string& signal_name) {
+  std::ifstream f(dir / "summary.json");
+  ASSERT_TRUE(f) << "no summary.json after " << signal_name;
+  const nlohmann::json s = nlohmann::json::parse(f);
+  EXPECT_EQ(s["status"], "interrupted");
+  EXPECT_EQ(s["signal"], signal_name);
+  const double t = s["sim_seconds"].get<double>();
+  EXPECT_GT(t, 0.0);
+  EXPECT_LT(t, 2.0);
+  // Both logs end at the same, complete row: the step the run stopped at.
+  const CsvTail state = read_csv(dir / "state.csv"), contacts = read_csv(dir / "contacts.csv");
+  EXPECT_TRUE(state.every_row_complete);
+  EXPECT_TRUE(contacts.every_row_complete);
+  EXPECT_GT(state.rows, 1u);
+  EXPECT_EQ(state.rows, contacts.rows);
+  EXPECT_DOUBLE_EQ(state.last_time_s, t);
+  EXPECT_DOUBLE_EQ(contacts.last_time_s, t);
+  EXPECT_FALSE(fs::exists(dir / "analysis.json"));  // an interrupted run is not analysed
+}
+
+TEST(RunStop, SigtermEndsTheRunAtOneStepWithExitCode143) {
+  const fs::path dir = fs::temp_directory_path() / "gearsim_stop_term";
+  EXPECT_EQ(run_and_signal(dir, SIGTERM), 143);
+  expect_interrupted(dir, "SIGTERM");
+}
+
+TEST(RunStop, SigintEndsTheRunAtOneStepWithExitCode130) {
+  const fs::path dir = fs::temp_directory_path() / "gearsim_stop_int";
+  EXPECT_EQ(run_and_signal(dir, SIGINT), 130);
+  expect_interrupted(dir, "SIGINT");
+}
+
+TEST(RunStop, ARunIntoAUsedFolderRemovesTheEarlierRunsOutputsOnly) {
+  const fs::path dir = fs::temp_directory_path() / "gearsim_stop_reused";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "frames");
+  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "frames/f_000001.png"})
+    std::ofstream(dir / f) << "from an earlier run\n";
+  std::ofstream(dir / "notes.txt") << "the user's own file\n";
+  const gearsim::test::CliRun r = gearsim::test::gearsim(
+      std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
+      " --duration 0.002 --no-analyze");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("removed 5 outputs of a previous run"), std::string::npos) << r.output;
+  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "frames"})
+    EXPECT_FALSE(fs::exists(dir / f)) << f;
+  EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "summary.json"));
+  EXPECT_TRUE(fs::exists(dir / "state.csv"));
+}
+
+}  // namespace test_run_stop

@@ -1,0 +1,113 @@
+// A gear mesh brought into its gear frame wherever and however the CAD tool modelled it: about
+// x, y or −z, off the origin. The frame's axis and origin land on the gear's, the tooth angles
+// read as in the tool (seen from the positive end of its axis).
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <string>
+#include <numbers>
+
+#include "geometry/extrude.hpp"
+#include "geometry/gear_profile.hpp"
+#include "geometry/mesh_gear.hpp"
+#include "tests/support/gear_specs.hpp"
+#include "geometry/constants.hpp"
+
+namespace gearsim {
+namespace test_mesh_gear {
+
+using gearsim::constants::kPi;
+
+// Gear 23 (m 1 mm, bore 8 mm) with tooth 0 at 5°, extruded 10 mm, moved by `pose`.
+TriMesh posed_gear(const Eigen::Isometry3d& pose) {
+  GearSpec s = test::external_gear(23);
+  s.tooth0_angle_rad = 5 * kPi / 180;
+  TriMesh m = extrude(make_gear_outline(s).outline, 0.0, 0.010);
+  for (Eigen::Vector3d& v : m.vertices) v = pose * v;
+  return m;
+}
+
+MeshGear gear_of(const TriMesh& m) {
+  const PrismRecovery pr = recover_prism(m, kCadPrismTolerance_m);
+  EXPECT_TRUE(pr.prism.has_value()) << pr.reason;
+  return mesh_gear(pr.prism.value_or(Prism{}));
+}
+
+TEST(MeshGear, AGearOffTheOriginIsRecentredOnItsAxis) {
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.translation() = Eigen::Vector3d(0.040, -0.025, 0.003);
+  const MeshGear g = gear_of(posed_gear(pose));
+  ASSERT_TRUE(g.recognition.gear) << g.recognition.reason;
+  EXPECT_EQ(g.recognition.gear->teeth, 23);
+  // The offset in the cap plane, and the frame origin on the axis at mid face width (1e-9 m:
+  // the centroid of float-free vertices, exact to rounding).
+  EXPECT_NEAR((g.axis_offset_m - Eigen::Vector2d(0.040, -0.025)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR((g.origin_m - Eigen::Vector3d(0.040, -0.025, 0.008)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(g.recognition.gear->axis_m.norm(), 0.0, 1e-12);
+  EXPECT_NEAR(std::remainder(g.recognition.gear->tooth0_angle_rad - 5 * kPi / 180, 2 * kPi / 23), 0.0, 1e-5);
+  // A point on the axis maps to the gear frame's origin.
+  EXPECT_NEAR(g.to_gear(Eigen::Vector3d(0.040, -0.025, 0.008)).norm(), 0.0, 1e-9);
+}
+
+TEST(MeshGear, AGearModelledAboutXKeepsItsTeethAndFaceWidth) {
+  // Gear axis along world +x: rotate the z-modelled gear by +90° about y (z → x).
+  Eigen::Isometry3d pose(Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()));
+  const MeshGear g = gear_of(posed_gear(pose));
+  ASSERT_TRUE(g.recognition.gear) << g.recognition.reason;
+  EXPECT_EQ(g.recognition.gear->teeth, 23);
+  EXPECT_NEAR(g.face_width_m, 0.010, 1e-12);
+  EXPECT_NEAR(std::abs(g.rotation.col(2).dot(Eigen::Vector3d::UnitX())), 1.0, 1e-12);
+  EXPECT_TRUE(g.recognition.gear->involute);
+}
+
+TEST(MeshGear, AGearModelledAboutMinusZIsMirroredIntoPlusZ) {
+  // Turned over about x: its axis points along −z; seen from −z the teeth run the other way.
+  Eigen::Isometry3d pose(Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitX()));
+  const MeshGear g = gear_of(posed_gear(pose));
+  ASSERT_TRUE(g.recognition.gear) << g.recognition.reason;
+  EXPECT_GT(g.rotation.col(2).z(), 0.0);
+  // Turning over about x maps polar angle θ to −θ: tooth 0 at −5°.
+  EXPECT_NEAR(std::remainder(g.recognition.gear->tooth0_angle_rad + 5 * kPi / 180, 2 * kPi / 23), 0.0, 1e-5);
+}
+
+TEST(MeshGear, LayoutChecksNameWhatTheMeshShows) {
+  const MeshGear g = gear_of(posed_gear(Eigen::Isometry3d::Identity()));
+  ASSERT_TRUE(g.recognition.gear);
+  const RecognisedGear& r = *g.recognition.gear;
+  const double pitch = 2 * kPi / 23, t0 = 5 * kPi / 180;
+  EXPECT_EQ(layout_mismatch(r, {23, t0}), "");
+  EXPECT_EQ(layout_mismatch(r, {23, t0 + 7 * pitch}), "");       // another tooth numbered 0: same layout
+  EXPECT_EQ(layout_mismatch(r, {23, t0 + 0.015 * pitch}), "");   // within 2 % of a pitch
+  EXPECT_NE(layout_mismatch(r, {23, t0 + 0.5 * pitch}).find("50 % of a pitch"), std::string::npos);
+  EXPECT_NE(layout_mismatch(r, {24, t0}).find("24 teeth given, the mesh shows 23"), std::string::npos);
+  EXPECT_EQ(implausible_unit(r, LengthUnit::Millimetre), "");
+}
+
+// OpenSCAD MCAD gears (tests/data/mcad: module 1 mm, 20°, 5 facets per involute, a radial flank
+// from the root up to the base circle): the z 24 wheel has one vertex per flank in the usual
+// 60–90 % window of the depth, so the fit must widen to the whole flank. Both recognised gears
+// carry the base radius z·m·cos α / 2 their generator used within 0.5 µm (a two-parameter fit
+// through six vertices a flank near the base circle; 0.5 µm is 0.01 % of r_b, far inside the
+// 0.2 % that separates standard pressure angles).
+TEST(MeshGear, CoarselyFacetedMcadInvolutesGiveTheirBaseCircles) {
+  for (int z : {12, 24}) {
+    const std::string file =
+        std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(z) + "_a20_f5_b005.stl";
+    const MeshGearFile f = read_mesh_gear(file, LengthUnit::Millimetre);
+    ASSERT_TRUE(f.gear.has_value()) << f.not_prism;
+    ASSERT_TRUE(f.gear->recognition.gear.has_value()) << f.gear->recognition.reason;
+    const RecognisedGear& g = *f.gear->recognition.gear;
+    EXPECT_EQ(g.teeth, z);
+    ASSERT_TRUE(g.involute) << "z " << z;
+    const double rb = 0.5 * z * 1e-3 * std::cos(20 * kPi / 180);
+    EXPECT_NEAR(g.ccw.base_radius_m, rb, 0.5e-6) << "z " << z;
+    EXPECT_NEAR(g.cw.base_radius_m, rb, 0.5e-6) << "z " << z;
+    EXPECT_TRUE(g.standard) << "z " << z;
+    EXPECT_NEAR(g.module_m, 1e-3, 1e-12) << "z " << z;
+    EXPECT_NEAR(g.pressure_angle_rad, 20 * kPi / 180, 1e-9) << "z " << z;
+  }
+}
+
+}  // namespace test_mesh_gear
+}  // namespace gearsim
