@@ -30,7 +30,7 @@ struct InspectOptions {
   double density_kg_m3 = constants::kPaperSteelDensity_kg_m3;
   int teeth = 0;
   double tooth0_deg = 0;
-  double prism_tolerance_um = 0.1;
+  double prism_tolerance_um = kCadPrismTolerance_m * 1e6;
   double spacing_mm = 0.5;
   bool json_only = false;
 };
@@ -205,8 +205,8 @@ void register_inspect(CLI::App& app) {
       ->check(CLI::Range(3, 100000));
   sub->add_option("--tooth0-deg", o->tooth0_deg, "Polar angle of tooth 0's centre line, in degrees. Default 0.");
   sub->add_option("--prism-tolerance", o->prism_tolerance_um,
-                  "How far, in µm, a vertex may lie off the two cap planes and still count as a prism. Default 0.1 "
-                  "(STL stores float32: ~0.003 µm at gear scale).")
+                  "How far, in µm, a vertex may lie off the two cap planes and still count as a prism. Default 2, "
+                  "as for scenario meshes (STL stores float32: ~0.003 µm at gear scale; CAD noise ~1 µm).")
       ->check(CLI::PositiveNumber);
   sub->add_option("--hausdorff-spacing", o->spacing_mm, "Sample spacing, in mm, of the deviation measurement (every vertex is sampled; edges and faces at this spacing). Default 0.5.")
       ->check(CLI::PositiveNumber);

@@ -4,6 +4,7 @@
 // stops at that step with status "diverged" and exit code kExitDiverged, its logs kept.
 #include <unistd.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -22,6 +23,7 @@
 #include "app/run_dir.hpp"
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
+#include "geometry/gear_spec.hpp"
 #include "physics/power_balance.hpp"
 #include "physics/run_bounds.hpp"
 #include "physics/step_log.hpp"
@@ -128,6 +130,9 @@ void run(const RunOptions& o) {
   const double setup_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   physics::PowerBalance power;
   std::vector<double> speed_sum(world.bodies().size(), 0.0);
+  // Per gear pair, the normal forces on the counter-clockwise and clockwise flanks of its first
+  // gear's teeth, summed over the steady window's steps: drive and back flanks apart.
+  std::vector<std::array<double, 2>> flank_force_sum(world.gear_pairs().size(), {0.0, 0.0});
   long speed_count = 0;
   double max_pen = 0;
   const double ramp_end = physics::ramps_end_s(s);
@@ -168,6 +173,8 @@ void run(const RunOptions& o) {
     }
     if (!diverged && world.time_s() >= ramp_end) {
       for (std::size_t b = 0; b < world.bodies().size(); ++b) speed_sum[b] += world.bodies()[b].speed_rad_s;
+      for (const physics::ContactSample& c : world.contacts())
+        flank_force_sum[static_cast<std::size_t>(c.pair)][c.geometry.flank_a == Flank::Cw] += c.normal_force_N;
       power.add(world.power(), world.time_s());
       ++speed_count;
     }
@@ -232,9 +239,18 @@ void run(const RunOptions& o) {
                                {"bullet_solver_and_measuring", world.profile().step_total_s - world.profile().tooth_contact_s},
                                {"logging_and_output", wall - setup_wall - world.profile().step_total_s}};
   json pairs = json::array();
-  for (const physics::GearPairInfo& p : world.gear_pairs()) {
+  for (std::size_t i = 0; i < world.gear_pairs().size(); ++i) {
+    const physics::GearPairInfo& p = world.gear_pairs()[i];
     pairs.push_back({{"a", p.body_a}, {"b", p.body_b}, {"stiffness_N_per_m", p.stiffness_N_per_m}, {"damping_N_s_per_m", p.damping_N_s_per_m}});
     if (!p.stiffness_table.empty()) pairs.back()["stiffness_table"] = p.stiffness_table;
+    // Mean normal force on each flank side of a's teeth over the steady window (the speeds'):
+    // one side drives, the other touches only without backlash (double-flank contact) or in
+    // rattle. The torque they carry is their difference times the base radius.
+    if (speed_count) {
+      const double n = static_cast<double>(speed_count);
+      pairs.back()["mean_normal_force_N"] = {{"ccw_flanks_of_a", flank_force_sum[i][0] / n},
+                                             {"cw_flanks_of_a", flank_force_sum[i][1] / n}};
+    }
   }
   summary["gear_pairs"] = pairs;
   // The pair macro's gear table at the centre distance it used (mesh members: from their fits).

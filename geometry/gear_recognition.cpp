@@ -69,6 +69,9 @@ constexpr std::array kDiametralPitches = {1.0,  1.25, 1.5,  1.75, 2.0,  2.25, 2.
 constexpr std::array kPressureAngles_deg = {14.5, 15.0, 16.0, 17.5, 18.0, 20.0, 22.5, 25.0, 28.0, 30.0};
 // Tooth depth of the ISO 53 basic rack (addendum 1 + dedendum 1.25), in modules.
 constexpr double kRackDepth = 2.25;
+// Weight of a candidate's |profile shift| against its relative depth error when choosing (m, α):
+// 0.2 makes a shift of 0.5 (about the largest in use) cost as much as a depth 10 % off 2.25 m.
+constexpr double kShiftWeight = 0.2;
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -382,17 +385,37 @@ InvoluteFit fit_flank(const FlankPoints& f, const RecognisedGear& g) {
   return fit;
 }
 
-// Module and pressure angle from the base pitch and the depth (see RecognisedGear::standard).
+// Tooth thickness at the reference circle m·z/2 of a candidate module, from the two flank fits, m.
+double reference_thickness(const RecognisedGear& g, double module_m) {
+  const double sigma = g.internal ? -1.0 : 1.0, r = 0.5 * module_m * g.teeth;
+  const double half_ccw = g.ccw.base_half_angle_rad - sigma * inv_at(g.ccw.base_radius_m, r);
+  const double half_cw = g.cw.base_half_angle_rad - sigma * inv_at(g.cw.base_radius_m, r);
+  return r * (half_ccw + half_cw);
+}
+
+// Profile shift coefficient of a candidate (m, α): the reference thickness beyond half the pitch,
+// over 2·m·tan α (ISO 21771, external gears). For a ring the same formula on its tooth gives the
+// shift's size; its sign convention varies, so only the size is used (to choose m and α).
+double profile_shift(const RecognisedGear& g, double module_m, double pressure_angle_rad) {
+  return (reference_thickness(g, module_m) / module_m - 0.5 * kPi) / (2 * std::tan(pressure_angle_rad));
+}
+
+// Module and pressure angle from the base pitch, the depth and the tooth thickness (see
+// RecognisedGear::standard). Every standard (m, α) with m·cos α on the base pitch is a valid
+// reading of the same involutes (a change of α is a change of profile shift); the one chosen
+// needs the least departure from a standard gear: its depth nearest 2.25 m and its profile shift
+// nearest 0, weighted kShiftWeight per unit of shift. E.g. a 60-tooth ring of m 1 mm, 25° with a
+// 2.05 m stub depth also reads as m 0.95 mm, 17.5° with depth 2.16 m — but a shift of 1.9.
 void module_and_pressure_angle(RecognisedGear& g) {
   const double mcos = g.base_pitch_m / kPi, m_depth = std::abs(g.root_radius_m - g.tip_radius_m) / kRackDepth;
-  double best_err = 1e300;
+  double best_score = 1e300;
   auto consider = [&](double m) {
     if (m < 0.75 * m_depth || m > 1.33 * m_depth) return;
     for (double a_deg : kPressureAngles_deg) {
       const double a = a_deg * kPi / 180;
       if (std::abs(m * std::cos(a) - mcos) > kStandardMatch * mcos) continue;
-      const double err = std::abs(m - m_depth);
-      if (err < best_err) best_err = err, g.module_m = m, g.pressure_angle_rad = a, g.standard = true;
+      const double score = std::abs(m / m_depth - 1) + kShiftWeight * std::abs(profile_shift(g, m, a));
+      if (score < best_score) best_score = score, g.module_m = m, g.pressure_angle_rad = a, g.standard = true;
     }
   };
   for (double m_mm : kModules_mm) consider(m_mm * 1e-3);
@@ -401,14 +424,9 @@ void module_and_pressure_angle(RecognisedGear& g) {
     g.module_m = m_depth;
     g.pressure_angle_rad = mcos < m_depth ? std::acos(mcos / m_depth) : 0.0;
   }
-  const double sigma = g.internal ? -1.0 : 1.0;
   g.reference_radius_m = 0.5 * g.module_m * g.teeth;
-  const double r = g.reference_radius_m;
-  const double half_ccw = g.ccw.base_half_angle_rad - sigma * inv_at(g.ccw.base_radius_m, r);
-  const double half_cw = g.cw.base_half_angle_rad - sigma * inv_at(g.cw.base_radius_m, r);
-  g.reference_thickness_m = r * (half_ccw + half_cw);
-  if (!g.internal && g.pressure_angle_rad > 0)
-    g.profile_shift = (g.reference_thickness_m / g.module_m - 0.5 * kPi) / (2 * std::tan(g.pressure_angle_rad));
+  g.reference_thickness_m = reference_thickness(g, g.module_m);
+  if (!g.internal && g.pressure_angle_rad > 0) g.profile_shift = profile_shift(g, g.module_m, g.pressure_angle_rad);
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ struct RecognisedGear {
   double base_pitch_m = 0;    // 2π r_b / z, m
   // Module and pressure angle: m·cos α equals the base pitch / π exactly; which (m, α) is an
   // assumption. `standard` when a module of ISO 54 / DIN 780 (or a diametral pitch) with a common
-  // pressure angle matches the base pitch within kStandardMatch and the tooth depth within 25 %;
+  // pressure angle matches the base pitch within kStandardMatch and the tooth depth within 25 %
+  // (of several, the one with depth nearest 2.25 m and the smallest profile shift);
   // otherwise m is the depth / 2.25 (the ISO 53 rack) and α follows. Without involute flanks
   // only module_m is set, to that depth / 2.25.
   bool standard = false;

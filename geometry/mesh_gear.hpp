@@ -39,8 +39,10 @@ struct MeshGear {
 MeshGear mesh_gear(const Prism& prism);
 
 // How far, in m, a CAD mesh's vertex may lie off its two cap planes and still count as a prism:
-// STL stores float32 (~3 nm at 50 mm, 15 nm past 128 mm); noise beyond is not a prism.
-inline constexpr double kCadPrismTolerance_m = 0.1e-6;
+// STL stores float32 (~3 nm at 50 mm, 15 nm past 128 mm) and CAD exports carry coordinate noise
+// (±0.5 µm per coordinate is 1 µm between two vertices); 2 µm, the default flank-table departure
+// (contact.max_flank_departure_m): a mesh rougher than that could not be simulated anyway.
+inline constexpr double kCadPrismTolerance_m = 2e-6;
 
 // A mesh file read (import_mesh), checked to be a valid solid (throws InputError naming the
 // file otherwise) and, when it is a prism, brought into its gear frame.

@@ -25,10 +25,20 @@ constexpr int kGoldenIterations = 20;
 constexpr int kParabolaFits = 3;
 constexpr double kParabolaShrink = 1.0 / 8;
 
-// Gap below which a flank's coarse maximum is refined, m. Normally 5 µm: the parabola between
-// samples 140 µm apart (16 samples over a 2.25 mm module-1 tooth) rises at most ~1.2 µm at the
-// sun–planet curvature; 5 µm also covers module-2 teeth with 16 samples.
+// Gap below which a flank's coarse maximum is refined, m, for probe samples up to
+// kRefineStep_m apart: 5 µm. The skipping of samples below rests on it: between two samples
+// s steps apart the depth rises at most s²·window above the higher, which holds where the
+// two flanks' relative radius of curvature exceeds step²/(8·window) — 0.56 mm at 150 µm steps
+// (16 samples over a 2.25 mm module-1 tooth; the sun–planet pair's is ~2.4 mm).
 constexpr double kRefineWithin_m = 5e-6;
+constexpr double kRefineStep_m = 150e-6;
+
+// The window for a table whose probe samples lie `step` apart, m. Radii of curvature grow with
+// the teeth as the step does, so the rise between samples grows as the step: on a module-4
+// tooth (604 µm steps, 7.9 mm relative radius) the depth rose 21 µm above the higher of two
+// samples two steps apart, beyond 4 × 5 µm, and a 1.2 µm contact went unseen for 4 steps.
+// Never below kRefineWithin_m.
+double refine_window_m(double step) { return kRefineWithin_m * std::max(1.0, step / kRefineStep_m); }
 
 constexpr double kNone = FlankTable::kNoDepth;
 
@@ -189,8 +199,8 @@ double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hi
 
 // The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
 // first order, the best refined, and the result measured exactly. A flank whose best sample
-// stays more than kRefineWithin_m clear of y returns no hit. With `tip_only`, only a maximum at
-// the tooth's free end (its tip corner) is looked for.
+// stays more than its refinement window (refine_window_m) clear of y returns no hit. With
+// `tip_only`, only a maximum at the tooth's free end (its tip corner) is looked for.
 // `hint`: y's tooth the last probe faced (or −1); the next ones along the flank, or on the next
 // flank, face it or a neighbour. Updated.
 Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
@@ -200,6 +210,7 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
   depth.fill(kNone);
   int best_i = -1;
   const std::uint32_t material = x.table.probe_material(k, f);
+  const double window = refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0));
   auto missing = [&](int i) { return i < 0 || i >= n || !((material >> i) & 1u); };
   auto probe_sample = [&](int i) {
     depth[i] = missing(i) ? kNone : depth_of(xy, x.table.probe_point(k, f, i), hint);
@@ -214,15 +225,15 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
     while (missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
     for (int j = 0; j < 2; ++j)
       if (!missing(end + j * dir)) probe_sample(end + j * dir);
-    if (best_i < 0 || depth[best_i] < -kRefineWithin_m) return {};
+    if (best_i < 0 || depth[best_i] < -window) return {};
     if (!missing(end + 2 * dir)) probe_sample(end + 2 * dir);
     if (best_i == end + 2 * dir) return {};
   } else {
     // Coarse to fine, probing a sample only where it can matter. Between two samples s·step
-    // apart the depth rises at most s²·kRefineWithin_m above the higher (the parabola bound
-    // kRefineWithin_m rests on, with room to spare); a stretch next to a sample that measured
+    // apart the depth rises at most s²·window above the higher (the parabola bound
+    // window rests on, with room to spare); a stretch next to a sample that measured
     // nothing has no such bound and is probed. The answer is that of probing every sample:
-    // the deepest one, and no refinement when it stays more than kRefineWithin_m clear.
+    // the deepest one, and no refinement when it stays more than window clear.
     // `top[i]`: what sample i can reach, its depth once probed, or a bound when it is skipped.
     std::array<double, n> top;
     std::uint32_t probed = 0;  // bit i: sample i probed
@@ -253,19 +264,19 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
     const std::uint32_t without = ~material & kAll;
     for (std::uint32_t todo = (kEveryFourth | (without << 1) | (without >> 1)) & kAll; todo != 0; todo &= todo - 1)
       probe_at_i(std::countr_zero(todo));
-    // Every other: a flank whose best stays more than 4·kRefineWithin_m clear is done.
+    // Every other: a flank whose best stays more than 4·window clear is done.
     for (int i = 2; i < n - 1; i += 4)
       if (!((probed >> i) & 1u) && has(i) &&
-          needed(i, i - 2, std::min(i + 2, n - 1), 16 * kRefineWithin_m,
-                 std::max(best_i < 0 ? kNone : depth[best_i], -4 * kRefineWithin_m)))
+          needed(i, i - 2, std::min(i + 2, n - 1), 16 * window,
+                 std::max(best_i < 0 ? kNone : depth[best_i], -4 * window)))
         probe_at_i(i);
-    if (best_i < 0 || depth[best_i] < -4 * kRefineWithin_m) return {};
+    if (best_i < 0 || depth[best_i] < -4 * window) return {};
     // The rest: where they could be the best or lift it into the refinement window.
     for (int i = 1; i < n - 1; i += 2)
       if (!((probed >> i) & 1u) && has(i) &&
-          needed(i, i - 1, i + 1, 4 * kRefineWithin_m, std::max(depth[best_i], -kRefineWithin_m)))
+          needed(i, i - 1, i + 1, 4 * window, std::max(depth[best_i], -window)))
         probe_at_i(i);
-    if (depth[best_i] < -kRefineWithin_m) return {};
+    if (depth[best_i] < -window) return {};
   }
   const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);

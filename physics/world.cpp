@@ -415,7 +415,8 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
     const BuiltBody &a = m.bodies[pr.a], &b = m.bodies[pr.b];
     pr.info.tooth_height_m = std::min(a.flanks->r_max_m() - a.flanks->r_min_m(), b.flanks->r_max_m() - b.flanks->r_min_m());
     m.pair_infos[static_cast<std::size_t>(&pr - m.pairs.data())].tooth_height_m = pr.info.tooth_height_m;
-    require_clear_mesh(a, m.gear_poses[pr.a], b, m.gear_poses[pr.b]);
+    require_clear_mesh(a, m.gear_poses[pr.a], b, m.gear_poses[pr.b],
+                       centre_distance_derived(m.scenario.pair_tables, a.name, b.name));
   }
   // Every table must belong to a meshing pair.
   for (const PairStiffnessDef& t : m.scenario.contact.stiffness_tables) {

@@ -185,7 +185,14 @@ bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
 // across the mate's fillet spans tens of them at this spacing).
 constexpr int kMeshCycleSteps = 256;
 
-void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const BuiltBody& b, const PlanarPose& pose_b) {
+bool centre_distance_derived(const std::vector<PairTableDef>& tables, const std::string& a, const std::string& b) {
+  for (const PairTableDef& t : tables)
+    if (t.centre_distance_derived && ((t.driver == a && t.driven == b) || (t.driver == b && t.driven == a))) return true;
+  return false;
+}
+
+void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const BuiltBody& b, const PlanarPose& pose_b,
+                        bool derived_distance) {
   // Bodies inside each other (a wrong unit, a centre distance for other gears): beyond what
   // tooth contact can see, so refused on the radii alone.
   const double d = (pose_b.centre_m - pose_a.centre_m).norm();
@@ -212,8 +219,11 @@ void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const Buil
     msg << ", at r = " << o.radius_a_m * 1e3 << " mm on '" << a.name << "' (teeth " << a.flanks->r_min_m() * 1e3 << "–"
         << a.flanks->r_max_m() * 1e3 << " mm) and r = " << o.radius_b_m * 1e3 << " mm on '" << b.name << "' (teeth "
         << b.flanks->r_min_m() * 1e3 << "–" << b.flanks->r_max_m() * 1e3 << " mm); limit " << World::kStartOverlapLimit_m * 1e6
-        << " um. The centre distance is too small for these gears, a tip cuts into the mate's fillet (interference), "
-           "or a tooth layout (teeth, tooth0_deg) does not match the mesh";
+        << " um. The centre distance (" << d * 1e3 << " mm) is too small for these gears, a tip cuts into the mate's "
+           "fillet (interference), or a tooth layout (teeth, tooth0_deg) does not match the mesh";
+    if (derived_distance)
+      msg << ". That distance is the pair's zero-backlash one (no centre_distance_m given): gears that clear each "
+             "other only with backlash need their centre_distance_m";
     throw InputError(msg.str());
   }
 }

@@ -173,5 +173,21 @@ TEST(GearRecognition, ShapesWithoutTeethAreNotGears) {
   EXPECT_FALSE(recognise_gear(square).gear.has_value());
 }
 
+// m·cos α alone cannot tell m and α apart: a 60-tooth ring of module 1 mm at 25° with a stub
+// tooth (addendum 0.8 m: depth 2.05 m) also reads as module 0.95 mm at 17.5°, whose depth
+// (2.16 of its modules) is nearer the standard 2.25 — but only with a profile shift of 1.9.
+// The reading with the least shift wins (seen on a ring cut from OpenSCAD's MCAD gear shape).
+TEST(GearRecognition, AStubToothRingReadsAsItsModuleNotAShiftedOne) {
+  GearSpec s = test::internal_gear(60, 0.080);
+  s.pressure_angle_rad = 25 * kRadPerDeg;
+  s.addendum_coeff = 0.8;
+  s.root_fillet_coeff = 0.25;
+  const RecognisedGear g = recognise_ok(make_gear_outline(s).outline);
+  EXPECT_EQ(g.teeth, 60);
+  EXPECT_TRUE(g.standard);
+  EXPECT_DOUBLE_EQ(g.module_m, 1e-3);
+  EXPECT_NEAR(g.pressure_angle_rad, 25 * kRadPerDeg, 1e-12);
+}
+
 }  // namespace test_gear_recognition
 }  // namespace gearsim

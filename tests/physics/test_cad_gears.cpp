@@ -27,7 +27,8 @@ const double kForce_N = 100;
 // ≤ 0: none given (the macro derives it from the recognised gears).
 fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, double centre_distance_m,
                         const std::string& unit = "mm") {
-  const fs::path dir = fs::temp_directory_path() / "gearsim_cad_gears";
+  // One folder per test: ctest runs the cases of this file in parallel processes.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_cad_gears" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
   std::ofstream f(dir / "pair.yaml");

@@ -34,7 +34,9 @@ constexpr double kContactRadiusSun_m = 11.978e-3;
 // The held pair: sun motor at zero speed, planet loaded, both on rigid hinges; damping 0.2 of
 // critical so the ~16 kHz tooth mode settles within the run.
 Scenario held_pair() {
-  const fs::path dir = fs::temp_directory_path() / "gearsim_test_stiffness_table";
+  // One folder per test: ctest runs the cases of this file in parallel processes.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_test_stiffness_table" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(dir);
   const fs::path file = dir / "held_pair.yaml";
   const std::string spec = std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/paper_gearset.yaml";

@@ -84,6 +84,34 @@ TEST(ToothContact, DriverRotationPressesEachLoadedPairByBaseRadiusTimesAngle) {
   }
 }
 
+// A module-4 pair at 25° (17 and 24 teeth): its flanks are 4× longer than the paper's and the
+// contact depth along them 4× more sharply peaked between the 16 probe samples. At every phase
+// of a pitch the pinion pressed by 1.2 µm on its base circle must load a flank pair by 1.2 µm
+// (the coarse-to-fine sampling once skipped the deepest sample here and saw no contact at all).
+TEST(ToothContact, Module4PairIsFoundPressedAtEveryPhaseOfAPitch) {
+  auto spec = [](int z) {
+    GearSpec g = fine(test::external_gear(z, 0.02));
+    g.module_m = 4e-3;
+    g.face_width_m = 0.024;
+    g.pressure_angle_rad = 25.0 * kPi / 180;
+    g.root_fillet_coeff = 0.25;  // the standard rack's 0.38 does not fit at 25°
+    return g;
+  };
+  const GearSpec a = spec(17), b = spec(24);
+  const FlankTable ta = table_of(a), tb = table_of(b);
+  const double c = 0.5 * 4e-3 * (17 + 24), r_b = 0.5 * 4e-3 * 17 * std::cos(25.0 * kPi / 180);
+  const double press = 1.2e-6;
+  for (int i = 0; i < 200; ++i) {
+    const double roll = (i / 200.0) * 2 * kPi / 17;
+    // b's tooth space faces a's tooth 0 at the start: zero backlash on both flanks.
+    const PlanarPose pa{{0, 0}, roll + press / r_b}, pb{{c, 0.0}, kPi + kPi / 24 - roll * 17.0 / 24.0};
+    double deepest = 0;
+    for (const ToothContact& t : find_tooth_contacts(ta, pa, tb, pb)) deepest = std::max(deepest, t.depth_m);
+    // r_b·Δθ on the line of action; 0.05 µm covers the tables (0.5 µm chords at module 4).
+    EXPECT_NEAR(deepest, press, 0.05e-6) << "phase " << i << "/200 of a pitch";
+  }
+}
+
 TEST(ToothContact, TwoPairsShareTheLoadForContactRatioMinusOneOfAPitch) {
   // A light press (0.2 µm) so that tip-corner contact, which widens the loaded zone by roughly
   // √(press), stays small; pairs pressed by more than half of it count as loaded.
