@@ -210,7 +210,7 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
   depth.fill(kNone);
   int best_i = -1;
   const std::uint32_t material = x.table.probe_material(k, f);
-  const double window = refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0));
+  const double step = x.table.probe_radius(1) - x.table.probe_radius(0), window = refine_window_m(step);
   auto missing = [&](int i) { return i < 0 || i >= n || !((material >> i) & 1u); };
   auto probe_sample = [&](int i) {
     depth[i] = missing(i) ? kNone : depth_of(xy, x.table.probe_point(k, f, i), hint);
@@ -278,7 +278,6 @@ Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
         probe_at_i(i);
     if (depth[best_i] < -window) return {};
   }
-  const double step = x.table.probe_radius(1) - x.table.probe_radius(0);
   const double r_b = x.table.probe_radius(best_i);
   const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
   double r_best = 0;

@@ -38,11 +38,12 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact);
 // when they could but their axes are not parallel.
 bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b);
 
+// Whether a pair macro chose the centre distance of gears a and b (no centre_distance_m given).
+bool centre_distance_derived(const std::vector<PairTableDef>& tables, const std::string& a, const std::string& b);
+
 // Refuses (InputError naming the pair, teeth, radii and depth) two gears whose bodies lie inside
 // each other, or whose teeth overlap by more than World::kStartOverlapLimit_m at their poses or
 // anywhere over a mesh period turned at the ideal ratio (mesh_cycle_overlap: interference).
-// Whether a pair macro chose the centre distance of gears a and b (no centre_distance_m given).
-bool centre_distance_derived(const std::vector<PairTableDef>& tables, const std::string& a, const std::string& b);
 // `derived_distance`: the pair macro chose the centre distance (zero backlash); the message says so.
 void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const BuiltBody& b, const PlanarPose& pose_b,
                         bool derived_distance);

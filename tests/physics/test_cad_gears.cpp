@@ -13,6 +13,7 @@
 #include "geometry/involute_pair.hpp"
 #include "physics/run_bounds.hpp"
 #include "physics/world.hpp"
+#include "tests/support/asset_scenario.hpp"
 
 namespace gearsim::physics {
 namespace test_cad_gears {
@@ -27,9 +28,7 @@ const double kForce_N = 100;
 // ≤ 0: none given (the macro derives it from the recognised gears).
 fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, double centre_distance_m,
                         const std::string& unit = "mm") {
-  // One folder per test: ctest runs the cases of this file in parallel processes.
-  const fs::path dir = fs::temp_directory_path() / "gearsim_cad_gears" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_test_dir();  // ctest runs this file's cases in parallel
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
   std::ofstream f(dir / "pair.yaml");
   f << "name: mcad_pair\nduration_s: 0.03\n"

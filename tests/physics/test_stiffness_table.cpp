@@ -13,6 +13,7 @@
 #include "geometry/errors.hpp"
 #include "physics/stiffness_table.hpp"
 #include "physics/world.hpp"
+#include "tests/support/asset_scenario.hpp"
 
 namespace gearsim::physics {
 namespace test_stiffness_table {
@@ -34,10 +35,7 @@ constexpr double kContactRadiusSun_m = 11.978e-3;
 // The held pair: sun motor at zero speed, planet loaded, both on rigid hinges; damping 0.2 of
 // critical so the ~16 kHz tooth mode settles within the run.
 Scenario held_pair() {
-  // One folder per test: ctest runs the cases of this file in parallel processes.
-  const fs::path dir = fs::temp_directory_path() / "gearsim_test_stiffness_table" /
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_test_dir();  // ctest runs this file's cases in parallel
   const fs::path file = dir / "held_pair.yaml";
   const std::string spec = std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/paper_gearset.yaml";
   std::ofstream(file) << "name: held_pair\n"
