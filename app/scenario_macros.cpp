@@ -170,17 +170,17 @@ physics::BodyDef pair_member(const YamlMap& m, const std::string& fallback_name,
   parse_shape_and_mass(m, b, dir);
   m.reject_unknown_keys();
   if (!b.gear && !b.mesh) m.fail_here("a pair member needs a shape: gear, gear_from or mesh");
-  if (b.gear && b.gear->kind != GearKind::External)
-    m.fail_here("the pair macro meshes two external gears; place an internal gear with explicit bodies");
   if (b.mesh && !b.mesh->teeth) m.fail("mesh", "a toothless mesh (teeth: none) cannot be a pair member");
-  if (b.mesh && b.mesh->recognised && b.mesh->recognised->internal)
-    m.fail("mesh", "the pair macro meshes two external gears; " + b.mesh->path.string() +
-                       " is internal: place it with explicit bodies");
   return b;
 }
 
 double tooth0_of(const physics::BodyDef& b) {
   return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad;
+}
+
+// An internal gear (a ring): a generated one by its spec, a mesh as recognised.
+bool is_internal(const physics::BodyDef& b) {
+  return b.gear ? b.gear->kind == GearKind::Internal : b.mesh->recognised && b.mesh->recognised->internal;
 }
 
 }  // namespace
@@ -189,13 +189,21 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
   physics::BodyDef a = pair_member(m.map("driver"), "driver", dir);
   physics::BodyDef b = pair_member(m.map("driven"), "driven", dir);
   if (a.name == b.name) m.fail("driven", "driver and driven have the same name '" + a.name + "'");
+  // An internal pair: a pinion inside a ring, either of them the driver. The mesh figures take
+  // the external gear first (ext, in).
+  const bool internal = is_internal(a) || is_internal(b);
+  if (is_internal(a) && is_internal(b)) m.fail("driven", "two internal gears cannot mesh");
+  const physics::BodyDef& ext = is_internal(a) ? b : a;
+  const physics::BodyDef& in = is_internal(a) ? a : b;
+  const char* ext_key = is_internal(a) ? "driven" : "driver";
+  const char* in_key = is_internal(a) ? "driver" : "driven";
   double centre_distance_m = 0;
   std::optional<physics::PairTableDef> table;
   if (a.gear && b.gear) {
     // Generated gears: the zero-backlash distance unless given; either way the mesh must work.
     try {
-      centre_distance_m = m.number_or("centre_distance_m", zero_backlash_centre_distance(*a.gear, *b.gear));
-      analyse_mesh(*a.gear, *b.gear, centre_distance_m);
+      centre_distance_m = m.number_or("centre_distance_m", zero_backlash_centre_distance(*ext.gear, *in.gear));
+      analyse_mesh(*ext.gear, *in.gear, centre_distance_m);
     } catch (const InputError& e) {
       m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
     }
@@ -211,12 +219,12 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
       }
       return involute_teeth(*x.mesh->recognised);
     };
-    const InvoluteTeeth ta = teeth(a, "driver"), tb = teeth(b, "driven");
+    const InvoluteTeeth te = teeth(ext, ext_key), ti = teeth(in, in_key);
     centre_distance_m = m.number_or("centre_distance_m", 0.0);
-    if (ta.teeth > 0 && tb.teeth > 0) {
+    if (te.teeth > 0 && ti.teeth > 0) {
       table = physics::PairTableDef{a.name, b.name, !m.has("centre_distance_m"), {}};
       try {
-        table->figures = involute_pair(ta, tb, centre_distance_m, "pair '" + a.name + "'–'" + b.name + "'");
+        table->figures = involute_pair(te, ti, centre_distance_m, "pair '" + a.name + "'–'" + b.name + "'");
       } catch (const InputError& e) {
         m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
       }
@@ -240,21 +248,26 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
   const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
   m.reject_unknown_keys();
 
-  // Phasing at the pitch point (+x of the driver, −x of the driven): tooth fractions f (0 at a
-  // tooth centre) of an external mesh satisfy f_driver + f_driven ≡ ½ (see planetary.cpp).
+  // Placing: external, the driver at the origin and the driven on +x; internal, the ring at the
+  // origin and the pinion on +x. The pitch point lies on the line of centres, seen from each
+  // centre in direction phi: external +x from the driver and −x (π) from the driven; internal
+  // +x from both. Tooth fractions f there (0 at a tooth centre, ½ in a gap) satisfy
+  // f_driver + f_driven ≡ ½ externally (see planetary.cpp); internally the two turn the same way
+  // and f_ring − f_pinion ≡ ½ (a pinion tooth in a ring gap). b is turned to match a.
   const double za = teeth_of(a), zb = teeth_of(b);
-  const double fa = (0.0 - tooth0_of(a)) * za / (2 * kPi);
-  const double fb = 0.5 - (fa - std::floor(fa));
-  const double fb01 = fb - std::floor(fb);
-  const double spin_b = kPi - tooth0_of(b) - fb01 * 2 * kPi / zb;
-  a.pose.position_m = origin;
-  b.pose.position_m = origin + Eigen::Vector3d(centre_distance_m, 0, 0);
+  const double phi_a = 0.0, phi_b = internal ? 0.0 : kPi;
+  const double fa = (phi_a - tooth0_of(a)) * za / (2 * kPi);
+  const double fa01 = fa - std::floor(fa), fb = internal ? fa01 + 0.5 : 0.5 - fa01;
+  const double spin_b = phi_b - tooth0_of(b) - (fb - std::floor(fb)) * 2 * kPi / zb;
+  const Eigen::Vector3d beside = origin + Eigen::Vector3d(centre_distance_m, 0, 0);
+  a.pose.position_m = internal && !is_internal(a) ? beside : origin;
+  b.pose.position_m = internal && is_internal(b) ? origin : beside;
   b.pose.orientation = about_z(spin_b);
   Expansion e;
   e.joints = {hinge(a.name, "ground", a.pose.position_m), hinge(b.name, "ground", b.pose.position_m)};
-  // An external pair turns opposite ways: θ_driver = −(z_driven/z_driver)·θ_driven, so with
-  // te = θ_input − ratio·θ_output the ratio is negative.
-  e.transmission = physics::TransmissionDef{a.name, b.name, -zb / za};
+  // With te = θ_input − ratio·θ_output: an external pair turns opposite ways, θ_driver =
+  // −(z_driven/z_driver)·θ_driven (ratio < 0); an internal one the same way (ratio > 0).
+  e.transmission = physics::TransmissionDef{a.name, b.name, (internal ? zb : -zb) / za};
   e.bodies = {a, b};
   if (table) e.pair_tables.push_back(*table);
   return e;

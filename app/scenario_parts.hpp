@@ -47,7 +47,8 @@ int teeth_of(const physics::BodyDef& body);
 
 // The `planetary:` macro: sun, planet_0..planet_{N−1}, ring, carrier and their hinges.
 Expansion expand_planetary(const YamlMap& m, const std::filesystem::path& dir);
-// The `pair:` macro: an external pair, driver at the origin, driven on +x.
+// The `pair:` macro: two gears on hinges, meshing. External: driver at the origin, driven on
+// +x. Internal (one member a ring, either the driver): the ring at the origin, the pinion on +x.
 Expansion expand_pair(const YamlMap& m, const std::filesystem::path& dir);
 
 // contact.stiffness_tables (after the bodies are known): each entry {gears: [A, B], file: CSV}

@@ -86,7 +86,7 @@ def plan(pair, a, b, args):
                 load_ramp=opt(args, '--load-ramp', None, float), duration=opt(args, '--duration', 0.15, float))
 
 
-RECOGNISE = False  # --recognise: meshes without teeth/tooth0, external pairs without centre distance
+RECOGNISE = False  # --recognise: meshes without teeth/tooth0, pairs without centre distance
 
 
 def mesh_yaml(mesh, corpus_dir):
@@ -106,28 +106,17 @@ def scenario_text(pair, a, b, p, corpus_dir):
     ramp = ', ramp_time_s: %r' % p['load_ramp'] if p['load_ramp'] is not None else ''
     motor = ('motors: [{joint: pinion, target_speed_rad_s: %r, ramp_time_s: %r, max_torque_N_m: %.6g}]'
              % (p['speed'], MOTOR_RAMP_S, p['T_max']))
-    if not pair['internal']:
-        # An external pair: the wheel turns the other way (−z), so the resisting torque is +T about +z.
-        body = ['pair:',
-                '  driver: {name: pinion, density_kg_m3: %r, mesh: %s}' % (DENSITY, mesh_yaml(a, corpus_dir)),
-                '  driven: {name: wheel, density_kg_m3: %r, mesh: %s}' % (DENSITY, mesh_yaml(b, corpus_dir)),
-                *([] if RECOGNISE else ['  centre_distance_m: %r' % pair['centre_distance_m']]),
-                motor,
-                'loads: [{joint: wheel, constant_torque_N_m: %.9g, viscous_N_m_s_per_rad: 0%s}]' % (p['T_load'], ramp)]
-        return '\n'.join(head + body) + '\n'
-    # An internal pair (explicit bodies: the pair macro takes external gears only). Ring at the
-    # origin turned so that a gap is centred on +x; pinion at +x with a tooth centred on +x.
-    # Both turn about +z the same way, so the ring's resisting torque is −T.
-    ring_angle = 180.0 / b['teeth'] - b['tooth0_deg']
-    body = ['bodies:',
-            '  - {name: pinion, density_kg_m3: %r, position_m: [%r, 0, 0], angle_deg: %r, mesh: %s}'
-            % (DENSITY, pair['centre_distance_m'], -a['tooth0_deg'], mesh_yaml(a, corpus_dir)),
-            '  - {name: ring, density_kg_m3: %r, position_m: [0, 0, 0], angle_deg: %r, mesh: %s}'
-            % (DENSITY, ring_angle, mesh_yaml(b, corpus_dir)),
-            'joints: [{name: pinion, body: pinion}, {name: ring, body: ring}]',
-            'transmission: {input_joint: pinion, output_joint: ring, ratio: %r}' % (b['teeth'] / a['teeth']),
+    # External: the wheel turns the other way (−z), so the resisting torque is +T about +z.
+    # Internal (the pair macro puts the ring at the origin, the pinion on +x): both turn +z, the
+    # ring's resisting torque is −T.
+    driven = 'ring' if pair['internal'] else 'wheel'
+    body = ['pair:',
+            '  driver: {name: pinion, density_kg_m3: %r, mesh: %s}' % (DENSITY, mesh_yaml(a, corpus_dir)),
+            '  driven: {name: %s, density_kg_m3: %r, mesh: %s}' % (driven, DENSITY, mesh_yaml(b, corpus_dir)),
+            *([] if RECOGNISE else ['  centre_distance_m: %r' % pair['centre_distance_m']]),
             motor,
-            'loads: [{joint: ring, constant_torque_N_m: %.9g, viscous_N_m_s_per_rad: 0%s}]' % (-p['T_load'], ramp)]
+            'loads: [{joint: %s, constant_torque_N_m: %.9g, viscous_N_m_s_per_rad: 0%s}]'
+            % (driven, -p['T_load'] if pair['internal'] else p['T_load'], ramp)]
     return '\n'.join(head + body) + '\n'
 
 

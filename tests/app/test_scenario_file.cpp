@@ -11,6 +11,7 @@
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
 #include "geometry/constants.hpp"
+#include "tests/support/asset_scenario.hpp"
 
 namespace gearsim::app {
 namespace test_scenario_file {
@@ -174,6 +175,43 @@ TEST(ScenarioFile, SpurPairTurnsOppositeWaysSoItsRatioIsNegative) {
   const physics::BodyDef& w = body(s, "wheel");
   const double f = frac((kPi - w.mesh->teeth->tooth0_angle_rad - angle_z(w)) * 31 / (2 * kPi));
   EXPECT_NEAR(off_half(f), 0.0, 1e-9);
+}
+
+// An internal pair through the pair macro: the paper's planet driving its relieved ring (the
+// standard-addendum ring cuts the planet's fillet by 5.8 µm: `gearsim gears` finds it too).
+physics::Scenario planet_ring_pair(const std::string& driver, const std::string& driven) {
+  const fs::path dir = test::fresh_test_dir();
+  const std::string spec = (kSource / "assets/specs/paper_gearset.yaml").string();
+  auto member = [&](const std::string& gear) {
+    return "{name: " + gear + ", gear_from: {spec: " + spec + ", gear: " + gear + "}}";
+  };
+  std::ofstream(dir / "ring_pair.yaml") << "name: ring_pair\nduration_s: 0.01\npair:\n  driver: " << member(driver)
+                                        << "\n  driven: " << member(driven) << "\n";
+  return load_scenario(dir / "ring_pair.yaml");
+}
+
+TEST(ScenarioFile, InternalPairPutsTheRingAtTheOriginAndTurnsBothTheSameWay) {
+  for (const auto& [driver, driven] : {std::pair{"planet", "ring_relieved"}, std::pair{"ring_relieved", "planet"}}) {
+    const physics::Scenario s = planet_ring_pair(driver, driven);
+    const physics::BodyDef &planet = body(s, "planet"), &ring = body(s, "ring_relieved");
+    EXPECT_DOUBLE_EQ(ring.pose.position_m.norm(), 0.0);
+    // m·(z_ring − z_planet)/2, both unshifted: 30 mm on +x.
+    EXPECT_NEAR((planet.pose.position_m - Eigen::Vector3d(0.030, 0, 0)).norm(), 0.0, 1e-15);
+    ASSERT_TRUE(s.transmission);
+    EXPECT_DOUBLE_EQ(s.transmission->ratio, std::string(driver) == "planet" ? 96.0 / 36 : 36.0 / 96) << driver;
+    // At the pitch point (+x of both centres) a planet tooth sits in a ring gap:
+    // f_ring − f_planet ≡ ½.
+    EXPECT_NEAR(off_half(tooth_fraction(ring, 0.0) - tooth_fraction(planet, 0.0)), 0.0, 1e-9) << driver;
+  }
+}
+
+TEST(ScenarioFile, TwoInternalGearsAreNoPair) {
+  try {
+    planet_ring_pair("ring", "ring_relieved");
+    FAIL() << "two rings accepted as a pair";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("two internal gears cannot mesh"), std::string::npos) << e.what();
+  }
 }
 
 // --- Overrides ---------------------------------------------------------------------------------
