@@ -11,9 +11,8 @@ int teeth_of(const physics::BodyDef& b) {
 }
 
 bool is_internal(const physics::BodyDef& b) {
-  // A mesh's layout does not say internal or external; an internal gear from a mesh is the one
-  // welded to the ground around the others, which a scenario marks as a generated ring.
-  return b.gear && b.gear->kind == GearKind::Internal;
+  if (b.gear) return b.gear->kind == GearKind::Internal;
+  return b.mesh && b.mesh->recognised && b.mesh->recognised->internal;  // a mesh as recognised
 }
 
 GearTrain gear_train_of(const physics::Scenario& s) {
@@ -35,7 +34,11 @@ GearTrain gear_train_of(const physics::Scenario& s) {
       gears.push_back(&b);
       if (is_internal(b)) ring = &b;
     }
-  if (ring) {
+  // A ring with gears on a carrier is a planetary set; a ring meshing one pinion, both about the
+  // ground, is a gear pair (analysed below like an external one: same mesh and shaft rates).
+  bool carried = false;
+  for (const physics::BodyDef* g : gears) carried = carried || (g != ring && !parent_of(g->name).empty() && parent_of(g->name) != "ground");
+  if (ring && (carried || gears.size() != 2)) {
     t.planetary = true;
     t.ring = ring->name;
     t.ring_teeth = teeth_of(*ring);
@@ -74,10 +77,11 @@ GearTrain gear_train_of(const physics::Scenario& s) {
     return t;
   }
   if (gears.size() != 2)
-    throw InputError(where + std::to_string(gears.size()) + " gears and no internal one: only a planetary set or one external pair is analysed");
+    throw InputError(where + std::to_string(gears.size()) + " gears and no internal one: only a planetary set or one gear pair is analysed");
   const bool first_drives = gears[0]->name == t.input_body;
   if (!first_drives && gears[1]->name != t.input_body)
     throw InputError(where + "the motor drives '" + t.input_body + "', neither gear of the pair");
+  t.internal_pair = ring != nullptr;
   t.driver = first_drives ? gears[0]->name : gears[1]->name;
   t.driven = first_drives ? gears[1]->name : gears[0]->name;
   t.driver_teeth = teeth_of(first_drives ? *gears[0] : *gears[1]);

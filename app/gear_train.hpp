@@ -14,6 +14,7 @@ namespace gearsim::app {
 
 struct GearTrain {
   bool planetary = false;
+  bool internal_pair = false;  // a pair: a pinion meshing inside a ring
   // Planetary: the members' body names; a pair: driver and driven.
   std::string sun, ring, carrier;
   std::vector<std::string> planets;

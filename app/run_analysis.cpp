@@ -232,7 +232,7 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
   json freqs = json::array();
   for (const CharacteristicFrequency& f : train.frequencies.frequencies)
     freqs.push_back({{"key", f.key}, {"name", f.name}, {"value_hz", f.value_hz}, {"formula", f.formula}});
-  j["gear_train"] = {{"kind", train.planetary ? "planetary" : "external pair"}, {"mesh_hz", train.frequencies.mesh_hz},
+  j["gear_train"] = {{"kind", train.planetary ? "planetary" : train.internal_pair ? "internal pair" : "external pair"}, {"mesh_hz", train.frequencies.mesh_hz},
                      {"characteristic_frequencies", freqs}};
   std::vector<std::pair<std::string, Spectrum>> spectra;
   j["pairs"] = pairs_json(contacts, from_s, rate, train, spectra);

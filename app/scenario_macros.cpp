@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "app/gear_train.hpp"
 #include "app/gearset_file.hpp"
 #include "app/input_limits.hpp"
 #include "app/safe_name.hpp"
@@ -176,11 +177,6 @@ physics::BodyDef pair_member(const YamlMap& m, const std::string& fallback_name,
 
 double tooth0_of(const physics::BodyDef& b) {
   return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad;
-}
-
-// An internal gear (a ring): a generated one by its spec, a mesh as recognised.
-bool is_internal(const physics::BodyDef& b) {
-  return b.gear ? b.gear->kind == GearKind::Internal : b.mesh->recognised && b.mesh->recognised->internal;
 }
 
 }  // namespace

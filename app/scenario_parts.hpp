@@ -42,8 +42,6 @@ Eigen::Vector3d vec3_or(const YamlMap& m, const std::string& key, const Eigen::V
 // Does not reject unknown keys: the caller reads more.
 void parse_shape_and_mass(const YamlMap& m, physics::BodyDef& body, const std::filesystem::path& dir);
 
-// Teeth of a body's shape (gear or mesh with a tooth layout); 0 when unknown.
-int teeth_of(const physics::BodyDef& body);
 
 // The `planetary:` macro: sun, planet_0..planet_{N−1}, ring, carrier and their hinges.
 Expansion expand_planetary(const YamlMap& m, const std::filesystem::path& dir);

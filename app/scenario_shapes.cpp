@@ -36,12 +36,6 @@ Eigen::Vector3d vec3_or(const YamlMap& m, const std::string& key, const Eigen::V
   return {v[0], v[1], v[2]};
 }
 
-int teeth_of(const physics::BodyDef& b) {
-  if (b.gear) return b.gear->teeth;
-  if (b.mesh && b.mesh->teeth) return b.mesh->teeth->teeth;
-  return 0;
-}
-
 namespace {
 
 // gear_from: {spec: FILE, gear: NAME}; also returns the spec's density.

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "app/gear_train.hpp"
 #include "app/scenario_file.hpp"
 #include "geometry/errors.hpp"
 #include "geometry/constants.hpp"
@@ -186,7 +187,8 @@ physics::Scenario planet_ring_pair(const std::string& driver, const std::string&
     return "{name: " + gear + ", gear_from: {spec: " + spec + ", gear: " + gear + "}}";
   };
   std::ofstream(dir / "ring_pair.yaml") << "name: ring_pair\nduration_s: 0.01\npair:\n  driver: " << member(driver)
-                                        << "\n  driven: " << member(driven) << "\n";
+                                        << "\n  driven: " << member(driven) << "\nmotors: [{joint: " << driver
+                                        << ", target_speed_rad_s: 20, max_torque_N_m: 10}]\n";
   return load_scenario(dir / "ring_pair.yaml");
 }
 
@@ -203,6 +205,18 @@ TEST(ScenarioFile, InternalPairPutsTheRingAtTheOriginAndTurnsBothTheSameWay) {
     // f_ring − f_planet ≡ ½.
     EXPECT_NEAR(off_half(tooth_fraction(ring, 0.0) - tooth_fraction(planet, 0.0)), 0.0, 1e-9) << driver;
   }
+}
+
+// The analysis sees a ring meshing one pinion about the ground as a gear pair (not a planetary
+// set without planets): mesh frequency z_driver·ω/2π.
+TEST(ScenarioFile, AnInternalPairIsAnalysedAsAGearPair) {
+  const GearTrain t = gear_train_of(planet_ring_pair("planet", "ring_relieved"));
+  EXPECT_FALSE(t.planetary);
+  EXPECT_TRUE(t.internal_pair);
+  EXPECT_EQ(t.driver, "planet");
+  EXPECT_EQ(t.driven, "ring_relieved");
+  EXPECT_NEAR(t.frequencies.mesh_hz, 36 * 20 / (2 * kPi), 1e-9);
+  EXPECT_TRUE(gear_train_of(paper()).planetary);
 }
 
 TEST(ScenarioFile, TwoInternalGearsAreNoPair) {
