@@ -10,7 +10,8 @@ namespace gearsim::app::scenario_detail {
 
 physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& s) {
   if (!s.planetary)
-    m.fail("fe", "fe-te solves planetary trains: the scenario needs the planetary: macro");
+    m.fail("fe", "fe-te solves planetary trains of generated gears: the scenario needs the planetary: macro with "
+                 "the gear names of a spec (a set of CAD meshes has no finite-element model yet)");
   physics::FeTeDef f;
   auto length = [&](const char* key, double fallback, bool zero_ok) {
     const double v = m.number_or(key, fallback);

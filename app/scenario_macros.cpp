@@ -68,20 +68,164 @@ std::vector<const GearSpec*> planet_gears(const YamlMap& m, const GearSetFile& f
   return gears;
 }
 
+
+// The gear-table figures of gears a and b (a external) at `centre_distance_m` (≤ 0: their
+// zero-backlash distance), refused (naming centre_distance_m, or `key` when it was derived) when
+// the involutes cannot act there, the teeth overlap or the tips do not reach the line of action.
+physics::PairTableDef checked_pair_table(const YamlMap& m, const std::string& a, const std::string& b, const InvoluteTeeth& ta,
+                                         const InvoluteTeeth& tb, double centre_distance_m, bool derived, const std::string& key) {
+  physics::PairTableDef table{a, b, derived, {}};
+  try {
+    table.figures = involute_pair(ta, tb, centre_distance_m, "pair '" + a + "'–'" + b + "'");
+  } catch (const InputError& e) {
+    m.fail(derived ? key : "centre_distance_m", e.what());
+  }
+  const double c = table.figures.centre_distance_m;
+  if (table.figures.normal_backlash_m < -physics::World::kStartOverlapLimit_m) {
+    std::ostringstream msg;
+    msg << "'" << a << "'–'" << b << "': at " << c * 1e3 << " mm the teeth overlap by " << -table.figures.normal_backlash_m * 1e6
+        << " um along the line of action (zero backlash at " << table.figures.zero_backlash_centre_distance_m * 1e3 << " mm)";
+    m.fail(derived ? key : "centre_distance_m", msg.str());
+  }
+  if (!(table.figures.contact_ratio > 0)) {
+    std::ostringstream msg;
+    msg << "'" << a << "'–'" << b << "': at " << c * 1e3 << " mm the tips do not reach the line of action (contact ratio "
+        << table.figures.contact_ratio << ")";
+    m.fail(derived ? key : "centre_distance_m", msg.str());
+  }
+  return table;
+}
+
 }  // namespace
 
-Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
-  const fs::path spec = resolve(dir, m.string("spec"));
-  if (!fs::is_regular_file(spec)) m.fail("spec", "gear-set spec file not found: " + spec.string());
-  const GearSetFile f = load_gearset(spec);
+namespace {
+
+// A planetary set's members before they are placed: from a gear-set spec (members named) or from
+// shapes (CAD meshes, gear or gear_from; members given as mappings).
+struct PlanetaryMembers {
+  physics::BodyDef sun, planet, ring;           // unplaced; planet as planet_0
+  std::vector<physics::BodyDef> planets;        // planet_0..: the spec's faulty ones in their place
+  std::optional<PlanetarySpec> spec;            // spec members
+  fs::path spec_file;
+  InvoluteTeeth sun_teeth, planet_teeth, ring_teeth;  // shape members
+  int count = 0;
+};
+
+physics::BodyDef spec_body(const std::string& name, const GearSpec& gear, double density) {
+  physics::BodyDef b;
+  b.name = name;
+  b.gear = gear;
+  b.density_kg_m3 = density;
+  return b;
+}
+
+PlanetaryMembers members_from_spec(const YamlMap& m, const fs::path& dir) {
+  PlanetaryMembers s;
+  s.spec_file = resolve(dir, m.string("spec"));
+  if (!fs::is_regular_file(s.spec_file)) m.fail("spec", "gear-set spec file not found: " + s.spec_file.string());
+  const GearSetFile f = load_gearset(s.spec_file);
   // Gear names and planet count default to the spec's planetary train.
   const auto& t = f.planetary;
   // The planet count is checked before planet_gears allocates a slot per planet.
-  const int planet_count =
-      t ? integer_within_or(m, "planets", t->planets, limits::kPlanets) : integer_within(m, "planets", limits::kPlanets);
-  PlanetarySpec ps{named_gear(m, "sun", f, t ? t->sun.name : ""), named_gear(m, "planet", f, t ? t->planet.name : ""),
-                   named_gear(m, "ring", f, t ? t->ring.name : ""), planet_count};
-  const std::vector<const GearSpec*> planets = planet_gears(m, f, ps.planet, ps.planets);
+  s.count = t ? integer_within_or(m, "planets", t->planets, limits::kPlanets) : integer_within(m, "planets", limits::kPlanets);
+  s.spec = PlanetarySpec{named_gear(m, "sun", f, t ? t->sun.name : ""), named_gear(m, "planet", f, t ? t->planet.name : ""),
+                         named_gear(m, "ring", f, t ? t->ring.name : ""), s.count};
+  s.sun = spec_body("sun", s.spec->sun, f.density_kg_m3);
+  s.planet = spec_body("planet_0", s.spec->planet, f.density_kg_m3);
+  s.ring = spec_body("ring", s.spec->ring, f.density_kg_m3);
+  int k = 0;
+  for (const GearSpec* g : planet_gears(m, f, s.spec->planet, s.count))
+    s.planets.push_back(spec_body("planet_" + std::to_string(k++), *g, f.density_kg_m3));
+  return s;
+}
+
+// A member given as a shape: `internal` says which kind it must be.
+physics::BodyDef shape_member(const YamlMap& m, const std::string& key, bool internal, const fs::path& dir) {
+  const YamlMap s = m.map(key);
+  physics::BodyDef b;
+  b.name = key;
+  parse_shape_and_mass(s, b, dir);
+  s.reject_unknown_keys();
+  if (!b.gear && !b.mesh) s.fail_here("a planetary member needs a shape: gear, gear_from or mesh");
+  if (teeth_of(b) == 0) s.fail_here("a planetary member needs teeth (teeth: none cannot mesh)");
+  if (is_internal(b) != internal)
+    s.fail_here(internal ? "the ring must be an internal gear" : "the " + key + " must be an external gear");
+  return b;
+}
+
+// The involutes of a member (recognised from its mesh, or its spec's).
+InvoluteTeeth involutes_of(const YamlMap& m, const std::string& key, const physics::BodyDef& b) {
+  if (b.gear) return involute_teeth(*b.gear);
+  if (!b.mesh->recognised || !b.mesh->recognised->involute)
+    m.fail(key, b.mesh->path.string() + ": its flanks are not recognised involutes, so the set's meshes cannot be "
+                "checked or placed");
+  return involute_teeth(*b.mesh->recognised);
+}
+
+PlanetaryMembers members_from_shapes(const YamlMap& m, const fs::path& dir) {
+  PlanetaryMembers s;
+  s.count = integer_within(m, "planets", limits::kPlanets);
+  s.sun = shape_member(m, "sun", false, dir);
+  s.planet = shape_member(m, "planet", false, dir);
+  s.ring = shape_member(m, "ring", true, dir);
+  s.sun_teeth = involutes_of(m, "sun", s.sun);
+  s.planet_teeth = involutes_of(m, "planet", s.planet);
+  s.ring_teeth = involutes_of(m, "ring", s.ring);
+  for (int k = 0; k < s.count; ++k) {
+    s.planets.push_back(s.planet);
+    s.planets.back().name = "planet_" + std::to_string(k);
+  }
+  return s;
+}
+
+// Polar angle of tooth 0 in a member's own frame, rad.
+double tooth0_of_member(const physics::BodyDef& b) {
+  return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad;
+}
+
+// The geometry of a set of shapes: the centre distance (given, or midway between the sun–planet
+// and planet–ring zero-backlash distances), both meshes checked there, the phasing.
+PlanetaryGeometry shapes_geometry(const YamlMap& m, const PlanetaryMembers& s, std::vector<physics::PairTableDef>& tables) {
+  const bool derived = !m.has("centre_distance_m");
+  double a = derived ? 0.0 : positive(m, "centre_distance_m", "centre distance in m");
+  if (derived) {
+    double a_sp = 0, a_pr = 0;
+    try {
+      a_sp = involute_pair(s.sun_teeth, s.planet_teeth, 0.0, "sun–planet").zero_backlash_centre_distance_m;
+      a_pr = involute_pair(s.planet_teeth, s.ring_teeth, 0.0, "planet–ring").zero_backlash_centre_distance_m;
+    } catch (const InputError& e) {
+      m.fail("ring", e.what());
+    }
+    // Sun–planet backlash grows with the distance, planet–ring backlash shrinks.
+    if (a_sp > a_pr + 1e-9) {
+      std::ostringstream msg;
+      msg << "no centre distance meshes both: sun–planet needs at least " << a_sp * 1e3 << " mm (zero backlash), "
+          << "planet–ring at most " << a_pr * 1e3 << " mm";
+      m.fail("ring", msg.str());
+    }
+    a = 0.5 * (a_sp + a_pr);
+  }
+  tables.push_back(checked_pair_table(m, "sun", "planet_0", s.sun_teeth, s.planet_teeth, a, derived, "ring"));
+  tables.push_back(checked_pair_table(m, "planet_0", "ring", s.planet_teeth, s.ring_teeth, a, derived, "ring"));
+  PlanetaryGeometry g;
+  g.centre_distance_m = a;
+  g.ratio_sun_to_carrier = 1.0 + static_cast<double>(s.ring_teeth.teeth) / s.sun_teeth.teeth;
+  const double planet_tip_m = s.planet.gear ? gear_dimensions(*s.planet.gear).tip_radius_m : s.planet.mesh->recognised->tip_radius_m;
+  g.adjacency_clearance_m = 2 * a * std::sin(kPi / s.count) - 2 * planet_tip_m;
+  phase_planetary({s.sun_teeth.teeth, s.planet_teeth.teeth, s.ring_teeth.teeth, s.count, tooth0_of_member(s.sun),
+                   tooth0_of_member(s.planet), tooth0_of_member(s.ring)},
+                  g);
+  return g;
+}
+
+}  // namespace
+
+Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
+  // Members as mappings (shapes) or as names in a spec: all one way.
+  const int shapes = m.has_map("sun") + m.has_map("planet") + m.has_map("ring");
+  if (shapes != 0 && shapes != 3)
+    m.fail_here("give sun, planet and ring all as gear names of `spec`, or all as shapes (mesh:, gear: or gear_from:)");
+  PlanetaryMembers s = shapes ? members_from_shapes(m, dir) : members_from_spec(m, dir);
   const YamlMap c = m.map("carrier");
   const double carrier_mass_kg = positive(c, "mass_kg", "carrier mass in kg");
   const double carrier_jz = positive(c, "inertia_z_kg_m2", "carrier moment of inertia in kg·m²");
@@ -96,44 +240,47 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   }
   const bool ring_fixed = m.boolean_or("ring_fixed", true);
   const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
-  m.reject_unknown_keys();
-
+  std::vector<physics::PairTableDef> tables;
   // The set's geometry last: the mesh analysis is the slow part.
   PlanetaryGeometry g;
-  try {
-    g = analyse_planetary(ps);
-  } catch (const InputError& e) {
-    m.fail("ring", std::string("sun, planets and ring cannot be assembled: ") + e.what());
+  if (shapes) {
+    g = shapes_geometry(m, s, tables);
+  } else {
+    try {
+      g = analyse_planetary(*s.spec);
+    } catch (const InputError& e) {
+      m.fail("ring", std::string("sun, planets and ring cannot be assembled: ") + e.what());
+    }
   }
+  m.reject_unknown_keys();
+  const int zs = teeth_of(s.sun), zr = teeth_of(s.ring);
   if (!g.equally_spaced_assembly) {
     std::ostringstream msg;
-    msg << "(z_s + z_r)/N = (" << ps.sun.teeth << " + " << ps.ring.teeth << ")/" << ps.planets << " = "
-        << g.assembly_quotient << " is not a whole number: " << ps.planets
-        << " equally spaced planets cannot all mesh with sun and ring (phase mismatch " << g.phase_mismatch_teeth
-        << " teeth); choose N dividing z_s + z_r";
+    msg << "(z_s + z_r)/N = (" << zs << " + " << zr << ")/" << s.count << " = " << g.assembly_quotient
+        << " is not a whole number: " << s.count << " equally spaced planets cannot all mesh with sun and ring (phase mismatch "
+        << g.phase_mismatch_teeth << " teeth); choose N dividing z_s + z_r";
     m.fail("planets", msg.str());
   }
   if (g.adjacency_clearance_m <= 0) {
     std::ostringstream msg;
-    msg << ps.planets << " planets on a " << g.centre_distance_m * 1e3 << " mm centre distance overlap: "
+    msg << s.count << " planets on a " << g.centre_distance_m * 1e3 << " mm centre distance overlap: "
         << "their tip circles are " << -g.adjacency_clearance_m * 1e3 << " mm too close";
     m.fail("planets", msg.str());
   }
 
   Expansion e;
-  e.gearset_spec = spec;
-  e.planetary = physics::PlanetaryTrainDef{ps, {}, ring_fixed};
-  for (const GearSpec* pg : planets) e.planetary->planet_gears.push_back(*pg);
-  auto gear_body = [&](const std::string& name, const GearSpec& gear, const Eigen::Vector3d& at, double angle_rad) {
-    physics::BodyDef b;
-    b.name = name;
-    b.gear = gear;
-    b.density_kg_m3 = f.density_kg_m3;
+  e.gearset_spec = s.spec_file;
+  if (s.spec) {
+    e.planetary = physics::PlanetaryTrainDef{*s.spec, {}, ring_fixed};
+    for (const physics::BodyDef& p : s.planets) e.planetary->planet_gears.push_back(*p.gear);
+  }
+  e.pair_tables = tables;
+  auto place = [&](physics::BodyDef b, const Eigen::Vector3d& at, double angle_rad) {
     b.pose.position_m = at;
     b.pose.orientation = about_z(angle_rad);
-    e.bodies.push_back(b);
+    e.bodies.push_back(std::move(b));
   };
-  gear_body("sun", ps.sun, origin, 0.0);
+  place(s.sun, origin, 0.0);
   e.joints.push_back(hinge("sun", "ground", origin));
   e.joints.back().bearing = floating;
   e.joints.push_back(hinge("carrier", "ground", origin));  // before the planets it carries
@@ -143,17 +290,16 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   // Shapeless carrier: a thin disc's moments, J_x = J_y = J_z/2, about the sun axis.
   carrier.principal_inertia_kg_m2 = Eigen::Vector3d(carrier_jz / 2, carrier_jz / 2, carrier_jz);
   carrier.pose.position_m = origin;
-  for (int k = 0; k < ps.planets; ++k) {
+  for (int k = 0; k < s.count; ++k) {
     const PlanetPlacement& p = g.placements[static_cast<std::size_t>(k)];
-    const GearSpec& gear = *planets[static_cast<std::size_t>(k)];
+    const physics::BodyDef& planet = s.planets[static_cast<std::size_t>(k)];
     const Eigen::Vector3d centre = origin + g.centre_distance_m * Eigen::Vector3d(std::cos(p.carrier_angle_rad),
                                                                                   std::sin(p.carrier_angle_rad), 0);
-    // The spin places the planet's tooth 0 as analyse_planetary placed the healthy planet's.
-    const std::string name = "planet_" + std::to_string(k);
-    gear_body(name, gear, centre, p.spin_angle_rad + ps.planet.tooth0_angle_rad - gear.tooth0_angle_rad);
-    e.joints.push_back(hinge(name, "carrier", centre));
+    // The spin places the planet's tooth 0 as the phasing placed the healthy planet's.
+    place(planet, centre, p.spin_angle_rad + tooth0_of_member(s.planet) - tooth0_of_member(planet));
+    e.joints.push_back(hinge(planet.name, "carrier", centre));
   }
-  gear_body("ring", ps.ring, origin, g.ring_angle_rad);
+  place(s.ring, origin, g.ring_angle_rad);
   e.bodies.back().fixed = ring_fixed;
   if (!ring_fixed) e.joints.push_back(hinge("ring", "ground", origin));
   e.bodies.push_back(carrier);
@@ -218,26 +364,8 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
     const InvoluteTeeth te = teeth(ext, ext_key), ti = teeth(in, in_key);
     centre_distance_m = m.number_or("centre_distance_m", 0.0);
     if (te.teeth > 0 && ti.teeth > 0) {
-      table = physics::PairTableDef{a.name, b.name, !m.has("centre_distance_m"), {}};
-      try {
-        table->figures = involute_pair(te, ti, centre_distance_m, "pair '" + a.name + "'–'" + b.name + "'");
-      } catch (const InputError& e) {
-        m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
-      }
+      table = checked_pair_table(m, a.name, b.name, te, ti, centre_distance_m, !m.has("centre_distance_m"), "driven");
       centre_distance_m = table->figures.centre_distance_m;
-      if (table->figures.normal_backlash_m < -physics::World::kStartOverlapLimit_m) {
-        std::ostringstream msg;
-        msg << "at " << centre_distance_m * 1e3 << " mm the teeth overlap by " << -table->figures.normal_backlash_m * 1e6
-            << " um along the line of action (zero backlash at " << table->figures.zero_backlash_centre_distance_m * 1e3
-            << " mm)";
-        m.fail("centre_distance_m", msg.str());
-      }
-      if (!(table->figures.contact_ratio > 0)) {
-        std::ostringstream msg;
-        msg << "at " << centre_distance_m * 1e3 << " mm the tips do not reach the line of action (contact ratio "
-            << table->figures.contact_ratio << ")";
-        m.fail("centre_distance_m", msg.str());
-      }
     }
   }
   if (!(centre_distance_m > 0)) m.fail("centre_distance_m", "expected a positive centre distance in m");

@@ -118,6 +118,7 @@ void YamlMap::fail_here(const std::string& message) const {
 }
 
 bool YamlMap::has(const std::string& key) const { return node_[key].IsDefined() && !node_[key].IsNull(); }
+bool YamlMap::has_map(const std::string& key) const { return node_[key].IsDefined() && node_[key].IsMap(); }
 
 YAML::Node YamlMap::get(const std::string& key) const {
   read_->insert(key);

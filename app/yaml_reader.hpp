@@ -33,6 +33,7 @@ class YamlMap {
   static YamlMap from_node(const YAML::Node& root, const std::string& source_name);
 
   bool has(const std::string& key) const;
+  bool has_map(const std::string& key) const;  // holds a mapping (not a scalar or list)
   double number(const std::string& key) const;
   double number_or(const std::string& key, double fallback) const;
   std::optional<double> optional_number(const std::string& key) const;

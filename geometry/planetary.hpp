@@ -45,4 +45,16 @@ struct PlanetaryGeometry {
 // centre distances disagree, fewer than one planet).
 PlanetaryGeometry analyse_planetary(const PlanetarySpec& spec);
 
+// The tooth layout of a set, all it takes to phase it: tooth counts and the polar angle of each
+// gear's tooth 0 in its own frame (rad).
+struct PlanetaryLayout {
+  int sun_teeth = 0, planet_teeth = 0, ring_teeth = 0, planets = 3;
+  double sun_tooth0_rad = 0, planet_tooth0_rad = 0, ring_tooth0_rad = 0;
+};
+
+// Planets at equal spacing from +x, the sun unturned: each planet's spin, the ring's turn from
+// planet 0, (z_s + z_r)/N and the phase mismatch the other planets leave (fills those fields of
+// `g`; analyse_planetary does it for specs, a set of CAD meshes through this).
+void phase_planetary(const PlanetaryLayout& layout, PlanetaryGeometry& g);
+
 }  // namespace gearsim

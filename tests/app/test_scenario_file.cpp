@@ -219,6 +219,53 @@ TEST(ScenarioFile, AnInternalPairIsAnalysedAsAGearPair) {
   EXPECT_TRUE(gear_train_of(paper()).planetary);
 }
 
+// The planetary macro with members given as shapes (here gear_from: the paper's gears): the
+// same bodies, placements and ratio as with their names; a name beside shapes, or an external
+// gear as the ring, is refused.
+std::string planetary_from_shapes(const std::string& sun, const std::string& ring) {
+  const std::string spec = (kSource / "assets/specs/paper_gearset.yaml").string();
+  auto member = [&](const std::string& gear) { return "{gear_from: {spec: " + spec + ", gear: " + gear + "}}"; };
+  return "name: shapes\nduration_s: 0.01\nplanetary:\n  sun: " + sun + "\n  planet: " + member("planet") +
+         "\n  ring: " + (ring.empty() ? member("ring_relieved") : ring) + "\n  planets: 3\n"
+         "  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n";
+}
+
+physics::Scenario load_text(const std::string& text) {
+  const fs::path file = test::fresh_test_dir() / "s.yaml";
+  std::ofstream(file) << text;
+  return load_scenario(file);
+}
+
+TEST(ScenarioFile, PlanetaryFromShapesPlacesItsMembersAsFromNames) {
+  const std::string spec = (kSource / "assets/specs/paper_gearset.yaml").string();
+  const physics::Scenario s =
+      load_text(planetary_from_shapes("{gear_from: {spec: " + spec + ", gear: sun}}", ""));
+  const physics::Scenario& named = paper();  // the paper scenario: sun, planet, ring_relieved by name
+  for (const char* name : {"sun", "planet_0", "planet_1", "planet_2", "ring"}) {
+    EXPECT_NEAR((body(s, name).pose.position_m - body(named, name).pose.position_m).norm(), 0.0, 1e-12) << name;
+    EXPECT_NEAR(std::remainder(angle_z(body(s, name)) - angle_z(body(named, name)), 2 * kPi), 0.0, 1e-12) << name;
+  }
+  ASSERT_TRUE(s.transmission);
+  EXPECT_DOUBLE_EQ(s.transmission->ratio, 5.0);
+}
+
+TEST(ScenarioFile, PlanetaryMembersAreAllNamesOrAllShapesAndTheRingIsInternal) {
+  const std::string spec = (kSource / "assets/specs/paper_gearset.yaml").string();
+  auto refusal = [&](const std::string& text) {
+    try {
+      load_text(text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  std::string m = refusal(planetary_from_shapes("sun", ""));
+  EXPECT_NE(m.find("all as gear names of `spec`, or all as shapes"), std::string::npos) << m;
+  m = refusal(planetary_from_shapes("{gear_from: {spec: " + spec + ", gear: sun}}",
+                                    "{gear_from: {spec: " + spec + ", gear: sun}}"));
+  EXPECT_NE(m.find("the ring must be an internal gear"), std::string::npos) << m;
+}
+
 TEST(ScenarioFile, TwoInternalGearsAreNoPair) {
   try {
     planet_ring_pair("ring", "ring_relieved");
