@@ -70,6 +70,7 @@ json gear_json(const MeshGear& mg, const std::optional<ToothLayout>& given, Leng
   j["root_radius_mm"] = g.root_radius_m * 1e3;
   j["symmetry_residual_um"] = g.symmetry_residual_m * 1e6;
   j["involute"] = g.involute;
+  j["asymmetric"] = g.asymmetric;
   j["flank_ccw"] = flank_fit_json(g.ccw);
   j["flank_cw"] = flank_fit_json(g.cw);
   if (g.involute) {

@@ -69,6 +69,18 @@ std::vector<const GearSpec*> planet_gears(const YamlMap& m, const GearSetFile& f
 }
 
 
+// Why a mesh's teeth give no single involute (for the messages that need one).
+std::string not_involute(const physics::MeshSource& mesh) {
+  const RecognisedGear& g = *mesh.recognised;
+  if (g.asymmetric) {
+    std::ostringstream msg;
+    msg << mesh.path.string() << ": its teeth are asymmetric (the two flank sides fit involutes of base radii "
+        << g.ccw.base_radius_m * 1e3 << " and " << g.cw.base_radius_m * 1e3 << " mm)";
+    return msg.str();
+  }
+  return mesh.path.string() + ": its flanks are not recognised involutes";
+}
+
 // The gear-table figures of gears a and b (a external) at `centre_distance_m` (≤ 0: their
 // zero-backlash distance), refused (naming centre_distance_m, or `key` when it was derived) when
 // the involutes cannot act there, the teeth overlap or the tips do not reach the line of action.
@@ -157,8 +169,8 @@ physics::BodyDef shape_member(const YamlMap& m, const std::string& key, bool int
 InvoluteTeeth involutes_of(const YamlMap& m, const std::string& key, const physics::BodyDef& b) {
   if (b.gear) return involute_teeth(*b.gear);
   if (!b.mesh->recognised || !b.mesh->recognised->involute)
-    m.fail(key, b.mesh->path.string() + ": its flanks are not recognised involutes, so the set's meshes cannot be "
-                "checked or placed");
+    m.fail(key, (b.mesh->recognised ? not_involute(*b.mesh) : b.mesh->path.string() + ": not recognised as a gear") +
+                    ", so the set's meshes cannot be checked or placed");
   return involute_teeth(*b.mesh->recognised);
 }
 
@@ -355,8 +367,8 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
       if (x.gear) return involute_teeth(*x.gear);
       if (!x.mesh->recognised || !x.mesh->recognised->involute) {
         if (!m.has("centre_distance_m"))
-          m.fail(key, x.mesh->path.string() + ": its flanks are not recognised involutes, so the centre distance "
-                      "cannot be derived: give centre_distance_m");
+          m.fail(key, (x.mesh->recognised ? not_involute(*x.mesh) : x.mesh->path.string() + ": not recognised as a gear") +
+                          ", so the centre distance cannot be derived: give centre_distance_m");
         return InvoluteTeeth{};
       }
       return involute_teeth(*x.mesh->recognised);

@@ -69,6 +69,10 @@ constexpr std::array kDiametralPitches = {1.0,  1.25, 1.5,  1.75, 2.0,  2.25, 2.
 constexpr std::array kPressureAngles_deg = {14.5, 15.0, 16.0, 17.5, 18.0, 20.0, 22.5, 25.0, 28.0, 30.0};
 // Tooth depth of the ISO 53 basic rack (addendum 1 + dedendum 1.25), in modules.
 constexpr double kRackDepth = 2.25;
+// Base radii of the two flank sides further apart than this fraction make an asymmetric tooth:
+// 1e-3 is 10 µm on a 10 mm base circle, beyond any fit of a symmetric one (the corpus: ≤ 1.2 µm)
+// and as much as kStandardMatch allows between (m, α) readings.
+constexpr double kAsymmetry = 1e-3;
 // Weight of a candidate's |profile shift| against its relative depth error when choosing (m, α):
 // 0.2 makes a shift of 0.5 (about the largest in use) cost as much as a depth 10 % off 2.25 m.
 constexpr double kShiftWeight = 0.2;
@@ -476,7 +480,10 @@ GearRecognition recognise_gear(const Outline2& outline) {
   const std::array<FlankPoints, 2> sides = flank_points(loop, g);
   g.ccw = fit_flank(sides[0], g);
   g.cw = fit_flank(sides[1], g);
-  g.involute = g.ccw.involute && g.cw.involute;
+  // Both sides on involutes of one base circle, or an asymmetric tooth (each side's fit stands).
+  g.asymmetric = g.ccw.involute && g.cw.involute &&
+                 std::abs(g.ccw.base_radius_m - g.cw.base_radius_m) > kAsymmetry * std::max(g.ccw.base_radius_m, g.cw.base_radius_m);
+  g.involute = g.ccw.involute && g.cw.involute && !g.asymmetric;
   if (g.involute) {
     g.base_radius_m = (g.ccw.base_radius_m * g.ccw.points + g.cw.base_radius_m * g.cw.points) / (g.ccw.points + g.cw.points);
     g.base_pitch_m = 2 * kPi * g.base_radius_m / g.teeth;

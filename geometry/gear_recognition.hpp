@@ -43,7 +43,10 @@ struct RecognisedGear {
   double symmetry_residual_m = 0;  // rms of r(θ) − r(θ + 2π/z) about the axis, m
   InvoluteFit ccw, cw;          // the counter-clockwise and clockwise flank of every tooth
 
-  // From the fits, when both flanks are involutes (`involute`):
+  // From the fits, when both flanks are involutes of one base circle (`involute`). Sides fitting
+  // involutes of different base circles (by more than 0.1 %) are an asymmetric tooth: no single
+  // base circle, module or pressure angle; ccw and cw hold each side's.
+  bool asymmetric = false;
   bool involute = false;
   double base_radius_m = 0;   // mean of the two flanks', m
   double base_pitch_m = 0;    // 2π r_b / z, m

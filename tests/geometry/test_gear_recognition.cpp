@@ -9,6 +9,7 @@
 #include "geometry/gear_dimensions.hpp"
 #include "geometry/gear_profile.hpp"
 #include "geometry/gear_recognition.hpp"
+#include "tests/support/asymmetric_gear.hpp"
 #include "tests/support/gear_specs.hpp"
 #include "geometry/constants.hpp"
 
@@ -187,6 +188,25 @@ TEST(GearRecognition, AStubToothRingReadsAsItsModuleNotAShiftedOne) {
   EXPECT_TRUE(g.standard);
   EXPECT_DOUBLE_EQ(g.module_m, 1e-3);
   EXPECT_NEAR(g.pressure_angle_rad, 25 * kRadPerDeg, 1e-12);
+}
+
+// Asymmetric teeth (counter-clockwise sides on a 20° base circle, clockwise on a 25° one): each
+// side's fit keeps its own base circle, and the gear claims no single base circle, module or
+// pressure angle.
+TEST(GearRecognition, AsymmetricTeethKeepEachSidesBaseCircle) {
+  const test::AsymmetricGear a;
+  const RecognisedGear g = recognise_ok(Outline2{a.outline(), {}});
+  EXPECT_EQ(g.teeth, 20);
+  // Tooth 0's centre line is taken at mid-depth, where this lopsided tooth's middle lies off +x.
+  const double r_mid = 0.5 * (a.r_root_m + a.r_tip_m);
+  const double mid = 0.5 * (a.side_angle(a.rb_ccw_m, r_mid) - a.side_angle(a.rb_cw_m, r_mid));  // 1.2e-3 rad
+  EXPECT_NEAR(pitch_residue(g.tooth0_angle_rad, mid, 20), 0.0, kAngleTol_rad);
+  ASSERT_TRUE(g.ccw.involute && g.cw.involute);
+  EXPECT_NEAR(g.ccw.base_radius_m, a.rb_ccw_m, 0.5e-6);  // vertices on the exact involutes
+  EXPECT_NEAR(g.cw.base_radius_m, a.rb_cw_m, 0.5e-6);
+  EXPECT_TRUE(g.asymmetric);
+  EXPECT_FALSE(g.involute);
+  EXPECT_EQ(g.base_radius_m, 0.0);
 }
 
 }  // namespace test_gear_recognition

@@ -11,6 +11,7 @@
 #include "geometry/prism.hpp"
 #include "physics/flank_knots.hpp"
 #include "physics/flank_table.hpp"
+#include "tests/support/asymmetric_gear.hpp"
 
 namespace gearsim::physics {
 namespace test_flank_knots {
@@ -98,6 +99,19 @@ TEST(FlankTable, ATipLandWhoseCornersDifferByRoundingIsNoFlank) {
         EXPECT_LT(std::abs(a), M_PI / 12) << "tooth " << k;
       }
     }
+}
+
+// The flank table of asymmetric teeth follows each side: its angle at any radius is the side's
+// own involute (the table interpolates between outline vertices 1/39 of the depth apart).
+TEST(FlankTable, FollowsAsymmetricTeethSideBySide) {
+  const test::AsymmetricGear a;
+  const FlankTable t(a.outline(), ToothLayout{20, 0.0}, false, 4096);
+  EXPECT_LT(t.departure().departure_m, 0.5e-6);
+  for (double r : {9.7e-3, 10e-3, 10.5e-3}) {
+    // Angle errors times the radius: within 0.1 µm along the circle.
+    EXPECT_NEAR(r * t.flank_angle(3, Flank::Ccw, r), r * a.side_angle(a.rb_ccw_m, r), 0.1e-6) << r;
+    EXPECT_NEAR(r * t.flank_angle(3, Flank::Cw, r), -r * a.side_angle(a.rb_cw_m, r), 0.1e-6) << r;
+  }
 }
 
 }  // namespace test_flank_knots
