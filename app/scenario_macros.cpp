@@ -68,17 +68,23 @@ std::vector<const GearSpec*> planet_gears(const YamlMap& m, const GearSetFile& f
   return gears;
 }
 
-
-// Why a mesh's teeth give no single involute (for the messages that need one).
-std::string not_involute(const physics::MeshSource& mesh) {
-  const RecognisedGear& g = *mesh.recognised;
-  if (g.asymmetric) {
-    std::ostringstream msg;
-    msg << mesh.path.string() << ": its teeth are asymmetric (the two flank sides fit involutes of base radii "
-        << g.ccw.base_radius_m * 1e3 << " and " << g.cw.base_radius_m * 1e3 << " mm)";
-    return msg.str();
-  }
-  return mesh.path.string() + ": its flanks are not recognised involutes";
+// The involutes of a gear body: its spec's, or recognised from its mesh; none (and why) when the
+// mesh shows no single involute (not a gear, flanks off the involute, asymmetric teeth).
+std::optional<InvoluteTeeth> involutes_of(const physics::BodyDef& b, std::string& why) {
+  if (b.gear) return involute_teeth(*b.gear);
+  const physics::MeshSource& mesh = *b.mesh;
+  if (mesh.recognised && mesh.recognised->involute) return involute_teeth(*mesh.recognised);
+  std::ostringstream msg;
+  msg << mesh.path.string();
+  if (!mesh.recognised)
+    msg << ": not recognised as a gear";
+  else if (mesh.recognised->asymmetric)
+    msg << ": its teeth are asymmetric (the two flank sides fit involutes of base radii "
+        << mesh.recognised->ccw.base_radius_m * 1e3 << " and " << mesh.recognised->cw.base_radius_m * 1e3 << " mm)";
+  else
+    msg << ": its flanks are not recognised involutes";
+  why = msg.str();
+  return std::nullopt;
 }
 
 // The gear-table figures of gears a and b (a external) at `centre_distance_m` (≤ 0: their
@@ -165,13 +171,12 @@ physics::BodyDef shape_member(const YamlMap& m, const std::string& key, bool int
   return b;
 }
 
-// The involutes of a member (recognised from its mesh, or its spec's).
-InvoluteTeeth involutes_of(const YamlMap& m, const std::string& key, const physics::BodyDef& b) {
-  if (b.gear) return involute_teeth(*b.gear);
-  if (!b.mesh->recognised || !b.mesh->recognised->involute)
-    m.fail(key, (b.mesh->recognised ? not_involute(*b.mesh) : b.mesh->path.string() + ": not recognised as a gear") +
-                    ", so the set's meshes cannot be checked or placed");
-  return involute_teeth(*b.mesh->recognised);
+// The involutes of a member, refused naming it when its mesh shows none.
+InvoluteTeeth member_involutes(const YamlMap& m, const std::string& key, const physics::BodyDef& b) {
+  std::string why;
+  const std::optional<InvoluteTeeth> t = involutes_of(b, why);
+  if (!t) m.fail(key, why + ", so the set's meshes cannot be checked or placed");
+  return *t;
 }
 
 PlanetaryMembers members_from_shapes(const YamlMap& m, const fs::path& dir) {
@@ -180,9 +185,9 @@ PlanetaryMembers members_from_shapes(const YamlMap& m, const fs::path& dir) {
   s.sun = shape_member(m, "sun", false, dir);
   s.planet = shape_member(m, "planet", false, dir);
   s.ring = shape_member(m, "ring", true, dir);
-  s.sun_teeth = involutes_of(m, "sun", s.sun);
-  s.planet_teeth = involutes_of(m, "planet", s.planet);
-  s.ring_teeth = involutes_of(m, "ring", s.ring);
+  s.sun_teeth = member_involutes(m, "sun", s.sun);
+  s.planet_teeth = member_involutes(m, "planet", s.planet);
+  s.ring_teeth = member_involutes(m, "ring", s.ring);
   for (int k = 0; k < s.count; ++k) {
     s.planets.push_back(s.planet);
     s.planets.back().name = "planet_" + std::to_string(k);
@@ -362,21 +367,16 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
       m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
     }
   } else {
-    // A mesh member: its recognised involutes give the same figures.
-    auto teeth = [&](const physics::BodyDef& x, const char* key) {
-      if (x.gear) return involute_teeth(*x.gear);
-      if (!x.mesh->recognised || !x.mesh->recognised->involute) {
-        if (!m.has("centre_distance_m"))
-          m.fail(key, (x.mesh->recognised ? not_involute(*x.mesh) : x.mesh->path.string() + ": not recognised as a gear") +
-                          ", so the centre distance cannot be derived: give centre_distance_m");
-        return InvoluteTeeth{};
-      }
-      return involute_teeth(*x.mesh->recognised);
-    };
-    const InvoluteTeeth te = teeth(ext, ext_key), ti = teeth(in, in_key);
+    // A mesh member: its recognised involutes give the same figures (without them the centre
+    // distance must be given, and the start checks alone judge the mesh).
+    std::string why;
+    const std::optional<InvoluteTeeth> te = involutes_of(ext, why);
+    if (!te && !m.has("centre_distance_m")) m.fail(ext_key, why + ", so the centre distance cannot be derived: give centre_distance_m");
+    const std::optional<InvoluteTeeth> ti = involutes_of(in, why);
+    if (!ti && !m.has("centre_distance_m")) m.fail(in_key, why + ", so the centre distance cannot be derived: give centre_distance_m");
     centre_distance_m = m.number_or("centre_distance_m", 0.0);
-    if (te.teeth > 0 && ti.teeth > 0) {
-      table = checked_pair_table(m, a.name, b.name, te, ti, centre_distance_m, !m.has("centre_distance_m"), "driven");
+    if (te && ti) {
+      table = checked_pair_table(m, a.name, b.name, *te, *ti, centre_distance_m, !m.has("centre_distance_m"), "driven");
       centre_distance_m = table->figures.centre_distance_m;
     }
   }
