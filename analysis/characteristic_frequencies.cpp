@@ -5,7 +5,7 @@
 #include <numeric>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -7,7 +7,7 @@
 #include <mutex>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <tuple>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 

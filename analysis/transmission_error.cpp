@@ -6,7 +6,7 @@
 #include <string>
 
 #include "analysis/resample.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

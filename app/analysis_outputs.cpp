@@ -3,7 +3,7 @@
 #include <fstream>
 #include <iomanip>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::app {
 namespace {

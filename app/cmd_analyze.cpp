@@ -5,7 +5,7 @@
 
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
-#include "app/input_limits.hpp"
+#include "input/input_limits.hpp"
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
 
@@ -44,7 +44,7 @@ void register_analyze(CLI::App& app) {
                                                 "fault-frequency family, transmission error, per-tooth loads.");
   sub->add_option("dir", *dir, "A folder written by `gearsim run --out`.")->required()->check(CLI::ExistingDirectory);
   sub->add_option("--from", *from, "Start of the analysed window, s (default: the end of the motors' ramp).")
-      ->check(cli_within(limits::kRunTime_s));
+      ->check(input::cli_within(input::limits::kRunTime_s));
   sub->callback([dir, from] {
     const RunDir run = open_run_dir(*dir);
     print_analysis(analyze_run(run, {*from}), std::cout);

@@ -20,12 +20,12 @@
 #include "app/commands.hpp"
 #include "app/gnuplot.hpp"
 #include "app/run_dir.hpp"
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_dimensions.hpp"
 #include "geometry/gear_mesh.hpp"
-#include "physics/fe/planetary_fe.hpp"
-#include "physics/fe/process.hpp"
+#include "fe/planetary_fe.hpp"
+#include "fe/process.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -282,7 +282,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
 }
 
 void fe_te(const FeTeOptions& o) {
-  const physics::Scenario s = load_scenario(o.scenario, o.sets);
+  const physics::Scenario s = input::load_scenario(o.scenario, o.sets);
   if (!s.fe) throw InputError(o.scenario + ": no fe: section (fe-te needs its settings; see assets/scenarios/paper_fe_te.yaml)");
   if (!s.planetary) throw InputError(o.scenario + ": fe-te solves planetary trains of generated gears (the planetary: macro with a spec's gear names)");
   if (fe::find_executable(o.ccx).empty())

@@ -8,8 +8,8 @@
 
 #include "app/commands.hpp"
 #include "app/gear_report.hpp"
-#include "app/safe_name.hpp"
-#include "geometry/errors.hpp"
+#include "input/safe_name.hpp"
+#include "core/errors.hpp"
 #include "geometry/mesh_io.hpp"
 
 namespace gearsim::app {
@@ -30,8 +30,8 @@ void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
   for (const auto& [name, body] : a.bodies) {
     // Files only inside DIR: the spec reader refuses other names; this guards every other source.
-    if (!is_safe_name(name, NameUse::File))
-      throw InputError("gear '" + shown_name(name) + "': expected " + safe_name_rule(NameUse::File) +
+    if (!input::is_safe_name(name, input::NameUse::File))
+      throw InputError("gear '" + input::shown_name(name) + "': expected " + input::safe_name_rule(input::NameUse::File) +
                        " (it names a file in " + dir.string() + ")");
     for (const std::string& f : o.formats) {
       const MeshFormat fmt = f == "obj" ? MeshFormat::Obj : f == "stl-ascii" ? MeshFormat::StlAscii : MeshFormat::StlBinary;
@@ -47,7 +47,7 @@ void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
 }
 
 void run(const GearsOptions& o) {
-  const GearSetFile file = load_gearset(o.spec);
+  const input::GearSetFile file = input::load_gearset(o.spec);
   const GearSetAnalysis a = analyse_gearset(file, o.hausdorff_spacing_mm * 1e-3);
   if (o.json_only) std::cout << a.doc.dump(2) << "\n";
   else print_gearset(std::cout, a.doc);

@@ -12,14 +12,14 @@
 #include "geometry/approx_decomposition.hpp"
 #include "geometry/constants.hpp"
 #include "geometry/convex_decomposition.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/hausdorff.hpp"
 #include "geometry/mass_properties.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/mesh_gear.hpp"
 #include "geometry/mesh_validate.hpp"
 #include "geometry/prism.hpp"
-#include "physics/flank_table.hpp"
+#include "contact/flank_table.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -92,8 +92,8 @@ json gear_json(const MeshGear& mg, const std::optional<ToothLayout>& given, Leng
     // The contact's flank table of these teeth, and how far it strays from the outline.
     const Polygon2& loop = g.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(g.loop)];
     try {
-      const physics::FlankTable t(loop, layout, g.internal, 4096);
-      const physics::FlankTable::Departure& d = t.departure();
+      const contact::FlankTable t(loop, layout, g.internal, 4096);
+      const contact::FlankTable::Departure& d = t.departure();
       j["flank_table"] = {{"departure_um", d.departure_m * 1e6},
                           {"at_tooth", d.tooth},
                           {"at_flank", d.flank == Flank::Ccw ? "ccw" : "cw"},

@@ -6,7 +6,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "app/input_limits.hpp"
+#include "input/input_limits.hpp"
 #include "app/render_run.hpp"
 
 namespace gearsim::app {
@@ -25,10 +25,10 @@ void register_render(CLI::App& app) {
       ->check(CLI::IsMember({"overview", "tilted", "sun_mesh", "ring_mesh"}));
   sub->add_option("--fps", o->def.fps, "Video frames per second.")->check(CLI::Range(1, 240));
   sub->add_option("--slowmo", o->def.slowmo, "Play the simulation this many times slower (e.g. 20 to see teeth mesh).")
-      ->check(cli_within(limits::kSlowMotion));
+      ->check(input::cli_within(input::limits::kSlowMotion));
   sub->add_option("--from", o->from_s, "First simulated time, s (default: the first logged sample).")
-      ->check(cli_within(limits::kRunTime_s));
-  sub->add_option("--to", o->to_s, "Last simulated time, s (default: the last logged sample).")->check(cli_within(limits::kRunTime_s));
+      ->check(input::cli_within(input::limits::kRunTime_s));
+  sub->add_option("--to", o->to_s, "Last simulated time, s (default: the last logged sample).")->check(input::cli_within(input::limits::kRunTime_s));
   sub->add_option("--width", o->def.width_px, "Frame width, px (even).")->check(CLI::Range(16, 4096));
   sub->add_option("--height", o->def.height_px, "Frame height, px (even).")->check(CLI::Range(16, 4096));
   sub->add_option("--msaa", o->def.msaa,

@@ -8,7 +8,7 @@
 #include "app/commands.hpp"
 #include "app/report.hpp"
 #include "app/run_analysis.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::app {
 namespace {

@@ -17,12 +17,12 @@
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
-#include "app/input_limits.hpp"
+#include "input/input_limits.hpp"
 #include "app/render_run.hpp"
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_spec.hpp"
 #include "physics/power_balance.hpp"
 #include "physics/run_bounds.hpp"
@@ -93,7 +93,7 @@ void set_duration(physics::Scenario& s, double duration_s) {
 }
 
 void run(const RunOptions& o) {
-  physics::Scenario s = load_scenario(o.scenario, o.sets);
+  physics::Scenario s = input::load_scenario(o.scenario, o.sets);
   if (o.duration_s > 0) set_duration(s, o.duration_s);
   const std::filesystem::path dir(o.out_dir);
   std::error_code ec;
@@ -330,7 +330,7 @@ void register_run(CLI::App& app) {
   sub->add_option("--out", o->out_dir, "Output folder (created if missing).")->required();
   sub->add_option("--set", o->sets, "Override a scenario value: key.path=value (repeatable), e.g. solver.time_step_s=1e-5.");
   sub->add_option("--duration", o->duration_s, "Simulated seconds, overriding the scenario's duration_s (at most 1e4 s).")
-      ->check(cli_within(limits::kDuration_s));
+      ->check(input::cli_within(input::limits::kDuration_s));
   sub->add_flag("--no-analyze", o->no_analyze, "Do not analyse the run at the end (see `gearsim analyze`).");
   sub->callback([o] { run(*o); });
 }

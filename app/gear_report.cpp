@@ -78,7 +78,7 @@ std::string matching_diameter(const json& gear, double value_m) {
 
 }  // namespace
 
-GearSetAnalysis analyse_gearset(const GearSetFile& f, double spacing) {
+GearSetAnalysis analyse_gearset(const input::GearSetFile& f, double spacing) {
   GearSetAnalysis a;
   a.file = &f;
   json& doc = a.doc;

@@ -7,21 +7,21 @@
 #include <map>
 #include <ostream>
 
-#include "app/gearset_file.hpp"
+#include "input/gearset_file.hpp"
 #include "app/tolerance_report.hpp"
 #include "geometry/gear_body.hpp"
 
 namespace gearsim::app {
 
 struct GearSetAnalysis {
-  const GearSetFile* file = nullptr;
+  const input::GearSetFile* file = nullptr;
   std::map<std::string, GearBody> bodies;
   json doc;
 };
 
 // Builds every gear body and the JSON document. `hausdorff_spacing_m` is the sample spacing of
 // the decomposition deviation measurement. Deterministic: no timings inside.
-GearSetAnalysis analyse_gearset(const GearSetFile& file, double hausdorff_spacing_m);
+GearSetAnalysis analyse_gearset(const input::GearSetFile& file, double hausdorff_spacing_m);
 
 // The tables a gear engineer reads, from the JSON document.
 void print_gearset(std::ostream& out, const json& doc);

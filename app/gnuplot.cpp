@@ -12,7 +12,7 @@
 #include <iterator>
 #include <sstream>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 extern char** environ;
 

@@ -6,7 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -15,7 +15,7 @@ double angle_about_z(const Eigen::Quaterniond& q) {
 
 }  // namespace
 
-PoseReplay::PoseReplay(const physics::Scenario& scenario, CsvTable state) : s_(scenario), state_(std::move(state)) {
+PoseReplay::PoseReplay(const physics::Scenario& scenario, input::CsvTable state) : s_(scenario), state_(std::move(state)) {
   time_ = state_.column("time_s");
   if (time_.size() < 2) throw InputError(state_.path.string() + ": fewer than two rows, nothing to replay");
   const std::size_t n = s_.bodies.size();

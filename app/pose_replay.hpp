@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/csv_table.hpp"
+#include "input/csv_table.hpp"
 #include "physics/scenario.hpp"
 
 namespace gearsim::app {
@@ -17,7 +17,7 @@ namespace gearsim::app {
 class PoseReplay {
  public:
   // InputError when state.csv lacks a body's angle column or a joint is not about z.
-  PoseReplay(const physics::Scenario& scenario, CsvTable state);
+  PoseReplay(const physics::Scenario& scenario, input::CsvTable state);
 
   double start_s() const { return time_.front(); }
   double end_s() const { return time_.back(); }
@@ -32,7 +32,7 @@ class PoseReplay {
   std::vector<int> parent_;                         // body index of the joint parent, −1: ground/none
   std::vector<Eigen::Vector3d> pivot0_;             // joint pivot, world at t = 0
   std::vector<double> angle0_;                      // body frame's angle about z at t = 0
-  CsvTable state_;
+  input::CsvTable state_;
 };
 
 }  // namespace gearsim::app

@@ -6,7 +6,7 @@
 
 #include "app/pose_replay.hpp"
 #include "app/run_scene.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/png_io.hpp"
 #include "render/renderer.hpp"
@@ -21,7 +21,7 @@ constexpr std::size_t kSheetFrames = 8;
 }  // namespace
 
 RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
-  const PoseReplay replay(run.scenario, read_csv(run.dir / "state.csv"));
+  const PoseReplay replay(run.scenario, input::read_csv(run.dir / "state.csv"));
   RenderResult r;
   r.from_s = o.from_s.value_or(replay.start_s());
   r.to_s = o.to_s.value_or(replay.end_s());

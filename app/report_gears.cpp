@@ -1,7 +1,7 @@
 // Report section: the gear table from first principles beside the published one, and the
 // tolerance table (DIN 3961 and ISO 1328-1), from the gear-set spec the scenario was built from.
 #include "app/gear_report.hpp"
-#include "app/gearset_file.hpp"
+#include "input/gearset_file.hpp"
 #include "app/html.hpp"
 #include "app/report.hpp"
 
@@ -13,7 +13,7 @@ std::string report_gears_section(const RunDir& run) {
   std::string h = "<h2>Gears</h2>\n";
   if (run.scenario.gearset_spec.empty())
     return h + "<p class=\"note\">The scenario's gears do not come from a gear-set spec (meshes given directly): no gear table.</p>\n";
-  const GearSetFile file = load_gearset(run.scenario.gearset_spec);
+  const input::GearSetFile file = input::load_gearset(run.scenario.gearset_spec);
   // Decomposition deviation sampled coarsely: the report shows the gear table, not the pieces.
   const GearSetAnalysis a = analyse_gearset(file, 2e-3);
   const json& doc = a.doc;

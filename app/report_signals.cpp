@@ -5,7 +5,7 @@
 #include <cmath>
 #include <fstream>
 
-#include "app/csv_table.hpp"
+#include "input/csv_table.hpp"
 #include "app/gnuplot.hpp"
 #include "app/html.hpp"
 #include "app/report.hpp"
@@ -31,7 +31,7 @@ std::string frequencies_table(const json& a) {
 }
 
 std::string force_plots(const RunDir& run, const json& a, const std::string& pair) {
-  const CsvTable c = read_csv(run.dir / "contacts.csv");
+  const input::CsvTable c = input::read_csv(run.dir / "contacts.csv");
   const std::vector<double>& t = c.column("time_s");
   const std::vector<double>& f = c.column(pair + "_force_N");
   const double from = a["window_s"][0].get<double>();
@@ -47,12 +47,12 @@ std::string force_plots(const RunDir& run, const json& a, const std::string& pai
 }
 
 std::string spectrum_plots(const RunDir& run, const json& a, const std::string& pair, const std::optional<RunDir>& cmp) {
-  const CsvTable s = read_csv(run.dir / "spectrum.csv");
+  const input::CsvTable s = input::read_csv(run.dir / "spectrum.csv");
   const double fm = a["gear_train"]["mesh_hz"].get<double>();
   std::string script = data_block("s", {s.column("frequency_hz"), s.column(pair + "_amplitude_N")});
   std::string plot = "plot $s using 1:2 with lines lw 1 title " + gnuplot_string(run.scenario.name);
   if (cmp) {
-    const CsvTable s2 = read_csv(cmp->dir / "spectrum.csv");
+    const input::CsvTable s2 = input::read_csv(cmp->dir / "spectrum.csv");
     script += data_block("c", {s2.column("frequency_hz"), s2.column(pair + "_amplitude_N")});
     plot += ", $c using 1:2 with lines lw 1 title " + gnuplot_string(cmp->scenario.name);
   }
@@ -89,7 +89,7 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
 }
 
 std::string te_plot(const RunDir& run) {
-  const CsvTable st = read_csv(run.dir / "state.csv");
+  const input::CsvTable st = input::read_csv(run.dir / "state.csv");
   if (!st.has("te_rad")) return "";
   return "<h3>Transmission error θ<sub>in</sub> − i·θ<sub>out</sub> (paper Fig. 7)</h3>\n" +
          gnuplot_svg(data_block("d", {st.column("time_s"), st.column("te_rad")}) +

@@ -13,11 +13,11 @@
 #include "analysis/spectrum.hpp"
 #include "analysis/transmission_error.hpp"
 #include "app/analysis_outputs.hpp"
-#include "app/csv_table.hpp"
-#include "app/gear_train.hpp"
+#include "input/csv_table.hpp"
+#include "input/gear_train.hpp"
 #include "app/synchronous_teeth.hpp"
 #include "app/tooth_loads.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "physics/step_log_reader.hpp"
 #include "geometry/constants.hpp"
 
@@ -53,7 +53,7 @@ std::size_t padded_length(std::size_t n) {
   return l;
 }
 
-json spectrum_json(const Spectrum& s, const GearTrain& train) {
+json spectrum_json(const Spectrum& s, const input::GearTrain& train) {
   json j;
   const double floor = median_noise_floor(s, 0, kBandTop_hz);
   j["resolution_hz"] = s.resolution_hz;
@@ -115,7 +115,7 @@ std::pair<double, int> whole_revolutions(const std::vector<double>& t, const std
 
 // The contact-force spectrum of every gear pair (contacts.csv columns <pair>_force_N) over the
 // window; InputError naming the file when there is none.
-json pairs_json(const CsvTable& contacts, double from_s, double rate_hz, const GearTrain& train,
+json pairs_json(const input::CsvTable& contacts, double from_s, double rate_hz, const input::GearTrain& train,
                 std::vector<std::pair<std::string, Spectrum>>& spectra) {
   const std::vector<double>& tc = contacts.column("time_s");
   const std::string suffix = "_force_N";
@@ -152,7 +152,7 @@ json te_json(const std::vector<double>& te) {
 }
 
 // The angle-synchronous average per planet from the output-rate logs (the standard view).
-json synchronous_json(const RunDir& run, const GearTrain& train, const CsvTable& state, const CsvTable& contacts,
+json synchronous_json(const RunDir& run, const input::GearTrain& train, const input::CsvTable& state, const input::CsvTable& contacts,
                       double from_s) {
   json tsa = json::array();
   const std::vector<double>& ts = state.column("time_s");
@@ -177,7 +177,7 @@ json synchronous_json(const RunDir& run, const GearTrain& train, const CsvTable&
 
 // Per-tooth loads from the per-step log: each planet (or the driven gear of a pair) over whole
 // revolutions relative to the body carrying its axis.
-json tooth_loads_json(const RunDir& run, const GearTrain& train, const CsvTable& state, double from_s) {
+json tooth_loads_json(const RunDir& run, const input::GearTrain& train, const input::CsvTable& state, double from_s) {
   const physics::StepLogContacts log = physics::read_step_log_contacts(run.dir / "steps.h5");
   json loads = json::array();
   const std::vector<double>& ts = state.column("time_s");
@@ -194,7 +194,7 @@ json tooth_loads_json(const RunDir& run, const GearTrain& train, const CsvTable&
       if (turns < 1) continue;
       int teeth = 0;
       for (const physics::BodyDef& bd : run.scenario.bodies)
-        if (bd.name == gear) teeth = teeth_of(bd);
+        if (bd.name == gear) teeth = input::teeth_of(bd);
       loads.push_back(to_json(tooth_loads(log, static_cast<int>(p), side == 0, teeth, from_s, to_s, turns)));
     }
   }
@@ -202,7 +202,7 @@ json tooth_loads_json(const RunDir& run, const GearTrain& train, const CsvTable&
 }
 
 // Refuses a log with fewer than kMinSamples rows from `from_s` on, naming file and window.
-std::vector<double> windowed_times(const CsvTable& table, double from_s) {
+std::vector<double> windowed_times(const input::CsvTable& table, double from_s) {
   const std::vector<double>& t = table.column("time_s");
   std::vector<double> w = window(t, t, from_s);
   if (w.size() < kMinSamples)
@@ -216,11 +216,11 @@ std::vector<double> windowed_times(const CsvTable& table, double from_s) {
 
 json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
-  const GearTrain train = gear_train_of(s);
+  const input::GearTrain train = input::gear_train_of(s);
   double from_s = o.from_s;
   if (from_s < 0) from_s = physics::ramps_end_s(s);
   from_s = std::max(from_s, 0.0);
-  const CsvTable state = read_csv(run.dir / "state.csv"), contacts = read_csv(run.dir / "contacts.csv");
+  const input::CsvTable state = input::read_csv(run.dir / "state.csv"), contacts = input::read_csv(run.dir / "contacts.csv");
   const std::vector<double> tw = windowed_times(contacts, from_s);
   windowed_times(state, from_s);
   const double rate = uniform_sample_rate_hz(tw);

@@ -3,8 +3,8 @@
 #include <fstream>
 #include <iomanip>
 
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::app {
 
@@ -33,7 +33,7 @@ RunDir open_run_dir(const std::filesystem::path& dir) {
       overrides.push_back(o.get<std::string>());
     }
   }
-  run.scenario = load_scenario(scenario_file, overrides);
+  run.scenario = input::load_scenario(scenario_file, overrides);
   if (run.summary.contains("sim_seconds") && run.summary["sim_seconds"].is_number())
     run.scenario.duration_s = run.summary["sim_seconds"].get<double>();
   return run;

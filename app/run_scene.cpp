@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "app/gear_train.hpp"
-#include "geometry/errors.hpp"
+#include "input/gear_train.hpp"
+#include "core/errors.hpp"
 #include "geometry/mesh_io.hpp"
 #include "render/tooth_highlight.hpp"
 
@@ -69,7 +69,7 @@ render::Camera run_camera(const std::string& preset, const physics::Scenario& s,
   if (preset == "overview") return render::overview_camera(render::scene_bounds(scene), aspect);
   if (preset == "tilted") return render::overview_camera(render::scene_bounds(scene), aspect, kTilt_rad);
   if (preset == "sun_mesh" || preset == "ring_mesh") {
-    const GearTrain t = gear_train_of(s);
+    const input::GearTrain t = input::gear_train_of(s);
     // The faulty planet (the first whose gear carries an error), planet 0 without one.
     std::string planet = t.planetary ? t.planets.front() : t.driven;
     for (const physics::BodyDef& b : s.bodies)

@@ -4,7 +4,7 @@
 
 #include "analysis/constants.hpp"
 #include "analysis/tooth_statistics.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::app {
 

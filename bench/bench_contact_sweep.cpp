@@ -16,12 +16,13 @@
 #include <string>
 #include <vector>
 
-#include "app/scenario_file.hpp"
-#include "physics/tooth_contact.hpp"
+#include "input/scenario_file.hpp"
+#include "contact/tooth_contact.hpp"
 #include "physics/world_bodies.hpp"
 
 using namespace gearsim;
 using namespace gearsim::physics;
+using namespace gearsim::contact;
 using Clock = std::chrono::steady_clock;
 
 namespace {
@@ -92,7 +93,7 @@ int main(int argc, char** argv) {
     if (std::string(argv[i]) == "--dump" && i + 1 < argc) dump = argv[++i];
     else file = argv[i];
   }
-  const Scenario s = app::load_scenario(file);
+  const Scenario s = input::load_scenario(file);
   struct Gear {
     std::string name;
     std::shared_ptr<const FlankTable> table;

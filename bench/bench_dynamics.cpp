@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "app/scenario_file.hpp"
+#include "input/scenario_file.hpp"
 #include "physics/world.hpp"
 
 using Clock = std::chrono::steady_clock;
@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
       argc > 1 ? argv[1] : std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml";
   const double seconds = argc > 2 ? std::atof(argv[2]) : 0.2;
   const auto t0 = Clock::now();
-  const gearsim::physics::Scenario s = gearsim::app::load_scenario(file);
+  const gearsim::physics::Scenario s = gearsim::input::load_scenario(file);
   const auto t1 = Clock::now();
   gearsim::physics::World world(s);
   const auto t2 = Clock::now();

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "geometry/gear_profile.hpp"
-#include "physics/fe/gear_mesher.hpp"
+#include "fe/gear_mesher.hpp"
 
 using namespace gearsim;
 using Clock = std::chrono::steady_clock;

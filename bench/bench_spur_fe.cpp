@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "physics/fe/spur_pair_fe.hpp"
+#include "fe/spur_pair_fe.hpp"
 
 using namespace gearsim;
 using namespace gearsim::fe;

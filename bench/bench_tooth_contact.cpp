@@ -8,10 +8,10 @@
 
 #include "geometry/gear_profile.hpp"
 #include "geometry/planetary.hpp"
-#include "physics/tooth_contact.hpp"
+#include "contact/tooth_contact.hpp"
 
 using namespace gearsim;
-using namespace gearsim::physics;
+using namespace gearsim::contact;
 using Clock = std::chrono::steady_clock;
 
 namespace {

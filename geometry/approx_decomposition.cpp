@@ -13,7 +13,7 @@
 #include <sstream>
 #include <unordered_set>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/hausdorff.hpp"
 #include "geometry/mass_properties.hpp"
 #include "geometry/mesh_validate.hpp"

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <unordered_map>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/triangulate.hpp"
 
 namespace gearsim {

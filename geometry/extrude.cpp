@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "geometry/convex_decomposition.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/triangulate.hpp"
 
 namespace gearsim {

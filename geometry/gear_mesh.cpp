@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_profile.hpp"
 #include "geometry/involute.hpp"
 #include "geometry/tessellate.hpp"

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <vector>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/involute.hpp"
 #include "geometry/tessellate.hpp"
 #include "geometry/constants.hpp"

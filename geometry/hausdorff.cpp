@@ -11,7 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

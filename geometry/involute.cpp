@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 

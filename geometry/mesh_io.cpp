@@ -12,7 +12,7 @@
 #include <string>
 #include <unordered_map>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -8,7 +8,7 @@
 #include <tuple>
 #include <vector>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/mass_properties.hpp"
 
 namespace gearsim {

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_dimensions.hpp"
 #include "geometry/constants.hpp"
 

@@ -9,7 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/triangulate.hpp"
 
 namespace gearsim {

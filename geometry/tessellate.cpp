@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "geometry/constants.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -25,7 +25,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -16,7 +16,7 @@
 #include "geometry/involute_pair.hpp"
 #include "geometry/mesh_io.hpp"
 #include "geometry/planetary.hpp"
-#include "physics/stiffness_table.hpp"
+#include "contact/stiffness_table.hpp"
 
 namespace gearsim::physics {
 
@@ -101,7 +101,7 @@ inline double load_torque_N_m(const LoadDef& l, double time_s, double speed_rad_
 // docs/fe.md), so each pair is given k / (1 + n k / k_body). Exact for the mesh's total force.
 struct PairStiffnessDef {
   std::string body_a, body_b;
-  StiffnessTable table;
+  contact::StiffnessTable table;
   double body_stiffness_N_per_m = 0;
 };
 
@@ -163,7 +163,7 @@ struct PlanetaryTrainDef {
 
 // `fe:` — the quasi-static loaded transmission error by finite elements (`gearsim fe-te`),
 // CalculiX + Gmsh. Read by app/, not by the simulation; the reader fills every field (defaults in
-// physics/fe/constants.hpp).
+// fe/constants.hpp).
 struct FeTeDef {
   double flank_size_m = 0;        // element size along flanks and fillets, m
   double core_size_m = 0;         // element size in the gear bodies, m

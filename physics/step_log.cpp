@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::physics {
 namespace {

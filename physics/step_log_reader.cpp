@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::physics {
 namespace {

@@ -9,7 +9,7 @@
 #include <numbers>
 #include <tuple>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "physics/world_bodies.hpp"
 #include "geometry/constants.hpp"
 
@@ -57,13 +57,13 @@ struct PairRec {
   // Warm start per tooth pair: last step's impulse of each (tooth_a, tooth_b, flank_a), at most
   // kMaxPointsPerPair of them, searched in place (no allocation per step).
   std::vector<std::pair<std::tuple<int, int, int>, double>> last_impulse;
-  std::vector<ToothContact> found;                            // this step's, kept for its storage
+  std::vector<contact::ToothContact> found;                            // this step's, kept for its storage
   std::vector<double> pair_stiffness;                         // per found contact, N/m (storage kept)
   std::vector<char> active;                                   // per found contact: passed to the solver
-  std::vector<ToothContact> current;                          // in manifold point order
+  std::vector<contact::ToothContact> current;                          // in manifold point order
   std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
   // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
-  const StiffnessTable* table = nullptr;
+  const contact::StiffnessTable* table = nullptr;
   bool table_on_a = true;
   double body_stiffness_N_per_m = 0;  // gear bodies in series with the pairs (0: rigid)
 };
@@ -80,7 +80,7 @@ struct World::Impl {
   std::vector<PairRec> pairs;
   std::vector<BodyState> states;
   std::vector<ContactSample> contacts;
-  std::vector<PlanarPose> gear_poses;  // this step's, per body (gears only)
+  std::vector<contact::PlanarPose> gear_poses;  // this step's, per body (gears only)
   std::vector<GearPairInfo> pair_infos;
   std::map<std::string, int> body_index;
   double time = 0;
@@ -116,7 +116,7 @@ namespace {
 void pretick(btDynamicsWorld* w, btScalar) { static_cast<World::Impl*>(w->getWorldUserInfo())->generate_contacts(); }
 
 // Gear-frame pose projected on the common plane (the gear axes must be parallel to world z).
-PlanarPose planar_pose(const BuiltBody& b) {
+contact::PlanarPose planar_pose(const BuiltBody& b) {
   const btTransform t = b.rigid->getWorldTransform() * b.com_from_gear;
   const btVector3 x = t.getBasis().getColumn(0);
   return {{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())};
@@ -134,10 +134,10 @@ void World::Impl::generate_contacts() {
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     PairRec& pr = pairs[p];
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
-    std::vector<ToothContact>& found = pr.found;
-    find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
+    std::vector<contact::ToothContact>& found = pr.found;
+    contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
     if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
-      std::sort(found.begin(), found.end(), [](const ToothContact& x, const ToothContact& y) { return x.depth_m > y.depth_m; });
+      std::sort(found.begin(), found.end(), [](const contact::ToothContact& x, const contact::ToothContact& y) { return x.depth_m > y.depth_m; });
       dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;
       found.resize(kMaxPointsPerPair);
     }
@@ -146,17 +146,17 @@ void World::Impl::generate_contacts() {
                             (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     pr.current.clear();
     pr.current_stiffness_N_per_m.clear();
-    const PlanarPose table_gear = pr.table ? gear_poses[pr.table_on_a ? pr.a : pr.b] : PlanarPose{};
+    const contact::PlanarPose table_gear = pr.table ? gear_poses[pr.table_on_a ? pr.a : pr.b] : contact::PlanarPose{};
     // Each pair's own stiffness: the constant, or its table's at the contact radius on the table's
     // gear (the point on that gear's own surface, half the depth from the overlap's mid-point).
     std::vector<double>& k_pair = pr.pair_stiffness;
     k_pair.assign(found.size(), pr.info.stiffness_N_per_m);
     if (pr.table)
       for (std::size_t i = 0; i < found.size(); ++i) {
-        const ToothContact& c = found[i];
+        const contact::ToothContact& c = found[i];
         const Eigen::Vector2d on = c.point_m + (pr.table_on_a ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
         bool outside = false;
-        k_pair[i] = stiffness_at(*pr.table, (on - table_gear.centre_m).norm(), &outside) * pr.info.face_width_m;
+        k_pair[i] = contact::stiffness_at(*pr.table, (on - table_gear.centre_m).norm(), &outside) * pr.info.face_width_m;
         if (outside) ++table_misses;
       }
     // Gear bodies in series with all pairs (PairStiffnessDef::body_stiffness_N_per_m, compliance
@@ -182,7 +182,7 @@ void World::Impl::generate_contacts() {
         if (active[i]) k_pair[i] *= 1.0 - c_body * F / found[i].depth_m;
     }
     for (std::size_t i = 0; i < found.size(); ++i) {
-      const ToothContact& c = found[i];
+      const contact::ToothContact& c = found[i];
       max_penetration = std::max(max_penetration, c.depth_m);
       if (!active[i]) continue;
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
@@ -279,7 +279,7 @@ void World::Impl::measure() {
       cs.stiffness_N_per_m = pr.current_stiffness_N_per_m[static_cast<std::size_t>(k)];
       contacts.push_back(cs);
       // Each tooth pair's impulse warm-starts the same pair's point next step.
-      const ToothContact& c = cs.geometry;
+      const contact::ToothContact& c = cs.geometry;
       pr.last_impulse.emplace_back(std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a)), pt.m_appliedImpulse);
     }
   }
@@ -297,10 +297,10 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
   info.m_solverMode |= SOLVER_USE_WARMSTARTING;
   m.world.setInternalTickCallback(pretick, &m, true);
   for (const PairStiffnessDef& t : s.contact.stiffness_tables)
-    if (int row = -1; !stiffness_table_problem(t.table, &row).empty())
+    if (int row = -1; !contact::stiffness_table_problem(t.table, &row).empty())
       throw InputError("scenario: stiffness table " + t.table.source + " of gears '" + t.body_a + "' and '" + t.body_b +
                        "': " + (row >= 0 ? "row " + std::to_string(row + 1) + ": " : "") +
-                       stiffness_table_problem(t.table));
+                       contact::stiffness_table_problem(t.table));
 
   for (const BodyDef& def : s.bodies) {
     if (m.body_index.count(def.name)) throw InputError("scenario: duplicate body name '" + def.name + "'");

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "physics/scenario.hpp"
-#include "physics/tooth_contact.hpp"
+#include "contact/tooth_contact.hpp"
 
 namespace gearsim::physics {
 
@@ -25,7 +25,7 @@ struct BodyState {
 // One tooth-pair contact as the solver left it after a step.
 struct ContactSample {
   int pair = -1;  // index into World::gear_pairs()
-  ToothContact geometry;
+  contact::ToothContact geometry;
   double normal_force_N = 0;    // applied impulse / dt
   double friction_force_N = 0;  // magnitude of the lateral impulses / dt
   double stiffness_N_per_m = 0; // the contact stiffness it was solved with (pair constant or table)

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_body.hpp"
 #include "geometry/mass_properties.hpp"
 #include "geometry/mesh_gear.hpp"
@@ -64,8 +64,8 @@ void add_pieces(BuiltBody& b, const ConvexPieces3& pieces, const btTransform& co
 }
 
 // Refuses a flank table that does not describe the outline it came from.
-void require_faithful(const FlankTable& t, const std::string& who, const ContactDef& contact) {
-  const FlankTable::Departure& d = t.departure();
+void require_faithful(const contact::FlankTable& t, const std::string& who, const ContactDef& contact) {
+  const contact::FlankTable::Departure& d = t.departure();
   if (d.departure_m <= contact.max_flank_departure_m) return;
   std::ostringstream msg;
   msg << who << ": its flank table departs " << d.departure_m * 1e6 << " um from the mesh outline at tooth " << d.tooth
@@ -97,7 +97,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
     mass = g.mass;
     pieces = std::move(g.pieces);
     const bool internal = spec.kind == GearKind::Internal;
-    b.flanks = std::make_shared<const FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
+    b.flanks = std::make_shared<const contact::FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
                      ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
     require_faithful(*b.flanks, who, contact);
     b.face_width_m = spec.face_width_m;
@@ -121,7 +121,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
       const double half = 0.5 * mg.face_width_m;
       pieces = extrude_pieces(decompose(mg.outline, opt), PrismFrame{}, -half, half);  // gear frame
       const Polygon2& loop = rg.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(rg.loop)];
-      b.flanks = std::make_shared<const FlankTable>(loop, layout, rg.internal, kFlankSamples);
+      b.flanks = std::make_shared<const contact::FlankTable>(loop, layout, rg.internal, kFlankSamples);
       require_faithful(*b.flanks, who + " (" + file + ")", contact);
       b.face_width_m = mg.face_width_m;
       b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
@@ -165,12 +165,12 @@ bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
   const btTransform ta = a.rigid->getWorldTransform() * a.com_from_gear;
   const btTransform tb = b.rigid->getWorldTransform() * b.com_from_gear;
   const double d = (ta.getOrigin() - tb.getOrigin()).length();
-  const FlankTable &fa = *a.flanks, &fb = *b.flanks;
+  const contact::FlankTable &fa = *a.flanks, &fb = *b.flanks;
   bool reach;
   if (!fa.internal() && !fb.internal()) reach = d < fa.r_max_m() + fb.r_max_m();
   else {
-    const FlankTable& ext = fa.internal() ? fb : fa;
-    const FlankTable& ring = fa.internal() ? fa : fb;
+    const contact::FlankTable& ext = fa.internal() ? fb : fa;
+    const contact::FlankTable& ring = fa.internal() ? fa : fb;
     reach = d + ext.r_max_m() > ring.r_min_m() && d < ring.r_max_m();
   }
   if (!reach) return false;
@@ -191,12 +191,12 @@ bool centre_distance_derived(const std::vector<PairTableDef>& tables, const std:
   return false;
 }
 
-void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const BuiltBody& b, const PlanarPose& pose_b,
+void require_clear_mesh(const BuiltBody& a, const contact::PlanarPose& pose_a, const BuiltBody& b, const contact::PlanarPose& pose_b,
                         bool derived_distance) {
   // Bodies inside each other (a wrong unit, a centre distance for other gears): beyond what
   // tooth contact can see, so refused on the radii alone.
   const double d = (pose_b.centre_m - pose_a.centre_m).norm();
-  const FlankTable &fa = *a.flanks, &fb = *b.flanks;
+  const contact::FlankTable &fa = *a.flanks, &fb = *b.flanks;
   const bool ring = fb.internal();
   if (ring ? d + fa.r_max_m() > fb.r_max_m() : d < fa.r_min_m() + fb.r_min_m()) {
     std::ostringstream msg;
@@ -208,9 +208,9 @@ void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const Buil
         << ". Check the centre distance and the meshes' unit";
     throw InputError(msg.str());
   }
-  const MeshCycleOverlap o = mesh_cycle_overlap(*a.flanks, pose_a, *b.flanks, pose_b, kMeshCycleSteps);
+  const contact::MeshCycleOverlap o = contact::mesh_cycle_overlap(*a.flanks, pose_a, *b.flanks, pose_b, kMeshCycleSteps);
   if (o.deepest.depth_m > World::kStartOverlapLimit_m) {
-    const ToothContact& c = o.deepest;
+    const contact::ToothContact& c = o.deepest;
     std::ostringstream msg;
     msg << "scenario: gears '" << a.name << "' and '" << b.name << "' overlap " << (o.turn_a_rad == 0 ? "at t = 0" : "over their mesh cycle")
         << ": tooth " << c.tooth_a << " of '" << a.name << "' is " << c.depth_m * 1e6 << " um deep in tooth " << c.tooth_b

@@ -9,8 +9,8 @@
 #include <optional>
 #include <vector>
 
-#include "physics/flank_table.hpp"
-#include "physics/tooth_contact.hpp"
+#include "contact/flank_table.hpp"
+#include "contact/tooth_contact.hpp"
 #include "physics/scenario.hpp"
 #include "physics/world.hpp"
 
@@ -27,7 +27,7 @@ struct BuiltBody {
   double mass_kg = 0;
   double inertia_axis_kg_m2 = 0;  // about the gear axis
   // Gears only.
-  std::shared_ptr<const FlankTable> flanks;  // shared by bodies of the same gear
+  std::shared_ptr<const contact::FlankTable> flanks;  // shared by bodies of the same gear
   double face_width_m = 0;
   double contact_radius_m = 0;  // base radius (generated) or mid-tooth radius (meshes), for damping
 };
@@ -45,7 +45,7 @@ bool centre_distance_derived(const std::vector<PairTableDef>& tables, const std:
 // each other, or whose teeth overlap by more than World::kStartOverlapLimit_m at their poses or
 // anywhere over a mesh period turned at the ideal ratio (mesh_cycle_overlap: interference).
 // `derived_distance`: the pair macro chose the centre distance (zero backlash); the message says so.
-void require_clear_mesh(const BuiltBody& a, const PlanarPose& pose_a, const BuiltBody& b, const PlanarPose& pose_b,
+void require_clear_mesh(const BuiltBody& a, const contact::PlanarPose& pose_a, const BuiltBody& b, const contact::PlanarPose& pose_b,
                         bool derived_distance);
 
 // Damping of one tooth-pair contact, N·s/m: a fraction ζ of critical for stiffness k (N/m) on

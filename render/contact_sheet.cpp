@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/bitmap_font.hpp"
 
 namespace gearsim::render {

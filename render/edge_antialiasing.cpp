@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/constants.hpp"
 
 namespace gearsim::render {

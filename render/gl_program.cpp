@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::render {
 namespace {

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::render {
 

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/constants.hpp"
 
 namespace gearsim::render {

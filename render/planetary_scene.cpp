@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/extrude.hpp"
 #include "geometry/gear_profile.hpp"
 #include "render/tooth_highlight.hpp"

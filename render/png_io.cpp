@@ -10,7 +10,7 @@
 #include <iterator>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/constants.hpp"
 
 namespace gearsim::render {

@@ -1,6 +1,6 @@
 // RenderError: the machine cannot render or encode (no OSMesa core-profile context, no H.264
 // encoder, an OpenGL or FFmpeg failure), with the library's own reason. Not for bad input: a bad
-// resolution, an empty scene or an unwritable path is an InputError (geometry/errors.hpp).
+// resolution, an empty scene or an unwritable path is an InputError (core/errors.hpp).
 #pragma once
 
 #include <stdexcept>

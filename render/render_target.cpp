@@ -3,7 +3,7 @@
 #include <cstring>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/render_error.hpp"
 
 namespace gearsim::render {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <utility>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/edge_antialiasing.hpp"
 #include "render/gl_context.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim::render {
 namespace {

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/extrude.hpp"
 #include "geometry/gear_profile.hpp"
 #include "geometry/triangulate.hpp"

@@ -11,7 +11,7 @@ extern "C" {
 #include <cstdarg>
 #include <mutex>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/render_error.hpp"
 
 namespace gearsim::render {

@@ -7,7 +7,7 @@
 
 #include "analysis/angle_average.hpp"
 #include "analysis/tooth_statistics.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {

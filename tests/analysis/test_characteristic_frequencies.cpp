@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "analysis/characteristic_frequencies.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace test_characteristic_frequencies {

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "analysis/resample.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "analysis/sidebands.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {

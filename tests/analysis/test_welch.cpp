@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "analysis/spectrum.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {

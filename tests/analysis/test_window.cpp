@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/window.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace test_window {

@@ -1,4 +1,4 @@
-// Every number that sizes a run is checked against its bound (app/input_limits.hpp) before
+// Every number that sizes a run is checked against its bound (input/input_limits.hpp) before
 // anything is allocated from it: one check per key, the message naming file:line:key, the bound
 // and the value. The CLI's --duration the same (NaN, 1e300, ≤ 0 refused); a bad command line
 // exits with code 2 as `gearsim --help` says, not CLI11's own 105–109.
@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 #include "tests/support/asset_scenario.hpp"
 #include "tests/support/cli_run.hpp"
 
@@ -38,7 +38,7 @@ fs::path write_scenario(const std::string& text) {
 
 std::string error_for(const std::string& text) {
   try {
-    load_scenario(write_scenario(text));
+    input::load_scenario(write_scenario(text));
   } catch (const InputError& e) {
     return e.what();
   }

@@ -50,7 +50,7 @@ std::string bytes(const fs::path& p) {
 
 TEST(PoseReplay, PlanetsRideTheCarrierCircleAtTheLoggedCarrierAngle) {
   const RunDir run = open_run_dir(short_run());
-  const CsvTable state = read_csv(run.dir / "state.csv");
+  const input::CsvTable state = input::read_csv(run.dir / "state.csv");
   const PoseReplay replay(run.scenario, state);
   std::size_t planet = 0, carrier = 0, sun = 0;
   for (std::size_t b = 0; b < run.scenario.bodies.size(); ++b) {

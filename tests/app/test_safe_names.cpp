@@ -1,4 +1,4 @@
-// Names that become file names or log columns follow one rule (app/safe_name.hpp): a gear named
+// Names that become file names or log columns follow one rule (input/safe_name.hpp): a gear named
 // like a path is refused before `gearsim gears --out DIR` writes anything, so nothing lands
 // outside DIR; body names with separators or "__" and multi-line scenario names are refused
 // naming file, line and key.
@@ -8,9 +8,9 @@
 #include <fstream>
 #include <string>
 
-#include "app/safe_name.hpp"
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/safe_name.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 #include "tests/support/asset_scenario.hpp"
 #include "tests/support/cli_run.hpp"
 
@@ -46,13 +46,13 @@ TEST(SafeNames, AGearNamedLikeAPathIsRefusedAndNothingIsWritten) {
 
 TEST(SafeNames, TheRuleAcceptsOrdinaryNamesOnly) {
   for (const char* ok : {"sun", "planet_0", "ring_relieved", "Gear-2.v1", "a"})
-    EXPECT_TRUE(is_safe_name(ok, NameUse::Body)) << ok;
+    EXPECT_TRUE(input::is_safe_name(ok, input::NameUse::Body)) << ok;
   for (const char* bad : {"", ".", "..", "../x", "a/b", "a\\b", "-x", ".x", "a b", "a,b", "a'b", "a\nb", "é"})
-    EXPECT_FALSE(is_safe_name(bad, NameUse::File)) << bad;
-  EXPECT_TRUE(is_safe_name("sun__planet", NameUse::File));
-  EXPECT_FALSE(is_safe_name("sun__planet", NameUse::Body));
-  EXPECT_TRUE(is_safe_name(std::string(64, 'x'), NameUse::File));
-  EXPECT_FALSE(is_safe_name(std::string(65, 'x'), NameUse::File));
+    EXPECT_FALSE(input::is_safe_name(bad, input::NameUse::File)) << bad;
+  EXPECT_TRUE(input::is_safe_name("sun__planet", input::NameUse::File));
+  EXPECT_FALSE(input::is_safe_name("sun__planet", input::NameUse::Body));
+  EXPECT_TRUE(input::is_safe_name(std::string(64, 'x'), input::NameUse::File));
+  EXPECT_FALSE(input::is_safe_name(std::string(65, 'x'), input::NameUse::File));
 }
 
 // The error load_scenario gives for `text` saved as bad.yaml ("" if none).
@@ -60,7 +60,7 @@ std::string scenario_error(const std::string& text) {
   const fs::path p = fresh_test_dir() / "bad.yaml";
   std::ofstream(p) << text;
   try {
-    load_scenario(p);
+    input::load_scenario(p);
   } catch (const InputError& e) {
     return e.what();
   }

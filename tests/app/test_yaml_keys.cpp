@@ -8,9 +8,9 @@
 #include <fstream>
 #include <string>
 
-#include "app/gearset_file.hpp"
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/gearset_file.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 #include "tests/support/asset_scenario.hpp"
 #include "tests/support/cli_run.hpp"
 
@@ -35,7 +35,7 @@ fs::path write_file(const std::string& name, const std::string& text) {
 
 std::string scenario_error(const std::string& text) {
   try {
-    load_scenario(write_file("bad.yaml", text));
+    input::load_scenario(write_file("bad.yaml", text));
   } catch (const InputError& e) {
     return e.what();
   }
@@ -74,7 +74,7 @@ TEST(YamlKeys, AGearSpecWithAGearTwiceIsRefused) {
   const fs::path p = write_file("spec.yaml", "name: s\ndensity_kg_m3: 7850\ndefaults: {module_m: 1.0e-3, face_width_m: 0.01}\n"
                                              "gears:\n  sun: {kind: external, teeth: 20}\n  sun: {kind: external, teeth: 30}\n");
   try {
-    load_gearset(p);
+    input::load_gearset(p);
     FAIL() << "a second gear 'sun' was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("spec.yaml:6:3: gears.sun: the key appears twice in one mapping (first at line 5)"),

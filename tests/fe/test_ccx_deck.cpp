@@ -9,10 +9,10 @@
 #include <fstream>
 #include <numbers>
 
-#include "geometry/errors.hpp"
-#include "physics/fe/ccx_dat.hpp"
-#include "physics/fe/deck.hpp"
-#include "physics/fe/process.hpp"
+#include "core/errors.hpp"
+#include "fe/ccx_dat.hpp"
+#include "fe/deck.hpp"
+#include "fe/process.hpp"
 
 using namespace gearsim;
 using namespace gearsim::fe;

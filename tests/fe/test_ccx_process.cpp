@@ -7,10 +7,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "geometry/errors.hpp"
-#include "physics/fe/ccx_dat.hpp"
-#include "physics/fe/constants.hpp"
-#include "physics/fe/process.hpp"
+#include "core/errors.hpp"
+#include "fe/ccx_dat.hpp"
+#include "fe/constants.hpp"
+#include "fe/process.hpp"
 
 using namespace gearsim;
 using namespace gearsim::fe;

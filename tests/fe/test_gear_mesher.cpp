@@ -9,11 +9,11 @@
 #include <map>
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_profile.hpp"
-#include "physics/fe/gear_mesh_regions.hpp"
-#include "physics/fe/gear_mesher.hpp"
-#include "physics/fe/outline_resample.hpp"
+#include "fe/gear_mesh_regions.hpp"
+#include "fe/gear_mesher.hpp"
+#include "fe/outline_resample.hpp"
 #include "tests/support/gear_specs.hpp"
 #include "tests/support/outline_probe.hpp"
 #include "geometry/constants.hpp"

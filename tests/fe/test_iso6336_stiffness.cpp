@@ -1,8 +1,8 @@
 // ISO 6336-1 method B stiffness against hand-evaluated values of the standard's formulas.
 #include <gtest/gtest.h>
 
-#include "geometry/errors.hpp"
-#include "physics/fe/iso6336_stiffness.hpp"
+#include "core/errors.hpp"
+#include "fe/iso6336_stiffness.hpp"
 
 using namespace gearsim;
 using namespace gearsim::fe;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "physics/fe/constants.hpp"
-#include "physics/fe/outline_resample.hpp"
+#include "fe/constants.hpp"
+#include "fe/outline_resample.hpp"
 
 namespace gearsim::fe {
 namespace test_outline_resample {

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "geometry/gear_dimensions.hpp"
-#include "physics/fe/planetary_positions.hpp"
+#include "fe/planetary_positions.hpp"
 
 using namespace gearsim;
 using namespace gearsim::fe;
@@ -49,10 +49,10 @@ TEST(PlanetaryPositions, ClosingTurnsEqualTheBacklash) {
     for (double d : pos.planet_closing_rad) EXPECT_NEAR(d / (-2 * t / rbp), 1.0, 5e-3) << "φ = " << phi;
     EXPECT_NEAR(pos.sun_closing_rad / (4 * t / rbs), 1.0, 5e-3) << "φ = " << phi;
     // A hair further and every planet is touched by the sun.
-    physics::PlanarPose s = pos.sun;
+    contact::PlanarPose s = pos.sun;
     s.angle_rad += 1e-6;
     for (int k = 0; k < 3; ++k)
-      EXPECT_FALSE(physics::find_tooth_contacts(ts, s, tp, pos.planets[k]).empty()) << "planet " << k;
+      EXPECT_FALSE(contact::find_tooth_contacts(ts, s, tp, pos.planets[k]).empty()) << "planet " << k;
   }
 }
 

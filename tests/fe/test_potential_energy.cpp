@@ -7,9 +7,9 @@
 #include <numbers>
 #include <vector>
 
-#include "geometry/errors.hpp"
-#include "physics/fe/iso6336_stiffness.hpp"
-#include "physics/fe/potential_energy.hpp"
+#include "core/errors.hpp"
+#include "fe/iso6336_stiffness.hpp"
+#include "fe/potential_energy.hpp"
 
 using namespace gearsim;
 using namespace gearsim::fe;

@@ -17,9 +17,9 @@
 #include <filesystem>
 #include <utility>
 
-#include "geometry/errors.hpp"
-#include "physics/fe/process.hpp"
-#include "physics/fe/spur_pair_fe.hpp"
+#include "core/errors.hpp"
+#include "fe/process.hpp"
+#include "fe/spur_pair_fe.hpp"
 
 using namespace gearsim;
 using namespace gearsim::fe;

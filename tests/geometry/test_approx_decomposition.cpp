@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/mass_properties.hpp"
 #include "geometry/constants.hpp"
 

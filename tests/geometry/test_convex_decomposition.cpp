@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "geometry/convex_decomposition.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/extrude.hpp"
 #include "geometry/hausdorff.hpp"
 #include "geometry/prism.hpp"

@@ -4,7 +4,7 @@
 #include <Eigen/Geometry>
 #include <map>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/extrude.hpp"
 
 namespace gearsim {

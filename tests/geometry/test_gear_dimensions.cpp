@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_dimensions.hpp"
 #include "geometry/involute.hpp"
 #include "tests/support/gear_specs.hpp"

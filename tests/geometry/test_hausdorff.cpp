@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "geometry/convex_decomposition.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/extrude.hpp"
 #include "geometry/hausdorff.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/mass_properties.hpp"
 #include "geometry/constants.hpp"
 

@@ -12,7 +12,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/mass_properties.hpp"
 #include "geometry/mesh_io.hpp"
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/mesh_validate.hpp"
 
 namespace gearsim {

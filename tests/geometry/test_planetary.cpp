@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_profile.hpp"
 #include "geometry/planetary.hpp"
 #include "tests/support/gear_specs.hpp"

@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/extrude.hpp"
 #include "geometry/prism.hpp"
 

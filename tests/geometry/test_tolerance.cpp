@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/tolerance.hpp"
 
 namespace gearsim {

@@ -6,7 +6,7 @@
 #include <map>
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/triangulate.hpp"
 
 namespace gearsim {

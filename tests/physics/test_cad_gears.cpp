@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 #include "geometry/involute_pair.hpp"
 #include "physics/run_bounds.hpp"
 #include "physics/world.hpp"
@@ -51,7 +51,7 @@ fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, dou
 
 Scenario mcad_pair(const std::string& pinion, const std::string& wheel, double centre_distance_m,
                    const std::string& unit = "mm") {
-  return app::load_scenario(mcad_pair_file(pinion, wheel, centre_distance_m, unit), {});
+  return input::load_scenario(mcad_pair_file(pinion, wheel, centre_distance_m, unit), {});
 }
 
 // The InputError reading the scenario or building its World throws ("" when both succeed).
@@ -92,7 +92,7 @@ TEST(CadGears, McadPairCarriesItsLoadAlongTheLineOfAction) {
 TEST(CadGears, McadRingFromThePairMacroTurnsWithItsPinionAndCarriesTheLoad) {
   const double rb_ring = 0.5 * 48e-3 * std::cos(20 * M_PI / 180);
   // The ring turns +z with the pinion; its load resists: −F·r_b.
-  const Scenario s = app::load_scenario(mcad_pair_file("", "", 12e-3, "mm", "mcad_m1_z24_a20_f5_b005.stl",
+  const Scenario s = input::load_scenario(mcad_pair_file("", "", 12e-3, "mm", "mcad_m1_z24_a20_f5_b005.stl",
                                                        "mcadring_m1_z48_a20_f5_b005.stl", -kForce_N * rb_ring), {});
   ASSERT_TRUE(s.transmission);
   EXPECT_DOUBLE_EQ(s.transmission->ratio, 2.0);
@@ -138,7 +138,7 @@ TEST(CadGears, McadPlanetarySetFromMeshesCarriesTheSunTorqueOverItsPlanets) {
                          "  carrier: {mass_kg: 0.1, inertia_z_kg_m2: 5.0e-5}\n"
                          "motors: [{joint: sun, target_speed_rad_s: 20, ramp_time_s: 0.01, max_torque_N_m: 5}]\n"
                          "loads: [{joint: carrier, constant_torque_N_m: " << -carrier_load_N_m << ", ramp_time_s: 0.01}]\n";
-  const Scenario s = app::load_scenario(file, {});
+  const Scenario s = input::load_scenario(file, {});
   ASSERT_TRUE(s.transmission);
   EXPECT_NEAR(s.transmission->ratio, 5.0, 1e-12);
   // Without centre_distance_m: midway between the two meshes' zero-backlash distances (MCAD's

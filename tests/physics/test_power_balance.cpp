@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "app/scenario_file.hpp"
+#include "input/scenario_file.hpp"
 #include "physics/power_balance.hpp"
 
 namespace gearsim::physics {
@@ -13,7 +13,7 @@ namespace test_power_balance {
 // The paper's healthy scenario, sun at 50 rad/s reached in 2 ms, averaged over 2–10 ms.
 PowerBalance balance(double friction) {
   const Scenario s =
-      app::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+      input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
                          {"motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002",
                           "contact.friction=" + std::to_string(friction)});
   World w(s);

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "app/scenario_file.hpp"
-#include "geometry/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
 #include "physics/run_bounds.hpp"
 #include "physics/world.hpp"
 
@@ -15,7 +15,7 @@ namespace test_run_bounds {
 
 Scenario paper(std::vector<std::string> sets) {
   sets.push_back("motors[0].ramp_time_s=0.002");
-  return app::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml", sets);
+  return input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml", sets);
 }
 
 // Steps until a bound is crossed or `steps` have run.

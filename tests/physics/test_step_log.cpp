@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "app/scenario_file.hpp"
+#include "input/scenario_file.hpp"
 #include "physics/step_log.hpp"
 
 namespace gearsim::physics {
@@ -26,7 +26,7 @@ std::vector<double> read_doubles(hid_t file, const char* name, hsize_t* dims_out
 }
 
 TEST(StepLog, HoldsEveryStepAndEveryToothContact) {
-  const Scenario s = app::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+  const Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
                                        {"duration_s=0.0024"});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "gearsim_step_log_test.h5";
   World world(s);
@@ -72,7 +72,7 @@ TEST(StepLog, LoggedContactsCarryTheMotorTorque) {
   // Read back from the file alone: Σ (p × n)·F over the sun's tooth contacts is the torque the
   // planets put on the sun; in steady running it balances the motor's torque. Friction off (its
   // impulses are logged as magnitudes without direction); sun at 50 rad/s, reached in 2 ms.
-  const Scenario s = app::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+  const Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
                                        {"motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002",
                                         "contact.friction=0"});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "gearsim_step_log_torque.h5";

@@ -2,7 +2,7 @@
 // font draws inside its cells.
 #include <gtest/gtest.h>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/contact_sheet.hpp"
 

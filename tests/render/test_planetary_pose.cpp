@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/gear_profile.hpp"
 #include "render/planetary_pose.hpp"
 #include "tests/render/paper_scene.hpp"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/planetary.hpp"
 #include "render/planetary_pose.hpp"
 #include "render/png_io.hpp"

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/renderer.hpp"
 #include "render/shading_mesh.hpp"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/extrude.hpp"
 #include "geometry/gear_body.hpp"
 #include "geometry/gear_profile.hpp"

@@ -11,7 +11,7 @@
 #include <regex>
 #include <string>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "render/bitmap_font.hpp"
 #include "render/video_writer.hpp"
 #include "tests/render/paper_scene.hpp"

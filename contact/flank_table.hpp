@@ -1,0 +1,174 @@
+// FlankTable: the flanks of every tooth of a spur gear as polar functions θ(r), sampled densely
+// in radius, built from the gear's toothed outline and tooth layout. It answers "is this point
+// (in the gear's frame) inside tooth material, and how deep" in O(1), to the outline's accuracy:
+// the basis of tooth contact. Works for external and internal gears, generated or imported, as
+// long as the toothed loop is star-shaped about the axis (each circle crosses each flank once).
+// Not a collision shape for Bullet.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/convex_decomposition.hpp"
+#include "geometry/gear_spec.hpp"
+#include "geometry/outline.hpp"
+
+namespace gearsim::contact {
+
+class FlankTable {
+ public:
+  // `loop`: the toothed loop (either orientation), gear frame, m. Throws InputError when the loop
+  // is not star-shaped per tooth sector.
+  FlankTable(const Polygon2& loop, const ToothLayout& layout, bool internal, int samples);
+
+  int teeth() const { return layout_.teeth; }
+  // How far the table strays from the polyline of its loop beyond the sagitta of a smooth curve
+  // through the loop's vertices (flank_knots.hpp), and where: a table built from a mesh it does
+  // not describe (a wrong tooth layout, a flank cut by noise) shows here.
+  struct Departure {
+    double departure_m = 0;
+    int tooth = -1;
+    Flank flank = Flank::Ccw;
+    double r_m = 0;
+  };
+  const Departure& departure() const { return departure_; }
+  // How well each vertex of the loop's flanks is predicted by its neighbours, m
+  // (knot_resolution_m in flank_knots.hpp): coarse facets or coordinate noise.
+  double knot_resolution_m() const { return knot_resolution_m_; }
+  bool internal() const { return internal_; }
+  // True when both tables describe the same flanks (same layout, radii and samples, bit for bit).
+  bool same_as(const FlankTable& o) const {
+    return layout_.teeth == o.layout_.teeth && layout_.tooth0_angle_rad == o.layout_.tooth0_angle_rad &&
+           internal_ == o.internal_ && r_min_ == o.r_min_ && r_max_ == o.r_max_ && samples_ == o.samples_ &&
+           row_of_ == o.row_of_ && ccw_ == o.ccw_ && cw_ == o.cw_;
+  }
+  // Distinct tooth shapes the table holds (identical teeth share one), for memory accounting.
+  int distinct_teeth() const { return static_cast<int>(ccw_.size()) / samples_; }
+  double pitch_angle_rad() const { return pitch_; }
+  double tooth_angle_rad(int tooth) const { return layout_.tooth0_angle_rad + tooth * pitch_; }
+  // Radial extent of the teeth: root to tip (external) or tip to root (internal), m.
+  double r_min_m() const { return r_min_; }
+  double r_max_m() const { return r_max_; }
+
+  // Angle of a flank relative to its tooth's centre line at radius r (rad; Cw < 0 < Ccw), and
+  // dθ/dr. NaN where the tooth has no material at that radius (above an external tip, below an
+  // internal one). r must lie in [r_min, r_max].
+  double flank_angle(int tooth, Flank flank, double r) const;
+  double flank_slope(int tooth, Flank flank, double r) const;
+
+  // Where a point in the gear frame lies against the material.
+  struct Probe {
+    bool inside = false;     // in tooth material (or the solid body beyond the teeth)
+    bool has_flank = false;  // depth_m and normal refer to a flank (also for a point in a gap)
+    int tooth = -1;          // nearest tooth
+    Flank flank = Flank::Ccw;  // nearest flank
+    double depth_m = 0;      // distance to that flank along its normal (> 0 inside, < 0 in a gap)
+    Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // outward flank normal, gear frame
+  };
+  Probe probe(const Eigen::Vector2d& p) const;
+  // The same answer without the normal and with the depth to first order: the angular offset
+  // from the flank at the point's own radius times r·cos ψ (ψ: the flank's angle to the radial).
+  // Its error is about depth²·curvature (1e-9 m at 1 µm, 5 µm at a 100 µm gap): for searching
+  // the deepest point, three times cheaper than probe() (no trigonometry after one atan2).
+  Probe probe_depth(const Eigen::Vector2d& p) const;
+  // probe_depth()'s depth alone, kNoDepth where it measures nothing (free space, no material).
+  // `tooth_hint`, a tooth near the point or −1, replaces the angle search and is set to the tooth
+  // found: for points probed in sequence along one flank. Both choose the tooth the point lies
+  // on, or one of the two that bound the tooth space it lies in, and so the same depth.
+  static constexpr double kNoDepth = -1e300;
+  double first_order_depth(const Eigen::Vector2d& p, int& tooth_hint) const;
+
+  // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
+  // m; NaN where the flank has no material), kept so that probing a flank costs no trigonometry.
+  static constexpr int kProbeRadii = 16;
+  static_assert(kProbeRadii <= 32, "probe_material() holds one bit per probe radius");
+  const Eigen::Vector2d& probe_point(int tooth, Flank flank, int i) const {
+    return probe_points_[(static_cast<std::size_t>(tooth) * 2 + (flank == Flank::Cw)) * kProbeRadii + i];
+  }
+  double probe_radius(int i) const { return r_min_ + i * (r_max_ - r_min_) / (kProbeRadii - 1); }
+  // Bit i set where the flank has material at probe radius i (its probe point is not NaN).
+  std::uint32_t probe_material(int tooth, Flank flank) const {
+    return probe_material_[static_cast<std::size_t>(tooth) * 2 + (flank == Flank::Cw)];
+  }
+  // Centre of a tooth's radial extent on its centre line (gear frame), m, and the radius of a
+  // circle about it that holds the whole tooth.
+  const Eigen::Vector2d& tooth_centre(int tooth) const { return tooth_centres_[tooth]; }
+  double tooth_bound_radius_m() const { return tooth_bound_; }
+
+  // A point on a flank at radius r (gear frame), m.
+  Eigen::Vector2d flank_point(int tooth, Flank flank, double r) const;
+  // The same point, false where the flank has no material at r (flank_angle() is NaN there).
+  bool flank_point_if_material(int tooth, Flank flank, double r, Eigen::Vector2d* point) const;
+
+  // Point, unit tangent (toward increasing radius) and outward unit normal of a flank at r.
+  struct FlankFrame {
+    Eigen::Vector2d point, tangent, normal;
+  };
+  FlankFrame flank_frame(int tooth, Flank flank, double r) const;
+
+ private:
+  double sample(const std::vector<double>& table, int tooth, double r, double* slope) const;
+  void share_identical_teeth();
+  void build_probe_knots();
+  // The probe_depth() path: per shared row, flank and radius sample, the flank direction and
+  // cos ψ, so that a probe needs no trigonometry (see flank_probe.cpp).
+  struct Knot {
+    double cos_a, sin_a;  // direction of the flank point at this radius, tooth frame (NaN: no material)
+    double cos_psi;       // cosine of the flank's angle to the radial: 1/√(1 + (r·dθ/dr)²)
+  };
+  // Both flanks' knots of one radius side by side: a probe reads both at once (one cache line
+  // pair instead of two).
+  struct KnotPair {
+    Knot side[2];  // [0] Ccw, [1] Cw
+  };
+  const KnotPair* knots(int tooth) const {
+    return knots_.data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
+  }
+  // The nearest tooth to a point of the gear frame at radius in the teeth: from a rough atan2,
+  // or, given a tooth near it, by stepping to the neighbour while the point lies more than half
+  // a pitch from the tooth's centre line (no trigonometry; q: the point in its frame).
+  // Unit vector at angle rel from tooth's centre line (gear frame).
+  Eigen::Vector2d direction(int tooth, double rel) const;
+  int nearest_tooth(const Eigen::Vector2d& p) const;
+  int nearest_tooth_from(const Eigen::Vector2d& p, int hint, Eigen::Vector2d* q) const;
+  // A point of the gear frame in tooth k's frame (its centre line on +x).
+  Eigen::Vector2d in_tooth_frame(const Eigen::Vector2d& p, int k) const;
+  // probe_depth()'s measure of a point at radius r within the teeth, against tooth k (its
+  // nearest) and the neighbour across the tooth space it may lie in; q: the point in tooth k's
+  // frame.
+  struct FirstOrder {
+    bool inside = false, has_flank = false;
+    int tooth = -1;
+    Flank flank = Flank::Ccw;
+    double depth_m = 0;
+  };
+  FirstOrder first_order(const Eigen::Vector2d& q, double r, int k) const;
+  // A tooth number taken modulo the tooth count (k within a few turns of the range).
+  int wrap_tooth(int k) const {
+    while (k < 0) k += layout_.teeth;
+    while (k >= layout_.teeth) k -= layout_.teeth;
+    return k;
+  }
+
+  ToothLayout layout_;
+  bool internal_;
+  Departure departure_;
+  double knot_resolution_m_ = 0;
+  double pitch_;
+  double r_min_, r_max_, dr_, inv_dr_, inv_pitch_;
+  int samples_;
+  std::vector<double> ccw_, cw_;  // [row * samples + i], rad relative to the tooth centre
+  std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
+  std::vector<int> tooth_of_row_;  // a tooth of each row
+  std::vector<KnotPair> knots_;                 // [row * samples + i]
+  double tan_half_pitch_ = 0;
+  std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle
+  Eigen::Vector2d pitch_axis_;                  // (cos, sin) of the pitch angle
+  std::vector<Eigen::Vector2d> probe_points_;  // [(tooth * 2 + cw) * kProbeRadii + i]
+  std::vector<std::uint32_t> probe_material_;  // [tooth * 2 + cw]
+  std::vector<Eigen::Vector2d> tooth_centres_;
+  double tooth_bound_ = 0;
+};
+
+}  // namespace gearsim::contact

@@ -1,0 +1,53 @@
+// Tooth contact between two spur gears with parallel axes: one contact per touching tooth pair,
+// found by probing each gear's flanks against the other's FlankTable. Pure geometry: no Bullet,
+// no forces. Depths resolve to the flank tables' accuracy (the outline's chordal deviation),
+// which is what an elastic contact of sub-µm deflections needs.
+// Not a general collision detector: both gears must be star-shaped spur gears in one plane.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "contact/flank_table.hpp"
+
+namespace gearsim::contact {
+
+// A gear's placement in the common plane: centre and rotation about +z.
+struct PlanarPose {
+  Eigen::Vector2d centre_m = Eigen::Vector2d::Zero();
+  double angle_rad = 0;
+};
+
+struct ToothContact {
+  int tooth_a = -1, tooth_b = -1;
+  Flank flank_a = Flank::Ccw;           // which flank of a's tooth is touched
+  Eigen::Vector2d point_m;              // mid-point of the overlap, plane coordinates
+  Eigen::Vector2d normal_on_b;          // unit, from b toward a (pushes a away from b)
+  double depth_m = 0;                   // penetration, > 0
+};
+
+// All tooth-pair contacts between gear a and gear b, at most one per (tooth_a, tooth_b).
+std::vector<ToothContact> find_tooth_contacts(const FlankTable& a, const PlanarPose& pa,
+                                              const FlankTable& b, const PlanarPose& pb);
+// The same into `out` (cleared first), which keeps its storage from call to call.
+void find_tooth_contacts(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
+                         const PlanarPose& pb, std::vector<ToothContact>& out);
+
+}  // namespace gearsim::contact
+
+namespace gearsim::contact {
+
+// The deepest tooth overlap of two gears turned through one mesh period (one pitch of a) about
+// their fixed centres at the ideal ratio of their tooth counts (opposite senses for two
+// external gears, the same sense for an external gear in a ring), from their poses pa and pb:
+// interference of tip and fillet, or flanks fuller than conjugate, shows here before a run.
+struct MeshCycleOverlap {
+  ToothContact deepest;       // depth_m 0 when the teeth never overlap
+  double turn_a_rad = 0;      // a's turn from pa at which it is deepest
+  double radius_a_m = 0;      // of the contact point on a, and on b
+  double radius_b_m = 0;
+};
+MeshCycleOverlap mesh_cycle_overlap(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
+                                    const PlanarPose& pb, int steps);
+
+}  // namespace gearsim::contact

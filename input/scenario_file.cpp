@@ -1,0 +1,285 @@
+// Scenario files: parse the top level, bodies, joints, motors, loads and the transmission;
+// expand macros (scenario_macros.cpp); check every cross-reference. See scenario_file.hpp.
+#include "input/scenario_file.hpp"
+
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "input/gearset_file.hpp"
+#include "input/input_limits.hpp"
+#include "input/safe_name.hpp"
+#include "input/scenario_parts.hpp"
+#include "core/errors.hpp"
+
+namespace gearsim::input {
+namespace {
+
+using namespace scenario_detail;
+namespace fs = std::filesystem;
+constexpr const char* kGround = "ground";
+
+physics::Pose parse_pose(const YamlMap& m) {
+  physics::Pose pose;
+  pose.position_m = vec3_or(m, "position_m", Eigen::Vector3d::Zero());
+  const bool full = m.has("orientation_deg") || m.has("orientation_rad");
+  const bool about_z = m.has("angle_deg") || m.has("angle_rad");
+  if (full && about_z) m.fail(m.has("angle_deg") ? "angle_deg" : "angle_rad",
+                              "give orientation_deg/_rad [rx, ry, rz] or angle_deg/_rad about z, not both");
+  if (m.has("orientation_deg") && m.has("orientation_rad"))
+    m.fail("orientation_deg", "give the orientation once: orientation_deg or orientation_rad");
+  Eigen::Vector3d r = vec3_or(m, "orientation_rad", Eigen::Vector3d::Zero());
+  r += vec3_or(m, "orientation_deg", Eigen::Vector3d::Zero()) * (std::numbers::pi / 180.0);
+  r.z() += angle_rad_or(m, "angle", 0.0);
+  // Rotations about the fixed world axes x, then y, then z: R = Rz·Ry·Rx.
+  pose.orientation = Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX());
+  return pose;
+}
+
+physics::BodyDef parse_body(const YamlMap& m, const fs::path& dir) {
+  physics::BodyDef b;
+  b.name = m.string("name");
+  require_safe_name(m, "name", b.name, NameUse::Body);
+  b.fixed = m.boolean_or("fixed", false);
+  parse_shape_and_mass(m, b, dir);
+  b.pose = parse_pose(m);
+  m.reject_unknown_keys();
+  return b;
+}
+
+double positive_or(const YamlMap& m, const std::string& key, double fallback, const std::string& what) {
+  return m.has(key) ? positive(m, key, what) : m.number_or(key, fallback);
+}
+double non_negative_or(const YamlMap& m, const std::string& key, double fallback, const std::string& what) {
+  const double v = m.number_or(key, fallback);
+  if (v < 0) m.fail(key, "expected " + what + " ≥ 0, got " + m.string(key));
+  return v;
+}
+
+// Every name the scenario defines so far, for duplicate and reference checks.
+struct Names {
+  std::map<std::string, const physics::BodyDef*> bodies;
+  std::map<std::string, std::string> joint_of_body;  // body → its hinge
+  std::set<std::string> joints;
+};
+
+physics::BearingDef parse_bearing(const YamlMap& m) {
+  physics::BearingDef b;
+  b.radial_stiffness_N_per_m = positive(m, "radial_stiffness_N_per_m", "stiffness in N/m");
+  b.radial_damping_N_s_per_m = non_negative_or(m, "radial_damping_N_s_per_m", 0.0, "a damping in N·s/m");
+  m.reject_unknown_keys();
+  return b;
+}
+
+physics::JointDef parse_joint(const YamlMap& m, const Names& names) {
+  physics::JointDef j;
+  j.name = m.string("name");
+  j.body = m.string("body");
+  const auto body = names.bodies.find(j.body);
+  if (body == names.bodies.end()) m.fail("body", "no body named '" + j.body + "'");
+  if (body->second->fixed) m.fail("body", "body '" + j.body + "' is fixed (welded to the ground): it cannot turn in a joint");
+  j.parent = m.string_or("parent", kGround);
+  if (j.parent != kGround && !names.bodies.count(j.parent))
+    m.fail("parent", "no body named '" + j.parent + "' (or 'ground')");
+  if (j.parent == j.body) m.fail("parent", "a body cannot be hinged to itself");
+  // The pivot defaults to the body's origin (a gear's centre).
+  j.pivot_m = vec3_or(m, "pivot_m", body->second->pose.position_m);
+  const Eigen::Vector3d axis = vec3_or(m, "axis", Eigen::Vector3d::UnitZ());
+  if (!(axis.norm() > 1e-12)) m.fail("axis", "the hinge axis has zero length");
+  j.axis = axis.normalized();  // a direction: only its sense matters
+  if (given(m, "bearing")) j.bearing = parse_bearing(m.map("bearing"));
+  m.reject_unknown_keys();
+  return j;
+}
+
+void add_body(Names& names, const physics::BodyDef& b, const YamlMap& at, const std::string& key) {
+  if (b.name == kGround) at.fail(key, "'ground' is reserved for the world");
+  if (!names.bodies.emplace(b.name, &b).second) at.fail(key, "a second body named '" + b.name + "'");
+}
+
+void add_joint(Names& names, const physics::JointDef& j, const YamlMap& at, const std::string& key) {
+  if (!names.joints.insert(j.name).second) at.fail(key, "a second joint named '" + j.name + "'");
+  const auto [it, fresh] = names.joint_of_body.emplace(j.body, j.name);
+  if (!fresh) at.fail(key, "body '" + j.body + "' already turns in joint '" + it->second + "' (one hinge per body)");
+}
+
+std::string joint_ref(const YamlMap& m, const std::string& key, const Names& names) {
+  const std::string j = m.string(key);
+  if (!names.joints.count(j)) m.fail(key, "no joint named '" + j + "'");
+  return j;
+}
+
+void parse_settings(const YamlMap& top, physics::Scenario& s) {
+  if (given(top, "solver")) {
+    const YamlMap m = top.map("solver");
+    s.solver.time_step_s = number_within_or(m, "time_step_s", s.solver.time_step_s, limits::kTimeStep_s);
+    s.solver.iterations = integer_within_or(m, "iterations", s.solver.iterations, limits::kSolverIterations);
+    m.reject_unknown_keys();
+  }
+  if (given(top, "output")) {
+    const YamlMap m = top.map("output");
+    s.output.sample_rate_hz = positive_or(m, "sample_rate_hz", s.output.sample_rate_hz, "rate in Hz");
+    if (s.output.sample_rate_hz * s.solver.time_step_s > 1 + 1e-9) {
+      std::ostringstream msg;
+      msg << "sample rate " << s.output.sample_rate_hz << " Hz is above the step rate 1/time_step_s = "
+          << 1 / s.solver.time_step_s << " Hz";
+      m.fail("sample_rate_hz", msg.str());
+    }
+    if (s.output.sample_rate_hz * s.duration_s < 1)
+      m.fail("sample_rate_hz", "expected at least one output row in duration_s: a rate ≥ 1/duration_s = " +
+                                   std::to_string(1 / s.duration_s) + " Hz");
+    s.output.per_step_log = m.boolean_or("per_step_log", s.output.per_step_log);
+    m.reject_unknown_keys();
+  }
+  if (given(top, "render")) {
+    const YamlMap m = top.map("render");
+    physics::RenderDef r;
+    r.camera = m.choice_or("camera", {"overview", "tilted", "sun_mesh", "ring_mesh"}, r.camera);
+    r.fps = m.integer_or("fps", r.fps);
+    if (r.fps < 1 || r.fps > 240) m.fail("fps", "expected 1 to 240 frames per second");
+    r.slowmo = number_within_or(m, "slowmo", r.slowmo, limits::kSlowMotion);
+    r.from_s = m.optional_number("from_s");
+    r.to_s = m.optional_number("to_s");
+    if (r.from_s && !within(*r.from_s, limits::kRunTime_s)) m.fail("from_s", limit_message(limits::kRunTime_s, *r.from_s));
+    if (r.to_s && !within(*r.to_s, limits::kRunTime_s)) m.fail("to_s", limit_message(limits::kRunTime_s, *r.to_s));
+    if (r.from_s && r.to_s && !(*r.to_s > *r.from_s)) m.fail("to_s", "expected a time after from_s");
+    r.width_px = m.integer_or("width_px", r.width_px);
+    r.height_px = m.integer_or("height_px", r.height_px);
+    for (const char* key : {"width_px", "height_px"}) {
+      const int v = std::string(key) == "width_px" ? r.width_px : r.height_px;
+      if (v < 16 || v > 4096 || v % 2) m.fail(key, "expected an even size of 16 to 4096 px (H.264 halves the chroma)");
+    }
+    r.msaa = m.integer_or("msaa", r.msaa);
+    if (r.msaa < 0 || r.msaa == 1 || r.msaa > 16) m.fail("msaa", "expected 0 (edge anti-aliasing) or 2 to 16 samples");
+    r.png_every = m.integer_or("png_every", r.png_every);
+    if (r.png_every < 0) m.fail("png_every", "expected 0 (no PNG) or a positive frame interval");
+    m.reject_unknown_keys();
+    s.render = r;
+  }
+  if (given(top, "contact")) {
+    const YamlMap m = top.map("contact");
+    physics::ContactDef& c = s.contact;
+    c.stiffness_N_per_m_per_m = positive_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, "stiffness in N/m per m");
+    c.damping_ratio = non_negative_or(m, "damping_ratio", c.damping_ratio, "a damping ratio");
+    c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
+    c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
+    c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
+    // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
+    if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
+    m.reject_unknown_keys();
+  }
+}
+
+physics::Scenario parse(const YamlMap& top, const fs::path& file) {
+  const fs::path dir = file.parent_path();
+  physics::Scenario s;
+  s.source = file;
+  s.name = top.string_or("name", file.stem().string());
+  require_label(top, "name", s.name);
+  s.duration_s = number_within(top, "duration_s", limits::kDuration_s);
+  const int seed = top.integer_or("seed", 0);
+  if (seed < 0) top.fail("seed", "expected a seed ≥ 0");
+  s.seed = static_cast<std::uint64_t>(seed);
+  parse_settings(top, s);
+  if (s.solver.time_step_s >= s.duration_s) top.fail("duration_s", "expected a duration longer than one time step");
+
+  // Bodies: explicit ones, then the macros' (their names must not collide).
+  std::vector<YamlMap> body_maps;
+  if (given(top, "bodies")) body_maps = top.list_of_maps("bodies");
+  for (const YamlMap& m : body_maps) s.bodies.push_back(parse_body(m, dir));
+  std::vector<std::pair<Expansion, std::string>> macros;
+  if (given(top, "planetary")) macros.emplace_back(expand_planetary(top.map("planetary"), dir), "planetary");
+  if (given(top, "pair")) macros.emplace_back(expand_pair(top.map("pair"), dir), "pair");
+  for (const auto& [e, key] : macros) {
+    s.bodies.insert(s.bodies.end(), e.bodies.begin(), e.bodies.end());
+    if (!e.gearset_spec.empty()) s.gearset_spec = e.gearset_spec;
+    if (e.planetary) s.planetary = e.planetary;
+    for (const physics::PairTableDef& t : e.pair_tables) s.pair_tables.push_back(t);
+  }
+  Names names;
+  std::size_t bi = 0;
+  for (const YamlMap& m : body_maps) add_body(names, s.bodies[bi++], m, "name");
+  for (const auto& [e, key] : macros)
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) add_body(names, s.bodies[bi++], top, key);
+
+  // Joints: the macros' first, then explicit ones (which may hinge to macro bodies).
+  for (const auto& [e, key] : macros)
+    for (const physics::JointDef& j : e.joints) {
+      add_joint(names, j, top, key);
+      s.joints.push_back(j);
+    }
+  if (given(top, "joints"))
+    for (const YamlMap& m : top.list_of_maps("joints")) {
+      s.joints.push_back(parse_joint(m, names));
+      add_joint(names, s.joints.back(), m, "name");
+    }
+
+  if (given(top, "motors")) {
+    std::set<std::string> driven;
+    for (const YamlMap& m : top.list_of_maps("motors")) {
+      physics::MotorDef d;
+      d.joint = joint_ref(m, "joint", names);
+      if (!driven.insert(d.joint).second) m.fail("joint", "joint '" + d.joint + "' already has a motor");
+      d.target_speed_rad_s = m.number("target_speed_rad_s");
+      d.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
+      d.max_torque_N_m = positive(m, "max_torque_N_m", "torque limit in N·m");
+      m.reject_unknown_keys();
+      s.motors.push_back(d);
+    }
+  }
+  if (given(top, "loads"))
+    for (const YamlMap& m : top.list_of_maps("loads")) {
+      physics::LoadDef l;
+      l.joint = joint_ref(m, "joint", names);
+      l.constant_torque_N_m = m.number_or("constant_torque_N_m", 0.0);
+      l.viscous_N_m_s_per_rad = non_negative_or(m, "viscous_N_m_s_per_rad", 0.0, "a viscous coefficient in N·m·s/rad");
+      l.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
+      m.reject_unknown_keys();
+      s.loads.push_back(l);
+    }
+
+  // Transmission: the explicit block, each key defaulting to the macro's proposal.
+  std::optional<physics::TransmissionDef> proposed;
+  for (const auto& [e, key] : macros)
+    if (e.transmission) {
+      if (proposed && !top.has("transmission"))
+        top.fail(key, "two macros each define a transmission: give transmission {input_joint, output_joint, ratio}");
+      proposed = e.transmission;
+    }
+  if (given(top, "transmission")) {
+    const YamlMap m = top.map("transmission");
+    physics::TransmissionDef t = proposed.value_or(physics::TransmissionDef{});
+    if (!proposed || m.has("input_joint")) t.input_joint = joint_ref(m, "input_joint", names);
+    if (!proposed || m.has("output_joint")) t.output_joint = joint_ref(m, "output_joint", names);
+    if (t.input_joint == t.output_joint) m.fail("output_joint", "input and output are the same joint");
+    t.ratio = proposed ? m.number_or("ratio", t.ratio) : m.number("ratio");
+    if (t.ratio == 0) m.fail("ratio", "expected a non-zero ratio θ_input/θ_output");
+    m.reject_unknown_keys();
+    proposed = t;
+  }
+  s.transmission = proposed;
+  if (given(top, "contact"))
+    if (const YamlMap c = top.map("contact"); given(c, "stiffness_tables"))
+      parse_stiffness_tables(c.list_of_maps("stiffness_tables"), s, dir);
+  if (given(top, "fe")) s.fe = parse_fe(top.map("fe"), s);
+  top.reject_unknown_keys();
+  return s;
+}
+
+}  // namespace
+
+physics::Scenario load_scenario(const fs::path& file, const std::vector<std::string>& overrides) {
+  YAML::Node root = load_yaml_mapping(file);  // size, syntax, text keys, no key twice
+  apply_overrides(root, overrides, file.string());
+  try {
+    return parse(YamlMap::from_node(root, file.string()), file);
+  } catch (const InputError& e) {
+    throw InputError(blame_override(e.what(), overrides));
+  }
+}
+
+}  // namespace gearsim::input

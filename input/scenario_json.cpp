@@ -1,0 +1,122 @@
+// scenario_json(): the expanded, validated scenario as JSON for a dry-run print. SI keys; angles
+// in rad; orientations as a rotation vector (axis·angle, rad) and a quaternion (w, x, y, z).
+#include <Eigen/Geometry>
+
+#include "input/scenario_file.hpp"
+
+namespace gearsim::input {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+const char* flank_name(Flank f) { return f == Flank::Ccw ? "ccw" : "cw"; }
+
+json gear_json(const GearSpec& g) {
+  json errors = {{"flank_offsets", json::array()}, {"pitch_errors", json::array()}, {"profile_slopes", json::array()}};
+  for (const FlankOffset& f : g.errors.flank_offsets)
+    errors["flank_offsets"].push_back({{"tooth", f.tooth}, {"flank", flank_name(f.flank)}, {"normal_offset_m", f.normal_offset_m}});
+  for (const PitchError& p : g.errors.pitch_errors)
+    errors["pitch_errors"].push_back({{"tooth", p.tooth}, {"error_m", p.error_m}});
+  for (const ProfileSlopeError& p : g.errors.profile_slopes)
+    errors["profile_slopes"].push_back({{"tooth", p.tooth}, {"flank", flank_name(p.flank)}, {"slope_m", p.slope_m}});
+  errors["eccentricity"] = {{"eccentricity_m", g.errors.eccentricity.eccentricity_m},
+                            {"phase_rad", g.errors.eccentricity.phase_rad}};
+  return {{"name", g.name},
+          {"kind", g.kind == GearKind::Internal ? "internal" : "external"},
+          {"teeth", g.teeth},
+          {"module_m", g.module_m},
+          {"pressure_angle_rad", g.pressure_angle_rad},
+          {"face_width_m", g.face_width_m},
+          {"profile_shift", g.profile_shift},
+          {"addendum_coeff", g.addendum_coeff},
+          {"dedendum_coeff", g.dedendum_coeff},
+          {"root_fillet_coeff", g.root_fillet_coeff},
+          {"thinning_per_flank_m", g.thinning_per_flank_m},
+          {"bore_diameter_m", g.bore_diameter_m},
+          {"rim_diameter_m", g.rim_diameter_m},
+          {"tooth0_angle_rad", g.tooth0_angle_rad},
+          {"chordal_deviation_m", g.chordal_deviation_m},
+          {"errors", errors}};
+}
+
+json body_json(const physics::BodyDef& b) {
+  json j = {{"name", b.name}};
+  if (b.gear) j["gear"] = gear_json(*b.gear);
+  if (b.mesh) {
+    j["mesh"] = {{"file", b.mesh->path.string()}, {"unit", std::string(symbol(b.mesh->unit))}};
+    if (b.mesh->teeth) {
+      j["mesh"]["teeth"] = b.mesh->teeth->teeth;
+      j["mesh"]["tooth0_angle_rad"] = b.mesh->teeth->tooth0_angle_rad;
+      j["mesh"]["teeth_from"] = b.mesh->teeth_recognised ? "recognised from the mesh" : "the scenario";
+    } else {
+      j["mesh"]["teeth"] = "none";
+    }
+  }
+  if (b.density_kg_m3) j["density_kg_m3"] = *b.density_kg_m3;
+  if (b.mass_kg) j["mass_kg"] = *b.mass_kg;
+  if (b.principal_inertia_kg_m2) j["principal_inertia_kg_m2"] = vec(*b.principal_inertia_kg_m2);
+  const Eigen::AngleAxisd aa(b.pose.orientation);
+  const Eigen::Quaterniond& q = b.pose.orientation;
+  j["position_m"] = vec(b.pose.position_m);
+  j["rotation_vector_rad"] = vec(aa.axis() * aa.angle());
+  j["orientation_wxyz"] = json::array({q.w(), q.x(), q.y(), q.z()});
+  j["fixed"] = b.fixed;
+  return j;
+}
+
+json joint_json(const physics::JointDef& jd) {
+  json j = {{"name", jd.name}, {"body", jd.body}, {"parent", jd.parent}, {"pivot_m", vec(jd.pivot_m)}, {"axis", vec(jd.axis)}};
+  if (jd.bearing)
+    j["bearing"] = {{"radial_stiffness_N_per_m", jd.bearing->radial_stiffness_N_per_m},
+                    {"radial_damping_N_s_per_m", jd.bearing->radial_damping_N_s_per_m}};
+  return j;
+}
+
+}  // namespace
+
+json scenario_json(const physics::Scenario& s) {
+  json j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
+  j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}};
+  j["output"] = {{"sample_rate_hz", s.output.sample_rate_hz}, {"per_step_log", s.output.per_step_log}};
+  j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
+                  {"damping_ratio", s.contact.damping_ratio},
+                  {"friction", s.contact.friction},
+                  {"chordal_deviation_m", s.contact.chordal_deviation_m},
+                  {"max_flank_departure_m", s.contact.max_flank_departure_m}};
+  if (!s.contact.stiffness_tables.empty()) {
+    json tables = json::array();
+    for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)
+      tables.push_back({{"body_a", t.body_a}, {"body_b", t.body_b}, {"file", t.table.source},
+                        {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m}});
+    j["contact"]["stiffness_tables"] = tables;
+  }
+  j["bodies"] = json::array();
+  for (const physics::BodyDef& b : s.bodies) j["bodies"].push_back(body_json(b));
+  j["joints"] = json::array();
+  for (const physics::JointDef& jd : s.joints) j["joints"].push_back(joint_json(jd));
+  j["motors"] = json::array();
+  for (const physics::MotorDef& m : s.motors)
+    j["motors"].push_back({{"joint", m.joint}, {"target_speed_rad_s", m.target_speed_rad_s},
+                           {"ramp_time_s", m.ramp_time_s}, {"max_torque_N_m", m.max_torque_N_m}});
+  j["loads"] = json::array();
+  for (const physics::LoadDef& l : s.loads)
+    j["loads"].push_back({{"joint", l.joint}, {"constant_torque_N_m", l.constant_torque_N_m},
+                          {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}, {"ramp_time_s", l.ramp_time_s}});
+  if (s.render) {
+    const physics::RenderDef& r = *s.render;
+    j["render"] = {{"camera", r.camera}, {"fps", r.fps}, {"slowmo", r.slowmo}, {"width_px", r.width_px},
+                   {"height_px", r.height_px}, {"msaa", r.msaa}, {"png_every", r.png_every}};
+    if (r.from_s) j["render"]["from_s"] = *r.from_s;
+    if (r.to_s) j["render"]["to_s"] = *r.to_s;
+  }
+  if (s.transmission)
+    j["transmission"] = {{"input_joint", s.transmission->input_joint},
+                         {"output_joint", s.transmission->output_joint},
+                         {"ratio", s.transmission->ratio},
+                         {"te_formula", "te_rad = θ_input − ratio·θ_output"}};
+  return j;
+}
+
+}  // namespace gearsim::input

@@ -1,0 +1,118 @@
+// Flank knots and flank tables from outlines nobody here made: OpenSCAD MCAD gears
+// (tests/data/mcad: an involute above the base circle, a radial line below it, a flat chordal tip
+// land, a polygonal root), with and without coordinate noise. The tables must follow the
+// outline they came from; a radial piece next to an involute must stay straight.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "geometry/mesh_io.hpp"
+#include "geometry/prism.hpp"
+#include "contact/flank_knots.hpp"
+#include "contact/flank_table.hpp"
+#include "tests/support/asymmetric_gear.hpp"
+
+namespace gearsim::contact {
+namespace test_flank_knots {
+
+// The outer loop of an MCAD mesh's outline (about its own z axis), m.
+Polygon2 mcad_loop(int teeth) {
+  const TriMesh mesh = import_mesh(std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(teeth) +
+                                       "_a20_f5_b005.stl",
+                                   LengthUnit::Millimetre);
+  const PrismRecovery pr = recover_prism(mesh, 0.1e-6);
+  EXPECT_TRUE(pr.prism) << pr.reason;
+  return pr.prism->outline.outer;
+}
+
+TEST(FlankKnots, ARadialPieceBesideAnInvoluteStaysStraight) {
+  // MCAD's flank below the base circle: θ constant from the root (4.75 mm) to r_b = 5.638 mm,
+  // then the involute θ = θ0 + inv α at coarse roll steps. A cubic through knots on both sides
+  // would bow the straight piece by tens of µm; the shape-preserving cubic keeps it straight.
+  const double rb = 5.638e-3, theta0 = -0.1;
+  FlankKnots k;
+  k.r_m = {4.75e-3};
+  k.theta_rad = {theta0};
+  for (int i = 0; i <= 5; ++i) {
+    const double roll = 0.16 * i, r = rb * std::sqrt(1 + roll * roll);
+    k.r_m.push_back(r);
+    k.theta_rad.push_back(theta0 + (roll - std::atan(roll)));
+  }
+  const int n = 2000;
+  const double r0 = k.r_m.front(), dr = (k.r_m.back() - r0) / (n - 1);
+  std::vector<double> v(n);
+  sample_flank(k, r0, dr, n, v.data());
+  double worst = 0;
+  for (int i = 0; i < n && r0 + i * dr <= rb; ++i) worst = std::max(worst, std::abs(v[i] - theta0) * (r0 + i * dr));
+  EXPECT_LT(worst, 1e-12);  // m: straight to rounding
+  // And the table follows the knots' polyline within the sagitta of the involute's chords.
+  EXPECT_LT(flank_departure(k, r0, dr, n, v.data()).departure_m, 0.05e-6);
+}
+
+TEST(FlankTable, FollowsAnMcadGearsOutline) {
+  for (int z : {12, 24}) {
+    const FlankTable t(mcad_loop(z), ToothLayout{z, 0.0}, false, 4096);
+    // 5 facets per involute: the cubic through the vertices departs from their polyline by less
+    // than the chords' own sagitta estimate allows, well inside the 2 µm a scenario accepts.
+    EXPECT_LT(t.departure().departure_m, 0.5e-6) << "z " << z << " tooth " << t.departure().tooth;
+    // Tip at m·(z/2 + 1), root at r_f = m·(z/2 − 1.25) (MCAD: clearance 0.25 mm), less the
+    // table's 1e-4 edge margin; MCAD's root is a 2z-gon on r_f whose sides meet the radial flanks
+    // between r_f·cos(90°/z) and r_f.
+    const double rf = 1e-3 * (z / 2.0 - 1.25);
+    EXPECT_NEAR(t.r_max_m(), 1e-3 * (z / 2.0 + 1), 1e-6);
+    EXPECT_GT(t.r_min_m(), rf * std::cos(M_PI / 2 / z));
+    EXPECT_LT(t.r_min_m(), rf);
+    // Tooth 0 symmetric about +x: its flanks at the pitch radius are mirror images.
+    const double rp = 1e-3 * z / 2;
+    EXPECT_NEAR(t.flank_angle(0, Flank::Ccw, rp), -t.flank_angle(0, Flank::Cw, rp), 1e-9);
+  }
+}
+
+TEST(FlankTable, CoordinateNoiseOfHalfAMicrometreIsTolerated) {
+  // ±0.5 µm uniform in-plane noise on every vertex (a flat tip land then rises and falls by up
+  // to 1 µm between its corners): the table still follows the outline within 2 µm.
+  Polygon2 loop = mcad_loop(24);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.5e-6, 0.5e-6);
+  for (Eigen::Vector2d& p : loop.points) p += Eigen::Vector2d(u(rng), u(rng));
+  const FlankTable t(loop, ToothLayout{24, 0.0}, false, 4096);
+  EXPECT_LT(t.departure().departure_m, 2e-6);
+  // 5 facets per involute: each knot is predicted by its neighbours' cubic only to ~2.5 µm (the
+  // chords' curvature, not the noise), so knots closer than 4× that are merged; none are here.
+  EXPECT_LT(t.knot_resolution_m(), 5e-6);
+}
+
+TEST(FlankTable, ATipLandWhoseCornersDifferByRoundingIsNoFlank) {
+  // The failure: tip corners at radii 28 nm apart joined the flank run, and the cubic
+  // through two knots 28 nm apart in r and 2° apart in angle swung by thousands of degrees.
+  Polygon2 loop = mcad_loop(12);
+  const double rmax = 7e-3;
+  for (Eigen::Vector2d& p : loop.points)
+    if (p.norm() > rmax - 1e-9) p *= (p.y() > 0 ? 1 + 28e-9 / rmax : 1.0);  // one corner 28 nm higher
+  const FlankTable t(loop, ToothLayout{12, 0.0}, false, 4096);
+  EXPECT_LT(t.departure().departure_m, 0.5e-6);
+  for (int k = 0; k < 12; ++k)
+    for (Flank f : {Flank::Ccw, Flank::Cw}) {
+      const double a = t.flank_angle(k, f, t.r_max_m() - 1e-6);
+      if (!std::isnan(a)) {
+        EXPECT_LT(std::abs(a), M_PI / 12) << "tooth " << k;
+      }
+    }
+}
+
+// The flank table of asymmetric teeth follows each side: its angle at any radius is the side's
+// own involute (the table interpolates between outline vertices 1/39 of the depth apart).
+TEST(FlankTable, FollowsAsymmetricTeethSideBySide) {
+  const test::AsymmetricGear a;
+  const FlankTable t(a.outline(), ToothLayout{20, 0.0}, false, 4096);
+  EXPECT_LT(t.departure().departure_m, 0.5e-6);
+  for (double r : {9.7e-3, 10e-3, 10.5e-3}) {
+    // Angle errors times the radius: within 0.1 µm along the circle.
+    EXPECT_NEAR(r * t.flank_angle(3, Flank::Ccw, r), r * a.side_angle(a.rb_ccw_m, r), 0.1e-6) << r;
+    EXPECT_NEAR(r * t.flank_angle(3, Flank::Cw, r), -r * a.side_angle(a.rb_cw_m, r), 0.1e-6) << r;
+  }
+}
+
+}  // namespace test_flank_knots
+}  // namespace gearsim::contact

@@ -1,0 +1,131 @@
+// Gear-set spec files: the paper's spec parses to the paper's gears; every bad input is refused
+// with the file, line and key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "input/gearset_file.hpp"
+#include "core/errors.hpp"
+
+namespace gearsim::input {
+namespace test_gearset_file {
+
+const std::string kPaperSpec = std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/paper_gearset.yaml";
+
+TEST(GearSetFile, PaperSpecDescribesThePapersPlanetarySet) {
+  const GearSetFile f = load_gearset(kPaperSpec);
+  ASSERT_TRUE(f.planetary.has_value());
+  EXPECT_EQ(f.planetary->sun.teeth, 24);
+  EXPECT_EQ(f.planetary->planet.teeth, 36);
+  EXPECT_EQ(f.planetary->ring.teeth, 96);
+  EXPECT_EQ(f.planetary->planets, 3);
+  EXPECT_EQ(f.planetary->ring.kind, GearKind::Internal);
+  // Defaults reach every gear: m = 1 mm, α = 20° (parsed from degrees), b = 10 mm.
+  for (const GearSpec& g : f.gears) {
+    EXPECT_DOUBLE_EQ(g.module_m, 1e-3);
+    EXPECT_NEAR(g.pressure_angle_rad, 20.0 * std::numbers::pi / 180.0, 1e-15);
+    EXPECT_DOUBLE_EQ(g.face_width_m, 10e-3);
+  }
+  const GearSpec& faulty = f.gear("planet_faulty");
+  ASSERT_EQ(faulty.errors.flank_offsets.size(), 1u);
+  EXPECT_DOUBLE_EQ(faulty.errors.flank_offsets[0].normal_offset_m, -43e-6);
+  EXPECT_EQ(faulty.errors.flank_offsets[0].flank, Flank::Ccw);
+  EXPECT_EQ(f.tolerance_quality, 8);
+}
+
+// Writes `text` to a temp file and returns the error message load_gearset gives for it.
+std::string error_for(const std::string& text) {
+  const std::filesystem::path p = std::filesystem::temp_directory_path() /
+                                  ("gearsim_spec_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                   ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml");
+  { std::ofstream(p) << text; }
+  try {
+    load_gearset(p);
+  } catch (const InputError& e) {
+    std::filesystem::remove(p);
+    return e.what();
+  }
+  std::filesystem::remove(p);
+  return "";
+}
+
+const std::string kGood =
+    "name: t\n"
+    "density_kg_m3: 7850\n"
+    "gears:\n"
+    "  pinion: {kind: external, teeth: 20, module_m: 0.002, face_width_m: 0.01}\n"
+    "  wheel: {kind: external, teeth: 40, module_m: 0.002, face_width_m: 0.01}\n"
+    "train: {type: pair, driver: pinion, driven: wheel}\n";
+
+TEST(GearSetFile, GoodPairParses) { EXPECT_EQ(error_for(kGood), ""); }
+
+TEST(GearSetFile, UnknownKeyIsAnErrorWithItsLine) {
+  std::string text = kGood + "colour: blue\n";
+  const std::string e = error_for(text);
+  EXPECT_NE(e.find(":7:"), std::string::npos) << e;  // line 7 holds the stray key
+  EXPECT_NE(e.find("colour: unknown key"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, UnknownKeyInsideAGearNamesItsPath) {
+  std::string text = kGood;
+  text.replace(text.find("teeth: 20"), 9, "teeth: 20, tooth_count: 3");
+  const std::string e = error_for(text);
+  EXPECT_NE(e.find("gears.pinion.tooth_count: unknown key"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, WrongTypeSaysWhatWasExpected) {
+  std::string text = kGood;
+  text.replace(text.find("teeth: 40"), 9, "teeth: forty");
+  const std::string e = error_for(text);
+  EXPECT_NE(e.find("gears.wheel.teeth: expected an integer, got 'forty'"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, MissingRequiredKeyIsNamed) {
+  std::string text = kGood;
+  text.replace(text.find("module_m: 0.002, face_width_m"), 16, "");
+  const std::string e = error_for(text);
+  EXPECT_NE(e.find("gears.pinion.module_m: missing"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, TrainNamingAMissingGearIsRefused) {
+  std::string text = kGood;
+  text.replace(text.find("driven: wheel"), 13, "driven: gear9");
+  const std::string e = error_for(text);
+  EXPECT_NE(e.find("train.driven: no gear named 'gear9'"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, AngleGivenTwiceIsRefused) {
+  std::string text = kGood;
+  text.replace(text.find("teeth: 20"), 9, "teeth: 20, pressure_angle_deg: 20, pressure_angle_rad: 0.3");
+  EXPECT_NE(error_for(text).find("give the angle once"), std::string::npos);
+}
+
+TEST(GearSetFile, ImpossibleGearNamesTheGearAndField) {
+  std::string text = kGood;
+  text.replace(text.find("teeth: 20"), 9, "teeth: 2");
+  const std::string e = error_for(text);
+  // file:line:column, then the key path of the gear and field, then what was expected.
+  EXPECT_NE(e.find(".yaml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("gears.pinion.teeth: expected a number of teeth in [3, "), std::string::npos) << e;
+  EXPECT_NE(e.find("got 2"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, YamlSyntaxErrorGivesLineAndColumn) {
+  const std::string e = error_for("name: t\ngears: [unclosed\n");
+  EXPECT_NE(e.find("YAML syntax error"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, MissingFileIsNamed) {
+  try {
+    load_gearset("/nonexistent/spec.yaml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/spec.yaml: cannot open"), std::string::npos);
+  }
+}
+
+}  // namespace test_gearset_file
+}  // namespace gearsim::input

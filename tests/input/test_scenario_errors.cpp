@@ -1,0 +1,192 @@
+// Scenario files: every kind of bad input is refused with a message naming the file, the key
+// path and what was expected. One test per kind; each edits one line of a small valid scenario.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "input/scenario_file.hpp"
+#include "core/errors.hpp"
+
+namespace gearsim::input {
+namespace test_scenario_errors {
+
+namespace fs = std::filesystem;
+const fs::path kPaperSpec = fs::path(GEARSIM_SOURCE_DIR) / "assets/specs/paper_gearset.yaml";
+
+// A fresh folder per test for the scenario (and any spec) files it writes.
+fs::path test_dir() {
+  const fs::path d = fs::temp_directory_path() / "gearsim_scenario_errors" /
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  fs::create_directories(d);
+  return d;
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+// The error load_scenario gives for `text` saved as bad.yaml in the test's folder ("" if none).
+std::string error_for(const std::string& text) {
+  const fs::path p = test_dir() / "bad.yaml";
+  write(p, text);
+  try {
+    load_scenario(p);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A wheel on a hinge, driven and loaded: the smallest valid scenario (no files needed).
+const std::string kGood =
+    "name: t\n"
+    "duration_s: 0.1\n"
+    "bodies:\n"
+    "  - {name: wheel, mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]}\n"
+    "joints:\n"
+    "  - {name: hinge, body: wheel, axis: [0, 0, 1]}\n"
+    "motors:\n"
+    "  - {joint: hinge, target_speed_rad_s: 1, max_torque_N_m: 1}\n"
+    "loads:\n"
+    "  - {joint: hinge, constant_torque_N_m: -0.1}\n";
+
+std::string edited(const std::string& from, const std::string& to) {
+  std::string t = kGood;
+  const std::size_t at = t.find(from);
+  if (at == std::string::npos) throw std::runtime_error("test text lacks " + from);
+  return t.replace(at, from.size(), to);
+}
+
+// The message names the file, its line (when the key is in the file) and the key path.
+#define EXPECT_NAMES(error, ...)                                                         \
+  do {                                                                                   \
+    const std::string e_ = (error);                                                      \
+    EXPECT_NE(e_.find("bad.yaml"), std::string::npos) << e_;                             \
+    for (const char* part : {__VA_ARGS__}) EXPECT_NE(e_.find(part), std::string::npos) << e_; \
+  } while (0)
+
+TEST(ScenarioErrors, GoodScenarioLoads) { EXPECT_EQ(error_for(kGood), ""); }
+
+TEST(ScenarioErrors, UnknownKey) {
+  EXPECT_NAMES(error_for(kGood + "colour: blue\n"), "bad.yaml:11:", "colour: unknown key");
+}
+
+TEST(ScenarioErrors, UnknownKeyInsideABody) {
+  EXPECT_NAMES(error_for(edited("mass_kg: 1.0", "mass_kg: 1.0, colour: red")), "bodies[0].colour: unknown key");
+}
+
+TEST(ScenarioErrors, WrongType) {
+  EXPECT_NAMES(error_for(edited("duration_s: 0.1", "duration_s: fast")), "bad.yaml:2:", "duration_s: expected a number");
+}
+
+TEST(ScenarioErrors, DuplicateBodyName) {
+  EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")),
+               "bodies[1].name", "a second body named 'wheel'");
+}
+
+TEST(ScenarioErrors, DuplicateJointName) {
+  EXPECT_NAMES(error_for(edited("motors:", "  - {name: hinge, body: wheel}\nmotors:")), "joints[1].name",
+               "a second joint named 'hinge'");
+}
+
+TEST(ScenarioErrors, JointOfAMissingBody) {
+  EXPECT_NAMES(error_for(edited("body: wheel", "body: wheal")), "joints[0].body", "no body named 'wheal'");
+}
+
+TEST(ScenarioErrors, MotorOfAMissingJoint) {
+  EXPECT_NAMES(error_for(edited("{joint: hinge, target", "{joint: hinj, target")), "motors[0].joint",
+               "no joint named 'hinj'");
+}
+
+TEST(ScenarioErrors, LoadOfAMissingJoint) {
+  EXPECT_NAMES(error_for(edited("{joint: hinge, constant", "{joint: axle, constant")), "loads[0].joint",
+               "no joint named 'axle'");
+}
+
+TEST(ScenarioErrors, TransmissionOfAMissingJoint) {
+  EXPECT_NAMES(error_for(kGood + "transmission: {input_joint: hinge, output_joint: shaft, ratio: 2}\n"),
+               "transmission.output_joint", "no joint named 'shaft'");
+}
+
+TEST(ScenarioErrors, BodyWithBothGearAndMesh) {
+  const std::string e = error_for(edited(
+      "mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+      "density_kg_m3: 7850, gear: {kind: external, teeth: 20, module_m: 0.002, face_width_m: 0.01}, "
+      "mesh: {file: wheel.stl, unit: mm}"));
+  EXPECT_NAMES(e, "bodies[0]", "more than one shape");
+}
+
+TEST(ScenarioErrors, MissingMeshFileNamesTheResolvedPath) {
+  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+                                         "density_kg_m3: 7850, mesh: {file: parts/wheel.stl, unit: mm}"));
+  const std::string resolved = (test_dir() / "parts/wheel.stl").string();
+  EXPECT_NAMES(e, "bodies[0].mesh.file", "mesh file not found", resolved.c_str());
+}
+
+TEST(ScenarioErrors, NegativeMass) {
+  EXPECT_NAMES(error_for(edited("mass_kg: 1.0", "mass_kg: -1.0")), "bodies[0].mass_kg", "expected a positive mass");
+}
+
+TEST(ScenarioErrors, ZeroDensity) {
+  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+                                         "density_kg_m3: 0, gear: {kind: external, teeth: 20, module_m: 0.002, "
+                                         "face_width_m: 0.01}"));
+  EXPECT_NAMES(e, "bodies[0].density_kg_m3", "expected a positive density");
+}
+
+TEST(ScenarioErrors, ZeroDuration) {
+  EXPECT_NAMES(error_for(edited("duration_s: 0.1", "duration_s: 0")), "duration_s", "expected a duration in (0, 10000] s, got 0");
+}
+
+TEST(ScenarioErrors, NegativeTimeStep) {
+  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: -1e-5}\n"), "solver.time_step_s", "expected a time step in [1e-07, 0.01] s, got -1e-05");
+}
+
+TEST(ScenarioErrors, HingeAxisOfZeroLength) {
+  EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]", "axis: [0, 0, 0]")), "joints[0].axis", "zero length");
+}
+
+TEST(ScenarioErrors, SampleRateAboveTheStepRate) {
+  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 1.0e-3}\noutput: {sample_rate_hz: 2000}\n"),
+               "output.sample_rate_hz", "above the step rate");
+}
+
+// A planetary scenario on a gear-set spec written beside it (sun, planet and ring teeth given).
+// Outlines at 20 µm chordal deviation keep the mesh analysis fast (it samples every outline point).
+std::string planetary_error(int sun, int planet, int ring, int planets) {
+  const fs::path d = test_dir();
+  write(d / "set.yaml", "name: s\ndensity_kg_m3: 7850\ndefaults: {module_m: 1.0e-3, face_width_m: 0.01, chordal_deviation_m: 2.0e-5}\ngears:\n"
+                        "  sun: {kind: external, teeth: " + std::to_string(sun) + "}\n"
+                        "  planet: {kind: external, teeth: " + std::to_string(planet) + "}\n"
+                        "  ring: {kind: internal, teeth: " + std::to_string(ring) + ", rim_diameter_m: 0.12}\n");
+  return error_for("duration_s: 0.1\nplanetary:\n  spec: set.yaml\n  sun: sun\n  planet: planet\n  ring: ring\n"
+                   "  planets: " + std::to_string(planets) + "\n  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n");
+}
+
+TEST(ScenarioErrors, RingThatCannotMeshWithThePlanets) {
+  // z_r = 97 ≠ z_s + 2·z_p = 96: the planet–ring centre distance (30.5 mm) misses the sun's (30 mm).
+  EXPECT_NAMES(planetary_error(24, 36, 97, 3), "bad.yaml:6:", "planetary.ring", "centre distance");
+}
+
+TEST(ScenarioErrors, PlanetsThatCannotBeAssembledEquallySpaced) {
+  // 20 + 62 = 82 teeth, not divisible by 3 planets (the centre distances agree: 20.5 mm). Small
+  // gears (without undercut) keep the test fast.
+  EXPECT_NAMES(planetary_error(20, 21, 62, 3), "planetary.planets", "(z_s + z_r)/N = (20 + 62)/3", "not a whole number");
+}
+
+TEST(ScenarioErrors, FaultyPlanetIndexOutOfRange) {
+  const std::string e = error_for("duration_s: 0.1\nplanetary:\n  spec: " + kPaperSpec.string() +
+                                  "\n  faulty_planets: {3: planet_faulty}\n  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n");
+  EXPECT_NAMES(e, "planetary.faulty_planets.3", "expected a planet index 0..2");
+}
+
+TEST(ScenarioErrors, RenderSectionIsCheckedKeyByKey) {
+  EXPECT_EQ(error_for(kGood + "render: {camera: sun_mesh, fps: 25, slowmo: 20, from_s: 0.01, to_s: 0.05}\n"), "");
+  EXPECT_NAMES(error_for(kGood + "render: {camera: sideways}\n"), "render.camera");
+  EXPECT_NAMES(error_for(kGood + "render: {fps: 0}\n"), "render.fps", "1 to 240");
+  EXPECT_NAMES(error_for(kGood + "render: {width_px: 641}\n"), "render.width_px", "even");
+  EXPECT_NAMES(error_for(kGood + "render: {from_s: 0.2, to_s: 0.1}\n"), "render.to_s", "after from_s");
+  EXPECT_NAMES(error_for(kGood + "render: {colour: red}\n"), "render.colour: unknown key");
+}
+
+}  // namespace test_scenario_errors
+}  // namespace gearsim::input
