@@ -23,21 +23,21 @@ std::string decimation_number(double v) {
   return out.str();
 }
 
-void check_rate(const char* what, double rate_hz) {
+void check_decimation_rate(const char* what, double rate_hz) {
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0)
     throw InputError(std::string("decimation filter: ") + what + " must be a positive number of Hz, got " +
                      decimation_number(rate_hz));
 }
 
 // Kaiser's β for a stopband attenuation a_dB (Kaiser 1974; Oppenheim & Schafer eq. 7.62).
-double kaiser_beta_for(double a_dB) {
+double decimation_kaiser_beta(double a_dB) {
   if (a_dB > 50.0) return 0.1102 * (a_dB - 8.7);
   if (a_dB >= 21.0) return 0.5842 * std::pow(a_dB - 21.0, 0.4) + 0.07886 * (a_dB - 21.0);
   return 0.0;
 }
 
 // Kaiser's estimate of the length (odd) for attenuation a_dB over a transition of width Δf, Hz.
-std::size_t kaiser_length_for(double a_dB, double transition_hz, double input_rate_hz) {
+std::size_t decimation_kaiser_length(double a_dB, double transition_hz, double input_rate_hz) {
   const double dw = 2.0 * std::numbers::pi * transition_hz / input_rate_hz;  // rad/sample
   const double order = std::ceil((a_dB - 7.95) / (2.285 * dw));
   const double capped = std::min(order, static_cast<double>(ac::kMaxDecimationFilterTaps));
@@ -47,7 +47,7 @@ std::size_t kaiser_length_for(double a_dB, double transition_hz, double input_ra
 
 // Windowed sinc of odd `length`, cut-off at f_out/2 (h_m ∝ sinc(m/R)), normalised to Σh = 1.
 // The right half is computed and mirrored, so the taps are exactly symmetric.
-std::vector<double> kaiser_sinc(std::size_t length, int ratio, double beta) {
+std::vector<double> decimation_kaiser_sinc(std::size_t length, int ratio, double beta) {
   const std::size_t m_half = (length - 1) / 2;
   const double r = static_cast<double>(ratio);
   const double i0_beta = std::cyl_bessel_i(0.0, beta);
@@ -69,7 +69,7 @@ std::vector<double> kaiser_sinc(std::size_t length, int ratio, double beta) {
 
 // Measures passband ripple and stopband attenuation: the zero-padded DFT of the taps on a grid
 // kResponseGridOversampling times finer than the response's ripples, plus both band edges.
-void measure_response(DecimationFilter& f) {
+void measure_decimation_response(DecimationFilter& f) {
   std::size_t fft_length = 1;
   while (fft_length < ac::kResponseGridOversampling * f.length()) fft_length *= 2;
   const std::vector<std::complex<double>> spectrum = real_dft(f.taps, fft_length);
@@ -91,8 +91,8 @@ void measure_response(DecimationFilter& f) {
 
 DecimationFilter design_decimation_filter(double input_rate_hz, double output_rate_hz,
                                           const DecimationFilterOptions& options) {
-  check_rate("input rate", input_rate_hz);
-  check_rate("output rate", output_rate_hz);
+  check_decimation_rate("input rate", input_rate_hz);
+  check_decimation_rate("output rate", output_rate_hz);
   const double exact_ratio = input_rate_hz / output_rate_hz;
   const double ratio = std::round(exact_ratio);
   if (std::abs(exact_ratio - ratio) > ac::kDecimationRatioRelativeTolerance * exact_ratio)
@@ -122,9 +122,9 @@ DecimationFilter design_decimation_filter(double input_rate_hz, double output_ra
   f.ratio = static_cast<int>(ratio);
   f.passband_edge_hz = f_pass;
   f.stopband_edge_hz = output_rate_hz - f_pass;
-  f.kaiser_beta = kaiser_beta_for(a_dB);
+  f.kaiser_beta = decimation_kaiser_beta(a_dB);
   const double transition_hz = f.stopband_edge_hz - f.passband_edge_hz;
-  std::size_t length = kaiser_length_for(a_dB, transition_hz, input_rate_hz);
+  std::size_t length = decimation_kaiser_length(a_dB, transition_hz, input_rate_hz);
   // Kaiser's estimate is usually within a few taps; lengthen by ~1 % until the measurement agrees.
   for (;;) {
     if (length > ac::kMaxDecimationFilterTaps)
@@ -132,10 +132,10 @@ DecimationFilter design_decimation_filter(double input_rate_hz, double output_ra
                        decimation_number(transition_hz) + " Hz at " + decimation_number(input_rate_hz) +
                        " Hz needs more than " + std::to_string(ac::kMaxDecimationFilterTaps) +
                        " taps; widen the transition (a lower passband edge) or ask for less attenuation");
-    f.taps = kaiser_sinc(length, f.ratio, f.kaiser_beta);
+    f.taps = decimation_kaiser_sinc(length, f.ratio, f.kaiser_beta);
     f.group_delay_samples = (length - 1) / 2;
     f.group_delay_s = static_cast<double>(f.group_delay_samples) / input_rate_hz;
-    measure_response(f);
+    measure_decimation_response(f);
     if (f.stopband_attenuation_dB >= a_dB) return f;
     length += 2 * std::max<std::size_t>(1, length / 200);
   }

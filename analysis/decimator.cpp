@@ -15,7 +15,7 @@ namespace {
 // The filter centred on window[m_half]: window holds 2·m_half + 1 consecutive samples. Summed in
 // mirrored pairs (half the multiplies; a straight line passes exactly, its pairs sum to twice the
 // centre). The one kernel for streaming and whole records, so both give the same bits.
-double centred_output(const std::vector<double>& taps, const double* window, std::size_t m_half) {
+double decimation_centred_output(const std::vector<double>& taps, const double* window, std::size_t m_half) {
   double y = taps[m_half] * window[m_half];
   for (std::size_t m = 0; m < m_half; ++m) y += taps[m] * (window[m] + window[2 * m_half - m]);
   return y;
@@ -60,7 +60,7 @@ std::optional<DecimatedRow> Decimator::ready_output() {
   out.values.resize(channels_);
   for (std::size_t c = 0; c < channels_; ++c)
     out.values[c] =
-        centred_output(filter_.taps, ring_.data() + c * 2 * length_ + start, filter_.group_delay_samples);
+        decimation_centred_output(filter_.taps, ring_.data() + c * 2 * length_ + start, filter_.group_delay_samples);
   ++next_output_;
   return out;
 }
@@ -106,6 +106,9 @@ UniformSignal decimate(const std::vector<double>& x, const DecimationFilter& fil
   for (std::size_t k = 0; k < x.size(); ++k)
     if (!std::isfinite(x[k]))
       throw InputError("decimate: sample " + std::to_string(k) + " is not finite (" + decimator_number(x[k]) + ")");
+  GEARSIM_CHECK(filter.length() % 2 == 1 && filter.group_delay_samples == (filter.length() - 1) / 2 &&
+                    filter.ratio >= 1,
+                "decimate needs a filter from design_decimation_filter");
   const std::size_t m_half = filter.group_delay_samples;
   const auto ratio = static_cast<std::size_t>(filter.ratio);
   // x with its first value held m_half samples before and its last m_half samples after.
@@ -117,7 +120,7 @@ UniformSignal decimate(const std::vector<double>& x, const DecimationFilter& fil
   y.sample_rate_hz = filter.output_rate_hz;
   y.values.resize((x.size() - 1) / ratio + 1);  // every j with j·R ≤ the last sample
   for (std::size_t j = 0; j < y.values.size(); ++j)
-    y.values[j] = centred_output(filter.taps, held.data() + j * ratio, m_half);
+    y.values[j] = decimation_centred_output(filter.taps, held.data() + j * ratio, m_half);
   return y;
 }
 
