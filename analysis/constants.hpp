@@ -100,4 +100,12 @@ inline constexpr std::size_t kMaxDecimationFilterTaps = std::size_t{1} << 20;
 // 16: a ripple's peak is then sampled within 1/32 of a lobe, its amplitude within 0.5 % (0.04 dB).
 inline constexpr std::size_t kResponseGridOversampling = 16;
 
+// --- Ringing (ringing.hpp) -----------------------------------------------------------------------
+
+// A column of the two-pole prediction fit counts as dependent on the others when less than this
+// fraction of its norm lies outside their span. Normally 1e-9: rounding leaves ~1e-16·√N, a plain
+// exponential decay leaves only that, while an oscillation of θ rad per sample leaves ~θ², so rings
+// down to θ ≈ 3e-5 (0.25 Hz at 50 kHz) are still fitted.
+inline constexpr double kRingingRankTolerance = 1e-9;
+
 }  // namespace gearsim::analysis_constants
