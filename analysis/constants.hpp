@@ -2,6 +2,8 @@
 // Not the window coefficients (window.cpp: they define a window, they are not tolerances).
 #pragma once
 
+#include <cstddef>
+
 namespace gearsim::analysis_constants {
 
 // --- Peak search and matching --------------------------------------------------------------------
@@ -63,5 +65,47 @@ inline constexpr double kDefaultToothMinRelativeDeviation = 0.05;
 // of about k·2.2e-16 of dt (2e-10 after a million steps); a larger spread means variable steps,
 // which must be resampled first.
 inline constexpr double kUniformTimeRelativeTolerance = 1e-6;
+
+// --- Decimation (anti-aliasing low-pass, decimation_filter.hpp) -----------------------------------
+
+// Default passband edge of a decimation filter, as a fraction of the output rate. Normally 0.48:
+// the paper's third mesh harmonic, 960 Hz, is then inside the passband at its 2 kHz output rate,
+// and the stopband starts at 0.52·f_out (1040 Hz), leaving an 80 Hz transition band.
+inline constexpr double kDefaultPassbandFraction = 0.48;
+
+// Default stopband attenuation of a decimation filter, dB. Normally 100 dB (×1e-5): a mesh
+// harmonic as large as the mean contact force folds into the output at 1e-5 of it, below the
+// −95 dB sidelobes of the flat-top window, so no aliased line shows in any spectrum we compute.
+inline constexpr double kDefaultStopbandAttenuation_dB = 100.0;
+
+// Range of stopband attenuations a decimation filter may be asked for, dB. Below ~21 dB Kaiser's
+// window degenerates into the rectangular one, whose −21 dB sidelobe no length improves; 30 dB
+// keeps a margin. Above 200 dB (1e-10) the rounding of thousands of taps (~1e-16 each) nears the
+// stopband level and the measured attenuation stops meaning anything.
+inline constexpr double kMinStopbandAttenuation_dB = 30.0;
+inline constexpr double kMaxStopbandAttenuation_dB = 200.0;
+
+// Largest relative distance of f_in/f_out from an integer for the ratio to count as one. Normally
+// 1e-9: rates from a time step (1/2e-5 s) round at ~1e-16; an error ε shifts the output grid from
+// the inputs it is centred on by ε·T after T seconds, 1 µs after 1000 s, 1/20 of a 20 µs step.
+inline constexpr double kDecimationRatioRelativeTolerance = 1e-9;
+
+// Longest decimation filter designed, taps. Normally 2^20 (8 MiB of taps, 16 MiB of ring buffer per
+// channel): the paper's 50 kHz → 2 kHz design needs ~4000; a million means a transition band
+// below f_in/300000, a design mistake rather than a filter anyone should run.
+inline constexpr std::size_t kMaxDecimationFilterTaps = std::size_t{1} << 20;
+
+// The passband ripple and stopband attenuation of a design are measured on a grid this many times
+// finer than 1/(L/f_in), the spacing of the response's ripples (plus both band edges). Normally
+// 16: a ripple's peak is then sampled within 1/32 of a lobe, its amplitude within 0.5 % (0.04 dB).
+inline constexpr std::size_t kResponseGridOversampling = 16;
+
+// --- Ringing (ringing.hpp) -----------------------------------------------------------------------
+
+// A column of the two-pole prediction fit counts as dependent on the others when less than this
+// fraction of its norm lies outside their span. Normally 1e-9: rounding leaves ~1e-16·√N, a plain
+// exponential decay leaves only that, while an oscillation of θ rad per sample leaves ~θ², so rings
+// down to θ ≈ 3e-5 (0.25 Hz at 50 kHz) are still fitted.
+inline constexpr double kRingingRankTolerance = 1e-9;
 
 }  // namespace gearsim::analysis_constants
