@@ -8,7 +8,7 @@
 #include <string>
 
 #include "analysis/fft.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <utility>
 
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "analysis/constants.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "analysis/decimator.hpp"
 #include "analysis/spectrum.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {

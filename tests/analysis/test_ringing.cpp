@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "analysis/ringing.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "tests/analysis/synthetic_signals.hpp"
 
 namespace gearsim {
