@@ -18,7 +18,7 @@
 #include "app/synchronous_teeth.hpp"
 #include "app/tooth_loads.hpp"
 #include "core/errors.hpp"
-#include "physics/step_log_reader.hpp"
+#include "sim/step_log_reader.hpp"
 #include "geometry/constants.hpp"
 
 namespace gearsim::app {
@@ -178,7 +178,7 @@ json synchronous_json(const RunDir& run, const input::GearTrain& train, const in
 // Per-tooth loads from the per-step log: each planet (or the driven gear of a pair) over whole
 // revolutions relative to the body carrying its axis.
 json tooth_loads_json(const RunDir& run, const input::GearTrain& train, const input::CsvTable& state, double from_s) {
-  const physics::StepLogContacts log = physics::read_step_log_contacts(run.dir / "steps.h5");
+  const sim::StepLogContacts log = sim::read_step_log_contacts(run.dir / "steps.h5");
   json loads = json::array();
   const std::vector<double>& ts = state.column("time_s");
   for (std::size_t p = 0; p < log.pairs.size(); ++p) {

@@ -8,7 +8,7 @@
 
 namespace gearsim::app {
 
-ToothLoads tooth_loads(const physics::StepLogContacts& log, int pair_index, bool side_a, int teeth, double from_s,
+ToothLoads tooth_loads(const sim::StepLogContacts& log, int pair_index, bool side_a, int teeth, double from_s,
                        double to_s, double revolutions) {
   ToothLoads t;
   t.pair = log.pairs.at(static_cast<std::size_t>(pair_index));

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "physics/step_log_reader.hpp"
+#include "sim/step_log_reader.hpp"
 
 namespace gearsim::app {
 
@@ -28,7 +28,7 @@ struct ToothLoads {
 
 // Teeth of `gear` (side a or b of pair `pair_index`) over [from_s, to_s], which the caller chose
 // to hold whole revolutions of that gear.
-ToothLoads tooth_loads(const physics::StepLogContacts& log, int pair_index, bool side_a, int teeth, double from_s,
+ToothLoads tooth_loads(const sim::StepLogContacts& log, int pair_index, bool side_a, int teeth, double from_s,
                        double to_s, double revolutions);
 
 nlohmann::ordered_json to_json(const ToothLoads& t);

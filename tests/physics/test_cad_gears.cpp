@@ -11,7 +11,7 @@
 #include "input/scenario_file.hpp"
 #include "core/errors.hpp"
 #include "geometry/involute_pair.hpp"
-#include "physics/run_bounds.hpp"
+#include "sim/run_bounds.hpp"
 #include "physics/world.hpp"
 #include "tests/support/asset_scenario.hpp"
 
@@ -68,7 +68,7 @@ std::string refusal(const std::string& pinion, const std::string& wheel, double 
 TEST(CadGears, McadPairCarriesItsLoadAlongTheLineOfAction) {
   const Scenario s = mcad_pair(", teeth: 12", ", teeth: 24", 18e-3);
   World w(s);
-  RunBounds bounds(s, w);
+  sim::RunBounds bounds(s, w);
   double force = 0, depth = 0;
   long n = 0;
   for (int i = 0; i < 3000; ++i) {
@@ -99,7 +99,7 @@ TEST(CadGears, McadRingFromThePairMacroTurnsWithItsPinionAndCarriesTheLoad) {
   EXPECT_NEAR(s.bodies[1].pose.position_m.norm(), 0.0, 1e-15);                 // the ring
   EXPECT_NEAR((s.bodies[0].pose.position_m - Eigen::Vector3d(12e-3, 0, 0)).norm(), 0.0, 1e-15);
   World w(s);
-  RunBounds bounds(s, w);
+  sim::RunBounds bounds(s, w);
   double drive = 0, back = 0, depth = 0;
   long n = 0;
   for (int i = 0; i < 3000; ++i) {
@@ -155,7 +155,7 @@ TEST(CadGears, McadPlanetarySetFromMeshesCarriesTheSunTorqueOverItsPlanets) {
       }
   }
   World w(s);
-  RunBounds bounds(s, w);
+  sim::RunBounds bounds(s, w);
   std::vector<double> net(3, 0.0);
   long n = 0;
   for (int i = 0; i < 3000; ++i) {

@@ -1,8 +1,8 @@
-#include "physics/power_balance.hpp"
+#include "sim/power_balance.hpp"
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 
-void PowerBalance::add(const PowerFlows& p, double time_s) {
+void PowerBalance::add(const physics::PowerFlows& p, double time_s) {
   if (n_ == 0) {
     first_ = p;
     t_first_ = time_s;
@@ -26,4 +26,4 @@ double PowerBalance::imbalance_fraction() const {
   return (motor_W() + load_W() + contact_W() + joint_W() - kinetic_rate_W()) / in;
 }
 
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

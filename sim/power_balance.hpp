@@ -6,12 +6,12 @@
 
 #include "physics/world.hpp"
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 
 class PowerBalance {
  public:
   // One step's flows at time t (s); the first call opens the window.
-  void add(const PowerFlows& p, double time_s);
+  void add(const physics::PowerFlows& p, double time_s);
 
   long samples() const { return n_; }
   double motor_W() const { return mean(sum_.motor_W); }
@@ -26,9 +26,9 @@ class PowerBalance {
 
  private:
   double mean(double sum) const { return n_ > 0 ? sum / static_cast<double>(n_) : 0.0; }
-  PowerFlows sum_, first_, last_;
+  physics::PowerFlows sum_, first_, last_;
   double t_first_ = 0, t_last_ = 0;
   long n_ = 0;
 };
 
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

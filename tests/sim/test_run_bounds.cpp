@@ -7,20 +7,20 @@
 
 #include "input/scenario_file.hpp"
 #include "core/errors.hpp"
-#include "physics/run_bounds.hpp"
+#include "sim/run_bounds.hpp"
 #include "physics/world.hpp"
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 namespace test_run_bounds {
 
-Scenario paper(std::vector<std::string> sets) {
+physics::Scenario paper(std::vector<std::string> sets) {
   sets.push_back("motors[0].ramp_time_s=0.002");
   return input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml", sets);
 }
 
 // Steps until a bound is crossed or `steps` have run.
-std::optional<Divergence> run(const Scenario& s, long steps, double* created_J = nullptr) {
-  World w(s);
+std::optional<Divergence> run(const physics::Scenario& s, long steps, double* created_J = nullptr) {
+  physics::World w(s);
   RunBounds bounds(s, w);
   for (long i = 0; i < steps; ++i) {
     w.step();
@@ -66,13 +66,13 @@ TEST(RunBounds, AnAbsurdLoadIsCaughtAtTheFirstStep) {
 
 TEST(World, GearsOverlappingAtTheStartAreRefusedNamingThePair) {
   // The planets 0.1 mm closer to the sun: the teeth overlap by ~0.1 mm · sin 20° ≈ 34 µm.
-  Scenario s = paper({});
-  for (JointDef& j : s.joints)
+  physics::Scenario s = paper({});
+  for (physics::JointDef& j : s.joints)
     if (j.name.rfind("planet_", 0) == 0) j.pivot_m *= (30e-3 - 0.1e-3) / 30e-3;
-  for (BodyDef& b : s.bodies)
+  for (physics::BodyDef& b : s.bodies)
     if (b.name.rfind("planet_", 0) == 0) b.pose.position_m *= (30e-3 - 0.1e-3) / 30e-3;
   try {
-    World w(s);
+    physics::World w(s);
     FAIL() << "overlapping gears were accepted";
   } catch (const InputError& e) {
     const std::string m = e.what();
@@ -83,22 +83,22 @@ TEST(World, GearsOverlappingAtTheStartAreRefusedNamingThePair) {
   // Thrown after every body was added to Bullet's world: the world is torn down without touching
   // freed bodies (an ASan build, -DGEARSIM_SANITIZE=ON, reports it otherwise), and a second
   // world builds as usual.
-  EXPECT_NO_THROW(World{paper({})});
+  EXPECT_NO_THROW(physics::World{paper({})});
 }
 
 TEST(LoadTorque, RampsLinearlyLikeAMotor) {
-  LoadDef l;
+  physics::LoadDef l;
   l.constant_torque_N_m = -20;
   l.viscous_N_m_s_per_rad = 0.5;
   l.ramp_time_s = 0.1;
-  EXPECT_DOUBLE_EQ(load_torque_N_m(l, 0.0, 0.0), 0.0);
-  EXPECT_DOUBLE_EQ(load_torque_N_m(l, 0.05, 0.0), -10.0);
-  EXPECT_DOUBLE_EQ(load_torque_N_m(l, 0.2, 2.0), -21.0);  // full constant part, viscous −c·ω
-  Scenario s;
+  EXPECT_DOUBLE_EQ(physics::load_torque_N_m(l, 0.0, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(physics::load_torque_N_m(l, 0.05, 0.0), -10.0);
+  EXPECT_DOUBLE_EQ(physics::load_torque_N_m(l, 0.2, 2.0), -21.0);  // full constant part, viscous −c·ω
+  physics::Scenario s;
   s.motors.push_back({"sun", 10, 0.05, 1});
   s.loads.push_back(l);
-  EXPECT_DOUBLE_EQ(ramps_end_s(s), 0.1);
+  EXPECT_DOUBLE_EQ(physics::ramps_end_s(s), 0.1);
 }
 
 }  // namespace test_run_bounds
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

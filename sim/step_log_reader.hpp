@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 
 struct StepLogContacts {
   double time_step_s = 0;
@@ -21,4 +21,4 @@ struct StepLogContacts {
 // Throws InputError naming the file and the dataset when the file is not a gearsim step log.
 StepLogContacts read_step_log_contacts(const std::filesystem::path& path);
 
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "input/scenario_file.hpp"
-#include "physics/step_log.hpp"
+#include "sim/step_log.hpp"
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 namespace test_step_log {
 
 std::vector<double> read_doubles(hid_t file, const char* name, hsize_t* dims_out = nullptr) {
@@ -26,10 +26,10 @@ std::vector<double> read_doubles(hid_t file, const char* name, hsize_t* dims_out
 }
 
 TEST(StepLog, HoldsEveryStepAndEveryToothContact) {
-  const Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+  const physics::Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
                                        {"duration_s=0.0024"});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "gearsim_step_log_test.h5";
-  World world(s);
+  physics::World world(s);
   std::vector<double> forces;  // every contact's normal force, in order
   constexpr int kSteps = 120;
   {
@@ -37,7 +37,7 @@ TEST(StepLog, HoldsEveryStepAndEveryToothContact) {
     for (int i = 0; i < kSteps; ++i) {
       world.step();
       log.append(world);
-      for (const ContactSample& c : world.contacts()) forces.push_back(c.normal_force_N);
+      for (const physics::ContactSample& c : world.contacts()) forces.push_back(c.normal_force_N);
     }
     log.close();
   }
@@ -72,11 +72,11 @@ TEST(StepLog, LoggedContactsCarryTheMotorTorque) {
   // Read back from the file alone: Σ (p × n)·F over the sun's tooth contacts is the torque the
   // planets put on the sun; in steady running it balances the motor's torque. Friction off (its
   // impulses are logged as magnitudes without direction); sun at 50 rad/s, reached in 2 ms.
-  const Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+  const physics::Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
                                        {"motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002",
                                         "contact.friction=0"});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "gearsim_step_log_torque.h5";
-  World world(s);
+  physics::World world(s);
   constexpr int kSteps = 500, kFrom = 100;  // average over 2–10 ms
   double motor = 0;
   {
@@ -111,4 +111,4 @@ TEST(StepLog, LoggedContactsCarryTheMotorTorque) {
 }
 
 }  // namespace test_step_log
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

@@ -1,4 +1,4 @@
-#include "physics/step_log.hpp"
+#include "sim/step_log.hpp"
 
 #include <hdf5.h>
 
@@ -8,7 +8,7 @@
 
 #include "core/errors.hpp"
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 namespace {
 
 // Rows buffered before a write, and the HDF5 chunk length: 4096 rows of 8 bytes per column is a
@@ -112,7 +112,7 @@ struct StepLog::Impl {
   }
 };
 
-StepLog::StepLog(const std::filesystem::path& path, const World& world, const std::string& scenario_name, double dt)
+StepLog::StepLog(const std::filesystem::path& path, const physics::World& world, const std::string& scenario_name, double dt)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.path = path;
@@ -124,11 +124,11 @@ StepLog::StepLog(const std::filesystem::path& path, const World& world, const st
   string_attribute(m.file, "units", "SI: s, m, rad, rad/s, N·s (impulses per step; force = impulse / time_step_s)");
   double_attribute(m.file, "time_step_s", dt);
   std::string columns = "time_s";
-  for (const BodyState& b : world.bodies()) columns += "," + b.name + "_angle_rad," + b.name + "_speed_rad_s";
+  for (const physics::BodyState& b : world.bodies()) columns += "," + b.name + "_angle_rad," + b.name + "_speed_rad_s";
   m.state.create(m.file, "state", H5T_NATIVE_DOUBLE, 1 + 2 * world.bodies().size());
   string_attribute(m.state.dataset, "columns", columns);
   std::string pairs;
-  for (const GearPairInfo& p : world.gear_pairs()) pairs += (pairs.empty() ? "" : ",") + p.body_a + "__" + p.body_b;
+  for (const physics::GearPairInfo& p : world.gear_pairs()) pairs += (pairs.empty() ? "" : ",") + p.body_a + "__" + p.body_b;
   string_attribute(m.file, "pairs", pairs);
   const hid_t group_props = H5Pcreate(H5P_GROUP_CREATE);
   H5Pset_obj_track_times(group_props, false);
@@ -145,15 +145,15 @@ StepLog::~StepLog() {
   }
 }
 
-void StepLog::append(const World& world) {
+void StepLog::append(const physics::World& world) {
   Impl& m = *impl_;
   GEARSIM_CHECK(m.file >= 0, "StepLog::append after close");
   m.state_rows.push_back(world.time_s());
-  for (const BodyState& b : world.bodies()) {
+  for (const physics::BodyState& b : world.bodies()) {
     m.state_rows.push_back(b.angle_rad);
     m.state_rows.push_back(b.speed_rad_s);
   }
-  for (const ContactSample& c : world.contacts()) {
+  for (const physics::ContactSample& c : world.contacts()) {
     const double d[8] = {world.time_s(), c.geometry.point_m.x(), c.geometry.point_m.y(), c.geometry.normal_on_b.x(),
                          c.geometry.normal_on_b.y(), c.geometry.depth_m, c.normal_force_N * m.dt, c.friction_force_N * m.dt};
     const std::int64_t i[5] = {world.steps(), c.pair, c.geometry.tooth_a, c.geometry.tooth_b,
@@ -182,4 +182,4 @@ std::uintmax_t StepLog::bytes_on_disk() const {
   return ec ? 0 : size;
 }
 
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

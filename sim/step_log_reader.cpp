@@ -1,4 +1,4 @@
-#include "physics/step_log_reader.hpp"
+#include "sim/step_log_reader.hpp"
 
 #include <hdf5.h>
 
@@ -6,7 +6,7 @@
 
 #include "core/errors.hpp"
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 namespace {
 
 struct File {
@@ -72,4 +72,4 @@ StepLogContacts read_step_log_contacts(const std::filesystem::path& path) {
   return c;
 }
 
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

@@ -12,7 +12,7 @@
 #include "physics/scenario.hpp"
 #include "physics/world.hpp"
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 
 // Where and why a run left its physical bounds.
 struct Divergence {
@@ -46,24 +46,24 @@ struct RunBoundsDef {
 
 class RunBounds {
  public:
-  RunBounds(const Scenario& scenario, const World& world, RunBoundsDef def = {});
+  RunBounds(const physics::Scenario& scenario, const physics::World& world, RunBoundsDef def = {});
   // The first bound the world's last step crossed, if any.
-  std::optional<Divergence> check(const World& world);
+  std::optional<Divergence> check(const physics::World& world);
   // Energy created so far beyond the external work, J (≤ 0 for a sound run: dissipation).
   double created_energy_J() const { return created_J_; }
 
  private:
-  std::optional<Divergence> check_contacts(const World& world) const;
-  std::optional<Divergence> check_speeds(const World& world) const;
-  std::optional<Divergence> check_energy(const World& world);
-  Divergence at(const World& world, std::string what, std::string where, std::string message, double value,
+  std::optional<Divergence> check_contacts(const physics::World& world) const;
+  std::optional<Divergence> check_speeds(const physics::World& world) const;
+  std::optional<Divergence> check_energy(const physics::World& world);
+  Divergence at(const physics::World& world, std::string what, std::string where, std::string message, double value,
                 double limit) const;
 
-  const Scenario& scenario_;
+  const physics::Scenario& scenario_;
   RunBoundsDef def_;
-  std::vector<int> motor_body_;  // per motor: its joint's body index in World::bodies()
+  std::vector<int> motor_body_;  // per motor: its joint's body index in physics::World::bodies()
   long dropped_seen_ = 0;
   double kinetic0_J_ = 0, external_J_ = 0, moved_J_ = 0, created_J_ = 0;
 };
 
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim

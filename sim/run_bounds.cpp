@@ -1,9 +1,9 @@
-#include "physics/run_bounds.hpp"
+#include "sim/run_bounds.hpp"
 
 #include <cmath>
 #include <sstream>
 
-namespace gearsim::physics {
+namespace gearsim::sim {
 namespace {
 
 std::string fmt(double v) {
@@ -15,11 +15,11 @@ std::string fmt(double v) {
 
 }  // namespace
 
-RunBounds::RunBounds(const Scenario& scenario, const World& world, RunBoundsDef def)
+RunBounds::RunBounds(const physics::Scenario& scenario, const physics::World& world, RunBoundsDef def)
     : scenario_(scenario), def_(def), kinetic0_J_(world.power().kinetic_J) {
-  for (const MotorDef& m : scenario.motors) {
+  for (const physics::MotorDef& m : scenario.motors) {
     int body = -1;
-    for (const JointDef& j : scenario.joints)
+    for (const physics::JointDef& j : scenario.joints)
       if (j.name == m.joint)
         for (std::size_t b = 0; b < world.bodies().size(); ++b)
           if (world.bodies()[b].name == j.body) body = static_cast<int>(b);
@@ -27,21 +27,21 @@ RunBounds::RunBounds(const Scenario& scenario, const World& world, RunBoundsDef 
   }
 }
 
-Divergence RunBounds::at(const World& world, std::string what, std::string where, std::string message, double value,
+Divergence RunBounds::at(const physics::World& world, std::string what, std::string where, std::string message, double value,
                          double limit) const {
   return {std::move(what), std::move(where), std::move(message), world.time_s(), world.steps(), value, limit};
 }
 
-std::optional<Divergence> RunBounds::check(const World& world) {
+std::optional<Divergence> RunBounds::check(const physics::World& world) {
   if (auto d = check_contacts(world)) return d;
   if (auto d = check_speeds(world)) return d;
   return check_energy(world);
 }
 
-std::optional<Divergence> RunBounds::check_contacts(const World& world) const {
-  const std::vector<GearPairInfo>& pairs = world.gear_pairs();
-  for (const ContactSample& c : world.contacts()) {
-    const GearPairInfo& p = pairs[static_cast<std::size_t>(c.pair)];
+std::optional<Divergence> RunBounds::check_contacts(const physics::World& world) const {
+  const std::vector<physics::GearPairInfo>& pairs = world.gear_pairs();
+  for (const physics::ContactSample& c : world.contacts()) {
+    const physics::GearPairInfo& p = pairs[static_cast<std::size_t>(c.pair)];
     const std::string where = p.body_a + "/" + p.body_b;
     if (!std::isfinite(c.normal_force_N) || !std::isfinite(c.geometry.depth_m))
       return at(world, "non-finite", where, "a contact force of gears " + where + " is not finite", c.normal_force_N, 0);
@@ -65,8 +65,8 @@ std::optional<Divergence> RunBounds::check_contacts(const World& world) const {
   return std::nullopt;
 }
 
-std::optional<Divergence> RunBounds::check_speeds(const World& world) const {
-  for (const BodyState& b : world.bodies()) {
+std::optional<Divergence> RunBounds::check_speeds(const physics::World& world) const {
+  for (const physics::BodyState& b : world.bodies()) {
     if (!std::isfinite(b.speed_rad_s) || !std::isfinite(b.angle_rad))
       return at(world, "non-finite", b.name, "body '" + b.name + "': speed or angle is not finite (NaN/infinite)",
                 b.speed_rad_s, 0);
@@ -77,7 +77,7 @@ std::optional<Divergence> RunBounds::check_speeds(const World& world) const {
                 b.speed_rad_s, def_.max_speed_rad_s);
   }
   for (std::size_t k = 0; k < scenario_.motors.size(); ++k) {
-    const MotorDef& m = scenario_.motors[k];
+    const physics::MotorDef& m = scenario_.motors[k];
     const int body = motor_body_[k];
     if (body < 0 || world.time_s() <= m.ramp_time_s || m.target_speed_rad_s == 0) continue;
     const double speed = world.bodies()[static_cast<std::size_t>(body)].speed_rad_s;
@@ -92,8 +92,8 @@ std::optional<Divergence> RunBounds::check_speeds(const World& world) const {
   return std::nullopt;
 }
 
-std::optional<Divergence> RunBounds::check_energy(const World& world) {
-  const PowerFlows& p = world.power();
+std::optional<Divergence> RunBounds::check_energy(const physics::World& world) {
+  const physics::PowerFlows& p = world.power();
   const double dt = scenario_.solver.time_step_s;
   external_J_ += (p.motor_W + p.load_W) * dt;
   moved_J_ += (std::abs(p.motor_W) + std::abs(p.load_W)) * dt;
@@ -111,4 +111,4 @@ std::optional<Divergence> RunBounds::check_energy(const World& world) {
   return std::nullopt;
 }
 
-}  // namespace gearsim::physics
+}  // namespace gearsim::sim
