@@ -22,6 +22,7 @@
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
 #include "input/scenario_file.hpp"
+#include "input/scenario_record.hpp"
 #include "core/errors.hpp"
 #include "geometry/gear_spec.hpp"
 #include "sim/csv_logs.hpp"
@@ -43,8 +44,9 @@ void on_stop_signal(int sig) { g_interrupted = sig; }
 // of the old run sits beside the new logs. Returns how many were removed; other files stay.
 int clear_previous_outputs(const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
-  static const char* const kFiles[] = {"summary.json", "state.csv",    "contacts.csv", "steps.h5",   "analysis.json",
-                                       "spectrum.csv", "sidebands.csv", "teeth.csv",    "report.html"};
+  static const char* const kFiles[] = {"summary.json",  "scenario.json", "gearset.yaml",  "state.csv",
+                                       "contacts.csv",  "steps.h5",      "analysis.json", "spectrum.csv",
+                                       "sidebands.csv", "teeth.csv",     "report.html"};
   int removed = 0;
   std::error_code ec;
   for (const char* f : kFiles)
@@ -167,6 +169,7 @@ void run(const RunOptions& o) {
   if (const int n = clear_previous_outputs(dir); n > 0)
     std::cout << "removed " << n << " outputs of a previous run in " << dir.string() << "\n";
 
+  input::write_scenario_record(s, dir);  // what analyze, report and render read back
   sim::CsvLogs csv(dir, s);
   sim::StepLogObserver step_log(dir / "steps.h5", s.name, s.solver.time_step_s);
   std::vector<sim::Observer*> observers{&csv};

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <iomanip>
 
-#include "input/scenario_file.hpp"
+#include "input/scenario_record.hpp"
 #include "core/errors.hpp"
 
 namespace gearsim::app {
@@ -19,21 +19,7 @@ RunDir open_run_dir(const std::filesystem::path& dir) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(summary_path.string() + ": not valid JSON: " + e.what());
   }
-  if (!run.summary.contains("scenario_file") || !run.summary["scenario_file"].is_string())
-    throw InputError(summary_path.string() + ": key 'scenario_file': expected the path of the run's scenario (written by gearsim run)");
-  const std::filesystem::path scenario_file = run.summary["scenario_file"].get<std::string>();
-  if (!std::filesystem::exists(scenario_file))
-    throw InputError(summary_path.string() + ": key 'scenario_file': " + scenario_file.string() + " no longer exists");
-  std::vector<std::string> overrides;
-  if (run.summary.contains("overrides")) {
-    if (!run.summary["overrides"].is_array())
-      throw InputError(summary_path.string() + ": key 'overrides': expected a list of key.path=value strings");
-    for (const auto& o : run.summary["overrides"]) {
-      if (!o.is_string()) throw InputError(summary_path.string() + ": key 'overrides': expected strings");
-      overrides.push_back(o.get<std::string>());
-    }
-  }
-  run.scenario = input::load_scenario(scenario_file, overrides);
+  run.scenario = input::read_scenario_record(dir);
   if (run.summary.contains("sim_seconds") && run.summary["sim_seconds"].is_number())
     run.scenario.duration_s = run.summary["sim_seconds"].get<double>();
   return run;

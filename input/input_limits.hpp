@@ -2,7 +2,7 @@
 // anything is allocated or run from it, each with its unit and why. A value outside is refused
 // naming file:line:key (or the option) and the bound; NaN and infinity are always refused.
 // Bounds are sanity limits far beyond any real gearbox run, not physics: the physical bounds of
-// a running simulation are physics/run_bounds.hpp. Not a schema: each reader applies the limit
+// a running simulation are sim/run_bounds.hpp. Not a schema: each reader applies the limit
 // of the key it reads.
 #pragma once
 

@@ -1,11 +1,9 @@
 // Scenario files (YAML) → a validated physics::Scenario. SI units with the unit in every key
 // (angles `_deg` or `_rad`); relative paths resolve against the scenario file's folder.
 // Macros (`planetary`, `pair`) expand into plain bodies and joints: the expansion is what physics
-// sees and what scenario_json() prints. Not the world: physics/ builds that from the Scenario.
+// sees and what a run records in its folder (scenario_record.hpp). Not the world: physics/ builds that from the Scenario.
 // The format is described, key by key, in the files of assets/scenarios/.
 #pragma once
-
-#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
@@ -23,8 +21,5 @@ namespace gearsim::input {
 // override names the override too.
 physics::Scenario load_scenario(const std::filesystem::path& file,
                                 const std::vector<std::string>& overrides = {});
-
-// The expanded scenario as JSON (SI keys, file order) for a dry-run print.
-nlohmann::ordered_json scenario_json(const physics::Scenario& scenario);
 
 }  // namespace gearsim::input

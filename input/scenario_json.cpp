@@ -1,8 +1,12 @@
-// scenario_json(): the expanded, validated scenario as JSON for a dry-run print. SI keys; angles
-// in rad; orientations as a rotation vector (axis·angle, rad) and a quaternion (w, x, y, z).
+// scenario_json(): the expanded, validated scenario as JSON — every field of physics::Scenario,
+// SI keys, angles in rad, orientations as a quaternion (w, x, y, z) beside a rotation vector for
+// reading. scenario_record.cpp reads it back.
 #include <Eigen/Geometry>
 
-#include "input/scenario_file.hpp"
+#include <cstdio>
+#include <fstream>
+
+#include "input/scenario_record.hpp"
 
 namespace gearsim::input {
 namespace {
@@ -45,11 +49,16 @@ json body_json(const physics::BodyDef& b) {
   json j = {{"name", b.name}};
   if (b.gear) j["gear"] = gear_json(*b.gear);
   if (b.mesh) {
-    j["mesh"] = {{"file", b.mesh->path.string()}, {"unit", std::string(symbol(b.mesh->unit))}};
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(b.mesh->path, ec);
+    j["mesh"] = {{"file", b.mesh->path.string()},
+                 {"unit", std::string(symbol(b.mesh->unit))},
+                 {"bytes", ec ? 0 : bytes},
+                 {"fnv1a64", file_fnv1a64(b.mesh->path)}};
     if (b.mesh->teeth) {
       j["mesh"]["teeth"] = b.mesh->teeth->teeth;
       j["mesh"]["tooth0_angle_rad"] = b.mesh->teeth->tooth0_angle_rad;
-      j["mesh"]["teeth_from"] = b.mesh->teeth_recognised ? "recognised from the mesh" : "the scenario";
+      j["mesh"]["teeth_recognised"] = b.mesh->teeth_recognised;
     } else {
       j["mesh"]["teeth"] = "none";
     }
@@ -60,8 +69,8 @@ json body_json(const physics::BodyDef& b) {
   const Eigen::AngleAxisd aa(b.pose.orientation);
   const Eigen::Quaterniond& q = b.pose.orientation;
   j["position_m"] = vec(b.pose.position_m);
-  j["rotation_vector_rad"] = vec(aa.axis() * aa.angle());
   j["orientation_wxyz"] = json::array({q.w(), q.x(), q.y(), q.z()});
+  j["rotation_vector_rad"] = vec(aa.axis() * aa.angle());  // the same orientation, for reading
   j["fixed"] = b.fixed;
   return j;
 }
@@ -72,6 +81,34 @@ json joint_json(const physics::JointDef& jd) {
     j["bearing"] = {{"radial_stiffness_N_per_m", jd.bearing->radial_stiffness_N_per_m},
                     {"radial_damping_N_s_per_m", jd.bearing->radial_damping_N_s_per_m}};
   return j;
+}
+
+json fe_json(const physics::FeTeDef& f) {
+  return {{"flank_size_m", f.flank_size_m},     {"core_size_m", f.core_size_m},
+          {"transition_m", f.transition_m},     {"max_sagitta_m", f.max_sagitta_m},
+          {"thinning_per_flank_m", f.thinning_per_flank_m}, {"sun_torque_N_m", f.sun_torque_N_m},
+          {"torque_source", f.torque_source},   {"friction", f.friction},
+          {"element_type", f.element_type},     {"positions_per_mesh", f.positions_per_mesh},
+          {"mesh_periods", f.mesh_periods},     {"jobs", f.jobs}};
+}
+
+json planetary_json(const physics::PlanetaryTrainDef& p) {
+  json planets = json::array();
+  for (const GearSpec& g : p.planet_gears) planets.push_back(gear_json(g));
+  return {{"sun", gear_json(p.spec.sun)}, {"planet", gear_json(p.spec.planet)}, {"ring", gear_json(p.spec.ring)},
+          {"planets", p.spec.planets}, {"planet_gears", planets}, {"ring_fixed", p.ring_fixed}};
+}
+
+json pair_table_json(const physics::PairTableDef& t) {
+  return {{"driver", t.driver},
+          {"driven", t.driven},
+          {"centre_distance_derived", t.centre_distance_derived},
+          {"centre_distance_m", t.figures.centre_distance_m},
+          {"zero_backlash_centre_distance_m", t.figures.zero_backlash_centre_distance_m},
+          {"operating_pressure_angle_rad", t.figures.operating_pressure_angle_rad},
+          {"normal_backlash_m", t.figures.normal_backlash_m},
+          {"contact_ratio", t.figures.contact_ratio},
+          {"base_pitch_mismatch_m", t.figures.base_pitch_mismatch_m}};
 }
 
 }  // namespace
@@ -89,7 +126,8 @@ json scenario_json(const physics::Scenario& s) {
     json tables = json::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)
       tables.push_back({{"body_a", t.body_a}, {"body_b", t.body_b}, {"file", t.table.source},
-                        {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m}});
+                        {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m},
+                        {"body_stiffness_N_per_m", t.body_stiffness_N_per_m}});
     j["contact"]["stiffness_tables"] = tables;
   }
   j["bodies"] = json::array();
@@ -116,6 +154,13 @@ json scenario_json(const physics::Scenario& s) {
                          {"output_joint", s.transmission->output_joint},
                          {"ratio", s.transmission->ratio},
                          {"te_formula", "te_rad = θ_input − ratio·θ_output"}};
+  if (!s.gearset_spec.empty()) j["gearset_spec"] = s.gearset_spec.string();
+  if (s.planetary) j["planetary"] = planetary_json(*s.planetary);
+  if (s.fe) j["fe"] = fe_json(*s.fe);
+  if (!s.pair_tables.empty()) {
+    j["pair_tables"] = json::array();
+    for (const physics::PairTableDef& t : s.pair_tables) j["pair_tables"].push_back(pair_table_json(t));
+  }
   return j;
 }
 

@@ -1,14 +1,17 @@
 // `gearsim analyze` and `gearsim report` on run folders that do not hold enough to analyse: a
 // state.csv with no rows after the motors' ramp while contacts.csv has them, or a contacts.csv
 // without a force column. Each is refused with exit code 2 and a message naming the file —
-// never a crash. The folders are made by hand: a summary.json naming the paper scenario, and
-// logs at its 2 kHz output rate.
+// never a crash. The folders are made by hand: a summary.json, the paper scenario's record, and
+// logs at its 2 kHz output rate. And a run folder reads its own scenario record, not the
+// original file: editing or deleting that after the run changes nothing.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "input/scenario_file.hpp"
+#include "input/scenario_record.hpp"
 #include "tests/support/asset_scenario.hpp"
 #include "tests/support/cli_run.hpp"
 
@@ -20,9 +23,9 @@ namespace fs = std::filesystem;
 // `contacts_header` and rows every 0.5 ms to 0.3 s, state.csv (time_s, te_rad) up to `state_to_s`.
 fs::path hand_made_run(const std::string& contacts_header, double state_to_s) {
   const fs::path dir = gearsim::test::fresh_test_dir();
-  std::ofstream(dir / "summary.json") << "{\"scenario_file\": \"" << GEARSIM_SOURCE_DIR
-                                      << "/assets/scenarios/paper_dynamics_healthy.yaml\", \"overrides\": [], "
-                                         "\"status\": \"completed\", \"sim_seconds\": 0.3}\n";
+  std::ofstream(dir / "summary.json") << "{\"status\": \"completed\", \"sim_seconds\": 0.3}\n";
+  gearsim::input::write_scenario_record(
+      gearsim::input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_healthy.yaml"), dir);
   std::ofstream contacts(dir / "contacts.csv"), state(dir / "state.csv");
   contacts << contacts_header << "\n";
   state << "time_s,te_rad\n";
@@ -57,6 +60,27 @@ TEST(AnalyzeRefusals, StateWithTooFewRowsAfterTheRampIsRefused) {
 TEST(AnalyzeRefusals, ContactsWithoutAForceColumnIsRefused) {
   const fs::path dir = hand_made_run("time_s,a,b,c", 0.3);
   expect_refused(dir, "contacts.csv", "no <pair>_force_N column");
+}
+
+TEST(AnalyzeRefusals, ARunReadsItsOwnScenarioRecordNotTheEditedOriginal) {
+  const fs::path dir = gearsim::test::fresh_test_dir();
+  const fs::path scenario = gearsim::test::asset_scenario_copy("paper_dynamics_healthy.yaml", dir, {});
+  const gearsim::test::CliRun run =
+      gearsim::test::gearsim("run " + scenario.string() + " --out " + (dir / "run").string() + " --duration 0.4 --no-analyze");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto analysis = [&] {
+    std::ifstream in(dir / "run" / "analysis.json");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  ASSERT_EQ(gearsim::test::gearsim("analyze " + (dir / "run").string()).exit_code, 0);
+  const std::string before = analysis();
+  std::ofstream(scenario) << "name: [this is no longer a scenario\n";  // the original, edited
+  const gearsim::test::CliRun again = gearsim::test::gearsim("analyze " + (dir / "run").string());
+  EXPECT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(analysis(), before);
+  fs::remove(scenario);
+  EXPECT_EQ(gearsim::test::gearsim("analyze " + (dir / "run").string()).exit_code, 0);
+  EXPECT_EQ(analysis(), before);
 }
 
 }  // namespace test_analyze_refusals

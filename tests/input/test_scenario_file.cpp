@@ -10,6 +10,7 @@
 
 #include "input/gear_train.hpp"
 #include "input/scenario_file.hpp"
+#include "input/scenario_record.hpp"
 #include "core/errors.hpp"
 #include "geometry/constants.hpp"
 #include "tests/support/asset_scenario.hpp"
@@ -142,6 +143,10 @@ TEST(ScenarioFile, HealthyTwinDiffersOnlyByPlanetZerosErrors) {
   EXPECT_NE(g_faulty["errors"], g_healthy["errors"]);
   g_faulty["errors"] = g_healthy["errors"];
   g_faulty["name"] = g_healthy["name"];
+  // The planetary macro's record of the planet gears: the same difference.
+  auto& p_faulty = faulty["planetary"]["planet_gears"][0];
+  EXPECT_NE(p_faulty["errors"], healthy["planetary"]["planet_gears"][0]["errors"]);
+  p_faulty = healthy["planetary"]["planet_gears"][0];
   EXPECT_EQ(faulty, healthy);
 }
 

@@ -1,0 +1,332 @@
+#include "input/scenario_record.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/errors.hpp"
+#include "geometry/mesh_gear.hpp"
+#include "input/input_limits.hpp"
+
+namespace gearsim::input {
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// A JSON object of the record with its key path, for messages: "FILE: key bodies[2].gear.teeth: …".
+class Node {
+ public:
+  Node(const json& j, std::string path, const fs::path& file) : j_(j), path_(std::move(path)), file_(file) {}
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw InputError(file_.string() + ": key " + where(key) + ": " + what);
+  }
+  bool has(const std::string& key) const { return j_.is_object() && j_.contains(key) && !j_.at(key).is_null(); }
+  const json& at(const std::string& key) const {
+    if (!j_.is_object()) throw InputError(file_.string() + ": key " + path_ + ": expected an object");
+    if (!j_.contains(key)) fail(key, "missing");
+    return j_.at(key);
+  }
+  double number(const std::string& key) const {
+    const json& v = at(key);
+    if (!v.is_number() || !std::isfinite(v.get<double>())) fail(key, "expected a finite number");
+    return v.get<double>();
+  }
+  double number_within(const std::string& key, const Limit& limit) const {
+    const double v = number(key);
+    if (!within(v, limit)) fail(key, limit_message(limit, v));
+    return v;
+  }
+  int integer(const std::string& key, const Limit& limit) const {
+    const double v = number_within(key, limit);
+    if (v != std::floor(v)) fail(key, "expected a whole number");
+    return static_cast<int>(v);
+  }
+  bool boolean(const std::string& key) const {
+    if (!at(key).is_boolean()) fail(key, "expected true or false");
+    return at(key).get<bool>();
+  }
+  std::string string(const std::string& key) const {
+    if (!at(key).is_string()) fail(key, "expected a string");
+    return at(key).get<std::string>();
+  }
+  std::vector<double> numbers(const std::string& key, std::size_t n = 0) const {
+    const json& v = at(key);
+    if (!v.is_array() || (n && v.size() != n)) fail(key, n ? "expected " + std::to_string(n) + " numbers" : "expected a list of numbers");
+    std::vector<double> out;
+    for (const json& x : v) {
+      if (!x.is_number() || !std::isfinite(x.get<double>())) fail(key, "expected finite numbers");
+      out.push_back(x.get<double>());
+    }
+    return out;
+  }
+  Eigen::Vector3d vec3(const std::string& key) const {
+    const std::vector<double> v = numbers(key, 3);
+    return {v[0], v[1], v[2]};
+  }
+  Node object(const std::string& key) const {
+    if (!at(key).is_object()) fail(key, "expected an object");
+    return Node(at(key), where(key), file_);
+  }
+  std::vector<Node> list(const std::string& key) const {
+    const json& v = at(key);
+    if (!v.is_array()) fail(key, "expected a list");
+    std::vector<Node> out;
+    for (std::size_t i = 0; i < v.size(); ++i) out.emplace_back(v[i], where(key) + "[" + std::to_string(i) + "]", file_);
+    return out;
+  }
+  const fs::path& file() const { return file_; }
+
+ private:
+  std::string where(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  const json& j_;
+  std::string path_;
+  const fs::path& file_;
+};
+
+constexpr Limit kAny{-1e30, 1e30, true, "", "a value"};
+constexpr Limit kCount{0, 1e6, false, "", "a count"};
+
+Flank flank_of(const Node& n, const std::string& key) {
+  const std::string f = n.string(key);
+  if (f != "ccw" && f != "cw") n.fail(key, "expected ccw or cw");
+  return f == "ccw" ? Flank::Ccw : Flank::Cw;
+}
+
+GearSpec gear_of(const Node& n) {
+  GearSpec g;
+  g.name = n.string("name");
+  const std::string kind = n.string("kind");
+  if (kind != "internal" && kind != "external") n.fail("kind", "expected internal or external");
+  g.kind = kind == "internal" ? GearKind::Internal : GearKind::External;
+  g.teeth = n.integer("teeth", limits::kTeeth);
+  for (auto [key, field] : {std::pair{"module_m", &g.module_m}, {"pressure_angle_rad", &g.pressure_angle_rad},
+                            {"face_width_m", &g.face_width_m}, {"profile_shift", &g.profile_shift},
+                            {"addendum_coeff", &g.addendum_coeff}, {"dedendum_coeff", &g.dedendum_coeff},
+                            {"root_fillet_coeff", &g.root_fillet_coeff}, {"thinning_per_flank_m", &g.thinning_per_flank_m},
+                            {"bore_diameter_m", &g.bore_diameter_m}, {"rim_diameter_m", &g.rim_diameter_m},
+                            {"tooth0_angle_rad", &g.tooth0_angle_rad}, {"chordal_deviation_m", &g.chordal_deviation_m}})
+    *field = n.number(key);
+  const Node e = n.object("errors");
+  for (const Node& f : e.list("flank_offsets"))
+    g.errors.flank_offsets.push_back({f.integer("tooth", kCount), flank_of(f, "flank"), f.number("normal_offset_m")});
+  for (const Node& p : e.list("pitch_errors")) g.errors.pitch_errors.push_back({p.integer("tooth", kCount), p.number("error_m")});
+  for (const Node& p : e.list("profile_slopes"))
+    g.errors.profile_slopes.push_back({p.integer("tooth", kAny), flank_of(p, "flank"), p.number("slope_m")});
+  const Node ecc = e.object("eccentricity");
+  g.errors.eccentricity = {ecc.number("eccentricity_m"), ecc.number("phase_rad")};
+  try {
+    validate_gear_spec(g);
+  } catch (const InputError& err) {
+    throw InputError(n.file().string() + ": gear '" + g.name + "': " + err.what());
+  }
+  return g;
+}
+
+// A mesh body: the file must be the one the run used (size and hash); its recognition is redone
+// as the scenario reader did it, the recorded tooth layout kept.
+physics::MeshSource mesh_of(const Node& n) {
+  physics::MeshSource m;
+  m.path = n.string("file");
+  const std::optional<LengthUnit> u = parse_length_unit(n.string("unit"));
+  if (!u) n.fail("unit", "expected a length unit (m, cm, mm, um, in, ft)");
+  m.unit = *u;
+  std::error_code ec;
+  const auto bytes = fs::file_size(m.path, ec);
+  if (ec) n.fail("file", m.path.string() + " no longer exists: the run's meshes must stay where they were");
+  if (static_cast<double>(bytes) != n.number("bytes") || file_fnv1a64(m.path) != n.string("fnv1a64"))
+    n.fail("file", m.path.string() + " changed since the run (size or FNV-1a hash differ from the record)");
+  if (n.at("teeth").is_string()) {
+    if (n.string("teeth") != "none") n.fail("teeth", "expected a tooth count or \"none\"");
+    return m;
+  }
+  m.teeth = ToothLayout{n.integer("teeth", limits::kTeeth), n.number("tooth0_angle_rad")};
+  m.teeth_recognised = n.boolean("teeth_recognised");
+  const MeshGearFile f = read_mesh_gear(m.path, m.unit);
+  if (f.gear && f.gear->recognition.gear) m.recognised = *f.gear->recognition.gear;
+  return m;
+}
+
+physics::BodyDef body_of(const Node& n) {
+  physics::BodyDef b;
+  b.name = n.string("name");
+  if (n.has("gear")) b.gear = gear_of(n.object("gear"));
+  if (n.has("mesh")) b.mesh = mesh_of(n.object("mesh"));
+  if (n.has("density_kg_m3")) b.density_kg_m3 = n.number("density_kg_m3");
+  if (n.has("mass_kg")) b.mass_kg = n.number("mass_kg");
+  if (n.has("principal_inertia_kg_m2")) b.principal_inertia_kg_m2 = n.vec3("principal_inertia_kg_m2");
+  b.pose.position_m = n.vec3("position_m");
+  const std::vector<double> q = n.numbers("orientation_wxyz", 4);
+  b.pose.orientation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
+  if (std::abs(b.pose.orientation.norm() - 1) > 1e-9) n.fail("orientation_wxyz", "expected a unit quaternion");
+  b.fixed = n.boolean("fixed");
+  return b;
+}
+
+physics::JointDef joint_of(const Node& n) {
+  physics::JointDef j{n.string("name"), n.string("body"), n.string("parent"), n.vec3("pivot_m"), n.vec3("axis"), {}};
+  if (n.has("bearing")) {
+    const Node b = n.object("bearing");
+    j.bearing = physics::BearingDef{b.number("radial_stiffness_N_per_m"), b.number("radial_damping_N_s_per_m")};
+  }
+  return j;
+}
+
+physics::ContactDef contact_of(const Node& n) {
+  physics::ContactDef c;
+  c.stiffness_N_per_m_per_m = n.number("stiffness_N_per_m_per_m");
+  c.damping_ratio = n.number("damping_ratio");
+  c.friction = n.number("friction");
+  c.chordal_deviation_m = n.number_within("chordal_deviation_m", limits::kChordalDeviation_m);
+  c.max_flank_departure_m = n.number("max_flank_departure_m");
+  if (n.has("stiffness_tables"))
+    for (const Node& t : n.list("stiffness_tables")) {
+      physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),
+                                  {t.string("file"), t.numbers("radius_a_m"), t.numbers("stiffness_N_per_m_per_m")},
+                                  t.number("body_stiffness_N_per_m")};
+      if (const std::string p = contact::stiffness_table_problem(d.table); !p.empty()) t.fail("radius_a_m", p);
+      c.stiffness_tables.push_back(std::move(d));
+    }
+  return c;
+}
+
+physics::RenderDef render_of(const Node& n) {
+  physics::RenderDef r;
+  r.camera = n.string("camera");
+  r.fps = n.integer("fps", {1, 1000, false, "", "frames per second"});
+  r.slowmo = n.number_within("slowmo", limits::kSlowMotion);
+  r.width_px = n.integer("width_px", {16, 16384, false, "px", "a width"});
+  r.height_px = n.integer("height_px", {16, 16384, false, "px", "a height"});
+  r.msaa = n.integer("msaa", {0, 16, false, "", "multisampling samples"});
+  r.png_every = n.integer("png_every", kCount);
+  if (n.has("from_s")) r.from_s = n.number_within("from_s", limits::kRunTime_s);
+  if (n.has("to_s")) r.to_s = n.number_within("to_s", limits::kRunTime_s);
+  return r;
+}
+
+physics::FeTeDef fe_of(const Node& n) {
+  physics::FeTeDef f;
+  for (auto [key, field] : {std::pair{"flank_size_m", &f.flank_size_m}, {"core_size_m", &f.core_size_m},
+                            {"transition_m", &f.transition_m}, {"max_sagitta_m", &f.max_sagitta_m},
+                            {"thinning_per_flank_m", &f.thinning_per_flank_m}, {"sun_torque_N_m", &f.sun_torque_N_m},
+                            {"friction", &f.friction}, {"mesh_periods", &f.mesh_periods}})
+    *field = n.number(key);
+  f.torque_source = n.string("torque_source");
+  f.element_type = n.string("element_type");
+  f.positions_per_mesh = n.integer("positions_per_mesh", kCount);
+  f.jobs = n.integer("jobs", {1, 1024, false, "", "a number of processes"});
+  return f;
+}
+
+physics::PlanetaryTrainDef planetary_of(const Node& n) {
+  physics::PlanetaryTrainDef p;
+  p.spec = {gear_of(n.object("sun")), gear_of(n.object("planet")), gear_of(n.object("ring")),
+            n.integer("planets", limits::kPlanets)};
+  for (const Node& g : n.list("planet_gears")) p.planet_gears.push_back(gear_of(g));
+  p.ring_fixed = n.boolean("ring_fixed");
+  return p;
+}
+
+physics::PairTableDef pair_table_of(const Node& n) {
+  physics::PairTableDef t;
+  t.driver = n.string("driver");
+  t.driven = n.string("driven");
+  t.centre_distance_derived = n.boolean("centre_distance_derived");
+  t.figures = {n.number("centre_distance_m"),  n.number("zero_backlash_centre_distance_m"),
+               n.number("operating_pressure_angle_rad"), n.number("normal_backlash_m"),
+               n.number("contact_ratio"), n.number("base_pitch_mismatch_m")};
+  return t;
+}
+
+// The parts after the bodies and joints: drives, render, transmission and the macros' records.
+void read_rest(const Node& r, physics::Scenario& s) {
+  for (const Node& m : r.list("motors"))
+    s.motors.push_back({m.string("joint"), m.number("target_speed_rad_s"), m.number_within("ramp_time_s", limits::kRampTime_s),
+                        m.number("max_torque_N_m")});
+  for (const Node& l : r.list("loads"))
+    s.loads.push_back({l.string("joint"), l.number("constant_torque_N_m"), l.number("viscous_N_m_s_per_rad"),
+                       l.number_within("ramp_time_s", limits::kRampTime_s)});
+  if (r.has("render")) s.render = render_of(r.object("render"));
+  if (r.has("transmission")) {
+    const Node t = r.object("transmission");
+    s.transmission = physics::TransmissionDef{t.string("input_joint"), t.string("output_joint"), t.number("ratio")};
+  }
+  if (r.has("gearset_spec")) s.gearset_spec = r.string("gearset_spec");
+  if (r.has("planetary")) s.planetary = planetary_of(r.object("planetary"));
+  if (r.has("fe")) s.fe = fe_of(r.object("fe"));
+  if (r.has("pair_tables"))
+    for (const Node& t : r.list("pair_tables")) s.pair_tables.push_back(pair_table_of(t));
+}
+
+}  // namespace
+
+std::string file_fnv1a64(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::uint64_t h = 14695981039346656037ull;
+  char buf[65536];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    for (std::streamsize i = 0; i < in.gcount(); ++i) h = (h ^ static_cast<unsigned char>(buf[i])) * 1099511628211ull;
+    if (!in) break;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& file) {
+  const Node r(j, "", file);
+  physics::Scenario s;
+  s.name = r.string("name");
+  s.source = r.string("source");
+  s.duration_s = r.number_within("duration_s", limits::kDuration_s);
+  const double seed = r.number("seed");
+  if (!(seed >= 0) || seed != std::floor(seed)) r.fail("seed", "expected a whole number ≥ 0");
+  s.seed = r.at("seed").get<std::uint64_t>();
+  const Node solver = r.object("solver"), output = r.object("output");
+  s.solver = {solver.number_within("time_step_s", limits::kTimeStep_s), solver.integer("iterations", limits::kSolverIterations)};
+  s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
+  if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");
+  s.contact = contact_of(r.object("contact"));
+  for (const Node& b : r.list("bodies")) s.bodies.push_back(body_of(b));
+  for (const Node& jd : r.list("joints")) s.joints.push_back(joint_of(jd));
+  read_rest(r, s);
+  return s;
+}
+
+void write_scenario_record(const physics::Scenario& s, const fs::path& dir) {
+  physics::Scenario recorded = s;
+  if (!s.gearset_spec.empty()) {
+    std::error_code ec;
+    fs::copy_file(s.gearset_spec, dir / "gearset.yaml", fs::copy_options::overwrite_existing, ec);
+    if (ec) throw InputError((dir / "gearset.yaml").string() + ": cannot copy " + s.gearset_spec.string() + ": " + ec.message());
+    recorded.gearset_spec = "gearset.yaml";  // relative to the run folder
+  }
+  std::ofstream out(dir / "scenario.json");
+  if (!out) throw InputError((dir / "scenario.json").string() + ": cannot write");
+  nlohmann::ordered_json j = scenario_json(recorded);
+  if (!s.gearset_spec.empty()) j["gearset_spec_original"] = s.gearset_spec.string();
+  out << j.dump(1) << "\n";
+}
+
+physics::Scenario read_scenario_record(const fs::path& dir) {
+  const fs::path file = dir / "scenario.json";
+  std::ifstream in(file);
+  if (!in) throw InputError(file.string() + ": cannot read (a run folder of gearsim run holds it)");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::exception& e) {
+    throw InputError(file.string() + ": not valid JSON: " + e.what());
+  }
+  physics::Scenario s = scenario_from_json(j, file);
+  if (!s.gearset_spec.empty()) {
+    if (s.gearset_spec != "gearset.yaml") throw InputError(file.string() + ": key gearset_spec: expected \"gearset.yaml\"");
+    s.gearset_spec = dir / "gearset.yaml";
+  }
+  return s;
+}
+
+}  // namespace gearsim::input

@@ -1,0 +1,102 @@
+// The expanded scenario a run records in its folder (input/scenario_record.hpp): every asset
+// scenario (generated gears, CAD meshes, the planetary and pair macros, stiffness tables, fe)
+// reads back to the same scenario; a damaged record names its key; a mesh edited since the run is
+// refused; the record and its gear-set copy, not the original files, are what a run folder reads.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "input/scenario_record.hpp"
+#include "tests/support/asset_scenario.hpp"
+
+namespace gearsim::input {
+namespace test_scenario_record {
+
+namespace fs = std::filesystem;
+
+fs::path asset(const std::string& name) { return fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios" / name; }
+
+std::string error_of(const nlohmann::json& j) {
+  try {
+    scenario_from_json(j, "rec.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ScenarioRecord, EveryAssetScenarioReadsBackToTheSameScenario) {
+  for (const char* name : {"paper_dynamics.yaml", "paper_dynamics_healthy.yaml", "paper_te_loaded.yaml",
+                           "paper_te_rigid.yaml", "spur_pair.yaml"}) {
+    const physics::Scenario s = load_scenario(asset(name));
+    const nlohmann::ordered_json j = scenario_json(s);
+    const physics::Scenario back = scenario_from_json(nlohmann::json::parse(j.dump()), "rec.json");
+    EXPECT_EQ(scenario_json(back).dump(), j.dump()) << name;
+    // Fields the comparison would miss if the writer forgot them: spot checks on the struct.
+    ASSERT_EQ(back.bodies.size(), s.bodies.size()) << name;
+    for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+      EXPECT_EQ(back.bodies[b].pose.orientation.coeffs(), s.bodies[b].pose.orientation.coeffs()) << name;
+      EXPECT_EQ(back.bodies[b].mesh.has_value(), s.bodies[b].mesh.has_value()) << name;
+      if (s.bodies[b].mesh) EXPECT_EQ(back.bodies[b].mesh->recognised.has_value(), s.bodies[b].mesh->recognised.has_value());
+    }
+    EXPECT_EQ(back.planetary.has_value(), s.planetary.has_value()) << name;
+    EXPECT_EQ(back.fe.has_value(), s.fe.has_value()) << name;
+    EXPECT_EQ(back.pair_tables.size(), s.pair_tables.size()) << name;
+    EXPECT_EQ(back.contact.stiffness_tables.size(), s.contact.stiffness_tables.size()) << name;
+  }
+}
+
+TEST(ScenarioRecord, ADamagedRecordNamesTheKey) {
+  const nlohmann::json good = nlohmann::json::parse(scenario_json(load_scenario(asset("paper_dynamics.yaml"))).dump());
+  nlohmann::json j = good;
+  j["bodies"][1]["gear"]["teeth"] = "many";
+  EXPECT_NE(error_of(j).find("rec.json: key bodies[1].gear.teeth: expected a finite number"), std::string::npos) << error_of(j);
+  j = good;
+  j["solver"].erase("time_step_s");
+  EXPECT_NE(error_of(j).find("key solver.time_step_s: missing"), std::string::npos) << error_of(j);
+  j = good;
+  j["solver"]["time_step_s"] = 1.0;
+  EXPECT_NE(error_of(j).find("key solver.time_step_s:"), std::string::npos) << error_of(j);
+  j = good;
+  j["bodies"][0]["orientation_wxyz"] = {2, 0, 0, 0};
+  EXPECT_NE(error_of(j).find("bodies[0].orientation_wxyz: expected a unit quaternion"), std::string::npos) << error_of(j);
+}
+
+TEST(ScenarioRecord, AMeshEditedSinceTheRunIsRefused) {
+  const fs::path dir = test::fresh_test_dir();
+  for (const char* f : {"pinion.stl", "wheel.stl"})
+    fs::copy_file(fs::path(GEARSIM_SOURCE_DIR) / "assets/gears/spur_pair" / f, dir / f);
+  std::string text;
+  {
+    std::ifstream in(asset("spur_pair.yaml"));
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  for (std::size_t at; (at = text.find("../gears/spur_pair/")) != std::string::npos;) text.replace(at, 19, "");
+  std::ofstream(dir / "scenario.yaml") << text;
+  const physics::Scenario s = load_scenario(dir / "scenario.yaml");
+  const nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_NO_THROW(scenario_from_json(j, "rec.json"));
+  std::ofstream(dir / "wheel.stl", std::ios::app) << " ";  // one byte more
+  EXPECT_NE(error_of(j).find("wheel.stl changed since the run"), std::string::npos) << error_of(j);
+  fs::remove(dir / "pinion.stl");
+  EXPECT_NE(error_of(j).find("pinion.stl no longer exists"), std::string::npos) << error_of(j);
+}
+
+TEST(ScenarioRecord, TheRunFolderKeepsItsOwnGearSetCopy) {
+  const fs::path dir = test::fresh_test_dir();
+  const physics::Scenario s = load_scenario(asset("paper_dynamics.yaml"));
+  ASSERT_FALSE(s.gearset_spec.empty());
+  write_scenario_record(s, dir);
+  const physics::Scenario back = read_scenario_record(dir);
+  EXPECT_EQ(back.gearset_spec, dir / "gearset.yaml");
+  std::ifstream a(s.gearset_spec), b(dir / "gearset.yaml");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+  EXPECT_EQ(back.bodies.size(), s.bodies.size());
+}
+
+}  // namespace test_scenario_record
+}  // namespace gearsim::input
