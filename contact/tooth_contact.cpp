@@ -197,6 +197,123 @@ double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hi
   return fc > fd ? c : d;
 }
 
+// The probe samples of one flank of x's tooth k: the depths measured so far (kNone where not
+// probed or clear of material) and the deepest of them.
+struct FlankSamples {
+  static constexpr int n = FlankTable::kProbeRadii;
+  FlankSamples(const XY& xy_, int k_, Flank f_, int& hint_)
+      : xy(xy_), k(k_), f(f_), hint(hint_), material(xy_.x.table.probe_material(k_, f_)),
+        step(xy_.x.table.probe_radius(1) - xy_.x.table.probe_radius(0)), window(refine_window_m(step)) {
+    depth.fill(kNone);
+  }
+  bool missing(int i) const { return i < 0 || i >= n || !((material >> i) & 1u); }
+  void probe(int i) {
+    depth[i] = missing(i) ? kNone : depth_of(xy, xy.x.table.probe_point(k, f, i), hint);
+    if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
+  }
+  const XY& xy;
+  int k;
+  Flank f;
+  int& hint;
+  std::uint32_t material;
+  double step, window;
+  std::array<double, n> depth;
+  int best_i = -1;
+};
+
+// The three samples nearest the tooth's free end (an internal gear's teeth point inward); a
+// maximum at the farthest of them lies down the flank, where the other probing direction finds
+// it, so the third is probed only when one of the first two is within the refinement window.
+// False: no hit on this flank.
+bool probe_tip(FlankSamples& s) {
+  constexpr int n = FlankSamples::n;
+  const int dir = s.xy.x.table.internal() ? 1 : -1;
+  int end = s.xy.x.table.internal() ? 0 : n - 1;
+  while (s.missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
+  for (int j = 0; j < 2; ++j)
+    if (!s.missing(end + j * dir)) s.probe(end + j * dir);
+  if (s.best_i < 0 || s.depth[s.best_i] < -s.window) return false;
+  if (!s.missing(end + 2 * dir)) s.probe(end + 2 * dir);
+  return s.best_i != end + 2 * dir;
+}
+
+// Coarse to fine, probing a sample only where it can matter. Between two samples s·step apart
+// the depth rises at most s²·window above the higher (the parabola bound window rests on, with
+// room to spare); a stretch next to a sample that measured nothing has no such bound and is
+// probed. The answer is that of probing every sample: the deepest one, and no refinement when it
+// stays more than window clear (then false: no hit).
+bool probe_flank(FlankSamples& s) {
+  constexpr int n = FlankSamples::n;
+  const double window = s.window;
+  std::array<double, n>& depth = s.depth;
+  // `top[i]`: what sample i can reach, its depth once probed, or a bound when it is skipped.
+  std::array<double, n> top;
+  std::uint32_t probed = 0;  // bit i: sample i probed
+  auto has = [&](int i) { return ((s.material >> i) & 1u) != 0; };  // i within [0, n)
+  auto probe_at_i = [&](int i) {
+    s.probe(i);
+    probed |= std::uint32_t{1} << i;
+    top[i] = depth[i];
+  };
+  // Whether sample i, between samples lo and hi (s·step around it, both probed or bounded),
+  // can reach `level`; if not, the bound is kept for the samples between.
+  auto needed = [&](int i, int lo, int hi, double rise, double level) {
+    const bool lo_probed = (probed >> lo) & 1u, hi_probed = (probed >> hi) & 1u;
+    if (!has(lo) || !has(hi) || (lo_probed && depth[lo] <= kNone) || (hi_probed && depth[hi] <= kNone)) return true;
+    const double reach = std::max(lo_probed ? depth[lo] + rise : top[lo], hi_probed ? depth[hi] + rise : top[hi]);
+    if (reach >= level) return true;
+    top[i] = reach;
+    return false;
+  };
+  // Every fourth sample, the last, and any next to a radius without material (bits of the
+  // material mask shifted onto their neighbours), in increasing order.
+  constexpr std::uint32_t kAll = (std::uint32_t{1} << n) - 1;
+  constexpr std::uint32_t kEveryFourth = [] {
+    std::uint32_t m = std::uint32_t{1} << (n - 1);
+    for (int i = 0; i < n; i += 4) m |= std::uint32_t{1} << i;
+    return m;
+  }();
+  const std::uint32_t without = ~s.material & kAll;
+  for (std::uint32_t todo = (kEveryFourth | (without << 1) | (without >> 1)) & kAll; todo != 0; todo &= todo - 1)
+    probe_at_i(std::countr_zero(todo));
+  // Every other: a flank whose best stays more than 4·window clear is done.
+  for (int i = 2; i < n - 1; i += 4)
+    if (!((probed >> i) & 1u) && has(i) &&
+        needed(i, i - 2, std::min(i + 2, n - 1), 16 * window, std::max(s.best_i < 0 ? kNone : depth[s.best_i], -4 * window)))
+      probe_at_i(i);
+  if (s.best_i < 0 || depth[s.best_i] < -4 * window) return false;
+  // The rest: where they could be the best or lift it into the refinement window.
+  for (int i = 1; i < n - 1; i += 2)
+    if (!((probed >> i) & 1u) && has(i) && needed(i, i - 1, i + 1, 4 * window, std::max(depth[s.best_i], -window)))
+      probe_at_i(i);
+  return depth[s.best_i] >= -window;
+}
+
+// The radius of the deepest point near the best sample: a parabola through it and its neighbours
+// inside the flank, golden section at an end of it.
+double refined_radius(FlankSamples& s) {
+  constexpr int n = FlankSamples::n;
+  const FlankTable& table = s.xy.x.table;
+  const int best_i = s.best_i;
+  const double r_b = table.probe_radius(best_i), step = s.step;
+  const bool interior = best_i > 0 && best_i < n - 1 && s.depth[best_i - 1] > kNone && s.depth[best_i + 1] > kNone;
+  if (interior)
+    return parabola_refine(s.xy, s.k, s.f, r_b, step, s.depth[best_i - 1], s.depth[best_i], s.depth[best_i + 1], s.hint);
+  const double lo = std::max(r_b - step, table.probe_radius(0)), hi = std::min(r_b + step, table.probe_radius(n - 1));
+  // Best at an end of the bracket (a tip corner, or the flank's end): where the depth still
+  // rises toward that end at golden section's last point, a search with one maximum in the
+  // bracket (what golden section assumes) ends exactly there, found with two evaluations
+  // instead of 22.
+  if (r_b == hi || r_b == lo) {
+    const bool at_hi = r_b == hi;
+    const double r_end = golden_end(lo, hi, at_hi);
+    const double d_end = depth_at(s.xy, s.k, s.f, r_end, s.hint);
+    const double d_in = depth_at(s.xy, s.k, s.f, r_end + (at_hi ? -kRisingCheck_m : kRisingCheck_m), s.hint);
+    if (d_end > kNone && d_in > kNone && d_end > d_in) return r_end;
+  }
+  return golden_refine(s.xy, s.k, s.f, lo, hi, s.hint);
+}
+
 // The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
 // first order, the best refined, and the result measured exactly. A flank whose best sample
 // stays more than its refinement window (refine_window_m) clear of y returns no hit. With
@@ -204,102 +321,11 @@ double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hi
 // `hint`: y's tooth the last probe faced (or −1); the next ones along the flank, or on the next
 // flank, face it or a neighbour. Updated.
 Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
-  const Frame& x = xy.x;
-  constexpr int n = FlankTable::kProbeRadii;
-  std::array<double, n> depth;
-  depth.fill(kNone);
-  int best_i = -1;
-  const std::uint32_t material = x.table.probe_material(k, f);
-  const double step = x.table.probe_radius(1) - x.table.probe_radius(0), window = refine_window_m(step);
-  auto missing = [&](int i) { return i < 0 || i >= n || !((material >> i) & 1u); };
-  auto probe_sample = [&](int i) {
-    depth[i] = missing(i) ? kNone : depth_of(xy, x.table.probe_point(k, f, i), hint);
-    if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
-  };
-  if (tip_only) {
-    // The three samples nearest the free end (an internal gear's teeth point inward); a maximum
-    // at the farthest of them lies down the flank, where the other probing direction finds it,
-    // so the third is probed only when one of the first two is within the refinement window.
-    const int dir = x.table.internal() ? 1 : -1;
-    int end = x.table.internal() ? 0 : n - 1;
-    while (missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
-    for (int j = 0; j < 2; ++j)
-      if (!missing(end + j * dir)) probe_sample(end + j * dir);
-    if (best_i < 0 || depth[best_i] < -window) return {};
-    if (!missing(end + 2 * dir)) probe_sample(end + 2 * dir);
-    if (best_i == end + 2 * dir) return {};
-  } else {
-    // Coarse to fine, probing a sample only where it can matter. Between two samples s·step
-    // apart the depth rises at most s²·window above the higher (the parabola bound
-    // window rests on, with room to spare); a stretch next to a sample that measured
-    // nothing has no such bound and is probed. The answer is that of probing every sample:
-    // the deepest one, and no refinement when it stays more than window clear.
-    // `top[i]`: what sample i can reach, its depth once probed, or a bound when it is skipped.
-    std::array<double, n> top;
-    std::uint32_t probed = 0;  // bit i: sample i probed
-    auto has = [&](int i) { return ((material >> i) & 1u) != 0; };  // i within [0, n)
-    auto probe_at_i = [&](int i) {
-      probe_sample(i);
-      probed |= std::uint32_t{1} << i;
-      top[i] = depth[i];
-    };
-    // Whether sample i, between samples lo and hi (s·step around it, both probed or bounded),
-    // can reach `level`; if not, the bound is kept for the samples between.
-    auto needed = [&](int i, int lo, int hi, double rise, double level) {
-      const bool lo_probed = (probed >> lo) & 1u, hi_probed = (probed >> hi) & 1u;
-      if (!has(lo) || !has(hi) || (lo_probed && depth[lo] <= kNone) || (hi_probed && depth[hi] <= kNone)) return true;
-      const double reach = std::max(lo_probed ? depth[lo] + rise : top[lo], hi_probed ? depth[hi] + rise : top[hi]);
-      if (reach >= level) return true;
-      top[i] = reach;
-      return false;
-    };
-    // Every fourth sample, the last, and any next to a radius without material (bits of the
-    // material mask shifted onto their neighbours), in increasing order.
-    constexpr std::uint32_t kAll = (std::uint32_t{1} << n) - 1;
-    constexpr std::uint32_t kEveryFourth = [] {
-      std::uint32_t m = std::uint32_t{1} << (n - 1);
-      for (int i = 0; i < n; i += 4) m |= std::uint32_t{1} << i;
-      return m;
-    }();
-    const std::uint32_t without = ~material & kAll;
-    for (std::uint32_t todo = (kEveryFourth | (without << 1) | (without >> 1)) & kAll; todo != 0; todo &= todo - 1)
-      probe_at_i(std::countr_zero(todo));
-    // Every other: a flank whose best stays more than 4·window clear is done.
-    for (int i = 2; i < n - 1; i += 4)
-      if (!((probed >> i) & 1u) && has(i) &&
-          needed(i, i - 2, std::min(i + 2, n - 1), 16 * window,
-                 std::max(best_i < 0 ? kNone : depth[best_i], -4 * window)))
-        probe_at_i(i);
-    if (best_i < 0 || depth[best_i] < -4 * window) return {};
-    // The rest: where they could be the best or lift it into the refinement window.
-    for (int i = 1; i < n - 1; i += 2)
-      if (!((probed >> i) & 1u) && has(i) &&
-          needed(i, i - 1, i + 1, 4 * window, std::max(depth[best_i], -window)))
-        probe_at_i(i);
-    if (depth[best_i] < -window) return {};
-  }
-  const double r_b = x.table.probe_radius(best_i);
-  const bool interior = best_i > 0 && best_i < n - 1 && depth[best_i - 1] > kNone && depth[best_i + 1] > kNone;
-  double r_best = 0;
-  if (interior) {
-    r_best = parabola_refine(xy, k, f, r_b, step, depth[best_i - 1], depth[best_i], depth[best_i + 1], hint);
-  } else {
-    const double lo = std::max(r_b - step, x.table.probe_radius(0)), hi = std::min(r_b + step, x.table.probe_radius(n - 1));
-    // Best at an end of the bracket (a tip corner, or the flank's end): where the depth still
-    // rises toward that end at golden section's last point, a search with one maximum in the
-    // bracket (what golden section assumes) ends exactly there, found with two evaluations
-    // instead of 22.
-    bool done = false;
-    if (r_b == hi || r_b == lo) {
-      const bool at_hi = r_b == hi;
-      const double r_end = golden_end(lo, hi, at_hi);
-      const double d_end = depth_at(xy, k, f, r_end, hint);
-      const double d_in = depth_at(xy, k, f, r_end + (at_hi ? -kRisingCheck_m : kRisingCheck_m), hint);
-      if (d_end > kNone && d_in > kNone && d_end > d_in) r_best = r_end, done = true;
-    }
-    if (!done) r_best = golden_refine(xy, k, f, lo, hi, hint);
-  }
-  if (std::isnan(x.table.flank_angle(k, f, r_best))) r_best = r_b;
+  FlankSamples s(xy, k, f, hint);
+  if (!(tip_only ? probe_tip(s) : probe_flank(s))) return {};
+  const double r_b = xy.x.table.probe_radius(s.best_i);
+  double r_best = refined_radius(s);
+  if (std::isnan(xy.x.table.flank_angle(k, f, r_best))) r_best = r_b;
   const Hit refined = probe_at(xy, k, f, r_best);
   if (refined.depth > kNone) return refined;
   return probe_at(xy, k, f, r_b);
@@ -361,34 +387,6 @@ void find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const Flank
     return std::make_tuple(u.tooth_a, u.tooth_b, static_cast<int>(u.flank_a)) <
            std::make_tuple(v.tooth_a, v.tooth_b, static_cast<int>(v.flank_a));
   });
-}
-
-}  // namespace gearsim::contact
-
-namespace gearsim::contact {
-
-MeshCycleOverlap mesh_cycle_overlap(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
-                                    const PlanarPose& pb, int steps) {
-  // θ_b = ∓(z_a/z_b)·θ_a about fixed centres: opposite senses unless one of them is a ring.
-  const double sense = (a.internal() || b.internal()) ? 1.0 : -1.0;
-  const double ratio = sense * a.teeth() / static_cast<double>(b.teeth());
-  MeshCycleOverlap worst;
-  std::vector<ToothContact> found;
-  for (int i = 0; i < steps; ++i) {
-    const double turn = a.pitch_angle_rad() * i / steps;
-    PlanarPose qa = pa, qb = pb;
-    qa.angle_rad += turn;
-    qb.angle_rad += ratio * turn;
-    find_tooth_contacts(a, qa, b, qb, found);
-    for (const ToothContact& c : found)
-      if (c.depth_m > worst.deepest.depth_m) {
-        worst.deepest = c;
-        worst.turn_a_rad = turn;
-        worst.radius_a_m = (c.point_m - qa.centre_m).norm();
-        worst.radius_b_m = (c.point_m - qb.centre_m).norm();
-      }
-  }
-  return worst;
 }
 
 }  // namespace gearsim::contact

@@ -77,6 +77,62 @@ void require_faithful(const contact::FlankTable& t, const std::string& who, cons
   throw InputError(msg.str());
 }
 
+// The shape, mass and flank table of a generated gear (its errors included).
+void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string& who, BuiltBody& b,
+                std::optional<MassProperties>& mass, ConvexPieces3& pieces) {
+  GearSpec spec = *def.gear;
+  spec.chordal_deviation_m = contact.chordal_deviation_m;
+  const double density = def.density_kg_m3.value_or(0);
+  if (!def.mass_kg && !(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
+  GearBody g = make_gear_body(spec, def.mass_kg ? 1.0 : density);
+  if (def.mass_kg) g.mass = mass_properties(g.mesh, *def.mass_kg / g.mass.volume_m3);
+  mass = g.mass;
+  pieces = std::move(g.pieces);
+  const bool internal = spec.kind == GearKind::Internal;
+  b.flanks = std::make_shared<const contact::FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
+                   ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
+  require_faithful(*b.flanks, who, contact);
+  b.face_width_m = spec.face_width_m;
+  b.contact_radius_m = g.outline.dims.base_radius_m;
+}
+
+// The shape, mass and (for a toothed mesh) flank table of a CAD mesh body, in its gear frame.
+void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string& who, BuiltBody& b,
+                std::optional<MassProperties>& mass, ConvexPieces3& pieces) {
+  const MeshGearFile f = read_mesh_gear(def.mesh->path, def.mesh->unit);
+  const TriMesh& mesh = f.mesh;
+  double density = def.density_kg_m3.value_or(0);
+  const MassProperties unit = mass_properties(mesh, 1.0);
+  if (def.mass_kg) density = *def.mass_kg / unit.volume_m3;
+  if (!(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
+  if (def.mesh->teeth) {
+    const std::string file = def.mesh->path.string();
+    if (!f.gear) throw InputError(who + ": " + file + " has teeth but is not a prism (" + f.not_prism +
+                                  "); tooth contact needs a spur-gear extrusion");
+    const MeshGear& mg = *f.gear;
+    const ToothLayout layout = checked_layout(mg, *def.mesh, who + " (" + file + ")");
+    const RecognisedGear& rg = *mg.recognition.gear;
+    DecompositionOptions opt;
+    opt.tooth_layout = layout;
+    const double half = 0.5 * mg.face_width_m;
+    pieces = extrude_pieces(decompose(mg.outline, opt), PrismFrame{}, -half, half);  // gear frame
+    const Polygon2& loop = rg.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(rg.loop)];
+    b.flanks = std::make_shared<const contact::FlankTable>(loop, layout, rg.internal, kFlankSamples);
+    require_faithful(*b.flanks, who + " (" + file + ")", contact);
+    b.face_width_m = mg.face_width_m;
+    b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
+    TriMesh in_gear = mesh;
+    for (Eigen::Vector3d& v : in_gear.vertices) v = mg.to_gear(v);
+    mass = mass_properties(in_gear, density);
+  } else {
+    // A toothless mesh body: its own coordinates are its frame.
+    mass = mass_properties(mesh, density);
+    if (f.prism) pieces = extrude_pieces(decompose(f.prism->outline), *f.prism);
+    else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + f.not_prism +
+                          "); only prismatic meshes are simulated so far");
+  }
+}
+
 }  // namespace
 
 BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
@@ -88,53 +144,9 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
   ConvexPieces3 pieces;
   if (def.gear && def.mesh) throw InputError(who + ": give a gear or a mesh, not both");
   if (def.gear) {
-    GearSpec spec = *def.gear;
-    spec.chordal_deviation_m = contact.chordal_deviation_m;
-    const double density = def.density_kg_m3.value_or(0);
-    if (!def.mass_kg && !(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
-    GearBody g = make_gear_body(spec, def.mass_kg ? 1.0 : density);
-    if (def.mass_kg) g.mass = mass_properties(g.mesh, *def.mass_kg / g.mass.volume_m3);
-    mass = g.mass;
-    pieces = std::move(g.pieces);
-    const bool internal = spec.kind == GearKind::Internal;
-    b.flanks = std::make_shared<const contact::FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
-                     ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
-    require_faithful(*b.flanks, who, contact);
-    b.face_width_m = spec.face_width_m;
-    b.contact_radius_m = g.outline.dims.base_radius_m;
+    gear_shape(def, contact, who, b, mass, pieces);
   } else if (def.mesh) {
-    const MeshGearFile f = read_mesh_gear(def.mesh->path, def.mesh->unit);
-    const TriMesh& mesh = f.mesh;
-    double density = def.density_kg_m3.value_or(0);
-    const MassProperties unit = mass_properties(mesh, 1.0);
-    if (def.mass_kg) density = *def.mass_kg / unit.volume_m3;
-    if (!(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
-    if (def.mesh->teeth) {
-      const std::string file = def.mesh->path.string();
-      if (!f.gear) throw InputError(who + ": " + file + " has teeth but is not a prism (" + f.not_prism +
-                                    "); tooth contact needs a spur-gear extrusion");
-      const MeshGear& mg = *f.gear;
-      const ToothLayout layout = checked_layout(mg, *def.mesh, who + " (" + file + ")");
-      const RecognisedGear& rg = *mg.recognition.gear;
-      DecompositionOptions opt;
-      opt.tooth_layout = layout;
-      const double half = 0.5 * mg.face_width_m;
-      pieces = extrude_pieces(decompose(mg.outline, opt), PrismFrame{}, -half, half);  // gear frame
-      const Polygon2& loop = rg.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(rg.loop)];
-      b.flanks = std::make_shared<const contact::FlankTable>(loop, layout, rg.internal, kFlankSamples);
-      require_faithful(*b.flanks, who + " (" + file + ")", contact);
-      b.face_width_m = mg.face_width_m;
-      b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());
-      TriMesh in_gear = mesh;
-      for (Eigen::Vector3d& v : in_gear.vertices) v = mg.to_gear(v);
-      mass = mass_properties(in_gear, density);
-    } else {
-      // A toothless mesh body: its own coordinates are its frame.
-      mass = mass_properties(mesh, density);
-      if (f.prism) pieces = extrude_pieces(decompose(f.prism->outline), *f.prism);
-      else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + f.not_prism +
-                            "); only prismatic meshes are simulated so far");
-    }
+    mesh_shape(def, contact, who, b, mass, pieces);
   } else {
     if (!def.mass_kg || !def.principal_inertia_kg_m2)
       throw InputError(who + ": a body without gear or mesh needs mass_kg and principal_inertia_kg_m2");

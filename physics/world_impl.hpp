@@ -1,0 +1,119 @@
+// Inside physics::World (world.hpp), shared by its two sources: world.cpp builds the Bullet world
+// from a scenario, world_step.cpp advances and measures it. Not for use outside physics/.
+#pragma once
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h>
+
+#include <chrono>
+#include <map>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "physics/world.hpp"
+#include "physics/world_bodies.hpp"
+
+namespace gearsim::physics {
+
+// Collision groups: gears reach each other only through tooth contact, never through Bullet's
+// own narrowphase (whose point counts and GJK chatter are what tooth contact replaces).
+// Shapeless bodies (a carrier arm) collide with nothing.
+constexpr int kGearGroup = 1 << 6;
+constexpr int kOtherGroup = 1 << 7;
+constexpr int kShapelessGroup = 1 << 8;
+
+// A Bullet manifold holds at most 4 points: enough for one point per tooth pair at contact
+// ratios below 4. Extra pairs (never seen in a healthy mesh) are dropped and counted.
+constexpr int kMaxPointsPerPair = 4;
+
+using WorldClock = std::chrono::steady_clock;
+inline double seconds_since(WorldClock::time_point t) {
+  return std::chrono::duration<double>(WorldClock::now() - t).count();
+}
+
+inline btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+inline Eigen::Vector3d eig(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+struct JointRec {
+  JointDef def;
+  int body = -1, parent = -1;  // parent -1 = ground
+  btTypedConstraint* constraint = nullptr;
+  btJointFeedback feedback;
+  btHingeConstraint* hinge = nullptr;
+  btGeneric6DofSpring2Constraint* spring = nullptr;
+  Eigen::Vector3d axis_world = Eigen::Vector3d::UnitZ();
+  double last_raw = 0, unwrapped = 0;
+  const MotorDef* motor = nullptr;
+  const LoadDef* load = nullptr;
+};
+
+struct PairRec {
+  int a = -1, b = -1;
+  btPersistentManifold* manifold = nullptr;
+  GearPairInfo info;
+  // Warm start per tooth pair: last step's impulse of each (tooth_a, tooth_b, flank_a), at most
+  // kMaxPointsPerPair of them, searched in place (no allocation per step).
+  std::vector<std::pair<std::tuple<int, int, int>, double>> last_impulse;
+  std::vector<contact::ToothContact> found;                            // this step's, kept for its storage
+  std::vector<double> pair_stiffness;                         // per found contact, N/m (storage kept)
+  std::vector<char> active;                                   // per found contact: passed to the solver
+  std::vector<contact::ToothContact> current;                          // in manifold point order
+  std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
+  // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
+  const contact::StiffnessTable* table = nullptr;
+  bool table_on_a = true;
+  double body_stiffness_N_per_m = 0;  // gear bodies in series with the pairs (0: rigid)
+};
+
+struct World::Impl {
+  Scenario scenario;
+  btDefaultCollisionConfiguration config;
+  btCollisionDispatcher dispatcher{&config};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
+  std::vector<BuiltBody> bodies;
+  std::vector<JointRec> joints;
+  std::vector<PairRec> pairs;
+  std::vector<BodyState> states;
+  std::vector<ContactSample> contacts;
+  std::vector<contact::PlanarPose> gear_poses;  // this step's, per body (gears only)
+  std::vector<GearPairInfo> pair_infos;
+  std::map<std::string, int> body_index;
+  double time = 0;
+  long steps = 0;
+  double max_penetration = 0;
+  long dropped_points = 0;
+  long table_misses = 0;
+  World::Profile profile;
+  PowerFlows power;
+
+  // Takes constraints, manifolds and bodies out of Bullet's world before its members go: also
+  // when World's constructor throws half way (then ~World never runs, but ~Impl does).
+  ~Impl();
+
+  // Building (world.cpp), in this order.
+  void add_bodies();
+  void add_joints();
+  void attach_drives();
+  void find_pairs();
+  void check_start();
+  // Stepping (world_step.cpp).
+  void generate_contacts();
+  void pair_stiffnesses(PairRec& pr);
+  void add_manifold_points(PairRec& pr, double z);
+  void apply_motors_and_loads();
+  void measure();
+  void measure_power();
+};
+
+// Gear-frame pose projected on the common plane (the gear axes must be parallel to world z).
+inline contact::PlanarPose planar_pose(const BuiltBody& b) {
+  const btTransform t = b.rigid->getWorldTransform() * b.com_from_gear;
+  const btVector3 x = t.getBasis().getColumn(0);
+  return {{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())};
+}
+
+}  // namespace gearsim::physics

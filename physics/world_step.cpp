@@ -1,0 +1,262 @@
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "geometry/constants.hpp"
+#include "physics/world_impl.hpp"
+
+// World::step and what it does: tooth contacts into the pairs' manifolds (Bullet calls
+// generate_contacts before each solve), motors and loads, the solve, then the measurements.
+namespace gearsim::physics {
+
+void World::Impl::generate_contacts() {
+  const auto start = WorldClock::now();
+  max_penetration = 0;
+  // Each gear's planar pose once per step (a gear meshes in several pairs).
+  gear_poses.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].flanks) gear_poses[i] = planar_pose(bodies[i]);
+  for (PairRec& pr : pairs) {
+    const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
+    std::vector<contact::ToothContact>& found = pr.found;
+    contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
+    if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
+      std::sort(found.begin(), found.end(), [](const contact::ToothContact& x, const contact::ToothContact& y) { return x.depth_m > y.depth_m; });
+      dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;
+      found.resize(kMaxPointsPerPair);
+    }
+    pr.manifold->clearManifold();
+    const double z = 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
+                            (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
+    pr.current.clear();
+    pr.current_stiffness_N_per_m.clear();
+    pair_stiffnesses(pr);
+    add_manifold_points(pr, z);
+  }
+  profile.tooth_contact_s += seconds_since(start);
+}
+
+// pr.pair_stiffness and pr.active for this step's contacts pr.found.
+void World::Impl::pair_stiffnesses(PairRec& pr) {
+  const std::vector<contact::ToothContact>& found = pr.found;
+  const contact::PlanarPose table_gear = pr.table ? gear_poses[pr.table_on_a ? pr.a : pr.b] : contact::PlanarPose{};
+  // Each pair's own stiffness: the constant, or its table's at the contact radius on the table's
+  // gear (the point on that gear's own surface, half the depth from the overlap's mid-point).
+  std::vector<double>& k_pair = pr.pair_stiffness;
+  k_pair.assign(found.size(), pr.info.stiffness_N_per_m);
+  if (pr.table)
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      const contact::ToothContact& c = found[i];
+      const Eigen::Vector2d on = c.point_m + (pr.table_on_a ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
+      bool outside = false;
+      k_pair[i] = contact::stiffness_at(*pr.table, (on - table_gear.centre_m).norm(), &outside) * pr.info.face_width_m;
+      if (outside) ++table_misses;
+    }
+  // Gear bodies in series with all pairs (PairStiffnessDef::body_stiffness_N_per_m, compliance
+  // c): F_i = k_i (δ_i − c F), F = Σ k_i δ_i / (1 + c Σ k_i) over the pairs with δ_i > c F (found
+  // by dropping the others until none is left to drop). Each active pair then gets the secant
+  // stiffness F_i/δ_i = k_i (1 − c F/δ_i), continuous as a pair comes into load; the others are
+  // not passed to the solver.
+  std::vector<char>& active = pr.active;
+  active.assign(found.size(), 1);
+  if (pr.body_stiffness_N_per_m > 0) {
+    const double c_body = 1.0 / pr.body_stiffness_N_per_m;
+    double F = 0;
+    for (bool dropped = true; dropped;) {
+      double num = 0, den = 1;
+      for (std::size_t i = 0; i < found.size(); ++i)
+        if (active[i]) num += k_pair[i] * found[i].depth_m, den += c_body * k_pair[i];
+      F = num / den;
+      dropped = false;
+      for (std::size_t i = 0; i < found.size(); ++i)
+        if (active[i] && found[i].depth_m <= c_body * F) active[i] = 0, dropped = true;
+    }
+    for (std::size_t i = 0; i < found.size(); ++i)
+      if (active[i]) k_pair[i] *= 1.0 - c_body * F / found[i].depth_m;
+  }
+}
+
+// One manifold point per active tooth contact, at height z, with its stiffness and damping, warm
+// started from the same tooth pair's impulse of the last step.
+void World::Impl::add_manifold_points(PairRec& pr, double z) {
+  const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
+  for (std::size_t i = 0; i < pr.found.size(); ++i) {
+    const contact::ToothContact& c = pr.found[i];
+    max_penetration = std::max(max_penetration, c.depth_m);
+    if (!pr.active[i]) continue;
+    const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
+    const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
+    const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
+    btManifoldPoint pt(a.rigid->getWorldTransform().invXform(on_a), b.rigid->getWorldTransform().invXform(on_b), n,
+                       -c.depth_m);
+    pt.m_positionWorldOnA = on_a;
+    pt.m_positionWorldOnB = on_b;
+    pt.m_combinedFriction = scenario.contact.friction;
+    pt.m_combinedRestitution = 0;
+    pt.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+    const double k = pr.pair_stiffness[i];
+    const double damping = pr.table || pr.body_stiffness_N_per_m > 0
+                               ? contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, scenario.contact.damping_ratio)
+                               : pr.info.damping_N_s_per_m;
+    pt.m_combinedContactStiffness1 = k;
+    pt.m_combinedContactDamping1 = damping;
+    const auto key = std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a));
+    for (const auto& [k_last, impulse] : pr.last_impulse)
+      if (k_last == key) pt.m_appliedImpulse = impulse;
+    pt.m_userPersistentData = nullptr;
+    pr.manifold->addManifoldPoint(pt, false);
+    pr.current.push_back(c);
+    pr.current_stiffness_N_per_m.push_back(k);
+  }
+}
+
+void World::Impl::apply_motors_and_loads() {
+  for (JointRec& j : joints) {
+    if (j.motor) {
+      const double ramp = j.motor->ramp_time_s > 0 ? std::min(1.0, time / j.motor->ramp_time_s) : 1.0;
+      const double target = j.motor->target_speed_rad_s * ramp;
+      if (j.hinge) j.hinge->enableAngularMotor(true, target, j.motor->max_torque_N_m * scenario.solver.time_step_s);
+      if (j.spring) {
+        j.spring->enableMotor(5, true);
+        // The spring constraint drives body A (the parent, or the ground) relative to B.
+        j.spring->setTargetVelocity(5, -target);
+        j.spring->setMaxMotorForce(5, j.motor->max_torque_N_m);
+      }
+    }
+    if (j.load) {
+      const double speed = states.empty() ? 0.0 : states[j.body].speed_rad_s;
+      const double torque = load_torque_N_m(*j.load, time, speed);
+      const btVector3 t = bt(j.axis_world * torque);
+      bodies[j.body].rigid->applyTorque(t);
+      if (j.parent >= 0 && !bodies[j.parent].fixed) bodies[j.parent].rigid->applyTorque(-t);
+    }
+  }
+}
+
+void World::Impl::measure() {
+  // Joint angles: the body's gear-frame x axis against the parent's, about the joint axis.
+  for (JointRec& j : joints) {
+    const BuiltBody& b = bodies[j.body];
+    const btTransform tb = b.rigid->getWorldTransform() * b.com_from_gear;
+    const Eigen::Vector3d ax = j.axis_world;
+    const Eigen::Vector3d xb = eig(tb.getBasis().getColumn(0));
+    Eigen::Vector3d ref = Eigen::Vector3d::UnitX(), ref2;
+    Eigen::Vector3d omega_parent = Eigen::Vector3d::Zero();
+    if (j.parent >= 0) {
+      const BuiltBody& p = bodies[j.parent];
+      ref = eig((p.rigid->getWorldTransform() * p.com_from_gear).getBasis().getColumn(0));
+      omega_parent = eig(p.rigid->getAngularVelocity());
+    }
+    if (std::abs(ref.dot(ax)) > 0.9) ref = Eigen::Vector3d::UnitY();
+    ref = (ref - ref.dot(ax) * ax).normalized();
+    ref2 = ax.cross(ref);
+    const double raw = std::atan2(xb.dot(ref2), xb.dot(ref));
+    j.unwrapped += std::remainder(raw - j.last_raw, 2 * constants::kPi);
+    j.last_raw = raw;
+    BodyState& s = states[j.body];
+    s.angle_rad = j.unwrapped;
+    s.speed_rad_s = (eig(b.rigid->getAngularVelocity()) - omega_parent).dot(ax);
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    states[i].position_m = eig((bodies[i].rigid->getWorldTransform() * bodies[i].com_from_gear).getOrigin());
+  contacts.clear();
+  const double dt = scenario.solver.time_step_s;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    PairRec& pr = pairs[p];
+    pr.last_impulse.clear();
+    GEARSIM_CHECK(pr.manifold->getNumContacts() == static_cast<int>(pr.current.size()),
+                  "tooth contacts and manifold points must correspond one to one");
+    for (int k = 0; k < pr.manifold->getNumContacts(); ++k) {
+      const btManifoldPoint& pt = pr.manifold->getContactPoint(k);
+      ContactSample cs;
+      cs.pair = static_cast<int>(p);
+      cs.geometry = pr.current[static_cast<std::size_t>(k)];
+      cs.normal_force_N = pt.m_appliedImpulse / dt;
+      cs.friction_force_N = std::hypot(pt.m_appliedImpulseLateral1, pt.m_appliedImpulseLateral2) / dt;
+      cs.stiffness_N_per_m = pr.current_stiffness_N_per_m[static_cast<std::size_t>(k)];
+      contacts.push_back(cs);
+      // Each tooth pair's impulse warm-starts the same pair's point next step.
+      const contact::ToothContact& c = cs.geometry;
+      pr.last_impulse.emplace_back(std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a)), pt.m_appliedImpulse);
+    }
+  }
+}
+
+void World::step() {
+  Impl& m = *impl_;
+  const auto start = WorldClock::now();
+  m.apply_motors_and_loads();
+  m.world.stepSimulation(m.scenario.solver.time_step_s, 0, m.scenario.solver.time_step_s);
+  m.time += m.scenario.solver.time_step_s;
+  ++m.steps;
+  m.measure();
+  m.measure_power();
+  m.profile.step_total_s += seconds_since(start);
+}
+
+const World::Profile& World::profile() const { return impl_->profile; }
+const PowerFlows& World::power() const { return impl_->power; }
+long World::dropped_contacts() const { return impl_->dropped_points; }
+long World::stiffness_table_misses() const { return impl_->table_misses; }
+
+void World::Impl::measure_power() {
+  const double dt = scenario.solver.time_step_s;
+  PowerFlows pw;
+  for (const BuiltBody& b : bodies) {
+    const btRigidBody& r = *b.rigid;
+    if (r.getInvMass() == 0) continue;
+    const btVector3 v = r.getLinearVelocity(), w = r.getAngularVelocity();
+    const btMatrix3x3 inertia = r.getInvInertiaTensorWorld().inverse();
+    pw.kinetic_J += 0.5 * v.dot(v) / r.getInvMass() + 0.5 * w.dot(inertia * w);
+  }
+  for (const JointRec& j : joints) {
+    const btRigidBody& a = j.constraint->getRigidBodyA();
+    const btRigidBody& b = j.constraint->getRigidBodyB();
+    // The whole constraint's power on both bodies (force at the centre of mass, torque about it).
+    const double total = j.feedback.m_appliedForceBodyA.dot(a.getLinearVelocity()) +
+                         j.feedback.m_appliedTorqueBodyA.dot(a.getAngularVelocity()) +
+                         j.feedback.m_appliedForceBodyB.dot(b.getLinearVelocity()) +
+                         j.feedback.m_appliedTorqueBodyB.dot(b.getAngularVelocity());
+    const double speed = states[static_cast<std::size_t>(j.body)].speed_rad_s;
+    double motor = 0;
+    if (j.motor) {
+      const btVector3& t = j.hinge ? j.feedback.m_appliedTorqueBodyA : j.feedback.m_appliedTorqueBodyB;
+      motor = eig(t).dot(j.axis_world) * speed;
+    }
+    pw.motor_W += motor;
+    pw.joint_W += total - motor;
+    if (j.load) pw.load_W += load_torque_N_m(*j.load, time - dt, speed) * speed;  // as applied in the step
+  }
+  for (const PairRec& pr : pairs) {
+    const btRigidBody &a = *bodies[pr.a].rigid, &b = *bodies[pr.b].rigid;
+    for (int k = 0; k < pr.manifold->getNumContacts(); ++k) {
+      const btManifoldPoint& pt = pr.manifold->getContactPoint(k);
+      // Impulses act on a along +normal (+friction directions) and on b the opposite way.
+      const btVector3 impulse = pt.m_normalWorldOnB * pt.m_appliedImpulse + pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
+                                pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
+      const btVector3 va = a.getVelocityInLocalPoint(pt.m_positionWorldOnA - a.getCenterOfMassPosition());
+      const btVector3 vb = b.getVelocityInLocalPoint(pt.m_positionWorldOnB - b.getCenterOfMassPosition());
+      pw.contact_W += impulse.dot(va - vb) / dt;
+    }
+  }
+  power = pw;
+}
+
+double World::time_s() const { return impl_->time; }
+long World::steps() const { return impl_->steps; }
+const std::vector<BodyState>& World::bodies() const { return impl_->states; }
+const std::vector<ContactSample>& World::contacts() const { return impl_->contacts; }
+const std::vector<GearPairInfo>& World::gear_pairs() const { return impl_->pair_infos; }
+double World::max_penetration_m() const { return impl_->max_penetration; }
+
+double World::motor_torque_N_m(const std::string& joint) const {
+  for (const JointRec& j : impl_->joints)
+    if (j.def.name == joint) {
+      // The joint's own body is Bullet's body A of a hinge and body B of a bearing constraint.
+      const btVector3& t = j.hinge ? j.feedback.m_appliedTorqueBodyA : j.feedback.m_appliedTorqueBodyB;
+      return eig(t).dot(j.axis_world);
+    }
+  throw InputError("no joint named '" + joint + "'");
+}
+
+}  // namespace gearsim::physics
