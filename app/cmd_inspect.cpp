@@ -84,10 +84,10 @@ json gear_json(const MeshGear& mg, const std::optional<ToothLayout>& given, Leng
     if (!g.internal) j["profile_shift_incl_backlash_allowance"] = g.profile_shift;
   }
   json warnings = json::array();
-  if (const std::string u = implausible_unit(g, unit); !u.empty()) warnings.push_back(u);
+  if (const Check u = check_unit(g, unit); !u) warnings.push_back(u.reason());
   const ToothLayout layout = given.value_or(ToothLayout{g.teeth, g.tooth0_angle_rad});
   if (given)
-    if (const std::string m = layout_mismatch(g, *given); !m.empty()) warnings.push_back("--teeth/--tooth0-deg: " + m);
+    if (const Check m = check_layout(g, *given); !m) warnings.push_back("--teeth/--tooth0-deg: " + m.reason());
   if (layout.teeth == g.teeth) {
     // The contact's flank table of these teeth, and how far it strays from the outline.
     const Polygon2& loop = g.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(g.loop)];
@@ -135,11 +135,11 @@ json inspect(const InspectOptions& o) {
   j["inertia_com_kg_m2"] = inertia;
   j["principal_moments_kg_m2"] = {m.principal_moments_kg_m2.x(), m.principal_moments_kg_m2.y(), m.principal_moments_kg_m2.z()};
 
-  const PrismRecovery pr = recover_prism(mesh, o.prism_tolerance_um * 1e-6);
-  j["prismatic"] = pr.prism.has_value();
-  if (!pr.prism) {
+  const Result<Prism> pr = recover_prism(mesh, o.prism_tolerance_um * 1e-6);
+  j["prismatic"] = pr.ok();
+  if (!pr) {
     // No exact decomposition: Bullet's HACD, with its deviation measured against the mesh.
-    j["not_prismatic_because"] = pr.reason;
+    j["not_prismatic_because"] = pr.reason();
     ApproxDecompositionOptions opt;
     if (o.teeth > 0) opt.tooth_layout = ToothLayout{o.teeth, o.tooth0_deg * std::numbers::pi / 180.0};
     opt.sample_spacing_m = o.spacing_mm * 1e-3;
@@ -149,7 +149,7 @@ json inspect(const InspectOptions& o) {
     j["max_deviation_um"] = ad.deviation_m * 1e6;
     j["deviation_sample_spacing_mm"] = ad.sample_spacing_m * 1e3;
     json warnings = json::array();
-    warnings.push_back("not a prism: no exact decomposition (" + pr.reason + ")");
+    warnings.push_back("not a prism: no exact decomposition (" + pr.reason() + ")");
     for (const std::string& w : ad.warnings) warnings.push_back(w);
     j["warnings"] = warnings;
     return j;
@@ -157,12 +157,12 @@ json inspect(const InspectOptions& o) {
   DecompositionOptions opt;
   if (o.teeth > 0) opt.tooth_layout = ToothLayout{o.teeth, o.tooth0_deg * std::numbers::pi / 180.0};
   const auto t0 = std::chrono::steady_clock::now();
-  const ConvexDecomposition d = decompose(pr.prism->outline, opt);
-  const ConvexPieces3 pieces = extrude_pieces(d, *pr.prism);
+  const ConvexDecomposition d = decompose(pr->outline, opt);
+  const ConvexPieces3 pieces = extrude_pieces(d, *pr);
   const double decompose_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const DecompositionDeviation dev = decomposition_deviation(mesh, pieces, o.spacing_mm * 1e-3);
-  j["prism_height_mm"] = pr.prism->height_m * 1e3;
-  j["outline_holes"] = pr.prism->outline.holes.size();
+  j["prism_height_mm"] = pr->height_m * 1e3;
+  j["outline_holes"] = pr->outline.holes.size();
   j["convex_pieces"] = d.pieces.size();
   j["tooth_sectors_exact"] = d.sectors_exact;
   if (!d.fallback_reason.empty()) j["sector_fallback_reason"] = d.fallback_reason;
@@ -173,7 +173,7 @@ json inspect(const InspectOptions& o) {
   j["warnings"] = json::array();
   std::optional<ToothLayout> given;
   if (o.teeth > 0) given = ToothLayout{o.teeth, o.tooth0_deg * std::numbers::pi / 180.0};
-  j["gear"] = gear_json(mesh_gear(*pr.prism), given, *unit);
+  j["gear"] = gear_json(mesh_gear(*pr), given, *unit);
   return j;
 }
 

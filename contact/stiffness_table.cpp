@@ -8,7 +8,7 @@
 
 namespace gearsim::contact {
 
-std::string stiffness_table_problem(const StiffnessTable& t, int* bad_row) {
+Check check_stiffness_table(const StiffnessTable& t) {
   std::ostringstream msg;
   int row = -1;
   if (t.radius_m.size() != t.stiffness_N_per_m_per_m.size())
@@ -34,22 +34,22 @@ std::string stiffness_table_problem(const StiffnessTable& t, int* bad_row) {
         break;
       }
     }
-  if (bad_row) *bad_row = row;
-  return msg.str();
+  if (msg.str().empty()) return {};
+  return Refusal{msg.str(), row};
 }
 
-double stiffness_at(const StiffnessTable& t, double r, bool* outside) {
+StiffnessLookup stiffness_at(const StiffnessTable& t, double r) {
   GEARSIM_CHECK(t.radius_m.size() >= 2 && t.radius_m.size() == t.stiffness_N_per_m_per_m.size(),
                 "a stiffness table is validated before use");
   const std::vector<double>& x = t.radius_m;
   const std::vector<double>& k = t.stiffness_N_per_m_per_m;
-  *outside = r < x.front() || r > x.back();
-  if (r <= x.front()) return k.front();
-  if (r >= x.back()) return k.back();
+  const bool outside = r < x.front() || r > x.back();
+  if (r <= x.front()) return {k.front(), outside};
+  if (r >= x.back()) return {k.back(), outside};
   // First row above r; the segment [i − 1, i] holds it.
   const std::size_t i = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), r) - x.begin());
   const double s = (r - x[i - 1]) / (x[i] - x[i - 1]);
-  return k[i - 1] + s * (k[i] - k[i - 1]);
+  return {k[i - 1] + s * (k[i] - k[i - 1]), false};
 }
 
 }  // namespace gearsim::contact

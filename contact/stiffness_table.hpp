@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/result.hpp"
+
 namespace gearsim::contact {
 
 struct StiffnessTable {
@@ -16,13 +18,18 @@ struct StiffnessTable {
   std::vector<double> stiffness_N_per_m_per_m;   // single-pair stiffness per face width, > 0, one per radius
 };
 
-// What is wrong with a table ("" when it is sound): fewer than two rows, columns of unequal
-// length, radii not strictly increasing, a stiffness not positive. *bad_row (if given) is the
-// 0-based row at fault, or −1 when the fault is not one row's.
-std::string stiffness_table_problem(const StiffnessTable& table, int* bad_row = nullptr);
+// Whether a table is sound, else what is wrong: fewer than two rows, columns of unequal length,
+// radii not strictly increasing, a stiffness not positive; the refusal's index is the 0-based
+// row at fault, or −1 when the fault is not one row's.
+Check check_stiffness_table(const StiffnessTable& table);
+
+struct StiffnessLookup {
+  double stiffness_N_per_m_per_m = 0;
+  bool outside = false;  // the radius lay outside the table: the nearest end row's value
+};
 
 // The stiffness at `radius_m`, N/m per m, linear between rows. Outside the table's range: the
-// nearest end row's value, and *outside set (the caller counts it; it is never silent).
-double stiffness_at(const StiffnessTable& table, double radius_m, bool* outside);
+// nearest end row's value, and `outside` set (the caller counts it; it is never silent).
+StiffnessLookup stiffness_at(const StiffnessTable& table, double radius_m);
 
 }  // namespace gearsim::contact

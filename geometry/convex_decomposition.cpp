@@ -89,7 +89,7 @@ double ray_angle(const ToothLayout& lay, int k) {
 
 // Inserts the crossings of every gap mid-line ray into `loop`, or says why a ray does not cross
 // it exactly once, counter-clockwise (the loop is then not star-shaped about the gear axis).
-std::string cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, const std::string& name,
+Check cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, const std::string& name,
                      CutLoop& out) {
   const int z = lay.teeth;
   const double step = 2.0 * std::numbers::pi / z;
@@ -110,11 +110,11 @@ std::string cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, cons
     const int wp = wedge(p), wq = wedge(q);
     if (wp == wq) continue;
     if (cross2(p, q) <= 0)
-      return "the " + name + " is not star-shaped about the gear axis: its edge " +
-             std::to_string(i) + " crosses a gap mid-line clockwise";
+      return Refusal{"the " + name + " is not star-shaped about the gear axis: its edge " +
+             std::to_string(i) + " crosses a gap mid-line clockwise"};
     for (int k = wp; k != wq; k = (k + 1) % z) {
       if (++hits[std::size_t(k)] > 1)
-        return "gap mid-line " + std::to_string(k) + " crosses the " + name + " more than once";
+        return Refusal{"gap mid-line " + std::to_string(k) + " crosses the " + name + " more than once"};
       const Vec2 d(std::cos(ray_angle(lay, k)), std::sin(ray_angle(lay, k)));
       const double sp = cross2(d, p), sq = cross2(d, q), len = (q - p).norm();
       const double t = std::clamp(sp == sq ? 0.5 : sp / (sp - sq), 0.0, 1.0);
@@ -131,12 +131,12 @@ std::string cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, cons
   int descents = 0;
   for (int k = 0; k < z; ++k) {
     if (hits[std::size_t(k)] != 1)
-      return "gap mid-line " + std::to_string(k) + " misses the " + name;
+      return Refusal{"gap mid-line " + std::to_string(k) + " misses the " + name};
     const int a = out.cut[std::size_t(k)], b = out.cut[std::size_t((k + 1) % z)];
-    if (a == b) return "two gap mid-lines meet the " + name + " at one point";
+    if (a == b) return Refusal{"two gap mid-lines meet the " + name + " at one point"};
     descents += b < a;
   }
-  if (descents != 1) return "the " + name + " winds around the gear axis more than once";
+  if (descents != 1) return Refusal{"the " + name + " winds around the gear axis more than once"};
   return {};
 }
 
@@ -149,18 +149,18 @@ void append_arc(const CutLoop& c, int k0, int k1, std::vector<Vec2>& out) {
   }
 }
 
-// Cuts the outline into tooth sectors and decomposes each; returns why not, or "".
-std::string decompose_sectors(const Outline2& outline, const ToothLayout& lay,
+// Cuts the outline into tooth sectors and decomposes each, or refuses saying why not.
+Check decompose_sectors(const Outline2& outline, const ToothLayout& lay,
                               std::vector<ConvexPiece2>& pieces) {
   if (outline.holes.size() > 1)
-    return "the outline has " + std::to_string(outline.holes.size()) +
-           " holes; sector cutting allows at most one";
+    return Refusal{"the outline has " + std::to_string(outline.holes.size()) +
+           " holes; sector cutting allows at most one"};
   CutLoop outer, inner;
-  if (auto why = cut_loop(outline.outer.points, lay, "outer boundary", outer); !why.empty())
+  if (const Check why = cut_loop(outline.outer.points, lay, "outer boundary", outer); !why)
     return why;
   if (!outline.holes.empty()) {
     std::vector<Vec2> hole(outline.holes[0].points.rbegin(), outline.holes[0].points.rend());
-    if (auto why = cut_loop(hole, lay, "hole", inner); !why.empty()) return why;
+    if (const Check why = cut_loop(hole, lay, "hole", inner); !why) return why;
   }
   for (int k = 0; k < lay.teeth; ++k) {
     const int k0 = (k + lay.teeth - 1) % lay.teeth;
@@ -173,7 +173,7 @@ std::string decompose_sectors(const Outline2& outline, const ToothLayout& lay,
       append_arc(inner, k0, k, arc);
       sector.points.insert(sector.points.end(), arc.rbegin(), arc.rend());
     }
-    if (auto d = polygon_defect(sector, true, "sector " + std::to_string(k))) return *d;
+    if (const Check c = check_polygon(sector, true, "sector " + std::to_string(k)); !c) return c;
     std::vector<char> reflex;
     mark_reflex(sector.points, reflex);
     for (Polygon2& p :
@@ -229,8 +229,9 @@ ConvexDecomposition decompose(const Outline2& outline, const DecompositionOption
                      " rad; need at least 3 teeth and a finite angle");
   ConvexDecomposition result;
   if (lay) {
-    result.fallback_reason = decompose_sectors(outline, *lay, result.pieces);
-    result.sectors_exact = result.fallback_reason.empty();
+    const Check sectors = decompose_sectors(outline, *lay, result.pieces);
+    result.fallback_reason = sectors.reason();
+    result.sectors_exact = sectors.ok();
     if (!result.sectors_exact) result.pieces.clear();
   }
   if (!result.sectors_exact) decompose_whole(outline, lay, result.pieces);

@@ -60,8 +60,7 @@ TriMesh extrude(const Outline2& outline, double z_min_m, double z_max_m) {
 
 TriMesh extrude_convex(const Polygon2& convex, double z_min_m, double z_max_m) {
   require_z_range(z_min_m, z_max_m);
-  if (auto d = polygon_defect(convex, true, "convex polygon"))
-    throw InputError("cannot extrude: " + *d);
+  if (const Check c = check_polygon(convex, true, "convex polygon"); !c) throw InputError("cannot extrude: " + c.reason());
   if (!is_convex(convex, kConvexSineTolerance))
     throw InputError("cannot extrude: polygon with " + std::to_string(convex.points.size()) +
                      " points is not convex");

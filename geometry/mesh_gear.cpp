@@ -51,32 +51,30 @@ MeshGearFile read_mesh_gear(const std::filesystem::path& path, LengthUnit unit) 
   MeshGearFile f;
   f.mesh = import_mesh(path, unit);
   require_valid_solid(validate_mesh(f.mesh), path.string());
-  PrismRecovery pr = recover_prism(f.mesh, kCadPrismTolerance_m);
-  f.prism = std::move(pr.prism);
+  f.prism = recover_prism(f.mesh, kCadPrismTolerance_m);
   if (f.prism) f.gear = mesh_gear(*f.prism);
-  else f.not_prism = pr.reason;
   return f;
 }
 
-std::string layout_mismatch(const RecognisedGear& g, const ToothLayout& given) {
+Check check_layout(const RecognisedGear& g, const ToothLayout& given) {
   constexpr double kDeg = 180 / std::numbers::pi;
   std::ostringstream m;
   if (given.teeth != g.teeth) {
     m << given.teeth << " teeth given, the mesh shows " << g.teeth << " (tooth 0 at " << g.tooth0_angle_rad * kDeg << " deg)";
-    return m.str();
+    return Refusal{m.str()};
   }
   const double pitch = 2 * std::numbers::pi / g.teeth;
   const double off = std::remainder(given.tooth0_angle_rad - g.tooth0_angle_rad, pitch);
-  if (std::abs(off) <= kTooth0Tolerance * pitch) return "";
+  if (std::abs(off) <= kTooth0Tolerance * pitch) return {};
   m << "tooth 0 given at " << given.tooth0_angle_rad * kDeg << " deg lies " << std::abs(off) / pitch * 100
     << " % of a pitch from the nearest tooth centre line of the mesh (tooth 0 at " << g.tooth0_angle_rad * kDeg
     << " deg, pitch " << pitch * kDeg << " deg; limit " << kTooth0Tolerance * 100 << " %)";
-  return m.str();
+  return Refusal{m.str()};
 }
 
-std::string implausible_unit(const RecognisedGear& g, LengthUnit unit) {
+Check check_unit(const RecognisedGear& g, LengthUnit unit) {
   const double m = g.module_m;
-  if (m >= kMinPlausibleModule_m && m <= kMaxPlausibleModule_m) return "";
+  if (m >= kMinPlausibleModule_m && m <= kMaxPlausibleModule_m) return {};
   std::ostringstream msg;
   // Off the plausible range no standard module matches, so m is the tooth depth / 2.25: "about".
   const char* about = g.standard ? "" : "about ";
@@ -92,7 +90,7 @@ std::string implausible_unit(const RecognisedGear& g, LengthUnit unit) {
       break;
     }
   }
-  return msg.str();
+  return Refusal{msg.str()};
 }
 
 }  // namespace gearsim

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "core/result.hpp"
 #include "geometry/convex_decomposition.hpp"
 #include "geometry/gear_recognition.hpp"
 #include "geometry/mesh.hpp"
@@ -47,10 +48,9 @@ inline constexpr double kCadPrismTolerance_m = 2e-6;
 // A mesh file read (import_mesh), checked to be a valid solid (throws InputError naming the
 // file otherwise) and, when it is a prism, brought into its gear frame.
 struct MeshGearFile {
-  TriMesh mesh;                  // as read, mesh coordinates, m
-  std::optional<Prism> prism;    // when the mesh is a prism within kCadPrismTolerance_m
-  std::optional<MeshGear> gear;  // that prism in its gear frame
-  std::string not_prism;         // why not, otherwise
+  TriMesh mesh;                                      // as read, mesh coordinates, m
+  Result<Prism> prism = Refusal{"no mesh read"};     // the prism within kCadPrismTolerance_m, or why not
+  std::optional<MeshGear> gear;                      // that prism in its gear frame
 };
 MeshGearFile read_mesh_gear(const std::filesystem::path& path, LengthUnit unit);
 
@@ -58,17 +58,18 @@ MeshGearFile read_mesh_gear(const std::filesystem::path& path, LengthUnit unit);
 // rounded angle passes, a half-pitch error (sector boundaries through the teeth) does not.
 inline constexpr double kTooth0Tolerance = 0.02;
 
-// A tooth layout (from a scenario) checked against the recognised gear: empty when it agrees
+// A tooth layout (from a scenario) checked against the recognised gear: passes when it agrees
 // (same count, tooth 0 within kTooth0Tolerance of a pitch of some tooth's centre line), else
-// what the mesh shows.
-std::string layout_mismatch(const RecognisedGear& g, const ToothLayout& given);
+// refused with what the mesh shows.
+Check check_layout(const RecognisedGear& g, const ToothLayout& given);
 
 // Modules a gear mesh may have, m: a fine-pitch watch gear to a mill gear. Outside, the mesh's
 // unit is almost certainly wrong (a mm file read as m makes a 1 mm module 1 m).
 inline constexpr double kMinPlausibleModule_m = 0.05e-3;
 inline constexpr double kMaxPlausibleModule_m = 100e-3;
 
-// Empty when the recognised module is plausible in `unit`, else which unit would make it so.
-std::string implausible_unit(const RecognisedGear& g, LengthUnit unit);
+// Passes when the recognised module is plausible in `unit`, else refused saying which unit would
+// make it so.
+Check check_unit(const RecognisedGear& g, LengthUnit unit);
 
 }  // namespace gearsim

@@ -103,15 +103,15 @@ std::vector<Vec2> drop_collinear(const std::vector<Vec2>& pts) {
   return out;
 }
 
-// Tries `axis`: fills `prism` or returns why the mesh is not a prism along it.
-std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) {
+// Tries `axis`: fills `prism`, or refuses saying why the mesh is not a prism along it.
+Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) {
   const std::size_t nv = mesh.vertices.size();
   PrismFrame f = frame_for(axis);
   std::vector<double> w(nv);
   for (std::size_t i = 0; i < nv; ++i) w[i] = mesh.vertices[i].dot(f.z);
   const double w_lo = *std::min_element(w.begin(), w.end()),
                w_hi = *std::max_element(w.begin(), w.end());
-  if (w_hi - w_lo <= tol) return "the mesh is flat along this axis";
+  if (w_hi - w_lo <= tol) return Refusal{"the mesh is flat along this axis"};
   std::vector<int> level(nv);
   double sum_lo = 0, sum_hi = 0;
   int n_lo = 0, n_hi = 0;
@@ -122,8 +122,8 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
     else if (w_hi - w[i] <= tol)
       level[i] = 1, sum_hi += w[i] - w_hi, ++n_hi;
     else
-      return "vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) +
-             " m above the bottom cap of a " + fmt(w_hi - w_lo) + " m prism";
+      return Refusal{"vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) +
+             " m above the bottom cap of a " + fmt(w_hi - w_lo) + " m prism"};
   }
   const double bottom = w_lo + sum_lo / n_lo, top = w_hi + sum_hi / n_hi;
   f.origin_m = bottom * f.z;
@@ -154,8 +154,8 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
     const double off =
         e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
     if (off > tol)
-      return "face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " +
-             fmt(off) + " m off its wall line";
+      return Refusal{"face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " +
+             fmt(off) + " m off its wall line"};
   }
   // Weld top-cap corners closer than tol, then keep the directed edges without a reverse twin.
   std::unordered_map<std::uint64_t, std::vector<int>> cells;
@@ -198,8 +198,8 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
     if (count == 0) continue;
     const int a = int(k >> 32), b = int(k & 0xffffffffu);
     if (count > 1 || out[a] >= 0)
-      return "the top cap boundary branches at (" + fmt(welded[a].x()) + ", " + fmt(welded[a].y()) +
-             ") m";
+      return Refusal{"the top cap boundary branches at (" + fmt(welded[a].x()) + ", " + fmt(welded[a].y()) +
+             ") m"};
     out[a] = b;
   }
   std::vector<std::vector<Vec2>> loops;
@@ -209,8 +209,8 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
     std::vector<Vec2> loop;
     for (int v = int(s); !seen[v]; v = out[v]) {
       if (out[v] < 0)
-        return "the top cap boundary is open at (" + fmt(welded[v].x()) + ", " +
-               fmt(welded[v].y()) + ") m";
+        return Refusal{"the top cap boundary is open at (" + fmt(welded[v].x()) + ", " +
+               fmt(welded[v].y()) + ") m"};
       seen[v] = 1;
       loop.push_back(welded[v]);
     }
@@ -229,11 +229,11 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
       prism.outline.holes.push_back(std::move(p));
   }
   if (outers != 1)
-    return "the top cap has " + std::to_string(outers) + " outer loops; exactly one is supported";
+    return Refusal{"the top cap has " + std::to_string(outers) + " outer loops; exactly one is supported"};
   if (std::abs(top_area + bottom_area) > tol * perimeter)
-    return "the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) +
-           " m^2";
-  if (auto d = outline_defect(prism.outline)) return "the recovered outline is invalid: " + *d;
+    return Refusal{"the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) +
+           " m^2"};
+  if (const Check c = check_outline(prism.outline); !c) return Refusal{"the recovered outline is invalid: " + c.reason()};
   prism.frame = f;
   prism.height_m = top - bottom;
   return {};
@@ -241,7 +241,7 @@ std::string try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& p
 
 }  // namespace
 
-PrismRecovery recover_prism(const TriMesh& mesh, double tol_m) {
+Result<Prism> recover_prism(const TriMesh& mesh, double tol_m) {
   if (!(tol_m > 0) || !std::isfinite(tol_m))
     throw InputError("prism tolerance " + fmt(tol_m) + " m: need > 0");
   if (mesh.triangles.empty()) throw InputError("prism recovery: the mesh has no triangles");
@@ -255,20 +255,18 @@ PrismRecovery recover_prism(const TriMesh& mesh, double tol_m) {
     const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
     face_n.push_back((b - a).cross(c - a));
   }
-  PrismRecovery result;
+  std::string reason;  // along the first candidate axis: the largest face cluster's normal
   for (const Vec3& axis : candidate_axes(face_n)) {
     Prism prism;
-    std::string why = try_axis(mesh, axis, tol_m, prism);
-    if (why.empty()) return {std::move(prism), {}};
-    if (result.reason.empty()) {
+    const Check why = try_axis(mesh, axis, tol_m, prism);
+    if (why) return prism;
+    if (reason.empty()) {
       const Vec3 shown = frame_for(axis).z;
-      result.reason = "not a prism along its largest face cluster's normal (" +
-                      fmt(shown.x() + 0.0) + ", " + fmt(shown.y() + 0.0) + ", " +
-                      fmt(shown.z() + 0.0) + "): " + why;
+      reason = "not a prism along its largest face cluster's normal (" + fmt(shown.x() + 0.0) + ", " +
+               fmt(shown.y() + 0.0) + ", " + fmt(shown.z() + 0.0) + "): " + why.reason();
     }
   }
-  if (result.reason.empty()) result.reason = "every face is degenerate";
-  return result;
+  return Refusal{reason.empty() ? "every face is degenerate" : reason};
 }
 
 }  // namespace gearsim

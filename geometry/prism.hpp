@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/result.hpp"
 #include "geometry/mesh.hpp"
 #include "geometry/outline.hpp"
 
@@ -37,18 +38,13 @@ struct Prism {
   Outline2 outline;  // one outer loop (CCW about z), holes CW, m
 };
 
-// Either the prism or why the mesh is not one.
-struct PrismRecovery {
-  std::optional<Prism> prism;
-  std::string reason;  // empty on success; names the offending face, vertex or loop otherwise
-};
-
-// Recovers the prism of `mesh` within tol_m (m): every vertex lies within tol_m of one of two
+// Recovers the prism of `mesh` within tol_m (m), or refuses naming the offending face, vertex or
+// loop: every vertex lies within tol_m of one of two
 // parallel cap planes, every other face is perpendicular to them, and the top cap's boundary
 // forms one outer loop with holes. Candidate axes are the normals of the largest near-parallel
 // face clusters, largest first. The frame's origin is the world origin projected on the bottom
 // cap; x is world x (or y) projected on the cap, so a mesh built about the world z axis keeps
 // its coordinates. Throws InputError for an empty mesh, out-of-range indices or tol_m <= 0.
-PrismRecovery recover_prism(const TriMesh& mesh, double tol_m);
+Result<Prism> recover_prism(const TriMesh& mesh, double tol_m);
 
 }  // namespace gearsim

@@ -298,13 +298,14 @@ std::vector<std::array<int, 3>> clip_ears(Ring& r, int start) {
 
 }  // namespace
 
-std::optional<std::string> polygon_defect(const Polygon2& polygon, bool counter_clockwise,
-                                          const std::string& name) {
-  if (auto d = basic_defect(polygon, counter_clockwise, name)) return d;
-  return find_crossing({&polygon}, {name});
+Check check_polygon(const Polygon2& polygon, bool counter_clockwise, const std::string& name) {
+  if (auto d = basic_defect(polygon, counter_clockwise, name)) return Refusal{*d};
+  if (auto d = find_crossing({&polygon}, {name})) return Refusal{*d};
+  return {};
 }
 
-std::optional<std::string> outline_defect(const Outline2& outline) {
+// The first defect of the outline's loops, nothing when it is valid.
+static std::optional<std::string> outline_defect(const Outline2& outline) {
   std::vector<const Polygon2*> loops{&outline.outer};
   std::vector<std::string> names{"outer boundary"};
   if (auto d = basic_defect(outline.outer, true, names[0])) return d;
@@ -325,13 +326,17 @@ std::optional<std::string> outline_defect(const Outline2& outline) {
   return std::nullopt;
 }
 
+Check check_outline(const Outline2& outline) {
+  if (auto d = outline_defect(outline)) return Refusal{*d};
+  return {};
+}
+
 void require_valid(const Outline2& outline) {
-  if (auto d = outline_defect(outline)) throw InputError("invalid outline: " + *d);
+  if (const Check c = check_outline(outline); !c) throw InputError("invalid outline: " + c.reason());
 }
 
 std::vector<std::array<int, 3>> triangulate(const Polygon2& polygon) {
-  if (auto d = polygon_defect(polygon, true, "polygon"))
-    throw InputError("cannot triangulate: " + *d);
+  if (const Check c = check_polygon(polygon, true, "polygon"); !c) throw InputError("cannot triangulate: " + c.reason());
   return detail::triangulate_unchecked(polygon);
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/result.hpp"
 #include "geometry/outline.hpp"
 
 namespace gearsim {
@@ -30,15 +31,14 @@ std::vector<std::array<int, 3>> triangulate(const Polygon2& polygon);
 // touches another loop, or lies outside the outer boundary or inside another hole.
 OutlineTriangulation triangulate(const Outline2& outline);
 
-// Why `polygon` is not a valid simple polygon of the given orientation, or nothing when it is.
-// `name` names it in the message ("outer boundary", "hole 2").
-std::optional<std::string> polygon_defect(const Polygon2& polygon, bool counter_clockwise,
-                                          const std::string& name);
+// Passes when `polygon` is a valid simple polygon of the given orientation, else refused saying
+// why. `name` names it in the message ("outer boundary", "hole 2").
+Check check_polygon(const Polygon2& polygon, bool counter_clockwise, const std::string& name);
 
-// Why `outline` is invalid (see triangulate), or nothing when it is valid.
-std::optional<std::string> outline_defect(const Outline2& outline);
+// Passes when `outline` is valid (see triangulate), else refused saying why.
+Check check_outline(const Outline2& outline);
 
-// Throws InputError with outline_defect's message when the outline is invalid.
+// Throws InputError with check_outline's reason when the outline is invalid.
 void require_valid(const Outline2& outline);
 
 namespace detail {

@@ -187,7 +187,7 @@ physics::ContactDef contact_of(const Node& n) {
       physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),
                                   {t.string("file"), t.numbers("radius_a_m"), t.numbers("stiffness_N_per_m_per_m")},
                                   t.number("body_stiffness_N_per_m")};
-      if (const std::string p = contact::stiffness_table_problem(d.table); !p.empty()) t.fail("radius_a_m", p);
+      if (const Check c = contact::check_stiffness_table(d.table); !c) t.fail("radius_a_m", c.reason());
       c.stiffness_tables.push_back(std::move(d));
     }
   return c;

@@ -59,18 +59,18 @@ GearSpec gear_from(const YamlMap& m, const fs::path& dir, double& density_kg_m3)
 void check_gear_mesh(const YamlMap& m, physics::MeshSource& src) {
   const std::string file = src.path.string();
   const MeshGearFile f = read_mesh_gear(src.path, src.unit);
-  if (!f.gear) m.fail("file", file + " is not a prism (" + f.not_prism + "): a gear must be a spur-gear extrusion; give `teeth: none` for a toothless body");
+  if (!f.gear) m.fail("file", file + " is not a prism (" + f.prism.reason() + "): a gear must be a spur-gear extrusion; give `teeth: none` for a toothless body");
   if (!f.gear->recognition.gear)
     m.fail(src.teeth ? "teeth" : "file", file + " is not recognised as a spur gear: " + f.gear->recognition.reason +
                                              (src.teeth ? "" : "; give `teeth: none` for a toothless body"));
   const RecognisedGear& g = *f.gear->recognition.gear;
   src.recognised = g;
-  if (const std::string u = implausible_unit(g, src.unit); !u.empty()) m.fail("unit", file + ": " + u);
+  if (const Check u = check_unit(g, src.unit); !u) m.fail("unit", file + ": " + u.reason());
   if (!src.teeth) {
     src.teeth = ToothLayout{g.teeth, g.tooth0_angle_rad};
     src.teeth_recognised = true;
-  } else if (const std::string mm = layout_mismatch(g, *src.teeth); !mm.empty()) {
-    m.fail(src.teeth->teeth != g.teeth ? "teeth" : (m.has("tooth0_rad") ? "tooth0_rad" : "tooth0_deg"), file + ": " + mm);
+  } else if (const Check mm = check_layout(g, *src.teeth); !mm) {
+    m.fail(src.teeth->teeth != g.teeth ? "teeth" : (m.has("tooth0_rad") ? "tooth0_rad" : "tooth0_deg"), file + ": " + mm.reason());
   } else {
     // A given tooth 0 within the tolerance names the tooth; its angle is the mesh's: a rounded
     // angle (0.3° on a 12-tooth pinion is 31 µm at its pitch circle) would phase a pair off by

@@ -64,12 +64,11 @@ contact::StiffnessTable read_table(const YamlMap& m, const fs::path& dir) {
   } catch (const InputError& e) {
     m.fail("file", std::string(e.what()) + " (expected columns radius_a_m,stiffness_N_per_m_per_m)");
   }
-  int row = -1;
-  if (const std::string problem = contact::stiffness_table_problem(t, &row); !problem.empty()) {
+  if (const Check c = contact::check_stiffness_table(t); !c) {
     std::ostringstream where;  // the CSV line: its header is line 1, row 0 is line 2
     where << t.source;
-    if (row >= 0) where << ':' << row + 2;
-    m.fail("file", where.str() + ": " + problem);
+    if (c.refusal().index >= 0) where << ':' << c.refusal().index + 2;
+    m.fail("file", where.str() + ": " + c.reason());
   }
   return t;
 }

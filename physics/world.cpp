@@ -78,10 +78,10 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
   info.m_solverMode |= SOLVER_USE_WARMSTARTING;
   m.world.setInternalTickCallback(pretick, &m, true);
   for (const PairStiffnessDef& t : s.contact.stiffness_tables)
-    if (int row = -1; !contact::stiffness_table_problem(t.table, &row).empty())
+    if (const Check c = contact::check_stiffness_table(t.table); !c)
       throw InputError("scenario: stiffness table " + t.table.source + " of gears '" + t.body_a + "' and '" + t.body_b +
-                       "': " + (row >= 0 ? "row " + std::to_string(row + 1) + ": " : "") +
-                       contact::stiffness_table_problem(t.table));
+                       "': " + (c.refusal().index >= 0 ? "row " + std::to_string(c.refusal().index + 1) + ": " : "") +
+                       c.reason());
   m.add_bodies();
   m.add_joints();
   m.attach_drives();

@@ -45,8 +45,8 @@ ToothLayout checked_layout(const MeshGear& mg, const MeshSource& src, const std:
   if (!mg.recognition.gear)
     throw InputError(who + ": not recognised as a spur gear: " + mg.recognition.reason);
   const RecognisedGear& g = *mg.recognition.gear;
-  if (const std::string u = implausible_unit(g, src.unit); !u.empty()) throw InputError(who + ": " + u);
-  if (const std::string m = layout_mismatch(g, *src.teeth); !m.empty()) throw InputError(who + ": " + m);
+  if (const Check u = check_unit(g, src.unit); !u) throw InputError(who + ": " + u.reason());
+  if (const Check m = check_layout(g, *src.teeth); !m) throw InputError(who + ": " + m.reason());
   return *src.teeth;
 }
 
@@ -107,7 +107,7 @@ void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string
   if (!(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
   if (def.mesh->teeth) {
     const std::string file = def.mesh->path.string();
-    if (!f.gear) throw InputError(who + ": " + file + " has teeth but is not a prism (" + f.not_prism +
+    if (!f.gear) throw InputError(who + ": " + file + " has teeth but is not a prism (" + f.prism.reason() +
                                   "); tooth contact needs a spur-gear extrusion");
     const MeshGear& mg = *f.gear;
     const ToothLayout layout = checked_layout(mg, *def.mesh, who + " (" + file + ")");
@@ -128,7 +128,7 @@ void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string
     // A toothless mesh body: its own coordinates are its frame.
     mass = mass_properties(mesh, density);
     if (f.prism) pieces = extrude_pieces(decompose(f.prism->outline), *f.prism);
-    else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + f.not_prism +
+    else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + f.prism.reason() +
                           "); only prismatic meshes are simulated so far");
   }
 }

@@ -48,9 +48,9 @@ void World::Impl::pair_stiffnesses(PairRec& pr) {
     for (std::size_t i = 0; i < found.size(); ++i) {
       const contact::ToothContact& c = found[i];
       const Eigen::Vector2d on = c.point_m + (pr.table_on_a ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
-      bool outside = false;
-      k_pair[i] = contact::stiffness_at(*pr.table, (on - table_gear.centre_m).norm(), &outside) * pr.info.face_width_m;
-      if (outside) ++table_misses;
+      const contact::StiffnessLookup k = contact::stiffness_at(*pr.table, (on - table_gear.centre_m).norm());
+      k_pair[i] = k.stiffness_N_per_m_per_m * pr.info.face_width_m;
+      if (k.outside) ++table_misses;
     }
   // Gear bodies in series with all pairs (PairStiffnessDef::body_stiffness_N_per_m, compliance
   // c): F_i = k_i (δ_i − c F), F = Σ k_i δ_i / (1 + c Σ k_i) over the pairs with δ_i > c F (found

@@ -21,9 +21,9 @@ Polygon2 mcad_loop(int teeth) {
   const TriMesh mesh = import_mesh(std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(teeth) +
                                        "_a20_f5_b005.stl",
                                    LengthUnit::Millimetre);
-  const PrismRecovery pr = recover_prism(mesh, 0.1e-6);
-  EXPECT_TRUE(pr.prism) << pr.reason;
-  return pr.prism->outline.outer;
+  const Result<Prism> pr = recover_prism(mesh, 0.1e-6);
+  EXPECT_TRUE(pr) << pr.reason();
+  return pr->outline.outer;
 }
 
 TEST(FlankKnots, ARadialPieceBesideAnInvoluteStaysStraight) {

@@ -231,12 +231,12 @@ TEST(ConvexDecomposition, RotatedMeshRoundTripStaysExact) {
   const Eigen::Matrix3d rot =
       Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -1, 2).normalized()).toRotationMatrix();
   for (auto& v : m.vertices) v = rot * v + Eigen::Vector3d(0.01, 0.02, -0.03);
-  const PrismRecovery r = recover_prism(m, 1e-9);
-  ASSERT_TRUE(r.prism) << r.reason;
-  const ConvexDecomposition d = decompose(r.prism->outline);
+  const Result<Prism> r = recover_prism(m, 1e-9);
+  ASSERT_TRUE(r) << r.reason();
+  const ConvexDecomposition d = decompose(r->outline);
   expect_convex(d);
   const DecompositionDeviation dev =
-      decomposition_deviation(m, extrude_pieces(d, *r.prism), 0.25e-3);
+      decomposition_deviation(m, extrude_pieces(d, *r), 0.25e-3);
   EXPECT_LT(dev.hausdorff_m, 1e-6);  // rotation rounding is ~1e-17 m
   EXPECT_NEAR(dev.relative_volume_error, 0.0, 1e-12);
 }

@@ -30,9 +30,9 @@ TriMesh posed_gear(const Eigen::Isometry3d& pose) {
 }
 
 MeshGear gear_of(const TriMesh& m) {
-  const PrismRecovery pr = recover_prism(m, kCadPrismTolerance_m);
-  EXPECT_TRUE(pr.prism.has_value()) << pr.reason;
-  return mesh_gear(pr.prism.value_or(Prism{}));
+  const Result<Prism> pr = recover_prism(m, kCadPrismTolerance_m);
+  EXPECT_TRUE(pr.ok()) << pr.reason();
+  return mesh_gear(pr.optional().value_or(Prism{}));
 }
 
 TEST(MeshGear, AGearOffTheOriginIsRecentredOnItsAxis) {
@@ -77,12 +77,12 @@ TEST(MeshGear, LayoutChecksNameWhatTheMeshShows) {
   ASSERT_TRUE(g.recognition.gear);
   const RecognisedGear& r = *g.recognition.gear;
   const double pitch = 2 * kPi / 23, t0 = 5 * kPi / 180;
-  EXPECT_EQ(layout_mismatch(r, {23, t0}), "");
-  EXPECT_EQ(layout_mismatch(r, {23, t0 + 7 * pitch}), "");       // another tooth numbered 0: same layout
-  EXPECT_EQ(layout_mismatch(r, {23, t0 + 0.015 * pitch}), "");   // within 2 % of a pitch
-  EXPECT_NE(layout_mismatch(r, {23, t0 + 0.5 * pitch}).find("50 % of a pitch"), std::string::npos);
-  EXPECT_NE(layout_mismatch(r, {24, t0}).find("24 teeth given, the mesh shows 23"), std::string::npos);
-  EXPECT_EQ(implausible_unit(r, LengthUnit::Millimetre), "");
+  EXPECT_TRUE(check_layout(r, {23, t0}));
+  EXPECT_TRUE(check_layout(r, {23, t0 + 7 * pitch}));       // another tooth numbered 0: same layout
+  EXPECT_TRUE(check_layout(r, {23, t0 + 0.015 * pitch}));   // within 2 % of a pitch
+  EXPECT_NE(check_layout(r, {23, t0 + 0.5 * pitch}).reason().find("50 % of a pitch"), std::string::npos);
+  EXPECT_NE(check_layout(r, {24, t0}).reason().find("24 teeth given, the mesh shows 23"), std::string::npos);
+  EXPECT_TRUE(check_unit(r, LengthUnit::Millimetre));
 }
 
 // OpenSCAD MCAD gears (tests/data/mcad: module 1 mm, 20°, 5 facets per involute, a radial flank
@@ -96,7 +96,7 @@ TEST(MeshGear, CoarselyFacetedMcadInvolutesGiveTheirBaseCircles) {
     const std::string file =
         std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(z) + "_a20_f5_b005.stl";
     const MeshGearFile f = read_mesh_gear(file, LengthUnit::Millimetre);
-    ASSERT_TRUE(f.gear.has_value()) << f.not_prism;
+    ASSERT_TRUE(f.gear.has_value()) << f.prism.reason();
     ASSERT_TRUE(f.gear->recognition.gear.has_value()) << f.gear->recognition.reason;
     const RecognisedGear& g = *f.gear->recognition.gear;
     EXPECT_EQ(g.teeth, z);

@@ -30,25 +30,25 @@ std::vector<Vec2> sorted(std::vector<Vec2> v) {
 
 TEST(Prism, ExtrudedLShapeComesBackExactly) {
   const TriMesh m = extrude(l_shape(), 0.001, 0.006);
-  const PrismRecovery r = recover_prism(m, 1e-9);
-  ASSERT_TRUE(r.prism) << r.reason;
-  EXPECT_EQ(sorted(r.prism->outline.outer.points), sorted(l_shape().outer.points));  // bit-exact
-  EXPECT_TRUE(r.prism->outline.holes.empty());
-  EXPECT_NEAR(area(r.prism->outline), 3e-4, 1e-18);  // m^2; exact inputs, rounding only
-  EXPECT_NEAR(r.prism->height_m, 0.005, 1e-18);
-  EXPECT_EQ(r.prism->frame.z, Vec3::UnitZ());
-  EXPECT_NEAR(r.prism->frame.origin_m.z(), 0.001, 1e-18);
+  const Result<Prism> r = recover_prism(m, 1e-9);
+  ASSERT_TRUE(r) << r.reason();
+  EXPECT_EQ(sorted(r->outline.outer.points), sorted(l_shape().outer.points));  // bit-exact
+  EXPECT_TRUE(r->outline.holes.empty());
+  EXPECT_NEAR(area(r->outline), 3e-4, 1e-18);  // m^2; exact inputs, rounding only
+  EXPECT_NEAR(r->height_m, 0.005, 1e-18);
+  EXPECT_EQ(r->frame.z, Vec3::UnitZ());
+  EXPECT_NEAR(r->frame.origin_m.z(), 0.001, 1e-18);
 }
 
 TEST(Prism, HoleIsRecoveredClockwise) {
   Outline2 o;
   o.outer = Polygon2{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}};
   o.holes.push_back(Polygon2{{{1, 1}, {1, 2}, {2, 2}, {2, 1}}});
-  const PrismRecovery r = recover_prism(extrude(o, 0.0, 1.0), 1e-9);
-  ASSERT_TRUE(r.prism) << r.reason;
-  ASSERT_EQ(r.prism->outline.holes.size(), 1u);
-  EXPECT_LT(signed_area(r.prism->outline.holes[0]), 0.0);
-  EXPECT_NEAR(area(r.prism->outline), 15.0, 1e-14);
+  const Result<Prism> r = recover_prism(extrude(o, 0.0, 1.0), 1e-9);
+  ASSERT_TRUE(r) << r.reason();
+  ASSERT_EQ(r->outline.holes.size(), 1u);
+  EXPECT_LT(signed_area(r->outline.holes[0]), 0.0);
+  EXPECT_NEAR(area(r->outline), 15.0, 1e-14);
 }
 
 TEST(Prism, RotatedAndTallPrismIsFoundAlongItsAxis) {
@@ -57,14 +57,14 @@ TEST(Prism, RotatedAndTallPrismIsFoundAlongItsAxis) {
   const Eigen::Matrix3d rot =
       (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())).toRotationMatrix();
   for (Vec3& v : m.vertices) v = rot * v + Vec3(0.1, -0.2, 0.3);
-  const PrismRecovery r = recover_prism(m, 1e-9);
-  ASSERT_TRUE(r.prism) << r.reason;
-  EXPECT_NEAR(std::abs(r.prism->frame.z.dot(rot * Vec3::UnitZ())), 1.0, 1e-15);
-  EXPECT_NEAR(r.prism->height_m, 0.05, 1e-15);       // rounding of rotated coordinates
-  EXPECT_NEAR(area(r.prism->outline), 3e-4, 1e-17);  // m^2
+  const Result<Prism> r = recover_prism(m, 1e-9);
+  ASSERT_TRUE(r) << r.reason();
+  EXPECT_NEAR(std::abs(r->frame.z.dot(rot * Vec3::UnitZ())), 1.0, 1e-15);
+  EXPECT_NEAR(r->height_m, 0.05, 1e-15);       // rounding of rotated coordinates
+  EXPECT_NEAR(area(r->outline), 3e-4, 1e-17);  // m^2
   // Mapping the recovered outline back lands on mesh vertices (within rounding, 1e-15 m).
-  for (const Vec2& p : r.prism->outline.outer.points) {
-    const Vec3 w = r.prism->frame.to_world(p, 0.0);
+  for (const Vec2& p : r->outline.outer.points) {
+    const Vec3 w = r->frame.to_world(p, 0.0);
     double best = 1.0;
     for (const Vec3& v : m.vertices) best = std::min(best, (v - w).norm());
     EXPECT_LT(best, 1e-15);
@@ -75,27 +75,27 @@ TEST(Prism, ExactlyCollinearPointsGoButNearlyCollinearOnesStay) {
   Outline2 o;
   o.outer =
       Polygon2{{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0.5, 1 + 1e-9}, {0, 1}}};  // 1 nm bump on top
-  const PrismRecovery r = recover_prism(extrude(o, 0.0, 1.0), 1e-12);
-  ASSERT_TRUE(r.prism) << r.reason;
-  EXPECT_EQ(r.prism->outline.outer.points.size(), 5u);  // (0.5, 0) dropped, the bump kept
+  const Result<Prism> r = recover_prism(extrude(o, 0.0, 1.0), 1e-12);
+  ASSERT_TRUE(r) << r.reason();
+  EXPECT_EQ(r->outline.outer.points.size(), 5u);  // (0.5, 0) dropped, the bump kept
 }
 
 TEST(Prism, TetrahedronIsRejectedWithAReason) {
   TriMesh t;
   t.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   t.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  const PrismRecovery r = recover_prism(t, 1e-9);
-  EXPECT_FALSE(r.prism);
-  EXPECT_NE(r.reason.find("perpendicular"), std::string::npos) << r.reason;
+  const Result<Prism> r = recover_prism(t, 1e-9);
+  EXPECT_FALSE(r);
+  EXPECT_NE(r.reason().find("perpendicular"), std::string::npos) << r.reason();
 }
 
 TEST(Prism, TiltedWallsAreRejected) {
   // A sheared prism: both caps parallel, every wall leaning by 0.1 mm over 10 mm.
   TriMesh m = extrude(l_shape(), 0.0, 0.01);
   for (Vec3& v : m.vertices) v.x() += 0.01 * v.z();
-  const PrismRecovery r = recover_prism(m, 1e-6);
-  EXPECT_FALSE(r.prism);
-  EXPECT_NE(r.reason.find("perpendicular"), std::string::npos) << r.reason;
+  const Result<Prism> r = recover_prism(m, 1e-6);
+  EXPECT_FALSE(r);
+  EXPECT_NE(r.reason().find("perpendicular"), std::string::npos) << r.reason();
 }
 
 TEST(Prism, TwoSeparateBodiesAreRejected) {
@@ -104,9 +104,9 @@ TEST(Prism, TwoSeparateBodiesAreRejected) {
   const auto base = static_cast<std::uint32_t>(a.vertices.size());
   a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
   for (auto t : b.triangles) a.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-  const PrismRecovery r = recover_prism(a, 1e-9);
-  EXPECT_FALSE(r.prism);
-  EXPECT_NE(r.reason.find("2 outer loops"), std::string::npos) << r.reason;
+  const Result<Prism> r = recover_prism(a, 1e-9);
+  EXPECT_FALSE(r);
+  EXPECT_NE(r.reason().find("2 outer loops"), std::string::npos) << r.reason();
 }
 
 TEST(Prism, MalformedInputThrows) {
