@@ -283,7 +283,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
 
 void fe_te(const FeTeOptions& o) {
   const physics::Scenario s = input::load_scenario(o.scenario, o.sets);
-  if (!s.fe) throw InputError(o.scenario + ": no fe: section (fe-te needs its settings; see assets/scenarios/paper_fe_te.yaml)");
+  if (!s.fe) throw InputError(o.scenario + ": no fe: section (fe-te needs its settings; see the fe: section of assets/scenarios/paper_te_loaded.yaml)");
   if (!s.planetary) throw InputError(o.scenario + ": fe-te solves planetary trains of generated gears (the planetary: macro with a spec's gear names)");
   if (fe::find_executable(o.ccx).empty())
     throw InputError("CalculiX solver '" + o.ccx + "' not found on PATH (Debian package calculix-ccx; or give --ccx PATH)");
