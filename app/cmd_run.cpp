@@ -207,6 +207,18 @@ void run(const RunOptions& o) {
     summary["step_log_bytes_per_sim_second"] = r.sim_seconds > 0 ? bytes / r.sim_seconds : 0.0;
   }
   summary["outputs"] = outputs;
+  if (const auto& f = csv.force_filter())
+    summary["force_filter"] = {{"what", "contacts.csv <pair>_force_N: every step's force through a zero-phase "
+                                        "Kaiser-windowed sinc low-pass, decimated to the output rate; "
+                                        "<pair>_force_point_N is the point sample"},
+                               {"input_rate_hz", f->input_rate_hz},
+                               {"output_rate_hz", f->output_rate_hz},
+                               {"passband_edge_hz", f->passband_edge_hz},
+                               {"stopband_edge_hz", f->stopband_edge_hz},
+                               {"stopband_attenuation_dB", f->stopband_attenuation_dB},
+                               {"passband_ripple", f->passband_ripple},
+                               {"taps", f->length()},
+                               {"edge_held_s", f->group_delay_s}};
   std::ofstream(dir / "summary.json") << summary.dump(2) << "\n";
   std::cout << s.name << ": " << sim::status_name(r.status) << ", " << r.sim_seconds << " s simulated in "
             << std::setprecision(3) << r.wall_seconds << " s wall; logs in " << dir.string() << "\n";

@@ -1,6 +1,7 @@
 #include "sim/csv_logs.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 
 #include "core/errors.hpp"
@@ -18,17 +19,27 @@ std::ofstream open_log(const std::filesystem::path& p) {
 
 }  // namespace
 
-CsvLogs::CsvLogs(const std::filesystem::path& dir, const physics::Scenario& scenario)
-    : dir_(dir), scenario_(scenario) {
+CsvLogs::CsvLogs(const std::filesystem::path& dir, const physics::Scenario& scenario) : dir_(dir), scenario_(scenario) {
   if (scenario.transmission) {
     te_in_ = body_of_joint(scenario, scenario.transmission->input_joint);
     te_out_ = body_of_joint(scenario, scenario.transmission->output_joint);
   }
+  const double dt = scenario.solver.time_step_s;
+  every_ = output_interval_steps(scenario);
+  // The output rate is the one the samples are taken at: every_ whole steps.
+  if (every_ >= 2) filter_ = design_decimation_filter(1.0 / dt, 1.0 / (static_cast<double>(every_) * dt));
+}
+
+std::vector<double> CsvLogs::pair_forces(const physics::World& world) const {
+  std::vector<double> f(pairs_, 0.0);
+  for (const physics::ContactSample& c : world.contacts()) f[static_cast<std::size_t>(c.pair)] += c.normal_force_N;
+  return f;
 }
 
 void CsvLogs::on_start(const physics::World& world) {
   state_ = open_log(dir_ / "state.csv");
   contacts_ = open_log(dir_ / "contacts.csv");
+  pairs_ = world.gear_pairs().size();
   state_ << "time_s";
   for (const physics::BodyState& b : world.bodies()) state_ << ',' << b.name << "_angle_rad," << b.name << "_speed_rad_s";
   if (scenario_.transmission) state_ << ",te_rad";
@@ -36,9 +47,33 @@ void CsvLogs::on_start(const physics::World& world) {
   contacts_ << "time_s";
   for (const physics::GearPairInfo& p : world.gear_pairs()) {
     const std::string n = p.body_a + "__" + p.body_b;
-    contacts_ << ',' << n << "_force_N," << n << "_tooth_pairs," << n << "_max_depth_um";
+    contacts_ << ',' << n << "_force_N," << n << "_force_point_N," << n << "_tooth_pairs," << n << "_max_depth_um";
   }
   contacts_ << '\n';
+  // The filter's input starts at t = 0 (the world at rest, before the first step), so that its
+  // outputs fall on the sample times j/f_out; output 0 (t = 0) is not a row.
+  if (filter_ && pairs_ > 0) {
+    decimator_.emplace(*filter_, pairs_, 0.0);
+    if (decimator_->push(pair_forces(world))) GEARSIM_CHECK(false, "no output before the filter's half-length");
+  }
+}
+
+void CsvLogs::on_step(const physics::World& world) {
+  if (!decimator_) return;
+  if (const std::optional<DecimatedRow> out = decimator_->push(pair_forces(world))) write_ready(*out);
+}
+
+CsvLogs::PointRow CsvLogs::point_row(const physics::World& world, long sample) const {
+  PointRow r{sample, world.time_s(), std::vector<double>(pairs_, 0.0), std::vector<double>(pairs_, 0.0),
+             std::vector<int>(pairs_, 0)};
+  for (const physics::ContactSample& c : world.contacts()) {
+    const std::size_t p = static_cast<std::size_t>(c.pair);
+    r.force_N[p] += c.normal_force_N;
+    r.depth_um[p] = std::max(r.depth_um[p], c.geometry.depth_m);
+    ++r.tooth_pairs[p];
+  }
+  for (double& d : r.depth_um) d *= 1e6;
+  return r;
 }
 
 void CsvLogs::on_sample(const physics::World& world) {
@@ -47,18 +82,38 @@ void CsvLogs::on_sample(const physics::World& world) {
   if (scenario_.transmission)
     state_ << ',' << world.bodies()[te_in_].angle_rad - scenario_.transmission->ratio * world.bodies()[te_out_].angle_rad;
   state_ << '\n';
-  contacts_ << world.time_s();
-  for (std::size_t p = 0; p < world.gear_pairs().size(); ++p) {
-    double force = 0, depth = 0;
-    int n = 0;
-    for (const physics::ContactSample& c : world.contacts())
-      if (c.pair == static_cast<int>(p)) force += c.normal_force_N, depth = std::max(depth, c.geometry.depth_m), ++n;
-    contacts_ << ',' << force << ',' << n << ',' << depth * 1e6;
-  }
+  const long sample = world.steps() % every_ == 0 ? world.steps() / every_ : -1;
+  PointRow row = point_row(world, sample);
+  if (!decimator_) write_contacts(row, row.force_N);  // every step a sample, or no pairs: nothing to filter
+  else pending_.push_back(std::move(row));
+}
+
+void CsvLogs::write_ready(const DecimatedRow& out) {
+  const long j = std::lround(out.time_s * filter_->output_rate_hz);
+  if (j == 0) return;  // t = 0: not a row
+  GEARSIM_CHECK(!pending_.empty() && pending_.front().sample == j, "filtered output " + std::to_string(j) +
+                                                                        " without its sample row");
+  write_contacts(pending_.front(), out.values);
+  pending_.pop_front();
+}
+
+void CsvLogs::write_contacts(const PointRow& row, const std::vector<double>& filtered_force_N) {
+  contacts_ << row.time_s;
+  for (std::size_t p = 0; p < pairs_; ++p)
+    contacts_ << ',' << filtered_force_N[p] << ',' << row.force_N[p] << ',' << row.tooth_pairs[p] << ',' << row.depth_um[p];
   contacts_ << '\n';
 }
 
 void CsvLogs::on_stop(const physics::World&) {
+  if (decimator_) {
+    for (const DecimatedRow& out : decimator_->finish()) write_ready(out);
+    // A stop between samples: its row, point samples throughout.
+    for (const PointRow& row : pending_) {
+      GEARSIM_CHECK(row.sample < 0, "sample row " + std::to_string(row.sample) + " left without its filtered force");
+      write_contacts(row, row.force_N);
+    }
+    pending_.clear();
+  }
   state_.flush();
   contacts_.flush();
 }

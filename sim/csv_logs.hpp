@@ -1,13 +1,26 @@
-// The output-rate logs of a run as an observer: state.csv (every body's angle and speed, and the
-// transmission error when the scenario names a transmission) and contacts.csv (per gear pair the
-// summed normal force, the tooth pairs in contact and the deepest penetration), one row per output
-// sample, 17 significant digits, SI units in every column name. Point samples of the step at the
-// sample time (not filtered).
+// The output-rate logs of a run as an observer, one row per output sample, 17 significant digits,
+// SI units in every column name:
+//  - state.csv: every body's angle and speed, and the transmission error when the scenario names a
+//    transmission — POINT SAMPLES of the step at the sample time (slow states; their spectra are
+//    not reported from this file).
+//  - contacts.csv: per gear pair `<a>__<b>_force_N`, the summed normal force ANTI-ALIASED: every
+//    step's force through the decimation filter of analysis/decimation_filter.hpp (passband to
+//    0.48·f_out, 100 dB above f_out − f_pass), so that its spectrum holds no folded mesh
+//    harmonics or contact ringing; `_force_point_N`, the same force point-sampled (what the paper
+//    logged; aliased); `_tooth_pairs` and `_max_depth_um`, point samples (counts and maxima are
+//    not band-limited signals).
+// The filter is zero-phase (no delay in the time column); its first and last half-length
+// (filter().group_delay_s, 40 ms at 50 kHz → 2 kHz) hold the end values (decimator.hpp): the
+// analysis leaves them out. A run that stops between samples ends both files with a row at the
+// step it stopped on; that row carries point samples in every column.
 #pragma once
 
+#include <deque>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
+#include "analysis/decimator.hpp"
 #include "physics/scenario.hpp"
 #include "sim/observer.hpp"
 
@@ -20,14 +33,34 @@ class CsvLogs : public Observer {
   // must outlive the observer.
   CsvLogs(const std::filesystem::path& dir, const physics::Scenario& scenario);
   void on_start(const physics::World& world) override;
+  void on_step(const physics::World& world) override;
   void on_sample(const physics::World& world) override;
   void on_stop(const physics::World& world) override;
+  // The anti-aliasing filter of the force columns; none when every step is a sample.
+  const std::optional<DecimationFilter>& force_filter() const { return filter_; }
 
  private:
+  // The point-sampled part of a contacts.csv row, kept until its filtered force is ready.
+  struct PointRow {
+    long sample = 0;  // j: the row's time is j/f_out (−1: a stop between samples)
+    double time_s = 0;
+    std::vector<double> force_N, depth_um;
+    std::vector<int> tooth_pairs;
+  };
+  PointRow point_row(const physics::World& world, long sample) const;
+  void write_contacts(const PointRow& row, const std::vector<double>& filtered_force_N);
+  void write_ready(const DecimatedRow& out);
+  std::vector<double> pair_forces(const physics::World& world) const;
+
   std::filesystem::path dir_;
   const physics::Scenario& scenario_;
   std::ofstream state_, contacts_;
   int te_in_ = -1, te_out_ = -1;  // bodies of the transmission's input and output joints
+  long every_ = 1;                // steps per output sample
+  std::optional<DecimationFilter> filter_;
+  std::optional<Decimator> decimator_;
+  std::deque<PointRow> pending_;  // point rows whose filtered force is not ready yet
+  std::size_t pairs_ = 0;
 };
 
 }  // namespace gearsim::sim

@@ -91,6 +91,10 @@ const char* status_name(RunStatus s) {
   return "unknown";
 }
 
+long output_interval_steps(const physics::Scenario& s) {
+  return std::max(1L, std::lround(1.0 / (s.output.sample_rate_hz * s.solver.time_step_s)));
+}
+
 int body_of_joint(const physics::Scenario& s, const std::string& joint) {
   for (const physics::JointDef& j : s.joints)
     if (j.name == joint)
@@ -107,7 +111,7 @@ RunSummary simulate(const physics::Scenario& s, const std::vector<Observer*>& ob
   r.time_step_s = s.solver.time_step_s;
   r.steady_from_s = physics::ramps_end_s(s);
   const long total = std::lround(s.duration_s / r.time_step_s);
-  const long every = std::max(1L, std::lround(1.0 / (s.output.sample_rate_hz * r.time_step_s)));
+  const long every = output_interval_steps(s);
   RunBounds bounds(s, world);
   SteadyWindow steady(world);
   r.setup_wall_seconds = seconds_since(wall0);

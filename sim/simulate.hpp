@@ -72,6 +72,10 @@ struct RunSummary {
 // joint has that name.
 int body_of_joint(const physics::Scenario& s, const std::string& joint);
 
+// Steps between output samples: 1/(sample_rate_hz · time_step_s) rounded, at least 1. The
+// samples are at whole steps, so the output rate is 1/(this · time_step_s).
+long output_interval_steps(const physics::Scenario& s);
+
 // Runs the scenario to its duration_s (or until a bound is crossed or a stop is requested).
 // Throws InputError when the scenario cannot be built (physics::World's refusals).
 RunSummary simulate(const physics::Scenario& scenario, const std::vector<Observer*>& observers,

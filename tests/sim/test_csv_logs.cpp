@@ -1,0 +1,86 @@
+// The output-rate logs (sim/csv_logs.hpp) on the spur pair: contacts.csv's force column is every
+// step's force through the anti-aliasing decimator — the same numbers as decimating the per-step
+// force of the run as one record — and the point column is the force at the sample's step; a run
+// stopped between samples ends state.csv and contacts.csv at the same time, on the same rows.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/decimator.hpp"
+#include "input/csv_table.hpp"
+#include "input/scenario_file.hpp"
+#include "sim/csv_logs.hpp"
+#include "sim/simulate.hpp"
+#include "tests/support/asset_scenario.hpp"
+
+namespace gearsim::sim {
+namespace test_csv_logs {
+
+namespace fs = std::filesystem;
+
+physics::Scenario spur_pair(const std::string& duration_s) {
+  return input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/spur_pair.yaml",
+                              {"duration_s=" + duration_s, "output.per_step_log=false"});
+}
+
+// Every step's summed force of pair 0, from t = 0 (the world before the first step).
+struct ForceRecorder : Observer {
+  void on_start(const physics::World& w) override { add(w); }
+  void on_step(const physics::World& w) override { add(w); }
+  void add(const physics::World& w) {
+    double f = 0;
+    for (const physics::ContactSample& c : w.contacts())
+      if (c.pair == 0) f += c.normal_force_N;
+    force_N.push_back(f);
+  }
+  std::vector<double> force_N;
+};
+
+TEST(CsvLogs, ForceColumnIsTheDecimatedPerStepForceAndThePointColumnTheSample) {
+  const fs::path dir = test::fresh_test_dir();
+  const physics::Scenario s = spur_pair("0.12");
+  CsvLogs csv(dir, s);
+  ForceRecorder rec;
+  const RunSummary r = simulate(s, {&csv, &rec});
+  ASSERT_EQ(r.status, RunStatus::Completed);
+  ASSERT_TRUE(csv.force_filter().has_value());
+  const DecimationFilter& filter = *csv.force_filter();
+  EXPECT_EQ(filter.ratio, 25);  // 2e-5 s steps, 2 kHz
+  const UniformSignal expected = decimate(rec.force_N, filter, 0.0);
+  const input::CsvTable t = input::read_csv(dir / "contacts.csv");
+  const std::vector<double>& time = t.column("time_s");
+  const std::vector<double>& filtered = t.column("pinion__wheel_force_N");
+  const std::vector<double>& point = t.column("pinion__wheel_force_point_N");
+  ASSERT_EQ(time.size(), 240u);                     // 0.12 s at 2 kHz, no row at t = 0
+  ASSERT_EQ(expected.values.size(), time.size() + 1);  // the decimated record includes t = 0
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    EXPECT_NEAR(time[k], (k + 1) / 2000.0, 1e-12);
+    EXPECT_EQ(filtered[k], expected.values[k + 1]) << "row " << k;  // the same kernel: bit for bit
+    EXPECT_EQ(point[k], rec.force_N[25 * (k + 1)]) << "row " << k;
+  }
+}
+
+TEST(CsvLogs, AStopBetweenSamplesEndsBothFilesOnTheSameRow) {
+  const fs::path dir = test::fresh_test_dir();
+  const physics::Scenario s = spur_pair("0.1");
+  CsvLogs csv(dir, s);
+  SimOptions o;
+  long polls = 0;
+  o.stop_requested = [&] { return ++polls == 2013 ? 2 : 0; };  // step 2013: between samples
+  const RunSummary r = simulate(s, {&csv}, o);
+  ASSERT_EQ(r.status, RunStatus::Interrupted);
+  const input::CsvTable state = input::read_csv(dir / "state.csv"), contacts = input::read_csv(dir / "contacts.csv");
+  const std::vector<double>& ts = state.column("time_s");
+  const std::vector<double>& tc = contacts.column("time_s");
+  ASSERT_EQ(ts.size(), 2013u / 25 + 1);  // 80 samples, then the stop
+  ASSERT_EQ(tc.size(), ts.size());
+  for (std::size_t k = 0; k < ts.size(); ++k) EXPECT_EQ(ts[k], tc[k]) << "row " << k;
+  EXPECT_NEAR(ts.back(), 2013 * 2e-5, 1e-12);
+  // The stop row carries point samples in every column.
+  EXPECT_EQ(contacts.column("pinion__wheel_force_N").back(), contacts.column("pinion__wheel_force_point_N").back());
+}
+
+}  // namespace test_csv_logs
+}  // namespace gearsim::sim
