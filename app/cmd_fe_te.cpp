@@ -226,7 +226,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     // The table: the series model through the softest sample (one pair) and the stiffest (two
     // pairs), 1/k_min − 1/k_max = 1/(2 k_pair). The loaded TE's ripple is set by these two
     // states; the samples between are partly engaged second pairs (chord gaps of the FE boundary,
-    // docs/fe.md) that pull a least-squares fit towards stiffer teeth and a smaller ripple.
+    // docs/fe-results.md) that pull a least-squares fit towards stiffer teeth and a smaller ripple.
     double c;
     if (per_n.size() >= 2 && *hi > kMinSeriesSpread * *lo) {
       const double k_pair = 1.0 / (2.0 * (1.0 / *lo - 1.0 / *hi));

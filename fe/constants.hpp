@@ -50,7 +50,7 @@ inline constexpr int kLogTailChars = 2000;
 // module 1 mm teeth.
 inline constexpr double kDefaultFlankElementSize_m = 0.4e-3;
 // Flank element size of a loaded-TE run (gearsim fe-te) unless the scenario gives one, m. 0.2 mm:
-// the element-size study of the paper's gearbox (docs/fe.md) moves the elastic TE by 2.1 % from
+// the element-size study of the paper's gearbox (docs/fe-results.md) moves the elastic TE by 2.1 % from
 // 0.2 to 0.1 mm, but by 19 % from 0.4 to 0.2 mm (module 1 mm; about m/5).
 inline constexpr double kDefaultFeTeFlankSize_m = 0.2e-3;
 // Element size in the gear body away from the teeth, m. Normally 2 mm (five flank sizes): the

@@ -281,7 +281,7 @@ PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeM
   }
   // The torque the teeth take off the sun: the moment about the sun's centre of the contact
   // forces on the planet teeth, reversed. CPS4R bodies in ccx resist a rigid turn of their hub a
-  // little (expanded to hourglass-controlled C3D8R; docs/fe.md), so part of the applied torque
+  // little (expanded to hourglass-controlled C3D8R; docs/fe-reference.md), so part of the applied torque
   // never reaches the teeth; the elastic TE is the sun's turn per N·m through the teeth, times T.
   auto sun_mesh_torque = [&](double time) {
     const auto& c = pos.sun.centre_m;

@@ -14,7 +14,7 @@
 namespace gearsim::fe {
 namespace {
 
-// Samples per mesh period of the potential-energy mean (as docs/fe.md's table: 400).
+// Samples per mesh period of the potential-energy mean (as docs/fe-results.md's PE table: 400).
 constexpr int kPeSamplesPerPeriod = 400;
 
 // The pinion's rotation (dof 1 of its rotation node) at the end of the step ending at `time`.

@@ -98,7 +98,7 @@ inline double load_torque_N_m(const LoadDef& l, double time_s, double speed_rad_
 // body_stiffness_N_per_m (0: none) is the compliance of the two gear bodies between their bores
 // and the teeth, in series with all tooth pairs of the mesh at once, along the line of action:
 // with n pairs in contact the mesh stiffness is 1/(1/(n k) + 1/k_body) (the FE series fit,
-// docs/fe.md), so each pair is given k / (1 + n k / k_body). Exact for the mesh's total force.
+// docs/fe-reference.md), so each pair is given k / (1 + n k / k_body). Exact for the mesh's total force.
 struct PairStiffnessDef {
   std::string body_a, body_b;
   contact::StiffnessTable table;

@@ -182,7 +182,7 @@ TEST(CcxDeck, ContactCarriesTheTorque) {
 // the solve returns a rotation of order 1e8 rad (a singular system). With CPS4R ccx (plane-stress
 // quads expanded to hourglass-controlled C3D8R bricks) resists the rigid turn: here 0.4 N·m turns
 // it 0.027 rad (15 N·m/rad). This is why gearsim's planetary FE takes the torque through the teeth
-// from the contact moments and not the applied one (docs/fe.md, "Hub leak").
+// from the contact moments and not the applied one (docs/fe-results.md, "Hub leak").
 TEST(CcxDeck, ReducedIntegrationResistsARigidTurnOfTheHub) {
   double theta[2] = {0, 0};
   const char* types[2] = {"CPS4R", "CPS4"};

@@ -7,7 +7,7 @@
 // outline. At 0.8 mm the chords of the pinion's flanks near its root and of the root fillets sit
 // 20–70 µm off the curves, far more than the teeth deflect at ~100 N/mm (~8 µm): the second pair
 // of the two-pair zone never touches and fillet chords touch outside the path of contact
-// (docs/fe.md, "Spur pair"). At 0.4 mm the pitch point is clean and the two-pair zone has
+// (docs/fe-results.md, "Spur pair"). At 0.4 mm the pitch point is clean and the two-pair zone has
 // positions where both pairs' boundaries touch within 0.3 µm.
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -172,7 +172,7 @@ TEST_F(SpurPairFeSolved, PitchPointOnePairCarriesTheTorque) {
 // point, within the 15 %. This, not the ISO band, is the check: the PE value is for the
 // same contact point and the same bodies, while ISO's c' is one number per pair with empirical
 // factors, and the FE value at one position moves by ±8 % with where the contact falls between
-// nodes (docs/fe.md: 12.96–15.07 N/(mm·µm) over the single-contact zone at 0.2 mm). The FE
+// nodes (docs/fe-results.md: 12.96–15.07 N/(mm·µm) over the single-contact zone at 0.2 mm). The FE
 // stiffness is taken with its gear bodies: Sainsot's fillet-foundation term of the PE model, with
 // h_f = r_f / r_bore of these gears, already holds the bodies' torsion (its compliance grows with
 // h_f as the annulus torsion r_b²(1/r_bore² − 1/r_f²)/(4πGb) does: +1.345e-9 vs +1.364e-9 m/N
@@ -197,7 +197,7 @@ TEST_F(SpurPairFeSolved, PitchPointStiffnessWithinTheIsoBand) {
 // Where two pairs are in contact the mesh is stiffer than with one, both pairs carrying load. The
 // threshold 1.3 is the issue's. The PE model gives 1.72 (1.59 with the gear bodies' torsion once
 // in series with both pairs instead of once per pair); the FE gives 1.45 at this size and
-// 1.22–1.31 against the pitch point at 0.2 mm (docs/fe.md), so this guards the load sharing at
+// 1.22–1.31 against the pitch point at 0.2 mm (docs/fe-results.md), so this guards the load sharing at
 // 0.4 mm, not a converged ratio. The position is the two-pair roll whose mesh
 // boundaries touch most closely (a chord gap of a few µm would keep the second pair unloaded at
 // the low stage: a discretisation artefact, not physics).
