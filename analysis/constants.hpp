@@ -58,6 +58,27 @@ inline constexpr double kDefaultToothZThreshold = 3.5;
 // flags such scatter whenever the healthy teeth agree very closely.
 inline constexpr double kDefaultToothMinRelativeDeviation = 0.05;
 
+// --- Run analysis (run_analysis.hpp) -------------------------------------------------------------
+
+// Zero padding of a run's contact-force spectra: the DFT length is the smallest power of two at
+// least this many times the record. Normally 8: the highest bin of a line then lies within 1/16 of
+// the record's resolution of the true frequency (0.06 Hz for a 0.95 s record), so peak
+// frequencies are limited by the record, not the grid.
+inline constexpr std::size_t kRunSpectrumPadding = 8;
+
+// Top of the band whose median amplitude is a force spectrum's noise floor, Hz (the band starts at
+// 0 Hz); app/ also lists the spectra up to it. Normally 1000: the paper's figure 5 axis and the
+// issue's floor band (0–1000 Hz).
+inline constexpr double kRunFloorBandTop_hz = 1000.0;
+
+// Multiples k of the planet local-fault frequency whose lines are reported. Normally 5: the paper's
+// 8.89 Hz family f_m/36·k up to 44 Hz.
+inline constexpr int kPlanetFaultMultiples = 5;
+
+// Fewest output samples from the window start on that a run analysis accepts. Normally 64: a
+// spectrum of 32 bins; at the paper's 2 kHz, 32 ms or about 10 mesh periods.
+inline constexpr std::size_t kMinRunSamples = 64;
+
 // --- Input validation ----------------------------------------------------------------------------
 
 // Largest relative deviation of a sample interval from the mean interval for a time base to count

@@ -70,6 +70,21 @@ TransmissionError transmission_error(const std::vector<double>& time_s,
   return te;
 }
 
+TransmissionError transmission_error_series(const std::vector<double>& time_s, const std::vector<double>& te_rad,
+                                            double ratio) {
+  const char* what = "transmission error series";
+  if (time_s.size() != te_rad.size())
+    throw InputError(std::string(what) + ": " + std::to_string(time_s.size()) + " times and " +
+                     std::to_string(te_rad.size()) + " values; expected equal counts");
+  if (time_s.size() < 2) throw InputError(std::string(what) + ": expected at least 2 samples");
+  if (!std::isfinite(ratio) || ratio == 0.0)
+    throw InputError(std::string(what) + ": ratio must be a finite, non-zero number, got " + std::to_string(ratio));
+  for (std::size_t i = 0; i < time_s.size(); ++i)
+    if (!std::isfinite(time_s[i]) || !std::isfinite(te_rad[i]))
+      throw InputError(std::string(what) + ": sample " + std::to_string(i) + " is not finite");
+  return {time_s, te_rad, ratio};
+}
+
 std::vector<double> te_urad(const TransmissionError& te) { return scaled(te.te_rad, kRadToUrad); }
 std::vector<double> te_deg(const TransmissionError& te) { return scaled(te.te_rad, kRadToDeg); }
 std::vector<double> te_um(const TransmissionError& te, double input_base_radius_m) {

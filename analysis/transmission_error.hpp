@@ -23,6 +23,12 @@ TransmissionError transmission_error(const std::vector<double>& time_s,
                                      const std::vector<double>& theta_in_rad,
                                      const std::vector<double>& theta_out_rad, double ratio);
 
+// A TE series computed elsewhere (a run's logged te_rad = θ_in − ratio·θ_out), with its time base
+// and ratio. Throws InputError as transmission_error: different lengths, fewer than 2 samples, a
+// non-finite time or value, a non-finite or zero ratio.
+TransmissionError transmission_error_series(const std::vector<double>& time_s, const std::vector<double>& te_rad,
+                                            double ratio);
+
 // The series in other units: µrad; degrees; µm along the line of action, te_rad·base_radius_m
 // with the base radius of the INPUT gear (TE is an input angle). Throws InputError on a
 // non-positive or non-finite base radius.

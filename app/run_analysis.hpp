@@ -1,9 +1,9 @@
-// `gearsim analyze DIR`: the analysis of a finished run folder — the gear train's characteristic
-// frequencies; per gear pair the contact-force spectrum, its mesh harmonics over the median
-// floor, their sidebands matched to characteristic frequencies, and the amplitudes of the planet
-// local-fault family; the transmission error; per-tooth loads from the per-step log. Writes
-// DIR/analysis.json, spectrum.csv, sidebands.csv, teeth.csv and adds its keys to summary.json
-// (analysis_outputs.hpp); returns the JSON. Prints nothing.
+// `gearsim analyze DIR`: a finished run folder read into typed signals and analysed by the
+// analysis library (analysis/run_analysis.hpp) — the gear pairs are summary.json's gear_pairs, their
+// forces contacts.csv's a__b_force_N columns, the angles and TE state.csv's, the tooth contacts
+// steps.h5's. The result is written as DIR/analysis.json (analysis_json.hpp), spectrum.csv,
+// sidebands.csv, teeth.csv and the analysis keys of summary.json (analysis_outputs.hpp); returns
+// the JSON. Prints nothing.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,9 +1,10 @@
 // `gearsim analyze` and `gearsim report` on run folders that do not hold enough to analyse: a
-// state.csv with no rows after the motors' ramp while contacts.csv has them, or a contacts.csv
-// without a force column. Each is refused with exit code 2 and a message naming the file —
-// never a crash. The folders are made by hand: a summary.json, the paper scenario's record, and
-// logs at its 2 kHz output rate. And a run folder reads its own scenario record, not the
-// original file: editing or deleting that after the run changes nothing.
+// state.csv with no rows after the motors' ramp while contacts.csv has them, a contacts.csv
+// without the force column of a pair the summary names, or a summary without its gear pairs.
+// Each is refused with exit code 2 and a message naming the file — never a crash. The folders
+// are made by hand: a summary.json, the paper scenario's record, and logs at its 2 kHz output
+// rate. And a run folder reads its own scenario record, not the original file: editing or
+// deleting that after the run changes nothing.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,11 +20,13 @@ namespace test_analyze_refusals {
 
 namespace fs = std::filesystem;
 
-// A run folder of paper_dynamics_healthy.yaml (ramps end at 0.05 s): contacts.csv with
+// A run folder of paper_dynamics_healthy.yaml (ramps end at 0.05 s): a summary naming its one gear
+// pair sun–planet_0 (`gear_pairs` as gearsim run writes it, unless told otherwise), contacts.csv with
 // `contacts_header` and rows every 0.5 ms to 0.3 s, state.csv (time_s, te_rad) up to `state_to_s`.
-fs::path hand_made_run(const std::string& contacts_header, double state_to_s) {
+fs::path hand_made_run(const std::string& contacts_header, double state_to_s,
+                       const std::string& gear_pairs = R"(, "gear_pairs": [{"a": "sun", "b": "planet_0"}])") {
   const fs::path dir = gearsim::test::fresh_test_dir();
-  std::ofstream(dir / "summary.json") << "{\"status\": \"completed\", \"sim_seconds\": 0.3}\n";
+  std::ofstream(dir / "summary.json") << "{\"status\": \"completed\", \"sim_seconds\": 0.3" << gear_pairs << "}\n";
   gearsim::input::write_scenario_record(
       gearsim::input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_healthy.yaml"), dir);
   std::ofstream contacts(dir / "contacts.csv"), state(dir / "state.csv");
@@ -60,6 +63,14 @@ TEST(AnalyzeRefusals, StateWithTooFewRowsAfterTheRampIsRefused) {
 TEST(AnalyzeRefusals, ContactsWithoutAForceColumnIsRefused) {
   const fs::path dir = hand_made_run("time_s,a,b,c", 0.3);
   expect_refused(dir, "contacts.csv", "no <pair>_force_N column");
+}
+
+TEST(AnalyzeRefusals, ASummaryWithoutGearPairsIsRefused) {
+  // The pairs come from the summary, never from the column names.
+  const std::string header = "time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um";
+  expect_refused(hand_made_run(header, 0.3, ""), "summary.json", "gear_pairs: missing");
+  expect_refused(hand_made_run(header, 0.3, R"(, "gear_pairs": [{"a": "sun"}])"), "summary.json",
+                 "gear_pairs[0]: expected {\"a\": body name, \"b\": body name}");
 }
 
 TEST(AnalyzeRefusals, ARunReadsItsOwnScenarioRecordNotTheEditedOriginal) {

@@ -1,0 +1,55 @@
+#include "analysis/pair_force_analysis.hpp"
+
+#include <algorithm>
+
+#include "analysis/constants.hpp"
+
+namespace gearsim {
+namespace {
+
+using namespace analysis_constants;
+
+// The smallest power of two ≥ kRunSpectrumPadding·n.
+std::size_t padded_length(std::size_t n) {
+  std::size_t l = 1;
+  while (l < kRunSpectrumPadding * n) l <<= 1;
+  return l;
+}
+
+// Lines at k·f_planet_fault, each sought as a harmonic is: within max(1.5 bins, 1 % of k·f).
+std::vector<FaultLine> planet_fault_family(const Spectrum& s, double fault_hz, double floor_N) {
+  std::vector<FaultLine> family;
+  for (int k = 1; k <= kPlanetFaultMultiples; ++k) {
+    const double tol = std::max(kDefaultMatchToleranceBins * s.bin_width_hz, kDefaultMatchRelativeTolerance * k * fault_hz);
+    FaultLine line{k, k * fault_hz, nearest_local_maximum(s, k * fault_hz, tol), 0.0};
+    if (line.peak) line.over_floor_db = amplitude_ratio_db(line.peak->amplitude, floor_N);
+    family.push_back(line);
+  }
+  return family;
+}
+
+}  // namespace
+
+PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<double>& f, double sample_rate_hz,
+                                     const TrainDescription& train) {
+  PairForceAnalysis r;
+  r.pair = pair;
+  // Mean force and the share of samples without contact.
+  double mean = 0, zeros = 0;
+  for (double v : f) mean += v, zeros += v == 0;
+  r.mean_force_N = mean / static_cast<double>(f.size());
+  r.zero_force_share = zeros / static_cast<double>(f.size());
+  // The spectrum, its floor, the mesh harmonics with their sidebands.
+  r.spectrum = amplitude_spectrum(f, sample_rate_hz, {WindowKind::Hann, padded_length(f.size()), true});
+  r.floor_N = median_noise_floor(r.spectrum, 0, kRunFloorBandTop_hz);
+  r.mesh = analyse_sidebands(r.spectrum, train.frequencies.mesh_hz, train.frequencies.frequencies);
+  for (const MeshHarmonic& h : r.mesh.harmonics)
+    r.harmonic_over_floor_db.push_back(h.peak ? std::optional(amplitude_ratio_db(h.peak->amplitude, r.floor_N))
+                                              : std::nullopt);
+  // The planet local-fault family (a planet tooth meets the sun once per relative turn).
+  if (train.planetary)
+    r.planet_fault_family = planet_fault_family(r.spectrum, train.frequencies.at("planet_fault").value_hz, r.floor_N);
+  return r;
+}
+
+}  // namespace gearsim

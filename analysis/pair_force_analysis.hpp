@@ -1,0 +1,46 @@
+// The contact-force spectrum of one gear pair over a run's analysed window, and what it shows: the
+// mean force and the share of samples with no contact, the mesh harmonics and how far they stand
+// over the 0–1000 Hz median floor, their sidebands matched to characteristic frequencies
+// (sidebands.hpp), and for a planetary set the lines of the planet local-fault family. Labels
+// lines; it does not decide what is broken.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "analysis/peaks.hpp"
+#include "analysis/run_signals.hpp"
+#include "analysis/sidebands.hpp"
+#include "analysis/spectrum.hpp"
+
+namespace gearsim {
+
+// A line expected at a multiple of the planet local-fault frequency.
+struct FaultLine {
+  int multiple = 1;                  // k
+  double expected_hz = 0;            // k·f_planet_fault, Hz
+  std::optional<SpectralPeak> peak;  // the local maximum nearest it within tolerance; nothing: none
+  double over_floor_db = 0;          // 20·log10(peak amplitude/floor_N), dB, when found
+};
+
+struct PairForceAnalysis {
+  PairId pair;
+  // Hann, mean removed, zero-padded to the power of two ≥ kRunSpectrumPadding × the record.
+  Spectrum spectrum;
+  double mean_force_N = 0;
+  double zero_force_share = 0;  // samples with exactly zero force / samples
+  double floor_N = 0;           // median amplitude over 0 … kRunFloorBandTop_hz, N
+  SidebandAnalysis mesh;        // harmonics of f_m and their sidebands (default options)
+  // One per mesh.harmonics: its peak over floor_N, dB; nothing where no peak was found.
+  std::vector<std::optional<double>> harmonic_over_floor_db;
+  // k = 1 … kPlanetFaultMultiples for a planetary set; empty for a gear pair.
+  std::vector<FaultLine> planet_fault_family;
+};
+
+// force_N: the pair's force over the window, uniform at sample_rate_hz. InputError as
+// amplitude_spectrum and analyse_sidebands (e.g. a record too short or a harmonic above Nyquist),
+// or when a planetary train has no "planet_fault" frequency.
+PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<double>& force_N, double sample_rate_hz,
+                                     const TrainDescription& train);
+
+}  // namespace gearsim

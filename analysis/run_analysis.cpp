@@ -1,0 +1,112 @@
+#include "analysis/run_analysis.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "analysis/constants.hpp"
+#include "analysis/resample.hpp"
+#include "core/errors.hpp"
+
+namespace gearsim {
+namespace {
+
+// The samples of x at times ≥ from_s.
+std::vector<double> window(const std::vector<double>& x, const std::vector<double>& t, double from_s) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (t[i] >= from_s) out.push_back(x[i]);
+  return out;
+}
+
+void check_length(std::size_t n, std::size_t times, const std::string& what) {
+  if (n != times)
+    throw InputError("run analysis: " + what + " holds " + std::to_string(n) + " samples for " +
+                     std::to_string(times) + " sample times");
+}
+
+// Every series as long as the time base; enough samples in the window; at least one pair.
+void check_signals(const RunSignals& s) {
+  const std::size_t n = samples_from(s.time_s, s.from_s);
+  if (n < analysis_constants::kMinRunSamples)
+    throw InputError("run analysis: only " + std::to_string(n) + " output samples after t = " +
+                     std::to_string(s.from_s) + " s: at least " + std::to_string(analysis_constants::kMinRunSamples) +
+                     " are needed to analyse; run longer");
+  if (s.pair_forces.empty())
+    throw InputError("run analysis: no gear pair (a run with no gear pairs has nothing to analyse)");
+  for (const PairForce& p : s.pair_forces) check_length(p.force_N.size(), s.time_s.size(), "the force of pair " + pair_label(p.pair));
+  for (const BodyAngle& a : s.angles) check_length(a.angle_rad.size(), s.time_s.size(), "the angle of " + a.body);
+  if (s.te) check_length(s.te->te_rad.size(), s.time_s.size(), "the transmission error");
+}
+
+// The angle samples of `body`; InputError naming it and why it was needed when absent.
+const std::vector<double>& angle_of(const RunSignals& s, const std::string& body, const char* needed_for) {
+  for (const BodyAngle& a : s.angles)
+    if (a.body == body) return a.angle_rad;
+  throw InputError("run analysis: no angle samples of '" + body + "', needed for " + needed_for);
+}
+
+// The TE statistics over the window.
+TransmissionErrorStats windowed_te_stats(const TransmissionError& te, double from_s) {
+  TransmissionError w;
+  w.time_s = window(te.time_s, te.time_s, from_s);
+  w.te_rad = window(te.te_rad, te.time_s, from_s);
+  w.ratio = te.ratio;
+  return te_stats(w);
+}
+
+// The angle-synchronous average of each planet's sun–planet force (planets without a logged
+// sun–planet pair are left out).
+std::vector<SynchronousTeeth> synchronous_averages(const RunSignals& s, const TrainDescription& train) {
+  std::vector<SynchronousTeeth> out;
+  for (const PlanetGear& planet : train.planets) {
+    const auto pf = std::find_if(s.pair_forces.begin(), s.pair_forces.end(),
+                                 [&](const PairForce& p) { return p.pair.same_bodies(train.sun, planet.body); });
+    if (pf == s.pair_forces.end()) continue;
+    const std::vector<double>& angle = angle_of(s, planet.body, "the synchronous average of its teeth");
+    out.push_back(synchronous_teeth(pf->pair, planet, window(pf->force_N, s.time_s, s.from_s),
+                                    window(angle, s.time_s, s.from_s)));
+  }
+  return out;
+}
+
+// Per-tooth loads of every counted gear in the log, over its whole revolutions from from_s.
+std::vector<ToothLoads> all_tooth_loads(const RunSignals& s, const TrainDescription& train) {
+  const ToothContactLog& log = *s.tooth_contacts;
+  std::vector<ToothLoads> out;
+  for (std::size_t p = 0; p < log.pairs.size(); ++p)
+    for (const bool side_a : {true, false}) {
+      const std::string& gear = side_a ? log.pairs[p].a : log.pairs[p].b;
+      const auto counted = std::find_if(train.counted_gears.begin(), train.counted_gears.end(),
+                                        [&](const CountedGear& g) { return g.body == gear; });
+      if (counted == train.counted_gears.end()) continue;
+      const WholeRevolutions w = whole_revolutions(s.time_s, angle_of(s, gear, "its per-tooth loads"), s.from_s);
+      if (w.turns < 1) continue;
+      out.push_back(tooth_loads(log, p, side_a, counted->teeth, s.from_s, w.to_s, w.turns));
+    }
+  return out;
+}
+
+}  // namespace
+
+std::size_t samples_from(const std::vector<double>& time_s, double from_s) {
+  return static_cast<std::size_t>(std::count_if(time_s.begin(), time_s.end(), [&](double t) { return t >= from_s; }));
+}
+
+RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
+  check_signals(s);
+  // The window and its sample rate.
+  const std::vector<double> tw = window(s.time_s, s.time_s, s.from_s);
+  RunAnalysis r;
+  r.from_s = tw.front();
+  r.to_s = tw.back();
+  r.sample_rate_hz = uniform_sample_rate_hz(tw);
+  // Each pair's force spectrum; the TE; the planets' synchronous averages; the per-tooth loads.
+  for (const PairForce& p : s.pair_forces)
+    r.pairs.push_back(analyse_pair_force(p.pair, window(p.force_N, s.time_s, s.from_s), r.sample_rate_hz, train));
+  if (s.te) r.te = windowed_te_stats(*s.te, s.from_s);
+  if (train.planetary) r.synchronous = synchronous_averages(s, train);
+  if (s.tooth_contacts) r.tooth_loads = all_tooth_loads(s, train);
+  return r;
+}
+
+}  // namespace gearsim

@@ -1,0 +1,91 @@
+// What the analysis of a finished run reads, as plain typed values: the signals the run logged
+// (the output-rate time base, each gear pair's identity and normal force, the transmission error,
+// body angles, and the per-step tooth contacts when the run kept them) and the gear train they
+// came from (its characteristic frequencies, its planets, the gears whose teeth are counted).
+// Not a reader: app/ fills these from a run folder; the analysis never sees a file, a column name
+// or a scenario.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "analysis/characteristic_frequencies.hpp"
+#include "analysis/transmission_error.hpp"
+
+namespace gearsim {
+
+// A gear pair: its two bodies, in the order the world lists them (the contact log's tooth_a is a
+// tooth of `a`). An identity to compare, never a name to parse.
+struct PairId {
+  std::string a, b;
+  bool operator==(const PairId&) const = default;
+  // True for {x, y} and {y, x}: the same two bodies in either order.
+  bool same_bodies(const std::string& x, const std::string& y) const { return (a == x && b == y) || (a == y && b == x); }
+};
+
+// "a–b", for messages.
+inline std::string pair_label(const PairId& p) { return p.a + "–" + p.b; }
+
+// One gear pair's normal contact force, summed over its tooth contacts, at each output sample, N.
+struct PairForce {
+  PairId pair;
+  std::vector<double> force_N;
+};
+
+// A body's rotation angle at each output sample, rad, unwrapped (a planet's: relative to its
+// carrier, as the run logs it).
+struct BodyAngle {
+  std::string body;
+  std::vector<double> angle_rad;
+};
+
+// The per-step tooth contacts of a run: one row per tooth-pair contact per step.
+struct ToothContactLog {
+  std::vector<PairId> pairs;                         // the gear pairs; pair[c] indexes this
+  std::vector<double> time_s;                        // the step's time, s
+  std::vector<std::int64_t> pair, tooth_a, tooth_b;  // tooth_a: a tooth of pairs[pair[c]].a
+  std::vector<double> normal_impulse_N_s;            // normal impulse over the step, N·s
+};
+
+struct RunSignals {
+  std::vector<double> time_s;          // output-rate sample instants, s (uniform from from_s on)
+  std::vector<PairForce> pair_forces;  // every gear pair, in the world's order, sampled at time_s
+  // θ_in − i·θ_out as the run logged it, sampled at time_s; nothing when the run has no
+  // transmission (transmission_error_series builds it).
+  std::optional<TransmissionError> te;
+  std::vector<BodyAngle> angles;  // sampled at time_s: at least the planets and the counted gears
+  std::optional<ToothContactLog> tooth_contacts;  // nothing: the run kept no per-step log
+  double from_s = 0;  // start of the analysed window, s: samples with time_s ≥ from_s are analysed
+};
+
+// A planet, as its angle-synchronous average needs it.
+struct PlanetGear {
+  std::string body;
+  int teeth = 0;
+  // Where the sun lies seen from the planet at t = 0 in the carrier frame, less the planet's
+  // tooth-0 angle, rad: tooth k faces the sun when the planet's relative angle is this − k·2π/z.
+  double sun_direction_rad = 0;
+};
+
+// A gear whose per-tooth loads are taken from the tooth-contact log.
+struct CountedGear {
+  std::string body;
+  int teeth = 0;
+};
+
+// The gear train of the run, as the analysis needs it.
+struct TrainDescription {
+  GearTrainFrequencies frequencies;  // characteristic frequencies; mesh_hz the fundamental f_m
+  // A planetary set: its force spectra get the planet local-fault family (key "planet_fault"
+  // must be among the frequencies) and its planets a synchronous average.
+  bool planetary = false;
+  std::string sun;                 // planetary: the sun's body
+  std::vector<PlanetGear> planets;  // planetary: every planet
+  // Gears whose per-tooth loads are reported (the planets of a set; the driven gear of a pair),
+  // on whichever side of a logged pair they are.
+  std::vector<CountedGear> counted_gears;
+};
+
+}  // namespace gearsim

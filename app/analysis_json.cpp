@@ -1,0 +1,129 @@
+#include "app/analysis_json.hpp"
+
+namespace gearsim::app {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// A mesh harmonic: where it was expected, its peak over the pair's floor, its sidebands.
+json harmonic_json(const MeshHarmonic& h, const std::optional<double>& over_floor_db) {
+  json hj{{"order", h.order}, {"expected_hz", h.expected_hz}};
+  if (h.peak) {
+    hj["peak_hz"] = h.peak->frequency_hz;
+    hj["amplitude_N"] = h.peak->amplitude;
+    hj["over_median_floor_0_1000_hz_db"] = *over_floor_db;
+  }
+  json sides = json::array();
+  for (const Sideband& b : h.sidebands) {
+    json bj{{"frequency_hz", b.peak.frequency_hz}, {"offset_hz", b.offset_hz}, {"amplitude_N", b.peak.amplitude},
+            {"level_db_re_harmonic", b.level_db_re_harmonic}, {"over_floor_db", b.height_over_floor_db}};
+    if (b.match) bj["match"] = match_label(*b.match);
+    sides.push_back(bj);
+  }
+  hj["sidebands"] = sides;
+  return hj;
+}
+
+json pair_json(const PairForceAnalysis& p, bool planetary) {
+  json j;
+  j["resolution_hz"] = p.spectrum.resolution_hz;
+  j["bin_width_hz"] = p.spectrum.bin_width_hz;
+  j["median_floor_0_1000_hz_N"] = p.floor_N;
+  json harmonics = json::array();
+  for (std::size_t k = 0; k < p.mesh.harmonics.size(); ++k)
+    harmonics.push_back(harmonic_json(p.mesh.harmonics[k], p.harmonic_over_floor_db[k]));
+  j["mesh_harmonics"] = harmonics;
+  if (planetary) {
+    json family = json::array();
+    for (const FaultLine& l : p.planet_fault_family) {
+      json e{{"multiple", l.multiple}, {"expected_hz", l.expected_hz}};
+      if (l.peak) e["peak_hz"] = l.peak->frequency_hz, e["amplitude_N"] = l.peak->amplitude,
+                  e["over_median_floor_0_1000_hz_db"] = l.over_floor_db;
+      family.push_back(e);
+    }
+    j["planet_fault_family"] = family;
+  }
+  j["mean_force_N"] = p.mean_force_N;
+  j["zero_force_share"] = p.zero_force_share;
+  return j;
+}
+
+json te_json(const SeriesStats& te) {
+  return {{"mean_rad", te.mean}, {"min_rad", te.min}, {"max_rad", te.max}, {"peak_to_peak_rad", te.peak_to_peak},
+          {"rms_rad", te.rms}};
+}
+
+// Per tooth: its mean force and z-score.
+json teeth_json(const std::vector<double>& mean_force_N, const std::vector<double>& z_score) {
+  json list = json::array();
+  for (std::size_t k = 0; k < mean_force_N.size(); ++k)
+    list.push_back({{"tooth", k}, {"mean_force_N", mean_force_N[k]}, {"z_score", z_score[k]}});
+  return list;
+}
+
+json synchronous_json(const SynchronousTeeth& s) {
+  json j;
+  j["pair"] = pair_name(s.pair);
+  j["gear"] = s.planet;
+  j["method"] = "angle-synchronous average of the pair force over the planet's rotation relative to the carrier";
+  j["revolutions"] = s.revolutions;
+  j["samples_per_revolution"] = s.samples_per_revolution;
+  j["z_threshold"] = s.z_threshold;
+  j["min_relative_deviation"] = s.min_relative_deviation;
+  j["flagged_teeth"] = s.flagged_teeth;
+  j["teeth"] = teeth_json(s.mean_force_N, s.z_score);
+  return j;
+}
+
+json tooth_loads_json(const ToothLoads& t) {
+  json j;
+  j["pair"] = pair_name(t.pair);
+  j["gear"] = t.gear;
+  j["window_s"] = {t.from_s, t.to_s};
+  j["revolutions"] = t.revolutions;
+  j["z_threshold"] = t.z_threshold;
+  j["min_relative_deviation"] = t.min_relative_deviation;
+  j["flagged_teeth"] = t.flagged;
+  j["teeth"] = teeth_json(t.mean_force_N, t.z_score);
+  return j;
+}
+
+json gear_train_json(const input::GearTrain& train) {
+  json freqs = json::array();
+  for (const CharacteristicFrequency& f : train.frequencies.frequencies)
+    freqs.push_back({{"key", f.key}, {"name", f.name}, {"value_hz", f.value_hz}, {"formula", f.formula}});
+  return {{"kind", train.planetary ? "planetary" : train.internal_pair ? "internal pair" : "external pair"},
+          {"mesh_hz", train.frequencies.mesh_hz},
+          {"characteristic_frequencies", freqs}};
+}
+
+}  // namespace
+
+std::string pair_name(const PairId& pair) { return pair.a + "__" + pair.b; }
+
+std::string match_label(const SidebandMatch& match) { return std::to_string(match.multiple) + "x" + match.key; }
+
+json analysis_json(const RunAnalysis& a, const input::GearTrain& train, const std::string& scenario_name) {
+  json j;
+  j["scenario"] = scenario_name;
+  j["window_s"] = {a.from_s, a.to_s};
+  j["sample_rate_hz"] = a.sample_rate_hz;
+  j["gear_train"] = gear_train_json(train);
+  json pairs = json::object();
+  for (const PairForceAnalysis& p : a.pairs) pairs[pair_name(p.pair)] = pair_json(p, train.planetary);
+  j["pairs"] = pairs;
+  if (a.te) j["transmission_error"] = te_json(a.te->rad);
+  if (a.synchronous) {
+    json tsa = json::array();
+    for (const SynchronousTeeth& s : *a.synchronous) tsa.push_back(synchronous_json(s));
+    j["synchronous_average"] = tsa;
+  }
+  if (a.tooth_loads) {
+    json loads = json::array();
+    for (const ToothLoads& t : *a.tooth_loads) loads.push_back(tooth_loads_json(t));
+    j["tooth_loads"] = loads;
+  }
+  return j;
+}
+
+}  // namespace gearsim::app
