@@ -31,12 +31,17 @@ std::vector<FaultLine> planet_fault_family(const Spectrum& s, double fault_hz, d
 }  // namespace
 
 PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<double>& f, double sample_rate_hz,
-                                     const TrainDescription& train) {
+                                     const TrainDescription& train, const std::vector<double>& point_force_N) {
   PairForceAnalysis r;
   r.pair = pair;
   // Mean force and the share of samples without contact.
+  const std::vector<double>& point = point_force_N.empty() ? f : point_force_N;
+  if (point.size() != f.size())
+    throw InputError("run analysis: the point-sampled force of pair " + pair_label(pair) + " holds " +
+                     std::to_string(point.size()) + " samples for " + std::to_string(f.size()));
   double mean = 0, zeros = 0;
-  for (double v : f) mean += v, zeros += v == 0;
+  for (double v : f) mean += v;
+  for (double v : point) zeros += v == 0;
   r.mean_force_N = mean / static_cast<double>(f.size());
   r.zero_force_share = zeros / static_cast<double>(f.size());
   // The spectrum, its floor, the mesh harmonics with their sidebands.

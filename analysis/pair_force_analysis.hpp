@@ -37,10 +37,11 @@ struct PairForceAnalysis {
   std::vector<FaultLine> planet_fault_family;
 };
 
-// force_N: the pair's force over the window, uniform at sample_rate_hz. InputError as
-// amplitude_spectrum and analyse_sidebands (e.g. a record too short or a harmonic above Nyquist),
-// or when a planetary train has no "planet_fault" frequency.
+// force_N: the pair's force over the window, uniform at sample_rate_hz; point_force_N: the same
+// force point-sampled, for the share of samples without contact (empty: force_N is). InputError
+// as amplitude_spectrum and analyse_sidebands (e.g. a record too short or a harmonic above
+// Nyquist), or when a planetary train has no "planet_fault" frequency.
 PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<double>& force_N, double sample_rate_hz,
-                                     const TrainDescription& train);
+                                     const TrainDescription& train, const std::vector<double>& point_force_N = {});
 
 }  // namespace gearsim

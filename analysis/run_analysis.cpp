@@ -33,7 +33,11 @@ void check_signals(const RunSignals& s) {
                      " are needed to analyse; run longer");
   if (s.pair_forces.empty())
     throw InputError("run analysis: no gear pair (a run with no gear pairs has nothing to analyse)");
-  for (const PairForce& p : s.pair_forces) check_length(p.force_N.size(), s.time_s.size(), "the force of pair " + pair_label(p.pair));
+  for (const PairForce& p : s.pair_forces) {
+    check_length(p.force_N.size(), s.time_s.size(), "the force of pair " + pair_label(p.pair));
+    if (!p.point_force_N.empty())
+      check_length(p.point_force_N.size(), s.time_s.size(), "the point-sampled force of pair " + pair_label(p.pair));
+  }
   for (const BodyAngle& a : s.angles) check_length(a.angle_rad.size(), s.time_s.size(), "the angle of " + a.body);
   if (s.te) check_length(s.te->te_rad.size(), s.time_s.size(), "the transmission error");
 }
@@ -102,7 +106,9 @@ RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
   r.sample_rate_hz = uniform_sample_rate_hz(tw);
   // Each pair's force spectrum; the TE; the planets' synchronous averages; the per-tooth loads.
   for (const PairForce& p : s.pair_forces)
-    r.pairs.push_back(analyse_pair_force(p.pair, window(p.force_N, s.time_s, s.from_s), r.sample_rate_hz, train));
+    r.pairs.push_back(analyse_pair_force(p.pair, window(p.force_N, s.time_s, s.from_s), r.sample_rate_hz, train,
+                                         p.point_force_N.empty() ? std::vector<double>{}
+                                                                 : window(p.point_force_N, s.time_s, s.from_s)));
   if (s.te) r.te = windowed_te_stats(*s.te, s.from_s);
   if (train.planetary) r.synchronous = synchronous_averages(s, train);
   if (s.tooth_contacts) r.tooth_loads = all_tooth_loads(s, train);

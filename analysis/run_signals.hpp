@@ -31,7 +31,10 @@ inline std::string pair_label(const PairId& p) { return p.a + "–" + p.b; }
 // One gear pair's normal contact force, summed over its tooth contacts, at each output sample, N.
 struct PairForce {
   PairId pair;
-  std::vector<double> force_N;
+  std::vector<double> force_N;  // at each sample time; anti-aliased when the run filtered it
+  // The same force point-sampled at each time (exactly 0 when no tooth pair touched): what the
+  // share of samples without contact is counted on. Empty: force_N is the point sample.
+  std::vector<double> point_force_N;
 };
 
 // A body's rotation angle at each output sample, rad, unwrapped (a planet's: relative to its

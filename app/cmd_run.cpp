@@ -232,8 +232,9 @@ void run(const RunOptions& o) {
       std::cout << "not analysed: " << e.what() << "\n";
     }
   if (s.render) try {
-      const RenderResult r = render_run(open_run_dir(dir), *s.render);
-      std::cout << "rendered " << r.frames << " frames of " << r.from_s << "–" << r.to_s << " s: " << r.video.string() << "\n";
+      const RenderResult rendered = render_run(open_run_dir(dir), *s.render);
+      std::cout << "rendered " << rendered.frames << " frames of " << rendered.from_s << "–" << rendered.to_s
+                << " s: " << rendered.video.string() << "\n";
     } catch (const InputError& e) {
       std::cout << "not rendered: " << e.what() << "\n";
     }

@@ -69,7 +69,8 @@ std::vector<PairForce> pair_forces(const input::CsvTable& contacts, const std::v
       throw InputError(contacts.path.string() + ": no <pair>_force_N column '" + column + "' for the gear pair " +
                        pair_label(p) + " of summary.json's gear_pairs: expected one contact-force column per gear " +
                        "pair, as gearsim run writes them");
-    forces.push_back({p, contacts.column(column)});
+    const std::string point = pair_name(p) + "_force_point_N";  // runs that filter the force keep it
+    forces.push_back({p, contacts.column(column), contacts.has(point) ? contacts.column(point) : std::vector<double>{}});
   }
   return forces;
 }
@@ -126,6 +127,32 @@ TrainDescription train_description(const input::GearTrain& train, const physics:
   return d;
 }
 
+// How long the ends of the run's anti-aliased force hold their end values (summary.json
+// force_filter.edge_held_s), s; 0 for a run that did not filter.
+double edge_held_s(const RunDir& run) {
+  if (!run.summary.contains("force_filter")) return 0;
+  const json& f = run.summary["force_filter"];
+  if (!f.is_object() || !f.contains("edge_held_s") || !f["edge_held_s"].is_number() || !(f["edge_held_s"].get<double>() >= 0))
+    throw InputError((run.dir / "summary.json").string() + ": key force_filter.edge_held_s: expected a duration ≥ 0 in s");
+  return f["edge_held_s"].get<double>();
+}
+
+// The output-rate samples after t_last − edge_s left out: there the filtered force holds the
+// run's last value (sim/csv_logs.hpp). Every series is cut at the same sample.
+void drop_edge_held_end(RunSignals& s, double edge_s) {
+  if (edge_s <= 0 || s.time_s.empty()) return;
+  const double end = s.time_s.back() - edge_s;
+  std::size_t n = 0;
+  while (n < s.time_s.size() && s.time_s[n] <= end) ++n;
+  auto cut = [n](std::vector<double>& v) {
+    if (v.size() > n) v.resize(n);
+  };
+  cut(s.time_s);
+  for (PairForce& p : s.pair_forces) cut(p.force_N), cut(p.point_force_N);
+  for (BodyAngle& a : s.angles) cut(a.angle_rad);
+  if (s.te) cut(s.te->time_s), cut(s.te->te_rad);
+}
+
 // The run's signals from its logs: state.csv (angles, te_rad), contacts.csv (pair forces),
 // steps.h5 when it was kept.
 RunSignals run_signals(const RunDir& run, const TrainDescription& train, double from_s) {
@@ -148,6 +175,7 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
     if (std::none_of(s.angles.begin(), s.angles.end(), [&](const BodyAngle& a) { return a.body == p.body; }))
       s.angles.push_back({p.body, state.column(p.body + "_angle_rad")});
   if (std::filesystem::exists(run.dir / "steps.h5")) s.tooth_contacts = tooth_contacts(run.dir / "steps.h5", pairs);
+  drop_edge_held_end(s, edge_held_s(run));
   return s;
 }
 
@@ -158,8 +186,12 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
   const input::GearTrain train = input::gear_train_of(s);
   const TrainDescription description = train_description(train, s);
   double from_s = o.from_s;
-  if (from_s < 0) from_s = physics::ramps_end_s(s);
-  from_s = std::max(from_s, 0.0);
+  // Not before the anti-aliased force is free of its start (held at the first value before t = 0).
+  const double edge = edge_held_s(run);
+  if (from_s >= 0 && from_s < edge)
+    throw InputError("--from " + std::to_string(from_s) + ": the run's anti-aliased force holds its start value until t = " +
+                     std::to_string(edge) + " s (summary.json force_filter.edge_held_s); expected a start at or after it");
+  if (from_s < 0) from_s = std::max(physics::ramps_end_s(s), edge);
   const RunAnalysis a = analyse_run(run_signals(run, description, from_s), description);
   const json j = analysis_json(a, train, s.name);
   std::ofstream(run.dir / "analysis.json") << j.dump(2) << "\n";

@@ -67,8 +67,8 @@ std::vector<double> sun_planet_force() {
 RunSignals synthetic_run() {
   RunSignals s;
   s.time_s = times();
-  s.pair_forces = {{{"sun", "planet_0"}, sun_planet_force()},
-                   {{"planet_0", "ring"}, test::tone(kSamples, kFs, kMesh, 10.0)}};
+  s.pair_forces = {{{"sun", "planet_0"}, sun_planet_force(), {}},
+                   {{"planet_0", "ring"}, test::tone(kSamples, kFs, kMesh, 10.0), {}}};
   for (double& v : s.pair_forces[1].force_N) v += 110.0;
   std::vector<double> angle(kSamples);
   for (std::size_t n = 0; n < kSamples; ++n) angle[n] = -kTwoPi * kFault * s.time_s[n];  // 8 rev/s relative
@@ -149,6 +149,28 @@ TEST(RunAnalysis, MeanForceAndZeroShareOfAPairOutOfContactAQuarterOfTheTime) {
   const PairForceAnalysis& p = analyse_run(s, paper_like_train()).pairs.at(1);
   EXPECT_EQ(p.zero_force_share, 0.25);
   EXPECT_NEAR(p.mean_force_N, 75.0, 1e-12);
+}
+
+TEST(RunAnalysis, ZeroShareIsCountedOnThePointSamplesWhenTheForceWasFiltered) {
+  // An anti-aliased force is never exactly zero; the point samples beside it say when no tooth
+  // pair touched: 1 sample in 4 here, while the filtered force stays near its 75 N mean.
+  RunSignals s = synthetic_run();
+  PairForce& pf = s.pair_forces[1];
+  pf.point_force_N.resize(kSamples);
+  for (std::size_t n = 0; n < kSamples; ++n) {
+    pf.point_force_N[n] = n % 4 == 0 ? 0.0 : 100.0;
+    pf.force_N[n] = 75.0 + 1e-3 * std::sin(0.1 * static_cast<double>(n));
+  }
+  const PairForceAnalysis& p = analyse_run(s, paper_like_train()).pairs.at(1);
+  EXPECT_EQ(p.zero_force_share, 0.25);
+  EXPECT_NEAR(p.mean_force_N, 75.0, 1e-3);
+  pf.point_force_N.pop_back();  // a point series of another length is refused, naming the pair
+  try {
+    analyse_run(s, paper_like_train());
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("point-sampled force of pair planet_0–ring"), std::string::npos) << e.what();
+  }
 }
 
 TEST(RunAnalysis, MeanForceIsTheForceAveragedOverTheWindow) {

@@ -113,8 +113,8 @@ TEST(RunAnalysisToothLoads, ThePlanetIsCountedInEachOfItsMeshesAndNothingElse) {
   std::vector<double> angle;
   for (int c = 0; c < steps; ++c) s.time_s.push_back(c * kDt), angle.push_back(-kTwoPi * c / kStepsPerRev);
   s.angles = {{"planet_0", angle}};
-  s.pair_forces = {{{"sun", "planet_0"}, std::vector<double>(steps, kForce)},
-                   {{"planet_0", "ring"}, std::vector<double>(steps, kForce)}};
+  s.pair_forces = {{{"sun", "planet_0"}, std::vector<double>(steps, kForce), {}},
+                   {{"planet_0", "ring"}, std::vector<double>(steps, kForce), {}}};
   s.from_s = 0.5;
   TrainDescription train;
   train.frequencies = gear_pair_frequencies({24, 36, 10.0, 3});

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <fstream>
 #include <string>
 
@@ -92,6 +93,25 @@ TEST(AnalyzeRefusals, ARunReadsItsOwnScenarioRecordNotTheEditedOriginal) {
   fs::remove(scenario);
   EXPECT_EQ(gearsim::test::gearsim("analyze " + (dir / "run").string()).exit_code, 0);
   EXPECT_EQ(analysis(), before);
+}
+
+TEST(AnalyzeRefusals, TheWindowLeavesOutTheAntiAliasedForcesEdgeHeldEnds) {
+  // contacts.csv's force is filtered with a 4009-tap zero-phase filter at 50 kHz → 2 kHz: its
+  // first and last 40.08 ms hold the end values (summary.json force_filter.edge_held_s).
+  const fs::path dir = gearsim::test::fresh_test_dir();
+  const fs::path scenario = gearsim::test::asset_scenario_copy("paper_dynamics_healthy.yaml", dir, {});
+  ASSERT_EQ(gearsim::test::gearsim("run " + scenario.string() + " --out " + (dir / "run").string() + " --duration 0.4").exit_code, 0);
+  std::ifstream in(dir / "run" / "analysis.json");
+  const nlohmann::json a = nlohmann::json::parse(in);
+  std::ifstream sin(dir / "run" / "summary.json");
+  const double edge = nlohmann::json::parse(sin)["force_filter"]["edge_held_s"].get<double>();
+  EXPECT_NEAR(edge, 2004 / 50000.0, 1e-12);
+  const double end = a["window_s"][1].get<double>();
+  EXPECT_LE(end, 0.4 - edge);
+  EXPECT_GT(end, 0.4 - edge - 0.0005);  // the last sample before the held end
+  const gearsim::test::CliRun early = gearsim::test::gearsim("analyze " + (dir / "run").string() + " --from 0.01");
+  EXPECT_EQ(early.exit_code, 2) << early.output;
+  EXPECT_NE(early.output.find("holds its start value until t = 0.04008"), std::string::npos) << early.output;
 }
 
 }  // namespace test_analyze_refusals

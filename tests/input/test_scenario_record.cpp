@@ -41,7 +41,9 @@ TEST(ScenarioRecord, EveryAssetScenarioReadsBackToTheSameScenario) {
     for (std::size_t b = 0; b < s.bodies.size(); ++b) {
       EXPECT_EQ(back.bodies[b].pose.orientation.coeffs(), s.bodies[b].pose.orientation.coeffs()) << name;
       EXPECT_EQ(back.bodies[b].mesh.has_value(), s.bodies[b].mesh.has_value()) << name;
-      if (s.bodies[b].mesh) EXPECT_EQ(back.bodies[b].mesh->recognised.has_value(), s.bodies[b].mesh->recognised.has_value());
+      if (s.bodies[b].mesh) {
+        EXPECT_EQ(back.bodies[b].mesh->recognised.has_value(), s.bodies[b].mesh->recognised.has_value());
+      }
     }
     EXPECT_EQ(back.planetary.has_value(), s.planetary.has_value()) << name;
     EXPECT_EQ(back.fe.has_value(), s.fe.has_value()) << name;
