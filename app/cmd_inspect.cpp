@@ -54,12 +54,12 @@ json flank_fit_json(const InvoluteFit& f) {
 // The gear the outline is, and how faithfully the contact's flank table follows its teeth.
 json gear_json(const MeshGear& mg, const std::optional<ToothLayout>& given, LengthUnit unit) {
   json j;
-  if (!mg.recognition.gear) {
+  if (!mg.recognition) {
     j["recognised"] = false;
-    j["reason"] = mg.recognition.reason;
+    j["reason"] = mg.recognition.reason();
     return j;
   }
-  const RecognisedGear& g = *mg.recognition.gear;
+  const RecognisedGear& g = *mg.recognition;
   j["recognised"] = true;
   j["teeth"] = g.teeth;
   j["tooth0_deg"] = g.tooth0_angle_rad * kDegPerRad;

@@ -17,9 +17,8 @@ constexpr double kAsymmetry = 1e-3;
 
 }  // namespace
 
-GearRecognition recognise_gear(const Outline2& outline) {
+Result<RecognisedGear> recognise_gear(const Outline2& outline) {
   using namespace recognition_detail;
-  GearRecognition out;
   // The toothed loop: the one with the strongest tooth wave among those that have teeth.
   LoopTeeth best;
   int best_loop = -2;
@@ -29,7 +28,7 @@ GearRecognition recognise_gear(const Outline2& outline) {
     if (lt.teeth > 0 && lt.amplitude_m > best.amplitude_m) best = std::move(lt), best_loop = l;
     else if (lt.teeth == 0) why << (why.tellp() > 0 ? "; " : "") << (l < 0 ? "outer loop" : "hole " + std::to_string(l)) << ": " << lt.why;
   }
-  if (best_loop == -2) return out.reason = "no loop of the outline has teeth (" + why.str() + ")", out;
+  if (best_loop == -2) return Refusal{"no loop of the outline has teeth (" + why.str() + ")"};
   RecognisedGear g;
   g.teeth = best.teeth;
   g.internal = best_loop >= 0;
@@ -53,7 +52,7 @@ GearRecognition recognise_gear(const Outline2& outline) {
     std::ostringstream m;
     m << "the toothed loop repeats " << g.teeth << " times but its mid-depth circle (r = "
       << 0.5 * (best.r_min + best.r_max) * 1e3 << " mm) does not cross it twice per tooth";
-    return out.reason = m.str(), out;
+    return Refusal{m.str()};
   }
   g.axis_m = best.centre;
   g.tip_radius_m = g.internal ? best.r_min : best.r_max;
@@ -74,8 +73,7 @@ GearRecognition recognise_gear(const Outline2& outline) {
   } else {
     g.module_m = std::abs(g.root_radius_m - g.tip_radius_m) / kRackDepth;  // a size, for plausibility
   }
-  out.gear = g;
-  return out;
+  return g;
 }
 
 Outline2 recentred(const Outline2& outline, const Eigen::Vector2d& axis_m) {

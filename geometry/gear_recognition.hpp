@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/result.hpp"
 #include "geometry/outline.hpp"
 
 namespace gearsim {
@@ -66,13 +67,10 @@ struct RecognisedGear {
   double profile_shift = 0;
 };
 
-struct GearRecognition {
-  std::optional<RecognisedGear> gear;
-  std::string reason;  // why no gear was recognised (empty when one was)
-};
 
-// Recognises the gear in an outline (m; any origin). Never throws on a valid outline.
-GearRecognition recognise_gear(const Outline2& outline);
+// Recognises the gear in an outline (m; any origin), or refuses saying why no gear was
+// recognised. Never throws on a valid outline.
+Result<RecognisedGear> recognise_gear(const Outline2& outline);
 
 // The outline moved so that `axis` lies on the origin.
 Outline2 recentred(const Outline2& outline, const Eigen::Vector2d& axis_m);

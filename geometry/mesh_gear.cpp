@@ -36,12 +36,12 @@ MeshGear mesh_gear(const Prism& prism) {
   g.face_width_m = prism.height_m;
   g.origin_m = prism.frame.origin_m + 0.5 * prism.height_m * prism.frame.z;
   g.recognition = recognise_gear(g.outline);
-  if (g.recognition.gear) {
-    g.axis_offset_m = g.recognition.gear->axis_m;
+  if (g.recognition) {
+    g.axis_offset_m = g.recognition->axis_m;
     if (g.axis_offset_m.norm() > kAxisOnOriginTolerance_m) {
       g.outline = recentred(g.outline, g.axis_offset_m);
       g.origin_m += g.axis_offset_m.x() * gx + g.axis_offset_m.y() * gy;
-      g.recognition.gear->axis_m = Eigen::Vector2d::Zero();  // radii and angles were about the axis already
+      g.recognition->axis_m = Eigen::Vector2d::Zero();  // radii and angles were about the axis already
     }
   }
   return g;

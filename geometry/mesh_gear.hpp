@@ -28,7 +28,7 @@ struct MeshGear {
   double face_width_m = 0;      // m
   Eigen::Matrix3d rotation;     // columns: the gear frame's x, y, z in mesh coordinates
   Eigen::Vector3d origin_m;     // the gear frame's origin in mesh coordinates (mid face width), m
-  GearRecognition recognition;  // the outline as a gear (about the gear frame's origin)
+  Result<RecognisedGear> recognition = Refusal{"not recognised yet"};  // the outline as a gear (about the gear frame's origin)
   // Where the axis was found in the cap plane, relative to the mesh's origin line, m; the frame
   // was moved there when larger than kAxisOnOriginTolerance_m.
   Eigen::Vector2d axis_offset_m = Eigen::Vector2d::Zero();

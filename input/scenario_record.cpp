@@ -146,7 +146,7 @@ physics::MeshSource mesh_of(const Node& n) {
   m.teeth = ToothLayout{n.integer("teeth", limits::kTeeth), n.number("tooth0_angle_rad")};
   m.teeth_recognised = n.boolean("teeth_recognised");
   const MeshGearFile f = read_mesh_gear(m.path, m.unit);
-  if (f.gear && f.gear->recognition.gear) m.recognised = *f.gear->recognition.gear;
+  if (f.gear && f.gear->recognition) m.recognised = *f.gear->recognition;
   return m;
 }
 
@@ -187,7 +187,7 @@ physics::ContactDef contact_of(const Node& n) {
       physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),
                                   {t.string("file"), t.numbers("radius_a_m"), t.numbers("stiffness_N_per_m_per_m")},
                                   t.number("body_stiffness_N_per_m")};
-      if (const Check c = contact::check_stiffness_table(d.table); !c) t.fail("radius_a_m", c.reason());
+      if (const Check ok = contact::check_stiffness_table(d.table); !ok) t.fail("radius_a_m", ok.reason());
       c.stiffness_tables.push_back(std::move(d));
     }
   return c;

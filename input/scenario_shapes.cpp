@@ -60,10 +60,10 @@ void check_gear_mesh(const YamlMap& m, physics::MeshSource& src) {
   const std::string file = src.path.string();
   const MeshGearFile f = read_mesh_gear(src.path, src.unit);
   if (!f.gear) m.fail("file", file + " is not a prism (" + f.prism.reason() + "): a gear must be a spur-gear extrusion; give `teeth: none` for a toothless body");
-  if (!f.gear->recognition.gear)
-    m.fail(src.teeth ? "teeth" : "file", file + " is not recognised as a spur gear: " + f.gear->recognition.reason +
+  if (!f.gear->recognition)
+    m.fail(src.teeth ? "teeth" : "file", file + " is not recognised as a spur gear: " + f.gear->recognition.reason() +
                                              (src.teeth ? "" : "; give `teeth: none` for a toothless body"));
-  const RecognisedGear& g = *f.gear->recognition.gear;
+  const RecognisedGear& g = *f.gear->recognition;
   src.recognised = g;
   if (const Check u = check_unit(g, src.unit); !u) m.fail("unit", file + ": " + u.reason());
   if (!src.teeth) {

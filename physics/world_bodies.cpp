@@ -42,9 +42,9 @@ btTransform com_frame(const MassProperties& m) {
 // The layout the tooth contact uses: the scenario's (filled from the mesh when it gave none),
 // refused when the mesh is not a recognised gear, shows other teeth, or has an implausible size.
 ToothLayout checked_layout(const MeshGear& mg, const MeshSource& src, const std::string& who) {
-  if (!mg.recognition.gear)
-    throw InputError(who + ": not recognised as a spur gear: " + mg.recognition.reason);
-  const RecognisedGear& g = *mg.recognition.gear;
+  if (!mg.recognition)
+    throw InputError(who + ": not recognised as a spur gear: " + mg.recognition.reason());
+  const RecognisedGear& g = *mg.recognition;
   if (const Check u = check_unit(g, src.unit); !u) throw InputError(who + ": " + u.reason());
   if (const Check m = check_layout(g, *src.teeth); !m) throw InputError(who + ": " + m.reason());
   return *src.teeth;
@@ -111,7 +111,7 @@ void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string
                                   "); tooth contact needs a spur-gear extrusion");
     const MeshGear& mg = *f.gear;
     const ToothLayout layout = checked_layout(mg, *def.mesh, who + " (" + file + ")");
-    const RecognisedGear& rg = *mg.recognition.gear;
+    const RecognisedGear& rg = *mg.recognition;
     DecompositionOptions opt;
     opt.tooth_layout = layout;
     const double half = 0.5 * mg.face_width_m;

@@ -29,9 +29,9 @@ constexpr double kAngleTol_rad = 1e-5;
 double pitch_residue(double a, double b, int z) { return std::remainder(a - b, 2 * kPi / z); }
 
 RecognisedGear recognise_ok(const Outline2& o) {
-  const GearRecognition r = recognise_gear(o);
-  EXPECT_TRUE(r.gear.has_value()) << r.reason;
-  return r.gear.value_or(RecognisedGear{});
+  const Result<RecognisedGear> r = recognise_gear(o);
+  EXPECT_TRUE(r.ok()) << r.reason();
+  return r.optional().value_or(RecognisedGear{});
 }
 
 struct Case {
@@ -165,13 +165,13 @@ TEST(GearRecognition, ShapesWithoutTeethAreNotGears) {
   Outline2 disc;
   for (int i = 0; i < 128; ++i) disc.outer.points.emplace_back(0.02 * std::cos(2 * kPi * i / 128), 0.02 * std::sin(2 * kPi * i / 128));
   disc.holes.push_back(keyed_bore(4e-3, 1e-3, 1.5e-3));
-  const GearRecognition a = recognise_gear(disc);
-  EXPECT_FALSE(a.gear.has_value());
-  EXPECT_NE(a.reason.find("outer loop: a circle"), std::string::npos) << a.reason;
+  const Result<RecognisedGear> a = recognise_gear(disc);
+  EXPECT_FALSE(a.ok());
+  EXPECT_NE(a.reason().find("outer loop: a circle"), std::string::npos) << a.reason();
   // A square (four sides of eight points): below the fewest teeth looked for.
   Outline2 square;
   square.outer.points = {{-0.01, -0.01}, {0, -0.01}, {0.01, -0.01}, {0.01, 0}, {0.01, 0.01}, {0, 0.01}, {-0.01, 0.01}, {-0.01, 0}};
-  EXPECT_FALSE(recognise_gear(square).gear.has_value());
+  EXPECT_FALSE(recognise_gear(square).ok());
 }
 
 // m·cos α alone cannot tell m and α apart: a 60-tooth ring of module 1 mm at 25° with a stub

@@ -39,14 +39,14 @@ TEST(MeshGear, AGearOffTheOriginIsRecentredOnItsAxis) {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.translation() = Eigen::Vector3d(0.040, -0.025, 0.003);
   const MeshGear g = gear_of(posed_gear(pose));
-  ASSERT_TRUE(g.recognition.gear) << g.recognition.reason;
-  EXPECT_EQ(g.recognition.gear->teeth, 23);
+  ASSERT_TRUE(g.recognition) << g.recognition.reason();
+  EXPECT_EQ(g.recognition->teeth, 23);
   // The offset in the cap plane, and the frame origin on the axis at mid face width (1e-9 m:
   // the centroid of float-free vertices, exact to rounding).
   EXPECT_NEAR((g.axis_offset_m - Eigen::Vector2d(0.040, -0.025)).norm(), 0.0, 1e-9);
   EXPECT_NEAR((g.origin_m - Eigen::Vector3d(0.040, -0.025, 0.008)).norm(), 0.0, 1e-9);
-  EXPECT_NEAR(g.recognition.gear->axis_m.norm(), 0.0, 1e-12);
-  EXPECT_NEAR(std::remainder(g.recognition.gear->tooth0_angle_rad - 5 * kPi / 180, 2 * kPi / 23), 0.0, 1e-5);
+  EXPECT_NEAR(g.recognition->axis_m.norm(), 0.0, 1e-12);
+  EXPECT_NEAR(std::remainder(g.recognition->tooth0_angle_rad - 5 * kPi / 180, 2 * kPi / 23), 0.0, 1e-5);
   // A point on the axis maps to the gear frame's origin.
   EXPECT_NEAR(g.to_gear(Eigen::Vector3d(0.040, -0.025, 0.008)).norm(), 0.0, 1e-9);
 }
@@ -55,27 +55,27 @@ TEST(MeshGear, AGearModelledAboutXKeepsItsTeethAndFaceWidth) {
   // Gear axis along world +x: rotate the z-modelled gear by +90° about y (z → x).
   Eigen::Isometry3d pose(Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitY()));
   const MeshGear g = gear_of(posed_gear(pose));
-  ASSERT_TRUE(g.recognition.gear) << g.recognition.reason;
-  EXPECT_EQ(g.recognition.gear->teeth, 23);
+  ASSERT_TRUE(g.recognition) << g.recognition.reason();
+  EXPECT_EQ(g.recognition->teeth, 23);
   EXPECT_NEAR(g.face_width_m, 0.010, 1e-12);
   EXPECT_NEAR(std::abs(g.rotation.col(2).dot(Eigen::Vector3d::UnitX())), 1.0, 1e-12);
-  EXPECT_TRUE(g.recognition.gear->involute);
+  EXPECT_TRUE(g.recognition->involute);
 }
 
 TEST(MeshGear, AGearModelledAboutMinusZIsMirroredIntoPlusZ) {
   // Turned over about x: its axis points along −z; seen from −z the teeth run the other way.
   Eigen::Isometry3d pose(Eigen::AngleAxisd(kPi, Eigen::Vector3d::UnitX()));
   const MeshGear g = gear_of(posed_gear(pose));
-  ASSERT_TRUE(g.recognition.gear) << g.recognition.reason;
+  ASSERT_TRUE(g.recognition) << g.recognition.reason();
   EXPECT_GT(g.rotation.col(2).z(), 0.0);
   // Turning over about x maps polar angle θ to −θ: tooth 0 at −5°.
-  EXPECT_NEAR(std::remainder(g.recognition.gear->tooth0_angle_rad + 5 * kPi / 180, 2 * kPi / 23), 0.0, 1e-5);
+  EXPECT_NEAR(std::remainder(g.recognition->tooth0_angle_rad + 5 * kPi / 180, 2 * kPi / 23), 0.0, 1e-5);
 }
 
 TEST(MeshGear, LayoutChecksNameWhatTheMeshShows) {
   const MeshGear g = gear_of(posed_gear(Eigen::Isometry3d::Identity()));
-  ASSERT_TRUE(g.recognition.gear);
-  const RecognisedGear& r = *g.recognition.gear;
+  ASSERT_TRUE(g.recognition);
+  const RecognisedGear& r = *g.recognition;
   const double pitch = 2 * kPi / 23, t0 = 5 * kPi / 180;
   EXPECT_TRUE(check_layout(r, {23, t0}));
   EXPECT_TRUE(check_layout(r, {23, t0 + 7 * pitch}));       // another tooth numbered 0: same layout
@@ -97,8 +97,8 @@ TEST(MeshGear, CoarselyFacetedMcadInvolutesGiveTheirBaseCircles) {
         std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(z) + "_a20_f5_b005.stl";
     const MeshGearFile f = read_mesh_gear(file, LengthUnit::Millimetre);
     ASSERT_TRUE(f.gear.has_value()) << f.prism.reason();
-    ASSERT_TRUE(f.gear->recognition.gear.has_value()) << f.gear->recognition.reason;
-    const RecognisedGear& g = *f.gear->recognition.gear;
+    ASSERT_TRUE(f.gear->recognition.ok()) << f.gear->recognition.reason();
+    const RecognisedGear& g = *f.gear->recognition;
     EXPECT_EQ(g.teeth, z);
     ASSERT_TRUE(g.involute) << "z " << z;
     const double rb = 0.5 * z * 1e-3 * std::cos(20 * kPi / 180);
@@ -122,8 +122,8 @@ TEST(MeshGear, HalfAMicrometreOfVertexNoiseIsStillTheGear) {
   };
   for (Eigen::Vector3d& v : m.vertices) v += Eigen::Vector3d(uniform(), uniform(), uniform());
   const MeshGear g = gear_of(m);
-  ASSERT_TRUE(g.recognition.gear) << g.recognition.reason;
-  const RecognisedGear& r = *g.recognition.gear;
+  ASSERT_TRUE(g.recognition) << g.recognition.reason();
+  const RecognisedGear& r = *g.recognition;
   EXPECT_EQ(r.teeth, 23);
   ASSERT_TRUE(r.involute);
   EXPECT_NEAR(r.base_radius_m, 0.5 * 23e-3 * std::cos(20 * kPi / 180), 2e-6);

@@ -56,7 +56,7 @@ TEST(CsvLogs, ForceColumnIsTheDecimatedPerStepForceAndThePointColumnTheSample) {
   ASSERT_EQ(time.size(), 240u);                     // 0.12 s at 2 kHz, no row at t = 0
   ASSERT_EQ(expected.values.size(), time.size() + 1);  // the decimated record includes t = 0
   for (std::size_t k = 0; k < time.size(); ++k) {
-    EXPECT_NEAR(time[k], (k + 1) / 2000.0, 1e-12);
+    EXPECT_NEAR(time[k], static_cast<double>(k + 1) / 2000.0, 1e-12);
     EXPECT_EQ(filtered[k], expected.values[k + 1]) << "row " << k;  // the same kernel: bit for bit
     EXPECT_EQ(point[k], rec.force_N[25 * (k + 1)]) << "row " << k;
   }
