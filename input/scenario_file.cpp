@@ -17,6 +17,20 @@
 namespace gearsim::input {
 namespace {
 
+// Output samples are taken at whole steps: 1/(sample_rate_hz · time_step_s) must be a whole
+// number (to 1e-9 of it), else the rows would not be at the rate asked for (and the logs'
+// anti-aliasing filter needs the whole ratio). "" when it is, else what to give instead.
+std::string whole_steps_problem(const physics::Scenario& s) {
+  const double steps = 1.0 / (s.output.sample_rate_hz * s.solver.time_step_s);
+  const double whole = std::round(steps);
+  if (whole >= 1 && std::abs(steps - whole) <= 1e-9 * steps) return "";
+  std::ostringstream msg;
+  msg << "sample rate " << s.output.sample_rate_hz << " Hz is " << steps << " time steps of " << s.solver.time_step_s
+      << " s, not a whole number: samples are taken at whole steps; expected e.g. "
+      << 1 / (std::floor(steps) * s.solver.time_step_s) << " Hz or " << 1 / (std::ceil(steps) * s.solver.time_step_s) << " Hz";
+  return msg.str();
+}
+
 using namespace scenario_detail;
 namespace fs = std::filesystem;
 constexpr const char* kGround = "ground";
@@ -129,12 +143,15 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
           << 1 / s.solver.time_step_s << " Hz";
       m.fail("sample_rate_hz", msg.str());
     }
+    if (const std::string w = whole_steps_problem(s); !w.empty()) m.fail("sample_rate_hz", w);
     if (s.output.sample_rate_hz * s.duration_s < 1)
       m.fail("sample_rate_hz", "expected at least one output row in duration_s: a rate ≥ 1/duration_s = " +
                                    std::to_string(1 / s.duration_s) + " Hz");
     s.output.per_step_log = m.boolean_or("per_step_log", s.output.per_step_log);
     m.reject_unknown_keys();
   }
+  if (!given(top, "output"))
+    if (const std::string w = whole_steps_problem(s); !w.empty()) top.fail("solver", w + " (output.sample_rate_hz defaults to 2000 Hz)");
   if (given(top, "render")) {
     const YamlMap m = top.map("render");
     physics::RenderDef r;

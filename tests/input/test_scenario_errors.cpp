@@ -66,6 +66,16 @@ std::string edited(const std::string& from, const std::string& to) {
 
 TEST(ScenarioErrors, GoodScenarioLoads) { EXPECT_EQ(error_for(kGood), ""); }
 
+TEST(ScenarioErrors, ASampleRateThatIsNoWholeNumberOfStepsIsRefused) {
+  // 2000 Hz at 4e-5 s steps is 12.5 steps per sample: samples are taken at whole steps, so the
+  // rows would come at 1923 Hz (13 steps) — refused, naming both whole-step rates nearby.
+  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 4.0e-5}\noutput: {sample_rate_hz: 2000}\n"),
+               "output.sample_rate_hz", "12.5 time steps", "2083.33 Hz", "1923.08 Hz");
+  // Without an output section the default 2000 Hz is checked against the solver's step.
+  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 4.0e-5}\n"), "solver", "defaults to 2000 Hz");
+  EXPECT_EQ(error_for(kGood + "solver: {time_step_s: 4.0e-5}\noutput: {sample_rate_hz: 2500}\n"), "");  // 10 steps
+}
+
 TEST(ScenarioErrors, UnknownKey) {
   EXPECT_NAMES(error_for(kGood + "colour: blue\n"), "bad.yaml:11:", "colour: unknown key");
 }
