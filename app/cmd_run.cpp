@@ -120,7 +120,7 @@ json summary_json(const RunOptions& o, const physics::Scenario& s, const sim::Ru
   json pairs = json::array();
   for (const sim::PairResult& p : r.pairs) {
     pairs.push_back({{"a", p.info.body_a}, {"b", p.info.body_b}, {"stiffness_N_per_m", p.info.stiffness_N_per_m},
-                     {"damping_N_s_per_m", p.info.damping_N_s_per_m}});
+                     {"damping_N_s_per_m", p.info.damping_N_s_per_m}, {"reduced_mass_kg", p.info.reduced_mass_kg}});
     if (!p.info.stiffness_table.empty()) pairs.back()["stiffness_table"] = p.info.stiffness_table;
     if (r.steady_steps)
       pairs.back()["mean_normal_force_N"] = {{"ccw_flanks_of_a", p.mean_ccw_flank_force_N},

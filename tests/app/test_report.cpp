@@ -32,7 +32,8 @@ TEST(Report, HoldsEverySectionInOneSelfContainedFile) {
   const std::string html((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   for (const char* section : {"The run", "The paper and this run", "Against the paper's Table 1", "Single flank error",
                               "Characteristic frequencies", "paper Fig. 4", "paper Fig. 5", "paper Fig. 6", "paper Fig. 7",
-                              "Per-tooth load", "planet local-fault family", "Rendered frames"})
+                              "Per-tooth load", "planet local-fault family", "Sampling: why the paper",
+                              "anti-aliased / point samples", "Contact ringing above the band", "Rendered frames"})
     EXPECT_NE(html.find(section), std::string::npos) << "missing section: " << section;
   // Plots are gnuplot's SVG, inline: force (2), spectrum, three harmonic zooms, TE, teeth.
   std::size_t svgs = 0;
@@ -46,6 +47,9 @@ TEST(Report, HoldsEverySectionInOneSelfContainedFile) {
   EXPECT_NE(html.find("43 µm (DIN 3961 step 1.4)"), std::string::npos);
   EXPECT_NE(html.find("fault line f<sub>m</sub>/36: "), std::string::npos);
   EXPECT_EQ(html.find("fault line f<sub>m</sub>/36: no line"), std::string::npos);
+  // The ringing of a sun–planet tooth pair, √(k/m)/2π with k = 1.4e8 N/m (1.4e10 N/m per m over
+  // 10 mm) and the pair's reduced mass from summary.json: 16.35 kHz for the paper's gears.
+  EXPECT_NE(html.find("<td>1.635e+04</td>"), std::string::npos);
 }
 
 }  // namespace test_report
