@@ -1,19 +1,29 @@
-// Benchmark (issue 3): wall seconds per simulated second and peak memory of a scenario's
-// simulation on one thread, with where the time goes (tooth contact, Bullet's solver and
-// measuring), without writing logs. Prints wall and CPU time of the stepping: on a shared machine
-// the wall time includes waiting for a core. The scenario's own time step is used, so the figure belongs
-// to the step size its acceptance was measured at.
+// Benchmark (issues 3 and 18): CPU and wall seconds per simulated second, microseconds per step
+// by part, and peak memory of a scenario's run on one thread, through the same sim::simulate the
+// CLI uses (bounds checks and steady-window means included). Without --log nothing is written;
+// with --log the output-rate CSVs (anti-aliasing filter included) and the per-step HDF5 log go to
+// a temporary folder, removed afterwards. Wall time includes waiting for a core on a shared
+// machine; CPU time is this thread's work.
 // Usage: bench_dynamics [scenario.yaml=assets/scenarios/paper_dynamics_healthy.yaml] [sim_seconds=0.2]
+//                       [--set key.path=value]… [--log]
+//   e.g. bench_dynamics assets/scenarios/paper_dynamics_healthy.yaml 0.2 --set solver.time_step_s=1e-5 --log
 #include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "input/scenario_file.hpp"
-#include "physics/world.hpp"
+#include "sim/csv_logs.hpp"
+#include "sim/simulate.hpp"
+#include "sim/step_log.hpp"
+
+namespace {
 
 using Clock = std::chrono::steady_clock;
 
@@ -24,35 +34,88 @@ double thread_cpu_s() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// The CPU and wall clocks when stepping starts (the world built) and ends (observers closed).
+struct Stopwatch : gearsim::sim::Observer {
+  void on_start(const gearsim::physics::World&) override { cpu0 = thread_cpu_s(), wall0 = Clock::now(); }
+  void on_stop(const gearsim::physics::World&) override { cpu1 = thread_cpu_s(), wall1 = Clock::now(); }
+  double cpu0 = 0, cpu1 = 0;
+  Clock::time_point wall0, wall1;
+};
+
+struct Args {
+  std::string scenario = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml";
+  double seconds = 0.2;
+  std::vector<std::string> sets;
+  bool log = false;
+};
+
+Args parse(int argc, char** argv) {
+  Args a;
+  int positional = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string s = argv[i];
+    if (s == "--log") {
+      a.log = true;
+    } else if (s == "--set" && i + 1 < argc) {
+      a.sets.push_back(argv[++i]);
+    } else if (!s.empty() && s[0] != '-' && positional == 0) {
+      a.scenario = s, ++positional;
+    } else if (!s.empty() && s[0] != '-' && positional == 1) {
+      a.seconds = std::atof(s.c_str()), ++positional;
+    } else {
+      std::fprintf(stderr, "bench_dynamics: unexpected argument '%s'\nusage: bench_dynamics [scenario] [seconds] [--set k=v]… [--log]\n",
+                   s.c_str());
+      std::exit(2);
+    }
+  }
+  if (!(a.seconds > 0)) {
+    std::fprintf(stderr, "bench_dynamics: expected a positive number of simulated seconds\n");
+    std::exit(2);
+  }
+  return a;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  const std::string file =
-      argc > 1 ? argv[1] : std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml";
-  const double seconds = argc > 2 ? std::atof(argv[2]) : 0.2;
+  namespace sim = gearsim::sim;
+  const Args a = parse(argc, argv);
   const auto t0 = Clock::now();
-  const gearsim::physics::Scenario s = gearsim::input::load_scenario(file);
+  std::vector<std::string> sets = a.sets;
+  sets.push_back("duration_s=" + std::to_string(a.seconds));
+  if (!a.log) sets.push_back("output.per_step_log=false");
+  const gearsim::physics::Scenario s = gearsim::input::load_scenario(a.scenario, sets);
   const auto t1 = Clock::now();
-  gearsim::physics::World world(s);
-  const auto t2 = Clock::now();
-  const long steps = std::lround(seconds / s.solver.time_step_s);
-  const double cpu0 = thread_cpu_s();
-  for (long i = 0; i < steps; ++i) world.step();
-  const double cpu = thread_cpu_s() - cpu0;
-  const auto t3 = Clock::now();
-  auto sec = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
-  const double run = sec(t2, t3);
-  const auto& p = world.profile();
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("gearsim_bench_dynamics_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  Stopwatch watch;
+  sim::CsvLogs csv(dir, s);
+  sim::StepLogObserver steps_h5(dir / "steps.h5", s.name, s.solver.time_step_s);
+  std::vector<sim::Observer*> observers{&watch};
+  if (a.log) observers.push_back(&csv), observers.push_back(&steps_h5);
+  const sim::RunSummary r = sim::simulate(s, observers);
+  const double log_bytes = static_cast<double>(steps_h5.bytes_on_disk());
+  std::filesystem::remove_all(dir);
+  auto sec = [](Clock::time_point x, Clock::time_point y) { return std::chrono::duration<double>(y - x).count(); };
+  const double wall = sec(watch.wall0, watch.wall1), cpu = watch.cpu1 - watch.cpu0;
+  const double n = static_cast<double>(r.steps), sim_s = r.sim_seconds;
+  const double contact = r.profile.tooth_contact_s, bullet = r.profile.step_total_s - contact;
+  const double rest = wall - r.profile.step_total_s;  // bounds, steady sums, observers (logs)
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  std::printf("scenario %s: dt = %g s, %ld steps (%g s simulated)\n", s.name.c_str(), s.solver.time_step_s, steps, seconds);
+  std::printf("scenario %s: dt = %g s, %ld steps (%g s simulated), %s, status %s\n", s.name.c_str(), s.solver.time_step_s,
+              r.steps, sim_s, a.log ? "with the logs (CSV + steps.h5)" : "without logs", sim::status_name(r.status));
   std::printf("load + expand scenario  %8.3f s\n", sec(t0, t1));
-  std::printf("build world             %8.3f s\n", sec(t1, t2));
-  std::printf("stepping                %8.3f s = %.2f s per simulated second (%.1f us per step)\n", run, run / seconds,
-              1e6 * run / static_cast<double>(steps));
-  std::printf("stepping, CPU time      %8.3f s = %.2f s per simulated second (%.1f us per step)\n", cpu, cpu / seconds,
-              1e6 * cpu / static_cast<double>(steps));
-  std::printf("  tooth contact         %8.3f s (%.0f %%)\n", p.tooth_contact_s, 100 * p.tooth_contact_s / run);
-  std::printf("  Bullet + measuring    %8.3f s (%.0f %%)\n", p.step_total_s - p.tooth_contact_s,
-              100 * (p.step_total_s - p.tooth_contact_s) / run);
+  std::printf("build world             %8.3f s\n", r.setup_wall_seconds);
+  std::printf("stepping                %8.3f s = %.2f s per simulated second (%.1f us per step)\n", wall, wall / sim_s,
+              1e6 * wall / n);
+  std::printf("stepping, CPU time      %8.3f s = %.2f s per simulated second (%.1f us per step)\n", cpu, cpu / sim_s,
+              1e6 * cpu / n);
+  std::printf("  tooth contact         %8.3f s (%.0f %%, %.1f us per step)\n", contact, 100 * contact / wall, 1e6 * contact / n);
+  std::printf("  Bullet + measuring    %8.3f s (%.0f %%, %.1f us per step)\n", bullet, 100 * bullet / wall, 1e6 * bullet / n);
+  std::printf("  bounds, means, logs   %8.3f s (%.0f %%, %.1f us per step)\n", rest, 100 * rest / wall, 1e6 * rest / n);
+  if (a.log) std::printf("per-step log            %8.1f MB per simulated second\n", log_bytes / sim_s / 1e6);
   std::printf("peak resident memory    %8.1f MiB\n", static_cast<double>(usage.ru_maxrss) / 1024.0);
-  return 0;
+  return r.status == sim::RunStatus::Completed ? 0 : 4;
 }
