@@ -146,7 +146,8 @@ TEST(RunAnalysis, MeanForceAndZeroShareOfAPairOutOfContactAQuarterOfTheTime) {
   // 2 samples of every 8 carry no force, the others 100 N: share 1/4, mean 75 N, exactly.
   RunSignals s = synthetic_run();
   for (std::size_t n = 0; n < kSamples; ++n) s.pair_forces[1].force_N[n] = n % 8 < 2 ? 0.0 : 100.0;
-  const PairForceAnalysis& p = analyse_run(s, paper_like_train()).pairs.at(1);
+  const RunAnalysis r = analyse_run(s, paper_like_train());  // kept: p refers into it
+  const PairForceAnalysis& p = r.pairs.at(1);
   EXPECT_EQ(p.zero_force_share, 0.25);
   EXPECT_NEAR(p.mean_force_N, 75.0, 1e-12);
 }
@@ -161,7 +162,8 @@ TEST(RunAnalysis, ZeroShareIsCountedOnThePointSamplesWhenTheForceWasFiltered) {
     pf.point_force_N[n] = n % 4 == 0 ? 0.0 : 100.0;
     pf.force_N[n] = 75.0 + 1e-3 * std::sin(0.1 * static_cast<double>(n));
   }
-  const PairForceAnalysis& p = analyse_run(s, paper_like_train()).pairs.at(1);
+  const RunAnalysis r = analyse_run(s, paper_like_train());  // kept: p refers into it
+  const PairForceAnalysis& p = r.pairs.at(1);
   EXPECT_EQ(p.zero_force_share, 0.25);
   EXPECT_NEAR(p.mean_force_N, 75.0, 1e-3);
   pf.point_force_N.pop_back();  // a point series of another length is refused, naming the pair
