@@ -1,15 +1,29 @@
 # Small helpers shared by every folder's CMakeLists.
 
+# The fuzz build (fuzz/, GEARSIM_FUZZ) needs clang's libFuzzer; GCC has none.
+if(GEARSIM_FUZZ AND NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+  message(FATAL_ERROR "GEARSIM_FUZZ needs clang (libFuzzer), not ${CMAKE_CXX_COMPILER_ID}: configure a "
+                      "fresh build folder with CC=clang CXX=clang++ (scripts/fuzz.sh does)")
+endif()
+
 # Warnings (and sanitizers when asked) on one of our targets.
 function(gearsim_target_defaults target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                            -Wno-sign-conversion)
-  if(GEARSIM_UNITY)
+  if(GEARSIM_UNITY AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     # A unity batch #includes the sources, so GCC no longer sees an Impl's anonymous-namespace
     # members as belonging to the main file and warns; the warning is only about that inclusion.
     target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
   endif()
-  if(GEARSIM_SANITIZE)
+  if(GEARSIM_FUZZ)
+    # Every library a fuzz target links carries libFuzzer's coverage hooks and the sanitizers;
+    # the fuzz targets themselves add -fsanitize=fuzzer (libFuzzer's main). Undefined behaviour
+    # aborts, so that libFuzzer keeps a reproducer.
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined
+                                             -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+                                             -fsanitize-coverage-ignorelist=${PROJECT_SOURCE_DIR}/fuzz/coverage_ignore.txt)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  elseif(GEARSIM_SANITIZE)
     target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()

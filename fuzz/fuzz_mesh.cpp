@@ -1,0 +1,45 @@
+// libFuzzer target: the input as a mesh file, through what a scenario does with a mesh named in
+// it (read_mesh_gear: import, validation as a solid, prism recovery, gear recognition), then the
+// checks against a tooth layout and the unit. The first byte picks the format and unit; the rest
+// is the file (STL, binary or ASCII as Assimp detects it, or OBJ). An InputError is an expected
+// rejection; any other exception escapes, and libFuzzer reports it as a crash.
+#include <cstddef>
+#include <cstdint>
+#include <numbers>
+
+#include "fuzz/fuzz_input_file.hpp"
+#include "geometry/errors.hpp"
+#include "geometry/mesh_gear.hpp"
+
+namespace {
+
+using namespace gearsim;
+
+// The units a scenario gives meshes most: mm (CAD), m, inch.
+constexpr LengthUnit kUnits[] = {LengthUnit::Millimetre, LengthUnit::Metre, LengthUnit::Inch};
+
+void read_as_scenario_does(const std::filesystem::path& file, LengthUnit unit) {
+  const MeshGearFile f = read_mesh_gear(file, unit);
+  if (!f.gear || !f.gear->recognition.gear) return;
+  const RecognisedGear& g = *f.gear->recognition.gear;
+  (void)implausible_unit(g, unit);
+  // A layout as a scenario would give it: the recognised count, tooth 0 a small angle off.
+  (void)layout_mismatch(g, ToothLayout{g.teeth, g.tooth0_angle_rad + 0.3 * std::numbers::pi / 180});
+  (void)layout_mismatch(g, ToothLayout{g.teeth + 1, 0.0});
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const fuzz::InputFolder folder("mesh");
+  if (size < 1) return 0;
+  const bool obj = data[0] & 1;
+  const LengthUnit unit = kUnits[(data[0] >> 1) % 3];
+  const std::filesystem::path file = folder.write(obj ? "input.obj" : "input.stl", data + 1, size - 1);
+  try {
+    read_as_scenario_does(file, unit);
+  } catch (const InputError&) {
+    // Refused with a message: expected for most inputs.
+  }
+  return 0;
+}
