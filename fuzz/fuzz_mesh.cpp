@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "fuzz/fuzz_input_file.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 #include "geometry/mesh_gear.hpp"
 
 namespace {
@@ -20,12 +20,12 @@ constexpr LengthUnit kUnits[] = {LengthUnit::Millimetre, LengthUnit::Metre, Leng
 
 void read_as_scenario_does(const std::filesystem::path& file, LengthUnit unit) {
   const MeshGearFile f = read_mesh_gear(file, unit);
-  if (!f.gear || !f.gear->recognition.gear) return;
-  const RecognisedGear& g = *f.gear->recognition.gear;
-  (void)implausible_unit(g, unit);
+  if (!f.gear || !f.gear->recognition) return;
+  const RecognisedGear& g = *f.gear->recognition;
+  (void)check_unit(g, unit);
   // A layout as a scenario would give it: the recognised count, tooth 0 a small angle off.
-  (void)layout_mismatch(g, ToothLayout{g.teeth, g.tooth0_angle_rad + 0.3 * std::numbers::pi / 180});
-  (void)layout_mismatch(g, ToothLayout{g.teeth + 1, 0.0});
+  (void)check_layout(g, ToothLayout{g.teeth, g.tooth0_angle_rad + 0.3 * std::numbers::pi / 180});
+  (void)check_layout(g, ToothLayout{g.teeth + 1, 0.0});
 }
 
 }  // namespace

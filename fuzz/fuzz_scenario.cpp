@@ -10,9 +10,9 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "app/scenario_file.hpp"
+#include "input/scenario_file.hpp"
 #include "fuzz/fuzz_input_file.hpp"
-#include "geometry/errors.hpp"
+#include "core/errors.hpp"
 
 namespace {
 
@@ -45,7 +45,7 @@ const gearsim::fuzz::InputFolder& scenario_folder() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const fs::path file = scenario_folder().write("scenarios/input.yaml", data, size);
   try {
-    (void)gearsim::app::load_scenario(file);
+    (void)gearsim::input::load_scenario(file);
   } catch (const gearsim::InputError&) {
     // Refused with a message naming file, line and key: expected for most inputs.
   }
