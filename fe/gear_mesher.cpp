@@ -143,7 +143,7 @@ RawMesh run_gmsh(const std::vector<Loop>& loops, SizeFn size_of) {
     std::vector<std::vector<int>> point_tags(loops.size());
     const int surface = add_gmsh_geometry(loops, point_tags);
 
-    // Size only from size_of (radial rule and boundary grading); quads by Blossom recombination of Frontal-Delaunay triangles.
+    // Size only from size_of (radial rule and boundary grading); quads by Blossom recombination of Delaunay triangles (kGmshAlgorithm2D).
     gmsh::model::mesh::setSizeCallback(
         [size_of](int, int, double x, double y, double) { return size_of(x, y); });
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);

@@ -1,7 +1,7 @@
 // Quadrilateral finite-element meshes of a gear's planar outline (for CalculiX plane stress,
 // CPS4R), made with Gmsh's C++ API: the boundary resampled at the flank element size with every
-// node on the outline, Frontal-Delaunay triangles of a radially graded size recombined into quads
-// by Blossom. Not a deck writer, and not the tooth/flank bookkeeping (gear_mesh_regions.hpp).
+// node on the outline, Delaunay triangles (gmsh algorithm kGmshAlgorithm2D = 5) of a radially
+// graded size recombined into quads by Blossom. Not a deck writer, and not the tooth/flank bookkeeping (gear_mesh_regions.hpp).
 #pragma once
 
 #include "geometry/gear_profile.hpp"
@@ -18,8 +18,9 @@ struct MeshSizingDef {
   double flank_size_m = kDefaultFlankElementSize_m;  // m, normally 0.4 mm (paper's converged size)
   double core_size_m = kDefaultCoreElementSize_m;    // m, normally 2 mm; ≥ flank_size_m
   double transition_m = kDefaultSizeTransition_m;    // m, normally 3 mm; ≥ 0
-  // Largest distance of a toothed-loop edge from the true outline, m (normally 0.5 µm; 0 turns the
-  // limit off and keeps flank_size_m along the whole loop). Edges shorten where the outline
+  // Largest distance of a toothed-loop edge from the true outline, m (default kDefaultMaxSagitta_m,
+  // 5 µm; paper_te_loaded.yaml gives 1 µm; 0 turns the limit off and keeps flank_size_m along the
+  // whole loop). Edges shorten where the outline
   // curves (flanks near the base circle, root fillets): see resample_loop.
   double max_sagitta_m = kDefaultMaxSagitta_m;
   // Mesh at twice the size and split every element into quads (quads into 4, triangles into 3),

@@ -63,7 +63,8 @@ void add_bodies(DeckDef& deck, const PlanetarySpec& ps, const PlanetaryPosition&
   deck.bodies.push_back({"RING", to_fe_mesh(meshes.ring.mesh), pos.ring.centre_m, pos.ring.angle_rad, FeSupport::Fixed});
 }
 
-// Contacts: sun (slave) on each planet, each planet (slave) on the ring; sets p.sun_mesh_teeth.
+// Contacts: each planet tooth near the sun (slave) on the sun (master), one pair per tooth, and
+// each planet (slave) on the ring (master); sets p.sun_mesh_teeth.
 void add_contacts(PositionDeck& p, const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes,
                   const std::vector<std::vector<ToothedEdgeTag>>& planet_tags, double band) {
   const PlanetarySpec& ps = def.spec;
