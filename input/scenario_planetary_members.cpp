@@ -82,7 +82,7 @@ InvoluteTeeth member_involutes(const YamlMap& m, const std::string& key, const p
 PlanetaryMembers members_from_spec(const YamlMap& m, const fs::path& dir) {
   PlanetaryMembers s;
   s.spec_file = resolve(dir, m.string("spec"));
-  if (!fs::is_regular_file(s.spec_file)) m.fail("spec", "gear-set spec file not found: " + s.spec_file.string());
+  if (std::error_code ec; !fs::is_regular_file(s.spec_file, ec)) m.fail("spec", "gear-set spec file not found: " + s.spec_file.string());
   const GearSetFile f = load_gearset(s.spec_file);
   // Gear names and planet count default to the spec's planetary train.
   const auto& t = f.planetary;

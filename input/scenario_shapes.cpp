@@ -41,7 +41,7 @@ namespace {
 // gear_from: {spec: FILE, gear: NAME}; also returns the spec's density.
 GearSpec gear_from(const YamlMap& m, const fs::path& dir, double& density_kg_m3) {
   const fs::path spec = resolve(dir, m.string("spec"));
-  if (!fs::is_regular_file(spec)) m.fail("spec", "gear-set spec file not found: " + spec.string());
+  if (std::error_code ec; !fs::is_regular_file(spec, ec)) m.fail("spec", "gear-set spec file not found: " + spec.string());
   const GearSetFile f = load_gearset(spec);
   const std::string name = m.string("gear");
   m.reject_unknown_keys();
@@ -84,7 +84,9 @@ void check_gear_mesh(const YamlMap& m, physics::MeshSource& src) {
 physics::MeshSource mesh_source(const YamlMap& m, const fs::path& dir) {
   physics::MeshSource src;
   src.path = resolve(dir, m.string("file"));
-  if (!fs::is_regular_file(src.path)) m.fail("file", "mesh file not found: " + src.path.string());
+  // The error_code overload: a path the system refuses (a name past NAME_MAX) is not found,
+  // not a filesystem_error.
+  if (std::error_code ec; !fs::is_regular_file(src.path, ec)) m.fail("file", "mesh file not found: " + src.path.string());
   const std::string unit = m.string("unit");
   const std::optional<LengthUnit> u = parse_length_unit(unit);
   if (!u) m.fail("unit", "expected a length unit (m, cm, mm, um, in, ft), got '" + unit + "'");

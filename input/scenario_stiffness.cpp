@@ -55,7 +55,7 @@ std::pair<double, double> active_flank(const GearSpec& a, const GearSpec& b, dou
 contact::StiffnessTable read_table(const YamlMap& m, const fs::path& dir) {
   contact::StiffnessTable t;
   const fs::path file = resolve(dir, m.string("file"));
-  if (!fs::is_regular_file(file)) m.fail("file", "stiffness table not found: " + file.string());
+  if (std::error_code ec; !fs::is_regular_file(file, ec)) m.fail("file", "stiffness table not found: " + file.string());
   t.source = file.string();
   try {
     const CsvTable csv = read_csv(file);

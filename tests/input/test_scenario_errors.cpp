@@ -132,6 +132,15 @@ TEST(ScenarioErrors, MissingMeshFileNamesTheResolvedPath) {
   EXPECT_NAMES(e, "bodies[0].mesh.file", "mesh file not found", resolved.c_str());
 }
 
+// Found by fuzz_scenario: a file name past the system's NAME_MAX (255 bytes) made
+// std::filesystem throw filesystem_error (an internal error, exit 3) instead of refusing it.
+TEST(ScenarioErrors, MeshFileNameTooLongForTheSystemIsRefusedAsNotFound) {
+  const std::string name = "parts/" + std::string(300, 'w') + ".stl";
+  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+                                         "density_kg_m3: 7850, mesh: {file: " + name + ", unit: mm}"));
+  EXPECT_NAMES(e, "bodies[0].mesh.file", "mesh file not found");
+}
+
 TEST(ScenarioErrors, NegativeMass) {
   EXPECT_NAMES(error_for(edited("mass_kg: 1.0", "mass_kg: -1.0")), "bodies[0].mass_kg", "expected a positive mass");
 }
