@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   gearsim::app::register_report(app);
   gearsim::app::register_render(app);
   gearsim::app::register_fe_te(app);
+  gearsim::app::register_modes(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -81,14 +81,6 @@ struct Names {
   std::set<std::string> joints;
 };
 
-physics::BearingDef parse_bearing(const YamlMap& m) {
-  physics::BearingDef b;
-  b.radial_stiffness_N_per_m = positive(m, "radial_stiffness_N_per_m", "stiffness in N/m");
-  b.radial_damping_N_s_per_m = non_negative_or(m, "radial_damping_N_s_per_m", 0.0, "a damping in N·s/m");
-  m.reject_unknown_keys();
-  return b;
-}
-
 physics::JointDef parse_joint(const YamlMap& m, const Names& names) {
   physics::JointDef j;
   j.name = m.string("name");
@@ -187,6 +179,7 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
     // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
     if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
+    if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");
     m.reject_unknown_keys();
   }
 }
@@ -279,9 +272,11 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
     proposed = t;
   }
   s.transmission = proposed;
-  if (given(top, "contact"))
-    if (const YamlMap c = top.map("contact"); given(c, "stiffness_tables"))
-      parse_stiffness_tables(c.list_of_maps("stiffness_tables"), s, dir);
+  if (given(top, "contact")) {
+    const YamlMap c = top.map("contact");
+    if (given(c, "stiffness_tables")) parse_stiffness_tables(c.list_of_maps("stiffness_tables"), s, dir);
+    if (given(c, "mesh_stiffnesses")) parse_mesh_stiffnesses(c.list_of_maps("mesh_stiffnesses"), s);
+  }
   if (given(top, "fe")) s.fe = parse_fe(top.map("fe"), s);
   top.reject_unknown_keys();
   return s;

@@ -79,7 +79,9 @@ json joint_json(const physics::JointDef& jd) {
   json j = {{"name", jd.name}, {"body", jd.body}, {"parent", jd.parent}, {"pivot_m", vec(jd.pivot_m)}, {"axis", vec(jd.axis)}};
   if (jd.bearing)
     j["bearing"] = {{"radial_stiffness_N_per_m", jd.bearing->radial_stiffness_N_per_m},
-                    {"radial_damping_N_s_per_m", jd.bearing->radial_damping_N_s_per_m}};
+                    {"radial_damping_N_s_per_m", jd.bearing->radial_damping_N_s_per_m},
+                    {"torsional_stiffness_N_m_per_rad", jd.bearing->torsional_stiffness_N_m_per_rad},
+                    {"torsional_damping_N_m_s_per_rad", jd.bearing->torsional_damping_N_m_s_per_rad}};
   return j;
 }
 
@@ -129,7 +131,13 @@ json scenario_json(const physics::Scenario& s) {
                         {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m},
                         {"body_stiffness_N_per_m", t.body_stiffness_N_per_m}});
     j["contact"]["stiffness_tables"] = tables;
+  }  if (!s.contact.mesh_stiffnesses.empty()) {
+    json meshes = json::array();
+    for (const physics::PairMeshStiffnessDef& m : s.contact.mesh_stiffnesses)
+      meshes.push_back({{"body_a", m.body_a}, {"body_b", m.body_b}, {"stiffness_N_per_m", m.stiffness_N_per_m}});
+    j["contact"]["mesh_stiffnesses"] = meshes;
   }
+
   j["bodies"] = json::array();
   for (const physics::BodyDef& b : s.bodies) j["bodies"].push_back(body_json(b));
   j["joints"] = json::array();

@@ -2,6 +2,7 @@
 // into plain bodies and hinges placed so that every mesh engages (tooth centred in the mating
 // gap), plus the ideal transmission. This file holds what both use: a turn about z, a hinge, a
 // gear body's involutes and a mesh's checked gear-table figures.
+#include <cmath>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -22,6 +23,21 @@ physics::JointDef hinge(const std::string& name, const std::string& parent, cons
   j.parent = parent;
   j.pivot_m = pivot_m;
   return j;  // axis +z
+}
+
+physics::BearingDef parse_bearing(const YamlMap& m) {
+  auto non_negative = [&](const std::string& key, const std::string& what) {
+    const double v = m.number_or(key, 0.0);
+    if (!(v >= 0) || !std::isfinite(v)) m.fail(key, "expected " + what + " ≥ 0");
+    return v;
+  };
+  physics::BearingDef b;
+  b.radial_stiffness_N_per_m = positive(m, "radial_stiffness_N_per_m", "stiffness in N/m");
+  b.radial_damping_N_s_per_m = non_negative("radial_damping_N_s_per_m", "a damping in N·s/m");
+  b.torsional_stiffness_N_m_per_rad = non_negative("torsional_stiffness_N_m_per_rad", "a torsional stiffness in N·m/rad (0: free to turn)");
+  b.torsional_damping_N_m_s_per_rad = non_negative("torsional_damping_N_m_s_per_rad", "a torsional damping in N·m·s/rad");
+  m.reject_unknown_keys();
+  return b;
 }
 
 std::optional<InvoluteTeeth> involutes_of(const physics::BodyDef& b, std::string& why) {

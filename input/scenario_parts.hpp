@@ -42,6 +42,9 @@ Eigen::Vector3d vec3_or(const YamlMap& m, const std::string& key, const Eigen::V
 // Does not reject unknown keys: the caller reads more.
 void parse_shape_and_mass(const YamlMap& m, physics::BodyDef& body, const std::filesystem::path& dir);
 
+// A `bearing:` mapping: radial stiffness (> 0) and damping, torsional stiffness and damping
+// (≥ 0, default 0: free to turn); unknown keys refused.
+physics::BearingDef parse_bearing(const YamlMap& m);
 
 // The `planetary:` macro: sun, planet_0..planet_{N−1}, ring, carrier and their hinges.
 Expansion expand_planetary(const YamlMap& m, const std::filesystem::path& dir);
@@ -57,6 +60,13 @@ Expansion expand_pair(const YamlMap& m, const std::filesystem::path& dir);
 // pair's active flank on A (start of active profile to tip) is not inside the table's radii.
 void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenario& scenario,
                             const std::filesystem::path& dir);
+
+// contact.mesh_stiffnesses (after the bodies are known): each entry {gears: [A, B],
+// stiffness_N_per_m: k} gives every meshing body pair it matches (names as for stiffness
+// tables) the constant mesh stiffness k, shared by the tooth pairs in contact. InputError naming
+// the entry when a name matches no gear, the names match no meshing pair, or a pair already has a
+// mesh stiffness or a stiffness table.
+void parse_mesh_stiffnesses(const std::vector<YamlMap>& entries, physics::Scenario& scenario);
 
 // The `fe:` section (after the macros: the torque default needs the train and the loads).
 physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& scenario);

@@ -93,6 +93,34 @@ void check_assembly(const YamlMap& m, const PlanetaryMembers& s, const Planetary
   }
 }
 
+// The members' compliant supports (`supports:`, and the older `floating_sun:`, a sun's radial
+// bearing): none given, a rigid hinge (or a welded fixed ring).
+struct Supports {
+  std::optional<physics::BearingDef> sun, planets, ring, carrier;
+};
+
+Supports parse_supports(const YamlMap& m) {
+  Supports s;
+  if (given(m, "floating_sun")) {
+    const YamlMap b = m.map("floating_sun");
+    s.sun = physics::BearingDef{positive(b, "radial_stiffness_N_per_m", "stiffness in N/m"),
+                                b.number_or("radial_damping_N_s_per_m", 0.0), 0, 0};
+    if (s.sun->radial_damping_N_s_per_m < 0) b.fail("radial_damping_N_s_per_m", "expected a damping ≥ 0 in N·s/m");
+    b.reject_unknown_keys();
+  }
+  if (!given(m, "supports")) return s;
+  const YamlMap sup = m.map("supports");
+  if (given(sup, "sun")) {
+    if (s.sun) sup.fail("sun", "the sun's support is given twice: here and as floating_sun");
+    s.sun = parse_bearing(sup.map("sun"));
+  }
+  if (given(sup, "planets")) s.planets = parse_bearing(sup.map("planets"));
+  if (given(sup, "ring")) s.ring = parse_bearing(sup.map("ring"));
+  if (given(sup, "carrier")) s.carrier = parse_bearing(sup.map("carrier"));
+  sup.reject_unknown_keys();
+  return s;
+}
+
 }  // namespace
 
 Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
@@ -105,15 +133,12 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   const double carrier_mass_kg = positive(c, "mass_kg", "carrier mass in kg");
   const double carrier_jz = positive(c, "inertia_z_kg_m2", "carrier moment of inertia in kg·m²");
   c.reject_unknown_keys();
-  std::optional<physics::BearingDef> floating;
-  if (given(m, "floating_sun")) {
-    const YamlMap b = m.map("floating_sun");
-    floating = physics::BearingDef{positive(b, "radial_stiffness_N_per_m", "stiffness in N/m"),
-                                   b.number_or("radial_damping_N_s_per_m", 0.0)};
-    if (floating->radial_damping_N_s_per_m < 0) b.fail("radial_damping_N_s_per_m", "expected a damping ≥ 0 in N·s/m");
-    b.reject_unknown_keys();
-  }
+  const Supports supports = parse_supports(m);
   const bool ring_fixed = m.boolean_or("ring_fixed", true);
+  if (ring_fixed && supports.ring && !(supports.ring->torsional_stiffness_N_m_per_rad > 0))
+    m.map("supports").map("ring").fail("torsional_stiffness_N_m_per_rad",
+                                         "a fixed ring on a bearing is held against rotation by its torsional spring: expected a stiffness > 0 in N·m/rad "
+                                         "(or ring_fixed: false for a ring free to turn)");
   const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
   std::vector<physics::PairTableDef> tables;
   // The set's geometry last: the mesh analysis is the slow part.
@@ -135,8 +160,9 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   };
   place(s.sun, origin, 0.0);
   e.joints.push_back(hinge("sun", "ground", origin));
-  e.joints.back().bearing = floating;
+  e.joints.back().bearing = supports.sun;
   e.joints.push_back(hinge("carrier", "ground", origin));  // before the planets it carries
+  e.joints.back().bearing = supports.carrier;
   physics::BodyDef carrier;
   carrier.name = "carrier";
   carrier.mass_kg = carrier_mass_kg;
@@ -151,10 +177,15 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
     // The spin places the planet's tooth 0 as the phasing placed the healthy planet's.
     place(planet, centre, p.spin_angle_rad + tooth0_of_member(s.planet) - tooth0_of_member(planet));
     e.joints.push_back(hinge(planet.name, "carrier", centre));
+    e.joints.back().bearing = supports.planets;
   }
   place(s.ring, origin, g.ring_angle_rad);
-  e.bodies.back().fixed = ring_fixed;
-  if (!ring_fixed) e.joints.push_back(hinge("ring", "ground", origin));
+  // A fixed ring is welded to the ground, or held by its support's springs when it has one.
+  e.bodies.back().fixed = ring_fixed && !supports.ring;
+  if (!e.bodies.back().fixed) {
+    e.joints.push_back(hinge("ring", "ground", origin));
+    e.joints.back().bearing = supports.ring;
+  }
   e.bodies.push_back(carrier);
   // Ring fixed, sun in, carrier out: θ_sun = (1 + z_r/z_s)·θ_carrier (Willis).
   if (ring_fixed) e.transmission = physics::TransmissionDef{"sun", "carrier", g.ratio_sun_to_carrier};

@@ -170,7 +170,10 @@ physics::JointDef joint_of(const Node& n) {
   physics::JointDef j{n.string("name"), n.string("body"), n.string("parent"), n.vec3("pivot_m"), n.vec3("axis"), {}};
   if (n.has("bearing")) {
     const Node b = n.object("bearing");
-    j.bearing = physics::BearingDef{b.number("radial_stiffness_N_per_m"), b.number("radial_damping_N_s_per_m")};
+    j.bearing = physics::BearingDef{b.number("radial_stiffness_N_per_m"), b.number("radial_damping_N_s_per_m"), 0, 0};
+    // Records written before torsional supports existed have neither key (a torsionally free bearing).
+    if (b.has("torsional_stiffness_N_m_per_rad")) j.bearing->torsional_stiffness_N_m_per_rad = b.number("torsional_stiffness_N_m_per_rad");
+    if (b.has("torsional_damping_N_m_s_per_rad")) j.bearing->torsional_damping_N_m_s_per_rad = b.number("torsional_damping_N_m_s_per_rad");
   }
   return j;
 }
@@ -190,6 +193,9 @@ physics::ContactDef contact_of(const Node& n) {
       if (const Check ok = contact::check_stiffness_table(d.table); !ok) t.fail("radius_a_m", ok.reason());
       c.stiffness_tables.push_back(std::move(d));
     }
+  if (n.has("mesh_stiffnesses"))
+    for (const Node& m : n.list("mesh_stiffnesses"))
+      c.mesh_stiffnesses.push_back({m.string("body_a"), m.string("body_b"), m.number("stiffness_N_per_m")});
   return c;
 }
 

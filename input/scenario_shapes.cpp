@@ -138,8 +138,8 @@ void parse_shape_and_mass(const YamlMap& m, physics::BodyDef& b, const fs::path&
   if (b.mass_kg && !(*b.mass_kg > 0)) m.fail("mass_kg", "expected a positive mass in kg");
   if (given(m, "principal_inertia_kg_m2")) b.principal_inertia_kg_m2 = principal_inertia(m);
   if (shapes == 1) {
-    if (b.principal_inertia_kg_m2)
-      m.fail("principal_inertia_kg_m2", "a body with a shape takes its inertia from the shape; give density_kg_m3 or mass_kg");
+    if (b.principal_inertia_kg_m2 && !b.mass_kg)
+      m.fail("principal_inertia_kg_m2", "moments that replace the shape's need mass_kg (not density_kg_m3) beside them");
     if (!b.density_kg_m3 && !b.mass_kg) b.density_kg_m3 = spec_density;  // gear_from: the spec's material
     if (!b.density_kg_m3 && !b.mass_kg) m.fail_here("body '" + b.name + "' needs density_kg_m3 or mass_kg");
   } else {

@@ -2,6 +2,7 @@
 // match, its CSV file read and checked, and its range checked against each pair's active flank
 // on the first gear. See parse_stiffness_tables() in scenario_parts.hpp.
 #include <cmath>
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -126,6 +127,35 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
                                mm(flank.first) + "–" + mm(flank.second) + " mm (start of active profile to tip)");
         }
         s.contact.stiffness_tables.push_back({a.name, b.name, table, body});
+        ++pairs;
+      }
+    if (pairs == 0) m.fail("gears", "gears '" + names[0] + "' and '" + names[1] + "' do not mesh anywhere in this scenario");
+  }
+}
+
+void parse_mesh_stiffnesses(const std::vector<YamlMap>& entries, physics::Scenario& s) {
+  std::map<std::pair<std::string, std::string>, std::string> taken;  // body pair → what set its stiffness
+  for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)
+    taken[std::minmax(t.body_a, t.body_b)] = "a stiffness table (" + t.table.source + ")";
+  for (const YamlMap& m : entries) {
+    const std::vector<std::string> names = m.strings("gears", 2);
+    const double k = positive(m, "stiffness_N_per_m", "mesh stiffness in N/m");
+    if (!std::isfinite(k)) m.fail("stiffness_N_per_m", "expected a finite mesh stiffness in N/m");
+    m.reject_unknown_keys();
+    for (int side = 0; side < 2; ++side) {
+      bool any = false;
+      for (const physics::BodyDef& b : s.bodies) any = any || (toothed(b) && matches(names[side], b.name));
+      if (!any) m.fail("gears", "no gear body named '" + names[side] + "' (or '" + names[side] + "_<n>')");
+    }
+    int pairs = 0;
+    for (const physics::BodyDef& a : s.bodies)
+      for (const physics::BodyDef& b : s.bodies) {
+        if (&a == &b || !toothed(a) || !toothed(b) || !matches(names[0], a.name) || !matches(names[1], b.name)) continue;
+        const double d = (a.pose.position_m - b.pose.position_m).head<2>().norm();
+        if (a.gear && b.gear && !can_reach(*a.gear, *b.gear, d)) continue;
+        if (const auto [it, fresh] = taken.emplace(std::minmax(a.name, b.name), "a mesh stiffness"); !fresh)
+          m.fail("gears", "gears '" + a.name + "' and '" + b.name + "' already have " + it->second);
+        s.contact.mesh_stiffnesses.push_back({a.name, b.name, k});
         ++pairs;
       }
     if (pairs == 0) m.fail("gears", "gears '" + names[0] + "' and '" + names[1] + "' do not mesh anywhere in this scenario");

@@ -46,15 +46,23 @@ struct BodyDef {
   // centre of mass (for shapeless bodies such as a carrier arm).
   std::optional<double> density_kg_m3;
   std::optional<double> mass_kg;
-  std::optional<Eigen::Vector3d> principal_inertia_kg_m2;  // with mass_kg, body axes
+  // With mass_kg: the moments about the centre of mass in the body's own axes (z the gear axis).
+  // Required for a shapeless body; for a gear or mesh it replaces the shape's own inertia (a
+  // lumped model's member whose hub, shaft or rim the shape does not hold).
+  std::optional<Eigen::Vector3d> principal_inertia_kg_m2;
   Pose pose;
   bool fixed = false;  // welded to the ground (a fixed ring gear)
 };
 
-// Radial compliance of a bearing: the joint's pivot may move perpendicular to its axis.
+// A compliant support: the joint's pivot may move perpendicular to its axis against an isotropic
+// radial spring and damper, and (torsional_stiffness > 0) the body's turn relative to its parent
+// is held by a torsional spring and damper (a ring gear held against rotation, a flexible
+// coupling). Torsional 0: free to turn, as a hinge.
 struct BearingDef {
   double radial_stiffness_N_per_m = 0;
   double radial_damping_N_s_per_m = 0;
+  double torsional_stiffness_N_m_per_rad = 0;
+  double torsional_damping_N_m_s_per_rad = 0;
 };
 
 // A revolute joint of `body` about `axis` through `pivot_m` (world, at t = 0), to `parent`
@@ -105,6 +113,15 @@ struct PairStiffnessDef {
   double body_stiffness_N_per_m = 0;
 };
 
+// A constant mesh stiffness for the meshes between two gear bodies (by name), N/m along the line
+// of action: the tooth pairs in contact share it equally (n pairs: k/n each), so the mesh's
+// stiffness does not vary as pairs come and go — the time-invariant mesh of lumped models (Lin &
+// Parker 1999). Neither this nor a stiffness table: each pair has the constant per face width.
+struct PairMeshStiffnessDef {
+  std::string body_a, body_b;
+  double stiffness_N_per_m = 0;
+};
+
 // Tooth contact: a compliant, damped, unilateral contact with one point per tooth pair.
 struct ContactDef {
   // Single-pair tooth stiffness per face width, N/m per m (ISO 6336 c' ≈ 14 N/(mm·µm) = 1.4e10).
@@ -112,6 +129,7 @@ struct ContactDef {
   // Pairs listed here take the stiffness of each contact from their table at the contact's
   // radius on body_a instead (the damping follows from it); the others keep the constant.
   std::vector<PairStiffnessDef> stiffness_tables;
+  std::vector<PairMeshStiffnessDef> mesh_stiffnesses;  // pairs with a constant mesh stiffness
   double damping_ratio = 0.05;  // of the pair's critical damping along the line of action
   double friction = 0.0;        // Coulomb coefficient on the flanks
   // Chordal deviation of the outline the flank tables are built from. The tables interpolate

@@ -50,6 +50,12 @@ void make_constraint(JointRec& jr, btRigidBody& rb, btRigidBody* parent) {
     jr.spring->setStiffness(axis, jd.bearing->radial_stiffness_N_per_m);
     jr.spring->setDamping(axis, jd.bearing->radial_damping_N_s_per_m);
   }
+  if (jd.bearing->torsional_stiffness_N_m_per_rad > 0 || jd.bearing->torsional_damping_N_m_s_per_rad > 0) {
+    // The spin (axis 5) held by a torsional spring about the start angle, not locked.
+    jr.spring->enableSpring(5, true);
+    jr.spring->setStiffness(5, jd.bearing->torsional_stiffness_N_m_per_rad);
+    jr.spring->setDamping(5, jd.bearing->torsional_damping_N_m_s_per_rad);
+  }
   jr.spring->setEquilibriumPoint();
 }
 
@@ -160,14 +166,23 @@ void World::Impl::find_pairs() {
       pr.manifold = dispatcher.getNewManifold(bodies[pr.a].rigid.get(), bodies[pr.b].rigid.get());
       pr.manifold->setContactProcessingThreshold(BT_LARGE_FLOAT);
       pr.info = pair_contact(bodies[pr.a], bodies[pr.b], scenario.contact);
+      pr.stiffness.pair_stiffness_N_per_m = pr.info.stiffness_N_per_m;
+      pr.stiffness.face_width_m = pr.info.face_width_m;
       for (const PairStiffnessDef& t : scenario.contact.stiffness_tables) {
         const std::string &na = bodies[pr.a].name, &nb = bodies[pr.b].name;
         if (!((t.body_a == na && t.body_b == nb) || (t.body_a == nb && t.body_b == na))) continue;
-        if (pr.table) throw InputError("scenario: contact.stiffness_tables: two tables for gears '" + na + "' and '" + nb + "'");
-        pr.table = &t.table;
-        pr.table_on_a = t.body_a == na;
-        pr.body_stiffness_N_per_m = t.body_stiffness_N_per_m;
+        if (pr.stiffness.table) throw InputError("scenario: contact.stiffness_tables: two tables for gears '" + na + "' and '" + nb + "'");
+        pr.stiffness.table = &t.table;
+        pr.stiffness.table_on_a = t.body_a == na;
+        pr.stiffness.body_stiffness_N_per_m = t.body_stiffness_N_per_m;
         pr.info.stiffness_table = t.table.source;
+      }
+      for (const PairMeshStiffnessDef& k : scenario.contact.mesh_stiffnesses) {
+        const std::string &na = bodies[pr.a].name, &nb = bodies[pr.b].name;
+        if (!((k.body_a == na && k.body_b == nb) || (k.body_a == nb && k.body_b == na))) continue;
+        if (pr.stiffness.table || pr.stiffness.mesh_stiffness_N_per_m > 0)
+          throw InputError("scenario: contact.mesh_stiffnesses: gears '" + na + "' and '" + nb + "' have a stiffness table or mesh stiffness already");
+        pr.stiffness.mesh_stiffness_N_per_m = pr.info.mesh_stiffness_N_per_m = k.stiffness_N_per_m;
       }
       pairs.push_back(std::move(pr));
       pair_infos.push_back(pairs.back().info);
@@ -187,10 +202,18 @@ void World::Impl::check_start() {
   }
   for (const PairStiffnessDef& t : scenario.contact.stiffness_tables) {
     bool used = false;
-    for (const PairRec& pr : pairs) used = used || pr.table == &t.table;
+    for (const PairRec& pr : pairs) used = used || pr.stiffness.table == &t.table;
     if (!used)
       throw InputError("scenario: stiffness table " + t.table.source + ": gears '" + t.body_a + "' and '" + t.body_b +
                        "' do not mesh (no tooth contact between them)");
+  }
+  for (const PairMeshStiffnessDef& k : scenario.contact.mesh_stiffnesses) {
+    bool used = false;
+    for (const PairRec& pr : pairs)
+      used = used || (pr.stiffness.mesh_stiffness_N_per_m > 0 && ((bodies[pr.a].name == k.body_a && bodies[pr.b].name == k.body_b) ||
+                                                        (bodies[pr.a].name == k.body_b && bodies[pr.b].name == k.body_a)));
+    if (!used)
+      throw InputError("scenario: contact.mesh_stiffnesses: gears '" + k.body_a + "' and '" + k.body_b + "' do not mesh (no tooth contact between them)");
   }
 }
 

@@ -12,6 +12,7 @@
 
 #include "physics/scenario.hpp"
 #include "contact/tooth_contact.hpp"
+#include "physics/tooth_pair_stiffness.hpp"
 
 namespace gearsim::physics {
 
@@ -50,6 +51,35 @@ struct GearPairInfo {
   double reduced_mass_kg = 0;    // along the line of action, for the damping c = 2ζ√(k·m)
   double tooth_height_m = 0;     // radial extent of the smaller of the two gears' teeth
   std::string stiffness_table;   // the table's source when the pair has one, else empty
+  double mesh_stiffness_N_per_m = 0;  // a constant mesh stiffness shared by its tooth pairs (0: none)
+};
+
+// The world as built, before its first step, for a linearised model (linear/): pointers into the
+// World, valid while it lives.
+struct StructureBody {
+  std::string name;
+  double mass_kg = 0;
+  double inertia_z_kg_m2 = 0;  // about its axis (z) through the centre of mass
+  Eigen::Vector2d centre_of_mass_m = Eigen::Vector2d::Zero();
+  bool fixed = false;                           // welded to the ground
+  const contact::FlankTable* flanks = nullptr;  // gears only
+  contact::PlanarPose gear_pose;                // gears only
+};
+struct StructureJoint {
+  const JointDef* def = nullptr;
+  int body = -1, parent = -1;  // parent −1: the ground
+  const MotorDef* motor = nullptr;
+  const LoadDef* load = nullptr;
+};
+struct StructurePair {
+  int a = -1, b = -1;  // a external; b may be internal
+  const GearPairInfo* info = nullptr;
+  MeshStiffnessModel stiffness;
+};
+struct WorldStructure {
+  std::vector<StructureBody> bodies;
+  std::vector<StructureJoint> joints;
+  std::vector<StructurePair> pairs;
 };
 
 class World {
@@ -92,6 +122,9 @@ class World {
   // Contacts since construction whose radius lay outside their pair's stiffness table: they took
   // the nearest end row's value. Counted, reported in the run summary, never silent.
   long stiffness_table_misses() const;
+
+  // Bodies, joints and meshing pairs as built (call before the first step for t = 0).
+  WorldStructure structure() const;
 
   struct Impl;
 

@@ -155,6 +155,13 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
     m.principal_moments_kg_m2 = *def.principal_inertia_kg_m2;
     mass = m;
   }
+  if ((def.gear || def.mesh) && def.principal_inertia_kg_m2) {
+    // Given moments replace the shape's (about its centre of mass, in the body's own axes).
+    if (!def.mass_kg) throw InputError(who + ": principal_inertia_kg_m2 on a shaped body needs mass_kg");
+    mass->principal_moments_kg_m2 = *def.principal_inertia_kg_m2;
+    mass->principal_axes = Eigen::Matrix3d::Identity();
+    mass->inertia_com_kg_m2 = def.principal_inertia_kg_m2->asDiagonal();
+  }
   b.mass_kg = mass->mass_kg;
   const btTransform com_in_gear = com_frame(*mass);
   b.com_from_gear = com_in_gear.inverse();

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "physics/world.hpp"
+#include "physics/tooth_pair_stiffness.hpp"
 #include "physics/world_bodies.hpp"
 
 namespace gearsim::physics {
@@ -61,10 +62,7 @@ struct PairRec {
   std::vector<char> active;                                   // per found contact: passed to the solver
   std::vector<contact::ToothContact> current;                          // in manifold point order
   std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
-  // The pair's stiffness table, if any, and whether its radius is measured on gear a (else b).
-  const contact::StiffnessTable* table = nullptr;
-  bool table_on_a = true;
-  double body_stiffness_N_per_m = 0;  // gear bodies in series with the pairs (0: rigid)
+  MeshStiffnessModel stiffness;  // how each touching tooth pair's stiffness is set
 };
 
 struct World::Impl {

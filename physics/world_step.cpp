@@ -38,42 +38,8 @@ void World::Impl::generate_contacts() {
 
 // pr.pair_stiffness and pr.active for this step's contacts pr.found.
 void World::Impl::pair_stiffnesses(PairRec& pr) {
-  const std::vector<contact::ToothContact>& found = pr.found;
-  const contact::PlanarPose table_gear = pr.table ? gear_poses[pr.table_on_a ? pr.a : pr.b] : contact::PlanarPose{};
-  // Each pair's own stiffness: the constant, or its table's at the contact radius on the table's
-  // gear (the point on that gear's own surface, half the depth from the overlap's mid-point).
-  std::vector<double>& k_pair = pr.pair_stiffness;
-  k_pair.assign(found.size(), pr.info.stiffness_N_per_m);
-  if (pr.table)
-    for (std::size_t i = 0; i < found.size(); ++i) {
-      const contact::ToothContact& c = found[i];
-      const Eigen::Vector2d on = c.point_m + (pr.table_on_a ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
-      const contact::StiffnessLookup k = contact::stiffness_at(*pr.table, (on - table_gear.centre_m).norm());
-      k_pair[i] = k.stiffness_N_per_m_per_m * pr.info.face_width_m;
-      if (k.outside) ++table_misses;
-    }
-  // Gear bodies in series with all pairs (PairStiffnessDef::body_stiffness_N_per_m, compliance
-  // c): F_i = k_i (δ_i − c F), F = Σ k_i δ_i / (1 + c Σ k_i) over the pairs with δ_i > c F (found
-  // by dropping the others until none is left to drop). Each active pair then gets the secant
-  // stiffness F_i/δ_i = k_i (1 − c F/δ_i), continuous as a pair comes into load; the others are
-  // not passed to the solver.
-  std::vector<char>& active = pr.active;
-  active.assign(found.size(), 1);
-  if (pr.body_stiffness_N_per_m > 0) {
-    const double c_body = 1.0 / pr.body_stiffness_N_per_m;
-    double F = 0;
-    for (bool dropped = true; dropped;) {
-      double num = 0, den = 1;
-      for (std::size_t i = 0; i < found.size(); ++i)
-        if (active[i]) num += k_pair[i] * found[i].depth_m, den += c_body * k_pair[i];
-      F = num / den;
-      dropped = false;
-      for (std::size_t i = 0; i < found.size(); ++i)
-        if (active[i] && found[i].depth_m <= c_body * F) active[i] = 0, dropped = true;
-    }
-    for (std::size_t i = 0; i < found.size(); ++i)
-      if (active[i]) k_pair[i] *= 1.0 - c_body * F / found[i].depth_m;
-  }
+  const contact::PlanarPose table_gear = pr.stiffness.table ? gear_poses[pr.stiffness.table_on_a ? pr.a : pr.b] : contact::PlanarPose{};
+  table_misses += tooth_pair_stiffnesses(pr.stiffness, pr.found, table_gear, pr.pair_stiffness, pr.active);
 }
 
 // One manifold point per active tooth contact, at height z, with its stiffness and damping, warm
@@ -95,7 +61,11 @@ void World::Impl::add_manifold_points(PairRec& pr, double z) {
     pt.m_combinedRestitution = 0;
     pt.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
     const double k = pr.pair_stiffness[i];
-    const double damping = pr.table || pr.body_stiffness_N_per_m > 0
+    // A constant mesh stiffness has a constant mesh damping too (ζ of the whole mesh), shared alike.
+    const double damping = pr.stiffness.mesh_stiffness_N_per_m > 0
+                               ? contact_damping_N_s_per_m(pr.stiffness.mesh_stiffness_N_per_m, pr.info.reduced_mass_kg, scenario.contact.damping_ratio) *
+                                     (k / pr.stiffness.mesh_stiffness_N_per_m)
+                           : pr.stiffness.table || pr.stiffness.body_stiffness_N_per_m > 0
                                ? contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, scenario.contact.damping_ratio)
                                : pr.info.damping_N_s_per_m;
     pt.m_combinedContactStiffness1 = k;
@@ -257,6 +227,27 @@ double World::motor_torque_N_m(const std::string& joint) const {
       return eig(t).dot(j.axis_world);
     }
   throw InputError("no joint named '" + joint + "'");
+}
+
+WorldStructure World::structure() const {
+  const Impl& m = *impl_;
+  WorldStructure w;
+  for (const BuiltBody& b : m.bodies) {
+    StructureBody sb;
+    sb.name = b.name;
+    sb.mass_kg = b.mass_kg;
+    sb.inertia_z_kg_m2 = b.inertia_axis_kg_m2;
+    const btVector3 c = b.rigid->getCenterOfMassPosition();
+    sb.centre_of_mass_m = {c.x(), c.y()};
+    sb.fixed = b.fixed;
+    sb.flanks = b.flanks.get();
+    if (b.flanks) sb.gear_pose = planar_pose(b);
+    w.bodies.push_back(sb);
+  }
+  for (const JointRec& j : m.joints) w.joints.push_back({&j.def, j.body, j.parent, j.motor, j.load});
+  for (std::size_t p = 0; p < m.pairs.size(); ++p)
+    w.pairs.push_back({m.pairs[p].a, m.pairs[p].b, &m.pair_infos[p], m.pairs[p].stiffness});
+  return w;
 }
 
 }  // namespace gearsim::physics
