@@ -251,6 +251,24 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       m.reject_unknown_keys();
       s.loads.push_back(l);
     }
+  if (given(top, "impulses"))
+    for (const YamlMap& m : top.list_of_maps("impulses")) {
+      physics::ImpulseDef i;
+      i.body = m.string("body");
+      const auto body = names.bodies.find(i.body);
+      if (body == names.bodies.end()) m.fail("body", "no body named '" + i.body + "'");
+      if (body->second->fixed) m.fail("body", "body '" + i.body + "' is fixed (welded to the ground): a pulse cannot move it");
+      i.at_s = number_within_or(m, "at_s", 0.0, limits::kDuration_s);
+      i.duration_s = positive(m, "duration_s", "pulse duration in s");
+      if (i.duration_s < s.solver.time_step_s)
+        m.fail("duration_s", "a pulse shorter than one time step (" + std::to_string(s.solver.time_step_s) + " s) would be missed or taken whole");
+      i.force_N = vec3_or(m, "force_N", Eigen::Vector3d::Zero());
+      i.torque_N_m = vec3_or(m, "torque_N_m", Eigen::Vector3d::Zero());
+      if (!i.force_N.allFinite() || !i.torque_N_m.allFinite()) m.fail_here("expected finite force_N and torque_N_m");
+      if (i.force_N.isZero(0) && i.torque_N_m.isZero(0)) m.fail_here("a pulse needs force_N or torque_N_m");
+      m.reject_unknown_keys();
+      s.impulses.push_back(i);
+    }
 
   // Transmission: the explicit block, each key defaulting to the macro's proposal.
   std::optional<physics::TransmissionDef> proposed;

@@ -150,6 +150,12 @@ json scenario_json(const physics::Scenario& s) {
   for (const physics::LoadDef& l : s.loads)
     j["loads"].push_back({{"joint", l.joint}, {"constant_torque_N_m", l.constant_torque_N_m},
                           {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}, {"ramp_time_s", l.ramp_time_s}});
+  if (!s.impulses.empty()) {
+    j["impulses"] = json::array();
+    for (const physics::ImpulseDef& i : s.impulses)
+      j["impulses"].push_back({{"body", i.body}, {"at_s", i.at_s}, {"duration_s", i.duration_s}, {"force_N", vec(i.force_N)},
+                               {"torque_N_m", vec(i.torque_N_m)}});
+  }
   if (s.render) {
     const physics::RenderDef& r = *s.render;
     j["render"] = {{"camera", r.camera}, {"fps", r.fps}, {"slowmo", r.slowmo}, {"width_px", r.width_px},

@@ -255,6 +255,9 @@ void read_rest(const Node& r, physics::Scenario& s) {
   for (const Node& l : r.list("loads"))
     s.loads.push_back({l.string("joint"), l.number("constant_torque_N_m"), l.number("viscous_N_m_s_per_rad"),
                        l.number_within("ramp_time_s", limits::kRampTime_s)});
+  if (r.has("impulses"))
+    for (const Node& i : r.list("impulses"))
+      s.impulses.push_back({i.string("body"), i.number("at_s"), i.number("duration_s"), i.vec3("force_N"), i.vec3("torque_N_m")});
   if (r.has("render")) s.render = render_of(r.object("render"));
   if (r.has("transmission")) {
     const Node t = r.object("transmission");

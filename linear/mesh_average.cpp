@@ -110,6 +110,7 @@ MeshAverage average_mesh(const MeshGear& a, const MeshGear& b, const physics::Me
   std::vector<char> active;
   std::vector<contact::ToothContact> in_load;
   Eigen::Vector2d normal_sum = Eigen::Vector2d::Zero();
+  Eigen::Matrix<double, 6, 1> g_sum = Eigen::Matrix<double, 6, 1>::Zero();
   for (long i = 0; i < samples; ++i) {
     const double phi = a.flanks->pitch_angle_rad() * static_cast<double>(hunting) * static_cast<double>(i) / static_cast<double>(samples);
     Placed at = placed_at(phi, press_rad);
@@ -132,7 +133,7 @@ MeshAverage average_mesh(const MeshGear& a, const MeshGear& b, const physics::Me
       Eigen::Matrix<double, 6, 1> g;
       g << n.x(), n.y(), cross(in_load[c].point_m - a.centre_of_mass_m, n), -n.x(), -n.y(),
           -cross(in_load[c].point_m - b.centre_of_mass_m, n);
-      avg.stiffness += k[c] * g * g.transpose();
+      g_sum += k[c] * g;
       sum += k[c];
       normal_sum += k[c] * n;
       avg.mean_pairs += 1;
@@ -142,8 +143,16 @@ MeshAverage average_mesh(const MeshGear& a, const MeshGear& b, const physics::Me
     avg.max_N_per_m = std::max(avg.max_N_per_m, sum);
   }
   const double n = static_cast<double>(samples);
-  avg.stiffness /= n;
+  // One spring along the mean line of action: the stiffness-weighted mean of the contacts'
+  // directions and lever arms (a rank-one mesh, as lumped models have it). Σ k g gᵀ itself would
+  // add stiffness across the line from the scatter of the flank tables' normals (~1e-4 rad),
+  // enough to give a train's free rotation a spurious frequency of a few Hz.
+  GEARSIM_CHECK(avg.mean_N_per_m > 0, "a mesh whose loaded flanks never carry load");
+  Eigen::Matrix<double, 6, 1> g = g_sum / avg.mean_N_per_m;
+  const double along = g.head<2>().norm();
+  g.head<2>() /= along, g.segment<2>(3) /= along;
   avg.mean_N_per_m /= n;
+  avg.stiffness = avg.mean_N_per_m * g * g.transpose();
   avg.mean_pairs /= n;
   avg.mean_normal_on_b = normal_sum.normalized();
   avg.samples = samples;

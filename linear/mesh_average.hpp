@@ -22,8 +22,9 @@ struct MeshGear {
 };
 
 struct MeshAverage {
-  // Mean over the mesh period of Σ_i k_i g_i g_iᵀ, g_i the contact's approach per unit motion of
-  // (x_a, y_a, θ_a, x_b, y_b, θ_b) (centre of mass translations in m, turns in rad).
+  // k̄ ḡ ḡᵀ: k̄ the mean of Σ_i k_i, ḡ the k-weighted mean of the contacts' g_i, the approach
+  // of the flanks per unit motion of (x_a, y_a, θ_a, x_b, y_b, θ_b) (centre of mass translations
+  // in m, turns in rad), its direction part a unit vector: one spring on the mean line of action.
   Eigen::Matrix<double, 6, 6> stiffness = Eigen::Matrix<double, 6, 6>::Zero();
   double mean_N_per_m = 0, min_N_per_m = 0, max_N_per_m = 0;  // Σ k_i over the period
   double mean_pairs = 0;                                       // loaded tooth pairs, mean

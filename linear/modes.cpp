@@ -11,7 +11,7 @@ namespace gearsim::linear {
 namespace {
 
 // Eigenvalues below this fraction of the largest are rigid-body modes (ω = 0).
-constexpr double kRigidFraction = 1e-9;
+constexpr double kRigidFraction = 1e-10;
 // Frequencies this close (relative) are one natural frequency repeated.
 constexpr double kRepeatFraction = 1e-7;
 // A body moves in a mode when its kinetic measure exceeds this fraction of the largest.

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -99,6 +100,24 @@ struct LoadDef {
 inline double load_torque_N_m(const LoadDef& l, double time_s, double speed_rad_s) {
   const double ramp = l.ramp_time_s > 0 && time_s < l.ramp_time_s ? time_s / l.ramp_time_s : 1.0;
   return ramp * l.constant_torque_N_m - l.viscous_N_m_s_per_rad * speed_rad_s;
+}
+
+// A force and torque pulse on a body, to excite its model's modes (an impact hammer): a half
+// sine from at_s over duration_s, peaking at force_N (world axes, at the centre of mass) and
+// torque_N_m (world axes). Its impulse is (2/π)·peak·duration; its spectrum is flat to within
+// 3 dB up to ≈ 0.6/duration_s.
+struct ImpulseDef {
+  std::string body;
+  double at_s = 0;
+  double duration_s = 0;
+  Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque_N_m = Eigen::Vector3d::Zero();
+};
+
+// The pulse's share of its peak at time t (0 outside it).
+inline double impulse_shape(const ImpulseDef& i, double time_s) {
+  if (time_s < i.at_s || time_s >= i.at_s + i.duration_s) return 0.0;
+  return std::sin(3.14159265358979323846 * (time_s - i.at_s) / i.duration_s);
 }
 
 // The stiffness table of the meshes between two gear bodies (by body name): the contact radius
@@ -214,6 +233,7 @@ struct Scenario {
   std::vector<JointDef> joints;
   std::vector<MotorDef> motors;
   std::vector<LoadDef> loads;
+  std::vector<ImpulseDef> impulses;
   ContactDef contact;
   SolverDef solver;
   OutputDef output;

@@ -103,6 +103,7 @@ struct World::Impl {
   void pair_stiffnesses(PairRec& pr);
   void add_manifold_points(PairRec& pr, double z);
   void apply_motors_and_loads();
+  void apply_impulses();
   void measure();
   void measure_power();
 };

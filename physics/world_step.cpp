@@ -103,6 +103,16 @@ void World::Impl::apply_motors_and_loads() {
   }
 }
 
+void World::Impl::apply_impulses() {
+  for (const ImpulseDef& i : scenario.impulses) {
+    const double share = impulse_shape(i, time);
+    if (share == 0) continue;
+    btRigidBody& r = *bodies[static_cast<std::size_t>(body_index.at(i.body))].rigid;
+    r.applyCentralForce(bt(i.force_N * share));
+    r.applyTorque(bt(i.torque_N_m * share));
+  }
+}
+
 void World::Impl::measure() {
   // Joint angles: the body's gear-frame x axis against the parent's, about the joint axis.
   for (JointRec& j : joints) {
@@ -156,6 +166,7 @@ void World::step() {
   Impl& m = *impl_;
   const auto start = WorldClock::now();
   m.apply_motors_and_loads();
+  m.apply_impulses();
   m.world.stepSimulation(m.scenario.solver.time_step_s, 0, m.scenario.solver.time_step_s);
   m.time += m.scenario.solver.time_step_s;
   ++m.steps;

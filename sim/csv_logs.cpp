@@ -43,6 +43,16 @@ void CsvLogs::on_start(const physics::World& world) {
   state_ << "time_s";
   for (const physics::BodyState& b : world.bodies()) state_ << ',' << b.name << "_angle_rad," << b.name << "_speed_rad_s";
   if (scenario_.transmission) state_ << ",te_rad";
+  // Bodies on a bearing to the ground: their centre's displacement from its start (what a
+  // sensor on the housing at that bearing sees), after every other column.
+  moving_.clear();
+  for (const physics::JointDef& j : scenario_.joints)
+    if (j.bearing && j.parent == "ground")
+      for (std::size_t i = 0; i < world.bodies().size(); ++i)
+        if (world.bodies()[i].name == j.body) {
+          moving_.push_back({i, world.bodies()[i].position_m});
+          state_ << ',' << j.body << "_dx_m," << j.body << "_dy_m";
+        }
   state_ << '\n';
   contacts_ << "time_s";
   for (const physics::GearPairInfo& p : world.gear_pairs()) {
@@ -81,6 +91,10 @@ void CsvLogs::on_sample(const physics::World& world) {
   for (const physics::BodyState& b : world.bodies()) state_ << ',' << b.angle_rad << ',' << b.speed_rad_s;
   if (scenario_.transmission)
     state_ << ',' << world.bodies()[te_in_].angle_rad - scenario_.transmission->ratio * world.bodies()[te_out_].angle_rad;
+  for (const auto& [i, start] : moving_) {
+    const Eigen::Vector3d d = world.bodies()[i].position_m - start;
+    state_ << ',' << d.x() << ',' << d.y();
+  }
   state_ << '\n';
   const long sample = world.steps() % every_ == 0 ? world.steps() / every_ : -1;
   PointRow row = point_row(world, sample);

@@ -55,6 +55,7 @@ class CsvLogs : public Observer {
   std::filesystem::path dir_;
   const physics::Scenario& scenario_;
   std::ofstream state_, contacts_;
+  std::vector<std::pair<std::size_t, Eigen::Vector3d>> moving_;  // bodies on a ground bearing, start position
   int te_in_ = -1, te_out_ = -1;  // bodies of the transmission's input and output joints
   long every_ = 1;                // steps per output sample
   std::optional<DecimationFilter> filter_;
