@@ -38,7 +38,9 @@ inline std::filesystem::path asset_scenario_copy(const std::string& asset, const
     if (at == std::string::npos) throw std::runtime_error(asset + " lacks the text '" + from + "'");
     text.replace(at, from.size(), to);
   };
-  replace("../specs/", std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/");
+  for (const char* rel : {"../specs/", "../gears/"})
+    for (std::size_t at = text.find(rel); at != std::string::npos; at = text.find(rel, at + 1))
+      text.replace(at, std::string(rel).size(), std::string(GEARSIM_SOURCE_DIR) + "/assets/" + std::string(rel).substr(3));
   for (const auto& [from, to] : edits) replace(from, to);
   const std::filesystem::path out = dir / asset;
   std::ofstream(out) << text;
