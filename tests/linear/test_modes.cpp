@@ -16,7 +16,7 @@
 #include "tests/support/asset_scenario.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_modes {
 
 using linear::ModeType;
 
@@ -155,5 +155,5 @@ TEST(PaperGearbox, HealthySetHasOnlyRotationalSinglesAndTranslationalPairs) {
   for (const linear::ModeGroup& g : f.modes.groups) EXPECT_EQ(g.multiplicity, 1);
 }
 
-}  // namespace
+}  // namespace test_modes
 }  // namespace gearsim

@@ -19,7 +19,7 @@
 #include "tests/support/asset_scenario.hpp"
 
 namespace gearsim {
-namespace {
+namespace test_time_domain {
 
 constexpr double kPulseAt_s = 0.02;      // after the loads' 10 ms ramps
 constexpr double kPulse_s = 1e-4;        // flat spectrum to ≈ 6 kHz
@@ -122,5 +122,5 @@ TEST(TimeDomain, AForcePulseOnTheSunRingsAtTheTranslationalModes) {
   expect_peaks_at_modes("force_N: [300, 200, 0]", false, linear::ModeType::Translational);
 }
 
-}  // namespace
+}  // namespace test_time_domain
 }  // namespace gearsim
