@@ -67,7 +67,11 @@ GearTrain gear_train_of(const physics::Scenario& s) {
     spec.ring_teeth = t.ring_teeth;
     spec.planets = static_cast<int>(t.planets.size());
     const physics::BodyDef* ring_def = ring;
-    spec.fixed = ring_def->fixed ? PlanetaryMember::Ring : PlanetaryMember::Carrier;
+    // A ring held against rotation by a torsional support stands still like a welded one.
+    bool ring_held = ring_def->fixed;
+    for (const physics::JointDef& j : s.joints)
+      ring_held = ring_held || (j.body == ring_def->name && j.parent == "ground" && j.bearing && j.bearing->torsional_stiffness_N_m_per_rad > 0);
+    spec.fixed = ring_held ? PlanetaryMember::Ring : PlanetaryMember::Carrier;
     if (t.input_body == t.sun) spec.input = PlanetaryMember::Sun;
     else if (t.input_body == t.carrier) spec.input = PlanetaryMember::Carrier;
     else if (t.input_body == t.ring) spec.input = PlanetaryMember::Ring;

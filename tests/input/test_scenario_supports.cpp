@@ -7,6 +7,7 @@
 
 #include "core/errors.hpp"
 #include "input/scenario_file.hpp"
+#include "input/gear_train.hpp"
 #include "input/scenario_record.hpp"
 
 namespace gearsim::input {
@@ -79,6 +80,20 @@ TEST(ScenarioSupports, AMeshStiffnessNamesMeshingGearsOnce) {
   EXPECT_NE(m.find("already have a mesh stiffness"), std::string::npos) << m;
   m = refusal({"contact.mesh_stiffnesses[0].stiffness_N_per_m=-5"});
   EXPECT_NE(m.find("stiffness_N_per_m"), std::string::npos) << m;
+}
+
+}  // namespace test_scenario_supports
+}  // namespace gearsim::input
+
+namespace gearsim::input {
+namespace test_scenario_supports {
+
+// A ring held by its torsional support stands still: the train's mesh frequency is the welded
+// ring's, z_r·ω_c/2π = 96·104.7/5/2π = 319.94 Hz for the paper set on bearings.
+TEST(ScenarioSupports, ARingHeldTorsionallyCountsAsTheFixedMember) {
+  const physics::Scenario s = load_scenario(std::filesystem::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_bearings.yaml");
+  const GearTrain t = gear_train_of(s);
+  EXPECT_NEAR(t.frequencies.mesh_hz, 96 * 104.7 / 5 / (2 * 3.14159265358979323846), 1e-9);
 }
 
 }  // namespace test_scenario_supports
