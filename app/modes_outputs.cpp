@@ -152,12 +152,13 @@ void write_modes_svg(const std::filesystem::path& file, const linear::LumpedMode
     for (const linear::BodyInfo& b : m.bodies) {
       const double r = std::max(b.radius_m, 2e-3) * px_per_m;
       const double x0 = ox + b.centre_of_mass_m.x() * px_per_m, y0 = oy - b.centre_of_mass_m.y() * px_per_m;
-      svg << "<circle cx='" << x0 << "' cy='" << y0 << "' r='" << r << "' fill='none' stroke='#ccc'><title>" << html_escape(b.name)
+      const char* dash = b.gear ? "" : " stroke-dasharray='4 3'";
+      svg << "<circle cx='" << x0 << "' cy='" << y0 << "' r='" << r << "' fill='none' stroke='#ccc'" << dash << "><title>" << html_escape(b.name)
           << "</title></circle>\n";
       if (b.first_dof < 0) continue;
       const double x = x0 + k * phi(b.first_dof) * px_per_m, y = y0 - k * phi(b.first_dof + 1) * px_per_m;
       const double t = k * phi(b.first_dof + 2);
-      svg << "<circle cx='" << x << "' cy='" << y << "' r='" << r << "' fill='none' stroke='#c33'/>\n"
+      svg << "<circle cx='" << x << "' cy='" << y << "' r='" << r << "' fill='none' stroke='#c33'" << dash << "/>\n"
           << "<line x1='" << x << "' y1='" << y << "' x2='" << x + r * std::cos(t) << "' y2='" << y - r * std::sin(t)
           << "' stroke='#c33'/>\n";
     }

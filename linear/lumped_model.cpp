@@ -1,5 +1,6 @@
 #include "linear/lumped_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -113,6 +114,12 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
     m.bodies.push_back(bi);
   }
   for (const physics::StructureJoint& j : w.joints) m.bodies[j.body].parent = j.parent;
+  // A shapeless body that carries others (a carrier) is drawn out to the bodies it carries.
+  for (const BodyInfo& b : m.bodies)
+    if (b.parent >= 0 && !m.bodies[b.parent].gear) {
+      BodyInfo& p = m.bodies[b.parent];
+      p.radius_m = std::max(p.radius_m, (b.centre_of_mass_m - p.centre_of_mass_m).norm());
+    }
   m.mass = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   for (const BodyInfo& b : m.bodies)
     if (b.first_dof >= 0)

@@ -46,7 +46,7 @@ struct BodyInfo {
   int parent = -1;             // the body its joint hangs on (−1: ground or none)
   bool gear = false;
   int teeth = 0;
-  double radius_m = 0;         // outer radius of a gear's teeth, for pictures
+  double radius_m = 0;         // a gear's tip (ring: its root), a carrier's reach to its planets; for pictures
 };
 
 struct LumpedModel {
