@@ -94,7 +94,7 @@ TEST(SweepFile, UnknownMetricRefused) {
 TEST(SweepFile, TooManyCasesRefusedBeforeExpansion) {
   // 1000 × 1000 = 10⁶ cases > 10⁵: refused at the second axis, naming it.
   const std::string m = refusal(kHead + "grid:\n  a: {from: 0, to: 1, steps: 1000}\n  b: {from: 0, to: 1, steps: 1000}\n");
-  EXPECT_NE(m.find("sweep.yaml:5:3: grid.b: the grid has more than 100000 cases"), std::string::npos) << m;
+  EXPECT_NE(m.find("sweep.yaml:5:6: grid.b: the grid has more than 100000 cases"), std::string::npos) << m;
 }
 
 TEST(SweepFile, StepsOutOfLimitRefused) {
@@ -105,7 +105,7 @@ TEST(SweepFile, StepsOutOfLimitRefused) {
 TEST(SweepFile, OptionLikeKeyRefused) {
   // A key that would read as an option of `gearsim run` never reaches its argument list.
   const std::string m = refusal(kHead + "grid:\n  --out: [/etc]\n");
-  EXPECT_NE(m.find("sweep.yaml:4:3: grid.--out: expected a key path"), std::string::npos) << m;
+  EXPECT_NE(m.find("sweep.yaml:4:10: grid.--out: expected a key path"), std::string::npos) << m;
 }
 
 TEST(SweepFile, MissingScenarioNamesKey) {

@@ -15,6 +15,7 @@ namespace gearsim::sweep {
 namespace test_case_list {
 
 namespace fs = std::filesystem;
+using KeyValue = std::pair<std::string, std::string>;
 
 input::SweepFile load(const std::string& body) {
   const fs::path p = test::fresh_test_dir() / "s.yaml";
@@ -28,8 +29,8 @@ TEST(CaseList, GridIsTheProductFirstKeySlowest) {
   const char* expected[6][2] = {{"1", "x"}, {"1", "y"}, {"2", "x"}, {"2", "y"}, {"3", "x"}, {"3", "y"}};
   for (std::size_t i = 0; i < 6; ++i) {
     EXPECT_EQ(cases[i].index, i);
-    EXPECT_EQ(cases[i].parameters[0], std::pair<std::string, std::string>("a", expected[i][0])) << i;
-    EXPECT_EQ(cases[i].parameters[1], std::pair<std::string, std::string>("b", expected[i][1])) << i;
+    EXPECT_EQ(cases[i].parameters[0], KeyValue("a", expected[i][0])) << i;
+    EXPECT_EQ(cases[i].parameters[1], KeyValue("b", expected[i][1])) << i;
     EXPECT_EQ(cases[i].overrides, (std::vector<std::string>{"duration_s=0.2", std::string("a=") + expected[i][0],
                                                             std::string("b=") + expected[i][1]}));
   }
@@ -45,7 +46,7 @@ TEST(CaseList, ThreeAxesCountAndLastCase) {
 TEST(CaseList, ListedCasesLeaveUnsetKeysEmpty) {
   const std::vector<Case> cases = expand_cases(load("cases:\n  - {a: 1}\n  - {b: 2}\n"));
   ASSERT_EQ(cases.size(), 2u);
-  EXPECT_EQ(cases[0].parameters[1], std::pair<std::string, std::string>("b", ""));
+  EXPECT_EQ(cases[0].parameters[1], KeyValue("b", ""));
   EXPECT_EQ(cases[0].overrides, std::vector<std::string>{"a=1"});
   EXPECT_EQ(cases[1].overrides, std::vector<std::string>{"b=2"});
 }

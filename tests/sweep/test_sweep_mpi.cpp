@@ -6,7 +6,7 @@
 #include <chrono>
 #include <filesystem>
 
-#include "sweep/sweep_cli.hpp"
+#include "tests/sweep/sweep_cli.hpp"
 #include "tests/support/asset_scenario.hpp"
 #include "tests/support/cli_run.hpp"
 
