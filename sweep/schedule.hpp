@@ -5,6 +5,7 @@
 // it. Every case writes its own case.json wherever it ran; results are for progress only.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <vector>
@@ -22,6 +23,10 @@ struct Progress {
   const CaseRecord* last = nullptr;  // the case that just finished
 };
 using ProgressFn = std::function<void(const Progress&)>;
+
+// Counts the finished case `r` into p (done, failed, elapsed since `start`, ETA) and passes p to
+// `report`; the schedulers call it once per case, one at a time.
+void count_finished(Progress& p, const CaseRecord& r, std::chrono::steady_clock::time_point start, const ProgressFn& report);
 
 // Runs the jobs on `parallel` threads (≥ 1), taking them in order; stops taking new ones once
 // context.stop() returns non-zero. Returns the records, in the order they finished.

@@ -7,6 +7,15 @@
 
 namespace gearsim::sweep {
 
+void count_finished(Progress& p, const CaseRecord& r, std::chrono::steady_clock::time_point start, const ProgressFn& report) {
+  ++p.done;
+  p.failed += r.status != CaseStatus::Completed;
+  p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  p.eta_s = p.elapsed_s / static_cast<double>(p.done) * static_cast<double>(p.to_run - p.done);
+  p.last = &r;
+  if (report) report(p);
+}
+
 std::vector<CaseRecord> run_local(const std::vector<CaseJob>& jobs, int parallel, const CaseContext& ctx,
                                   const ProgressFn& progress) {
   const auto start = std::chrono::steady_clock::now();
@@ -23,12 +32,7 @@ std::vector<CaseRecord> run_local(const std::vector<CaseJob>& jobs, int parallel
       CaseRecord r = run_case(jobs[i], ctx);
       const std::lock_guard<std::mutex> lock(mutex);
       records.push_back(std::move(r));
-      ++p.done;
-      p.failed += records.back().status != CaseStatus::Completed;
-      p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      p.eta_s = p.elapsed_s / static_cast<double>(p.done) * static_cast<double>(p.to_run - p.done);
-      p.last = &records.back();
-      if (progress) progress(p);
+      count_finished(p, records.back(), start, progress);
     }
   };
   std::vector<std::thread> threads;

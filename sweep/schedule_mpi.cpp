@@ -76,12 +76,7 @@ std::vector<CaseRecord> run_mpi_master(const std::vector<CaseJob>& jobs, const P
     const std::string text = receive_text(MPI_ANY_SOURCE, true, source, tag);
     if (tag == kResult) {
       records.push_back(case_record_from_json(json::parse(text), "the record from MPI rank " + std::to_string(source)));
-      ++p.done;
-      p.failed += records.back().status != CaseStatus::Completed;
-      p.elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      p.eta_s = p.elapsed_s / static_cast<double>(p.done) * static_cast<double>(p.to_run - p.done);
-      p.last = &records.back();
-      if (progress) progress(p);
+      count_finished(p, records.back(), start, progress);
     }
     // The asking worker gets the next case, or stop.
     if (next < jobs.size() && !(stop && stop() != 0)) {
