@@ -143,5 +143,13 @@ TEST(SweepFile, ContentHashFollowsTheBytes) {
   EXPECT_NE(load_sweep_file(p).content_hash, h1);
 }
 
+TEST(SweepFile, ShippedExampleReads) {
+  // assets/sweeps/spur_speed_sweep.yaml: 4 speeds × 2 loads, its scenario beside it in assets/.
+  const SweepFile f = load_sweep_file(std::string(GEARSIM_SOURCE_DIR) + "/assets/sweeps/spur_speed_sweep.yaml");
+  EXPECT_EQ(f.case_count, 8u);
+  EXPECT_EQ(f.parameters[0].values, (std::vector<std::string>{"20", "40", "60", "80"}));
+  EXPECT_EQ(f.scenario, fs::path(kScenario).lexically_normal());
+}
+
 }  // namespace test_sweep_file
 }  // namespace gearsim::input
