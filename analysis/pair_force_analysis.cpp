@@ -34,7 +34,7 @@ PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<doubl
                                      const TrainDescription& train, const std::vector<double>& point_force_N) {
   PairForceAnalysis r;
   r.pair = pair;
-  // Mean force and the share of samples without contact.
+  // Mean and peak force, their ratio, and the share of samples without contact.
   const std::vector<double>& point = point_force_N.empty() ? f : point_force_N;
   if (point.size() != f.size())
     throw InputError("run analysis: the point-sampled force of pair " + pair_label(pair) + " holds " +
@@ -43,6 +43,8 @@ PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<doubl
   for (double v : f) mean += v;
   for (double v : point) zeros += v == 0;
   r.mean_force_N = mean / static_cast<double>(f.size());
+  r.peak_force_N = f.empty() ? 0.0 : *std::max_element(f.begin(), f.end());
+  r.dynamic_factor = r.mean_force_N > 0 ? r.peak_force_N / r.mean_force_N : 0.0;
   r.zero_force_share = zeros / static_cast<double>(f.size());
   // The spectrum, its floor, the mesh harmonics with their sidebands.
   r.spectrum = amplitude_spectrum(f, sample_rate_hz, {WindowKind::Hann, padded_length(f.size()), true});

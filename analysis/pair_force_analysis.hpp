@@ -28,6 +28,10 @@ struct PairForceAnalysis {
   // Hann, mean removed, zero-padded to the power of two ≥ kRunSpectrumPadding × the record.
   Spectrum spectrum;
   double mean_force_N = 0;
+  double peak_force_N = 0;      // the largest force sample in the window, N
+  // peak_force_N / mean_force_N: how far the meshing dynamics lift the force over its mean
+  // (the dynamic factor of the window); 0 when the mean is not positive.
+  double dynamic_factor = 0;
   double zero_force_share = 0;  // samples with exactly zero force / samples
   double floor_N = 0;           // median amplitude over 0 … kRunFloorBandTop_hz, N
   SidebandAnalysis mesh;        // harmonics of f_m and their sidebands (default options)

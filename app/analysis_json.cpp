@@ -44,6 +44,8 @@ json pair_json(const PairForceAnalysis& p, bool planetary) {
     j["planet_fault_family"] = family;
   }
   j["mean_force_N"] = p.mean_force_N;
+  j["peak_force_N"] = p.peak_force_N;
+  j["dynamic_factor"] = p.dynamic_factor;
   j["zero_force_share"] = p.zero_force_share;
   return j;
 }

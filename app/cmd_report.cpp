@@ -9,6 +9,7 @@
 #include "app/report.hpp"
 #include "app/run_analysis.hpp"
 #include "core/errors.hpp"
+#include "sweep/sweep_dir.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -20,25 +21,32 @@ RunDir analysed(const std::string& dir) {
   return open_run_dir(dir);
 }
 
+void write_report_html(const std::filesystem::path& out, const std::string& html) {
+  std::ofstream f(out);
+  if (!f) throw InputError(out.string() + ": cannot write");
+  f << html;
+  std::cout << "written: " << out.string() << "\n";
+}
+
 }  // namespace
 
 void register_report(CLI::App& app) {
   auto dir = std::make_shared<std::string>();
   auto compare = std::make_shared<std::string>();
-  CLI::App* sub = app.add_subcommand("report", "Write DIR/report.html: the run against the paper, in one self-contained page.");
-  sub->add_option("dir", *dir, "A folder written by `gearsim run --out`.")->required()->check(CLI::ExistingDirectory);
+  CLI::App* sub = app.add_subcommand("report", "Write DIR/report.html: the run against the paper, in one self-contained page; for a sweep folder, its table and metric plots.");
+  sub->add_option("dir", *dir, "A folder written by `gearsim run --out` or `gearsim sweep --out`.")->required()->check(CLI::ExistingDirectory);
   sub->add_option("--compare", *compare, "A second run folder (e.g. the healthy twin) overlaid on spectra and tooth loads.")
       ->check(CLI::ExistingDirectory);
   sub->callback([dir, compare] {
+    if (sweep::is_sweep_dir(*dir)) {
+      if (!compare->empty()) throw InputError("--compare: takes run folders; " + *dir + " is a sweep folder (sweep.json)");
+      write_report_html(std::filesystem::path(*dir) / "report.html", build_sweep_report(*dir));
+      return;
+    }
     const RunDir run = analysed(*dir);
     std::optional<RunDir> other;
     if (!compare->empty()) other = analysed(*compare);
-    const std::string html = build_report(run, other);
-    const std::filesystem::path out = run.dir / "report.html";
-    std::ofstream f(out);
-    if (!f) throw InputError(out.string() + ": cannot write");
-    f << html;
-    std::cout << "written: " << out.string() << "\n";
+    write_report_html(run.dir / "report.html", build_report(run, other));
   });
 }
 

@@ -15,5 +15,6 @@ void register_report(CLI::App& app);
 void register_render(CLI::App& app);
 void register_fe_te(CLI::App& app);
 void register_modes(CLI::App& app);
+void register_sweep(CLI::App& app);
 
 }  // namespace gearsim::app

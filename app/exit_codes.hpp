@@ -11,6 +11,7 @@ constexpr int kExitOk = 0;
 constexpr int kExitInputError = 2;     // bad input: the message names the file, key or value
 constexpr int kExitInternalError = 3;  // a broken invariant: a bug, please report
 constexpr int kExitDiverged = 4;       // the run left its physical bounds; logs kept up to that step
+constexpr int kExitSweepCasesFailed = 5;  // a sweep ran to its end, some cases did not complete (each recorded)
 constexpr int kExitSigint = 130;       // a run stopped by SIGINT (128 + 2): logs kept up to that step
 constexpr int kExitSigterm = 143;      // the same for SIGTERM (128 + 15)
 

@@ -1,6 +1,7 @@
 // gearsim: one binary, many subcommands. Exit codes (app/exit_codes.hpp): 0 done; 2 bad input,
 // with a message that names the file, key, option or value at fault; 3 an internal error (a bug); 4 a run
-// that diverged (left its physical bounds), its logs kept up to that step.
+// that diverged (left its physical bounds), its logs kept up to that step; 5 a sweep some of whose cases
+// did not complete (each recorded in its case.json).
 #include <exception>
 #include <iostream>
 
@@ -13,7 +14,7 @@ int main(int argc, char** argv) {
       "gearsim: planetary gearbox dynamics with manufacturing errors.\n"
       "SI units at every interface unless an option says otherwise.\n"
       "Exit codes: 0 done, 2 bad input (file or command line), 3 internal error (a bug), 4 a run diverged (non-physical;\n"
-      "summary.json says where; logs kept up to that step), 130/143 a run stopped by SIGINT/SIGTERM\n"
+      "summary.json says where; logs kept up to that step), 5 a sweep with some cases not completed (each recorded),\n130/143 a run stopped by SIGINT/SIGTERM\n"
       "(summary.json status interrupted; logs kept up to that step)."};
   app.require_subcommand(1);
   gearsim::app::register_tolerance(app);
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   gearsim::app::register_render(app);
   gearsim::app::register_fe_te(app);
   gearsim::app::register_modes(app);
+  gearsim::app::register_sweep(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -5,6 +5,7 @@
 // difference. Plots by gnuplot (SVG, inline). Analyses the run first when it has not been.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -14,6 +15,11 @@ namespace gearsim::app {
 
 // Returns the HTML; the caller writes it.
 std::string build_report(const RunDir& run, const std::optional<RunDir>& compare);
+
+// `gearsim report DIR` on a sweep folder (DIR/sweep.json): the gathered table and each metric
+// plotted against the swept parameter or mesh_frequency_hz, with f_n/k lines from DIR/modes.json
+// when present (report_sweep.cpp). Returns the HTML; InputError when DIR is not a sweep folder.
+std::string build_sweep_report(const std::filesystem::path& dir);
 
 // Sections (report_*.cpp), each an HTML fragment.
 std::string report_gears_section(const RunDir& run);

@@ -181,10 +181,9 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
 
 }  // namespace
 
-json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
+RunAnalysis analyse_run_dir(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
-  const input::GearTrain train = input::gear_train_of(s);
-  const TrainDescription description = train_description(train, s);
+  const TrainDescription description = train_description(input::gear_train_of(s), s);
   double from_s = o.from_s;
   // Not before the anti-aliased force is free of its start (held at the first value before t = 0).
   const double edge = edge_held_s(run);
@@ -192,7 +191,13 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
     throw InputError("--from " + std::to_string(from_s) + ": the run's anti-aliased force holds its start value until t = " +
                      std::to_string(edge) + " s (summary.json force_filter.edge_held_s); expected a start at or after it");
   if (from_s < 0) from_s = std::max(physics::ramps_end_s(s), edge);
-  const RunAnalysis a = analyse_run(run_signals(run, description, from_s), description);
+  return analyse_run(run_signals(run, description, from_s), description);
+}
+
+json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
+  const physics::Scenario& s = run.scenario;
+  const input::GearTrain train = input::gear_train_of(s);
+  const RunAnalysis a = analyse_run_dir(run, o);
   const json j = analysis_json(a, train, s.name);
   std::ofstream(run.dir / "analysis.json") << j.dump(2) << "\n";
   write_spectrum_csv(run.dir / "spectrum.csv", a, analysis_constants::kRunFloorBandTop_hz);

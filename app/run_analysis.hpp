@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/run_analysis.hpp"
 #include "app/run_dir.hpp"
 
 namespace gearsim::app {
@@ -18,5 +19,10 @@ struct AnalyzeOptions {
 };
 
 nlohmann::ordered_json analyze_run(const RunDir& run, const AnalyzeOptions& options = {});
+
+// The same analysis as a typed result, writing nothing (e.g. for a sweep's metrics): the window
+// from the end of the ramps (or the force filter's edge, or options.from_s) to the end of the
+// record less the filter's edge, as analyze_run takes it. InputError as analyze_run.
+RunAnalysis analyse_run_dir(const RunDir& run, const AnalyzeOptions& options = {});
 
 }  // namespace gearsim::app

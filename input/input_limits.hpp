@@ -57,6 +57,12 @@ constexpr Limit kTeeth{3, 1000, false, "", "a number of teeth"};
 // above 0.1 mm a 1 mm module tooth (2.25 mm high) is a few segments and its flanks are lost.
 constexpr Limit kChordalDeviation_m{1e-9, 1e-4, false, "m", "a chordal deviation"};
 
+// Cases of one parameter sweep (grid product or list): each is a run folder and a process; 1e5
+// runs of the shortest useful case (~1 s) are a day on 2 cores, more is a typo in a grid.
+constexpr std::size_t kMaxSweepCases = 100'000;
+// Values of one grid axis ({from, to, steps}): as many as a sweep may have cases.
+constexpr Limit kSweepSteps{2, 1e5, false, "", "a number of grid steps"};
+
 }  // namespace limits
 
 // True for a finite value inside the limit.

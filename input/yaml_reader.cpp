@@ -108,6 +108,11 @@ std::string YamlMap::key_path(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
+std::string YamlMap::location(const std::string& key) const {
+  const YAML::Node n = node_[key];
+  return where(n.IsDefined() ? n : node_) + ": " + key_path(key);
+}
+
 void YamlMap::fail(const std::string& key, const std::string& message) const {
   const YAML::Node n = node_[key];
   throw InputError(where(n.IsDefined() ? n : node_) + ": " + key_path(key) + ": " + message);

@@ -58,6 +58,9 @@ class YamlMap {
 
   // Throws InputError for the first key that no getter asked for.
   void reject_unknown_keys() const;
+  // "file:line:col: key.path" of m[key] (of this mapping when the key is absent), for messages
+  // about the key raised later, away from the reader.
+  std::string location(const std::string& key) const;
   // Throws InputError "file:line:col: key.path: message".
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   [[noreturn]] void fail_here(const std::string& message) const;

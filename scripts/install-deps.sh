@@ -18,6 +18,7 @@ packages=(
   libavcodec-dev libavformat-dev libswscale-dev libavutil-dev  # MP4 (H.264) video
   ffmpeg                                  # ffprobe, to check written videos in tests
   gnuplot-nox                             # report plots (SVG)
+  libopenmpi-dev openmpi-bin              # gearsim sweep across machines (mpirun; MPI C API)
   calculix-ccx                            # finite-element solver (ccx) for flexible-teeth stiffness
   gmsh libgmsh-dev                        # meshing of gear sections for ccx
   libgtest-dev libgmock-dev               # unit tests

@@ -152,6 +152,21 @@ TEST(RunAnalysis, MeanForceAndZeroShareOfAPairOutOfContactAQuarterOfTheTime) {
   EXPECT_NEAR(p.mean_force_N, 75.0, 1e-12);
 }
 
+TEST(RunAnalysis, DynamicFactorIsPeakOverMeanOfTheWindow) {
+  // 100 N with one sample of 180 N inside the window and one of 900 N before it (during the ramp):
+  // the peak is the window's 180 N, the mean (100·(n−1) + 180)/n, the factor their ratio.
+  RunSignals s = synthetic_run();
+  for (std::size_t n = 0; n < kSamples; ++n) s.pair_forces[1].force_N[n] = 100.0;
+  s.pair_forces[1].force_N[kSamples / 2] = 180.0;
+  s.from_s = s.time_s[1];
+  s.pair_forces[1].force_N[0] = 900.0;
+  const RunAnalysis r = analyse_run(s, paper_like_train());  // kept: p refers into it
+  const PairForceAnalysis& p = r.pairs.at(1);
+  const double n = static_cast<double>(kSamples - 1), mean = (100.0 * (n - 1) + 180.0) / n;
+  EXPECT_EQ(p.peak_force_N, 180.0);
+  EXPECT_NEAR(p.dynamic_factor, 180.0 / mean, 1e-12);
+}
+
 TEST(RunAnalysis, ZeroShareIsCountedOnThePointSamplesWhenTheForceWasFiltered) {
   // An anti-aliased force is never exactly zero; the point samples beside it say when no tooth
   // pair touched: 1 sample in 4 here, while the filtered force stays near its 75 N mean.

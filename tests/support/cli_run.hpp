@@ -15,8 +15,9 @@ struct CliRun {
   std::string output;  // stdout and stderr
 };
 
-inline CliRun gearsim(const std::string& args) {
-  const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim " + args + " 2>&1";
+// `launcher` runs the binary (e.g. "mpirun -np 3 "), "" for none.
+inline CliRun gearsim_under(const std::string& launcher, const std::string& args) {
+  const std::string cmd = launcher + std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim " + args + " 2>&1";
   FILE* pipe = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf{};
@@ -24,5 +25,7 @@ inline CliRun gearsim(const std::string& args) {
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
+
+inline CliRun gearsim(const std::string& args) { return gearsim_under("", args); }
 
 }  // namespace gearsim::test

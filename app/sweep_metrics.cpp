@@ -1,0 +1,71 @@
+#include "app/sweep_metrics.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <optional>
+
+#include "analysis/run_analysis.hpp"
+#include "app/analysis_json.hpp"
+#include "app/run_analysis.hpp"
+#include "app/run_dir.hpp"
+#include "core/errors.hpp"
+#include "input/gear_train.hpp"
+#include "sweep/json_path.hpp"
+
+namespace gearsim::app {
+
+using json = nlohmann::ordered_json;
+
+namespace {
+
+json read_json(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  if (!in) throw InputError(p.string() + ": cannot read (the case was not analysed?)");
+  try {
+    return json::parse(in);
+  } catch (const json::exception& e) {
+    throw InputError(p.string() + ": not valid JSON: " + e.what());
+  }
+}
+
+// A named metric from the run's analysis over its steady window.
+void add_named_metric(json& m, const std::string& name, const RunDir& run, const RunAnalysis& a) {
+  if (name == "dynamic_factor") {
+    // Peak over mean of each pair's anti-aliased force; the sweep's column is the worst pair.
+    double worst = 0;
+    for (const PairForceAnalysis& p : a.pairs) worst = std::max(worst, p.dynamic_factor);
+    m["dynamic_factor"] = worst;
+    for (const PairForceAnalysis& p : a.pairs) m["dynamic_factor." + pair_name(p.pair)] = p.dynamic_factor;
+  } else if (name == "mean_force_N") {
+    for (const PairForceAnalysis& p : a.pairs) m["mean_force_N." + pair_name(p.pair)] = p.mean_force_N;
+  } else if (name == "mesh_frequency_hz") {
+    m["mesh_frequency_hz"] = input::gear_train_of(run.scenario).frequencies.mesh_hz;
+  } else if (name == "rms_dynamic_te_rad") {
+    if (!a.te) throw InputError((run.dir / "state.csv").string() + ": no te_rad column: the run has no transmission error");
+    m["rms_dynamic_te_rad"] = a.te->rad.rms;  // about the window's mean: the dynamic part
+  }
+}
+
+}  // namespace
+
+json collect_case_metrics(const std::filesystem::path& case_dir, const input::SweepCollect& c) {
+  json m = json::object();
+  const RunDir run = open_run_dir(case_dir);
+  for (const std::string& key : c.summary)
+    m["summary." + key] = sweep::number_at_path(run.summary, key, (case_dir / "summary.json").string());
+  if (!c.analysis.empty()) {
+    const json analysis = read_json(case_dir / "analysis.json");
+    for (const std::string& key : c.analysis)
+      m["analysis." + key] = sweep::number_at_path(analysis, key, (case_dir / "analysis.json").string());
+  }
+  if (c.metrics.empty()) return m;
+  // Only mesh_frequency_hz needs no analysis of the logs.
+  std::optional<RunAnalysis> a;
+  for (const std::string& name : c.metrics) {
+    if (!a && name != "mesh_frequency_hz") a = analyse_run_dir(run);
+    add_named_metric(m, name, run, a ? *a : RunAnalysis{});
+  }
+  return m;
+}
+
+}  // namespace gearsim::app
