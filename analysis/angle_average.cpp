@@ -10,6 +10,15 @@
 
 namespace gearsim {
 
+long long synchronous_revolutions(const std::vector<double>& angle_rad, int samples_per_revolution) {
+  if (angle_rad.size() < 2 || samples_per_revolution < 1) return 0;
+  const double sign = angle_rad.back() < angle_rad.front() ? -1.0 : 1.0;
+  const double step_rad = 2.0 * std::numbers::pi / samples_per_revolution;
+  const long long first = static_cast<long long>(std::ceil(sign * angle_rad.front() / step_rad));
+  const long long last = static_cast<long long>(std::floor(sign * angle_rad.back() / step_rad));
+  return (last - first + 1) / static_cast<long long>(samples_per_revolution);
+}
+
 AngleAverage angle_synchronous_average(const std::vector<double>& signal,
                                        const std::vector<double>& angle_rad, int samples_per_revolution) {
   const char* what = "angle-synchronous average";
@@ -32,8 +41,7 @@ AngleAverage angle_synchronous_average(const std::vector<double>& signal,
   const auto n = static_cast<long long>(samples_per_revolution);
   // First grid index inside the record, and how many whole revolutions follow it.
   const long long first = static_cast<long long>(std::ceil(travel.front() / step_rad));
-  const long long last = static_cast<long long>(std::floor(travel.back() / step_rad));
-  const long long revolutions = (last - first + 1) / n;
+  const long long revolutions = synchronous_revolutions(angle_rad, samples_per_revolution);
   if (revolutions < 1)
     throw InputError(std::string(what) + ": the angle covers " +
                      std::to_string((travel.back() - travel.front()) / (2.0 * std::numbers::pi)) +

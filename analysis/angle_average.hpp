@@ -31,4 +31,9 @@ AngleAverage angle_synchronous_average(
     const std::vector<double>& signal, const std::vector<double>& angle_rad,
     int samples_per_revolution = analysis_constants::kDefaultSamplesPerRevolution);
 
+// How many whole revolutions of the grid angle_synchronous_average would average (0: the record
+// is too short for it), from the angle's first and last samples.
+long long synchronous_revolutions(const std::vector<double>& angle_rad,
+                            int samples_per_revolution = analysis_constants::kDefaultSamplesPerRevolution);
+
 }  // namespace gearsim

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "analysis/angle_average.hpp"
 #include "analysis/constants.hpp"
 #include "analysis/resample.hpp"
 #include "core/errors.hpp"
@@ -60,15 +61,21 @@ TransmissionErrorStats windowed_te_stats(const TransmissionError& te, double fro
 
 // The angle-synchronous average of each planet's sun–planet force (planets without a logged
 // sun–planet pair are left out).
-std::vector<SynchronousTeeth> synchronous_averages(const RunSignals& s, const TrainDescription& train) {
+std::vector<SynchronousTeeth> synchronous_averages(const RunSignals& s, const TrainDescription& train, std::string& note) {
   std::vector<SynchronousTeeth> out;
   for (const PlanetGear& planet : train.planets) {
     const auto pf = std::find_if(s.pair_forces.begin(), s.pair_forces.end(),
                                  [&](const PairForce& p) { return p.pair.same_bodies(train.sun, planet.body); });
     if (pf == s.pair_forces.end()) continue;
     const std::vector<double>& angle = angle_of(s, planet.body, "the synchronous average of its teeth");
-    out.push_back(synchronous_teeth(pf->pair, planet, window(pf->force_N, s.time_s, s.from_s),
-                                    window(angle, s.time_s, s.from_s)));
+    const std::vector<double> turned = window(angle, s.time_s, s.from_s);
+    if (synchronous_revolutions(turned) < 1) {
+      // Too short a window for one whole turn of the planet on its carrier: said, not averaged.
+      note = "the window (" + std::to_string(s.time_s.back() - s.from_s) + " s) holds less than one whole turn of " + planet.body +
+             " on its carrier: no synchronous average";
+      continue;
+    }
+    out.push_back(synchronous_teeth(pf->pair, planet, window(pf->force_N, s.time_s, s.from_s), turned));
   }
   return out;
 }
@@ -110,7 +117,7 @@ RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
                                          p.point_force_N.empty() ? std::vector<double>{}
                                                                  : window(p.point_force_N, s.time_s, s.from_s)));
   if (s.te) r.te = windowed_te_stats(*s.te, s.from_s);
-  if (train.planetary) r.synchronous = synchronous_averages(s, train);
+  if (train.planetary) r.synchronous = synchronous_averages(s, train, r.synchronous_note);
   if (s.tooth_contacts) r.tooth_loads = all_tooth_loads(s, train);
   return r;
 }

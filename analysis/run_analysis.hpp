@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "analysis/pair_force_analysis.hpp"
@@ -26,6 +27,8 @@ struct RunAnalysis {
   std::optional<TransmissionErrorStats> te;  // over the window; nothing without a TE series
   // Planetary: one per planet whose sun–planet pair is logged; nothing for a gear pair.
   std::optional<std::vector<SynchronousTeeth>> synchronous;
+  std::string synchronous_note;  // why a planet has no synchronous average (a window under one turn), else ""
+
   // Per logged pair and side whose gear is counted and turns at least once in the window, in
   // log order (side a before b); nothing without a tooth-contact log.
   std::optional<std::vector<ToothLoads>> tooth_loads;

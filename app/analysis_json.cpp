@@ -119,6 +119,7 @@ json analysis_json(const RunAnalysis& a, const input::GearTrain& train, const st
     json tsa = json::array();
     for (const SynchronousTeeth& s : *a.synchronous) tsa.push_back(synchronous_json(s));
     j["synchronous_average"] = tsa;
+    if (!a.synchronous_note.empty()) j["synchronous_average_note"] = a.synchronous_note;
   }
   if (a.tooth_loads) {
     json loads = json::array();

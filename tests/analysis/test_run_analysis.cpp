@@ -248,6 +248,22 @@ TEST(RunAnalysis, AGearPairHasNoFaultFamilyAndNoSynchronousAverage) {
   EXPECT_NEAR(r.pairs.at(0).mesh.harmonics[0].peak->frequency_hz, kMesh, 1e-9);
 }
 
+// A window in which the planet turns less than once on its carrier gets no synchronous average
+// (and a note why), not a failed analysis: the spectra of a slow run still count.
+TEST(RunAnalysis, APlanetTurningLessThanOnceHasNoSynchronousAverageAndSaysWhy) {
+  RunSignals s = synthetic_run();
+  for (double& a : s.angles[0].angle_rad) a *= 0.1 / (kFault * s.time_s.back());  // 0.1 turn in the record
+  const RunAnalysis r = analyse_run(s, paper_like_train());
+  ASSERT_TRUE(r.synchronous);
+  EXPECT_TRUE(r.synchronous->empty());
+  EXPECT_NE(r.synchronous_note.find("less than one whole turn of planet_0"), std::string::npos) << r.synchronous_note;
+  EXPECT_FALSE(r.pairs.at(0).mesh.harmonics.empty());
+  const RunAnalysis full = analyse_run(synthetic_run(), paper_like_train());
+  ASSERT_TRUE(full.synchronous);
+  EXPECT_EQ(full.synchronous->size(), 1u);
+  EXPECT_TRUE(full.synchronous_note.empty());
+}
+
 TEST(RunAnalysis, TooFewSamplesInTheWindowAreRefused) {
   RunSignals s = synthetic_run();
   s.from_s = 2000.0 / kFs;  // 48 samples left
