@@ -24,8 +24,14 @@ namespace {
 using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
-// The mesh harmonics whose crossings with a natural frequency are marked.
+// The mesh harmonics whose crossings with a natural frequency are marked, unless modes.json's
+// Campbell table went further (`gearsim modes --harmonics K`).
 constexpr int kMarkedHarmonics = 3;
+
+struct ModeLines {
+  std::vector<double> frequencies_hz;  // distinct, > 0
+  int harmonics = kMarkedHarmonics;
+};
 
 std::optional<double> number_of(const std::string& text) {
   char* end = nullptr;
@@ -35,13 +41,16 @@ std::optional<double> number_of(const std::string& text) {
 
 // The natural frequencies of DIR/modes.json, Hz: natural_frequencies_hz, else each mode's
 // frequency_hz. Nothing when the file is absent; InputError when it is damaged.
-std::vector<double> natural_frequencies(const fs::path& dir) {
+ModeLines natural_frequencies(const fs::path& dir) {
   const fs::path p = dir / "modes.json";
   std::ifstream in(p);
   if (!in) return {};
   std::vector<double> f;
+  ModeLines lines;
   try {
     const json j = json::parse(in);
+    if (j.contains("campbell") && j.at("campbell").contains("crossings"))
+      for (const json& c : j.at("campbell").at("crossings")) lines.harmonics = std::max(lines.harmonics, c.at("harmonic").get<int>());
     if (j.contains("natural_frequencies_hz")) f = j.at("natural_frequencies_hz").get<std::vector<double>>();
     else
       for (const json& m : j.at("modes")) f.push_back(m.at("frequency_hz").get<double>());
@@ -49,7 +58,11 @@ std::vector<double> natural_frequencies(const fs::path& dir) {
     throw InputError(p.string() + ": expected {\"natural_frequencies_hz\": [..]} or {\"modes\": [{\"frequency_hz\": f}]}: " + e.what());
   }
   std::erase_if(f, [](double x) { return !(x > 0) || !std::isfinite(x); });
-  return f;
+  std::sort(f.begin(), f.end());
+  f.erase(std::unique(f.begin(), f.end()), f.end());  // a repeated frequency is one line
+  lines.frequencies_hz = f;
+  lines.harmonics = std::min(lines.harmonics, 50);
+  return lines;
 }
 
 // The x column of the plots: mesh_frequency_hz when collected, else the first parameter whose
@@ -107,10 +120,10 @@ std::string series_label(const sweep::SweepTable& t, const sweep::TableRow& r, c
 }
 
 // Vertical lines at f_n/k inside [lo, hi], labelled.
-std::string mode_marks(const std::vector<double>& fn, double lo, double hi) {
+std::string mode_marks(const ModeLines& fn, double lo, double hi) {
   std::string marks;
-  for (double f : fn)
-    for (int k = 1; k <= kMarkedHarmonics; ++k) {
+  for (double f : fn.frequencies_hz)
+    for (int k = 1; k <= fn.harmonics; ++k) {
       const double x = f / k;
       if (x < lo || x > hi) continue;
       marks += "set arrow from " + num(x, 8) + ", graph 0 to " + num(x, 8) + ", graph 1 nohead dt 2 lc rgb '#cc3311'\n";
@@ -121,13 +134,13 @@ std::string mode_marks(const std::vector<double>& fn, double lo, double hi) {
 }
 
 // One metric against the x axis, a line per series, completed cases only.
-std::string metric_plot(const sweep::SweepTable& t, std::size_t m, const XAxis& x, const std::vector<double>& fn) {
+std::string metric_plot(const sweep::SweepTable& t, std::size_t m, const XAxis& x, const ModeLines& fn) {
   std::map<std::string, std::vector<std::pair<double, double>>> series;
   for (std::size_t i = 0; i < t.rows.size(); ++i)
     if (t.rows[i].status == "completed" && x.values[i] && t.rows[i].metrics[m])
       series[series_label(t, t.rows[i], x)].emplace_back(*x.values[i], *t.rows[i].metrics[m]);
   if (series.empty()) return "<p class=\"note\">No completed case holds " + html_escape(t.metric_columns[m]) + ".</p>\n";
-  std::string script = "set termoption noenhanced\nset grid\nset key outside right top\nset xlabel " +
+  std::string script = "set termoption noenhanced\nset format y '%.4g'\nset grid\nset key outside right top\nset xlabel " +
                        gnuplot_string(x.name) + "\nset ylabel " + gnuplot_string(t.metric_columns[m]) + "\n";
   std::string plot = "plot ";
   double lo = INFINITY, hi = -INFINITY;
@@ -183,11 +196,11 @@ std::string build_sweep_report(const fs::path& dir) {
                                               " failed, " + std::to_string(c.interrupted) + " interrupted, " +
                                               std::to_string(c.not_run) + " not run"}});
   const std::optional<XAxis> x = x_axis(t);
-  const std::vector<double> fn = natural_frequencies(dir);
+  const ModeLines fn = natural_frequencies(dir);
   body += "<h2>Metrics</h2>\n";
-  if (x && x->mesh_frequency && !fn.empty())
-    body += "<p>Dashed lines: f<sub>m</sub> = f<sub>n</sub>/k, k = 1–3, where the k-th mesh harmonic meets a natural "
-            "frequency of <code>modes.json</code>.</p>\n";
+  if (x && x->mesh_frequency && !fn.frequencies_hz.empty())
+    body += "<p>Dashed lines: f<sub>m</sub> = f<sub>n</sub>/k, k = 1–" + std::to_string(fn.harmonics) +
+            ", where the k-th mesh harmonic meets a natural frequency of <code>modes.json</code>.</p>\n";
   for (std::size_t m = 0; m < t.metric_columns.size(); ++m) {
     if (x && x->mesh_frequency && t.metric_columns[m] == "mesh_frequency_hz") continue;
     body += "<h3>" + html_escape(t.metric_columns[m]) + "</h3>\n";
