@@ -61,4 +61,28 @@ std::vector<std::complex<double>> real_dft(const std::vector<double>& x, std::si
   return result;
 }
 
+std::vector<double> real_idft(const std::vector<std::complex<double>>& X, std::size_t length) {
+  if (length == 0 || X.size() != length / 2 + 1)
+    throw InputError("real_idft: " + std::to_string(X.size()) + " bins do not make a length-" + std::to_string(length) + " signal");
+  if (length > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw InputError("real_idft: length " + std::to_string(length) + " exceeds FFTW's int range");
+  FftwBuffer<fftw_complex> in(X.size());
+  FftwBuffer<double> out(length);
+  fftw_plan plan;
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    plan = fftw_plan_dft_c2r_1d(static_cast<int>(length), in.data, out.data, FFTW_ESTIMATE);
+  }
+  GEARSIM_CHECK(plan != nullptr, "FFTW could not plan a length-" + std::to_string(length) + " inverse DFT");
+  for (std::size_t k = 0; k < X.size(); ++k) in.data[k][0] = X[k].real(), in.data[k][1] = X[k].imag();
+  fftw_execute(plan);  // c2r overwrites its input; it is ours
+  std::vector<double> result(out.data, out.data + length);
+  for (double& v : result) v /= static_cast<double>(length);
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    fftw_destroy_plan(plan);
+  }
+  return result;
+}
+
 }  // namespace gearsim

@@ -13,4 +13,9 @@ namespace gearsim {
 // to L samples. Unscaled, as FFTW defines it. Throws InputError when x is empty or L < x.size().
 std::vector<std::complex<double>> real_dft(const std::vector<double>& x, std::size_t fft_length);
 
+// The inverse: x_n = (1/L) Σ_k X_k·exp(2πi·k·n/L) over the full Hermitian spectrum whose bins
+// 0 … L/2 are X (X.size() = L/2 + 1), so real_idft(real_dft(x, L), L) = x. Scaled by 1/L (unlike
+// FFTW). Throws InputError when X.size() ≠ L/2 + 1.
+std::vector<double> real_idft(const std::vector<std::complex<double>>& X, std::size_t length);
+
 }  // namespace gearsim
