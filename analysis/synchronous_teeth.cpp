@@ -36,6 +36,7 @@ SynchronousTeeth synchronous_teeth(const PairId& pair, const PlanetGear& planet,
     r.z_score[tooth] = t.z_score;
   }
   r.flagged_teeth = teeth_standing_apart(r.mean_force_N, r.z_score, r.z_threshold, r.min_relative_deviation);
+  r.indicators = condition_indicators(avg.mean, teeth);
   return r;
 }
 

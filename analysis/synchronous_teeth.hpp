@@ -5,6 +5,8 @@
 // the per-step log (tooth_loads.hpp), from the output-rate signals alone.
 #pragma once
 
+#include "analysis/condition_indicators.hpp"
+
 #include <string>
 #include <vector>
 
@@ -21,6 +23,8 @@ struct SynchronousTeeth {
   std::vector<double> mean_force_N;  // per tooth k (the planet's own numbering), N
   std::vector<double> z_score;       // per tooth k, leave-one-out
   std::vector<int> flagged_teeth;    // by the same rule as ToothLoads::flagged, increasing
+  // The standard indicators of the averaged revolution (condition_indicators.hpp), mesh order z_p.
+  ConditionIndicators indicators;
 };
 
 // force_N and planet_angle_rad (relative to the carrier, unwrapped) sampled at the same times over

@@ -74,6 +74,18 @@ json synchronous_json(const SynchronousTeeth& s) {
   j["min_relative_deviation"] = s.min_relative_deviation;
   j["flagged_teeth"] = s.flagged_teeth;
   j["teeth"] = teeth_json(s.mean_force_N, s.z_score);
+  // NaN (a difference signal without variance) is written as null.
+  auto num_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  const ConditionIndicators& c = s.indicators;
+  j["condition_indicators"] = {{"signal", "the averaged force (one planet revolution); mesh order " + std::to_string(s.mean_force_N.size())},
+                               {"rms_N", num_or_null(c.rms)},
+                               {"crest_factor", num_or_null(c.crest_factor)},
+                               {"kurtosis", num_or_null(c.kurtosis)},
+                               {"fm0", num_or_null(c.fm0)},
+                               {"fm4", num_or_null(c.fm4)},
+                               {"m6a", num_or_null(c.m6a)},
+                               {"na4", num_or_null(c.na4)},
+                               {"er", num_or_null(c.er)}};
   return j;
 }
 

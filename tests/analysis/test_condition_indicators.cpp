@@ -10,6 +10,7 @@
 
 #include "analysis/condition_indicators.hpp"
 #include "analysis/envelope.hpp"
+#include "analysis/synchronous_teeth.hpp"
 #include "synthetic_signals.hpp"
 
 namespace gearsim {
@@ -119,6 +120,28 @@ TEST(ConditionIndicators, BadInputIsRefused) {
   EXPECT_THROW(tsa_signals(std::vector<double>(100, 1.0), 36), InputError);  // < 4 samples per tooth
   EXPECT_THROW(kurtosis(std::vector<double>(10, 2.0)), InputError);          // constant
   EXPECT_THROW(order_amplitude(std::vector<double>(10, 0.0), 6), InputError);
+}
+
+// The planets' synchronous averages carry the indicators: a force with one tooth losing load
+// (a 20 N dip half a pitch wide, once per planet turn) reads FM4 far above a healthy one's.
+TEST(ConditionIndicators, ASynchronousAverageOfAToothThatLosesLoadRaisesFm4) {
+  const int z = 36;
+  const std::size_t n = 200000;  // 20 planet turns at 10 000 samples per turn
+  std::vector<double> angle(n), healthy(n), faulty(n);
+  const auto noise = test::white_noise(n, 0.1, 9);
+  for (std::size_t i = 0; i < n; ++i) {
+    angle[i] = kTwoPi * 20.0 * static_cast<double>(i) / static_cast<double>(n);
+    healthy[i] = 100 + 10 * std::cos(z * angle[i]) + noise[i];
+    const double from_tooth = std::remainder(angle[i], kTwoPi) / (kTwoPi / z);  // in pitches
+    faulty[i] = healthy[i] - 20 * std::exp(-0.5 * std::pow(from_tooth / 0.25, 2));
+  }
+  const PlanetGear planet{"planet_0", z, 0.0};
+  const SynchronousTeeth h = synchronous_teeth({"sun", "planet_0"}, planet, healthy, angle);
+  const SynchronousTeeth f = synchronous_teeth({"sun", "planet_0"}, planet, faulty, angle);
+  EXPECT_NEAR(h.indicators.fm4, 3.0, 0.5);  // the averaged noise: Gaussian
+  EXPECT_GT(f.indicators.fm4, 10 * h.indicators.fm4);
+  EXPECT_GT(f.indicators.crest_factor, h.indicators.crest_factor);
+  EXPECT_NEAR(h.indicators.fm0, 2.0, 0.1);  // a mesh tone of 10 N: peak-to-peak 20 N over 10 N
 }
 
 TEST(Envelope, AnAmplitudeModulatedCarrierShowsItsModulationLine) {
