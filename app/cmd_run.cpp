@@ -26,6 +26,7 @@
 #include "core/errors.hpp"
 #include "geometry/gear_spec.hpp"
 #include "sim/csv_logs.hpp"
+#include "sim/sensor_log.hpp"
 #include "sim/simulate.hpp"
 #include "sim/step_log.hpp"
 #include "physics/world.hpp"
@@ -46,7 +47,7 @@ int clear_previous_outputs(const std::filesystem::path& dir) {
   namespace fs = std::filesystem;
   static const char* const kFiles[] = {"summary.json",  "scenario.json", "gearset.yaml",  "state.csv",
                                        "contacts.csv",  "steps.h5",      "analysis.json", "spectrum.csv",
-                                       "sidebands.csv", "teeth.csv",     "report.html"};
+                                       "sidebands.csv", "teeth.csv",     "report.html",   "sensors.csv"};
   int removed = 0;
   std::error_code ec;
   for (const char* f : kFiles)
@@ -174,6 +175,8 @@ void run(const RunOptions& o) {
   sim::StepLogObserver step_log(dir / "steps.h5", s.name, s.solver.time_step_s);
   std::vector<sim::Observer*> observers{&csv};
   if (s.output.per_step_log) observers.push_back(&step_log);
+  std::optional<sim::SensorLog> sensors;
+  if (!s.sensors.empty()) observers.push_back(&sensors.emplace(dir, s));
   const bool tty = isatty(STDERR_FILENO);
   int last_percent = -1;
   sim::SimOptions options;
@@ -200,6 +203,7 @@ void run(const RunOptions& o) {
   if (tty) std::cerr << "\n";
   json summary = summary_json(o, s, r);
   json outputs = {"state.csv", "contacts.csv"};
+  if (!s.sensors.empty()) outputs.push_back("sensors.csv");
   if (s.output.per_step_log) {
     outputs.push_back("steps.h5");
     const double bytes = static_cast<double>(step_log.bytes_on_disk());

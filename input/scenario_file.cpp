@@ -295,6 +295,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
     if (given(c, "stiffness_tables")) parse_stiffness_tables(c.list_of_maps("stiffness_tables"), s, dir);
     if (given(c, "mesh_stiffnesses")) parse_mesh_stiffnesses(c.list_of_maps("mesh_stiffnesses"), s);
   }
+  if (given(top, "sensors")) parse_sensors(top.list_of_maps("sensors"), s);
   if (given(top, "fe")) s.fe = parse_fe(top.map("fe"), s);
   top.reject_unknown_keys();
   return s;

@@ -150,6 +150,14 @@ json scenario_json(const physics::Scenario& s) {
   for (const physics::LoadDef& l : s.loads)
     j["loads"].push_back({{"joint", l.joint}, {"constant_torque_N_m", l.constant_torque_N_m},
                           {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}, {"ramp_time_s", l.ramp_time_s}});
+  if (!s.sensors.empty()) {
+    j["sensors"] = json::array();
+    for (const physics::SensorDef& d : s.sensors)
+      j["sensors"].push_back({{"name", d.name}, {"body", d.body}, {"angle_rad", d.angle_rad}, {"window_width_rad", d.window_width_rad},
+                              {"other_meshes_weight", d.other_meshes_weight}, {"resonance_hz", d.resonance_hz},
+                              {"damping_ratio", d.damping_ratio}, {"effective_mass_kg", d.effective_mass_kg},
+                              {"noise_rms_m_s2", d.noise_rms_m_s2}, {"sample_rate_hz", d.sample_rate_hz}});
+  }
   if (!s.impulses.empty()) {
     j["impulses"] = json::array();
     for (const physics::ImpulseDef& i : s.impulses)

@@ -68,6 +68,11 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
 // mesh stiffness or a stiffness table.
 void parse_mesh_stiffnesses(const std::vector<YamlMap>& entries, physics::Scenario& scenario);
 
+// `sensors:` (after the bodies and the solver): virtual accelerometers; InputError naming the
+// entry and key for an unknown body, a bad width, a resonance above the step's Nyquist
+// frequency, a sample rate that is no whole number of steps or differs between sensors.
+void parse_sensors(const std::vector<YamlMap>& entries, physics::Scenario& scenario);
+
 // The `fe:` section (after the macros: the torque default needs the train and the loads).
 physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& scenario);
 

@@ -255,6 +255,11 @@ void read_rest(const Node& r, physics::Scenario& s) {
   for (const Node& l : r.list("loads"))
     s.loads.push_back({l.string("joint"), l.number("constant_torque_N_m"), l.number("viscous_N_m_s_per_rad"),
                        l.number_within("ramp_time_s", limits::kRampTime_s)});
+  if (r.has("sensors"))
+    for (const Node& d : r.list("sensors"))
+      s.sensors.push_back({d.string("name"), d.string("body"), d.number("angle_rad"), d.number("window_width_rad"),
+                           d.number("other_meshes_weight"), d.number("resonance_hz"), d.number("damping_ratio"),
+                           d.number("effective_mass_kg"), d.number("noise_rms_m_s2"), d.number("sample_rate_hz")});
   if (r.has("impulses"))
     for (const Node& i : r.list("impulses"))
       s.impulses.push_back({i.string("body"), i.number("at_s"), i.number("duration_s"), i.vec3("force_N"), i.vec3("torque_N_m")});

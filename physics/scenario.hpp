@@ -120,6 +120,29 @@ inline double impulse_shape(const ImpulseDef& i, double time_s) {
   return std::sin(3.14159265358979323846 * (time_s - i.at_s) / i.duration_s);
 }
 
+// A virtual accelerometer on a housing body (a ring gear, or any body the meshes are fixed to):
+// the McFadden & Smith (1985) model. Each tooth contact's normal force reaches it through a
+// path whose gain depends on where the contact is: for the meshes on `body`, a Hann window
+// w(Δ) = ½(1 + cos(2πΔ/width)) of the angle Δ between the contact point and the sensor about the
+// body's centre (1 under the sensor, 0 beyond ±width/2: planet-pass modulation), for every other
+// mesh a constant `other_meshes_weight` (the path through shafts and bearings). The summed
+// force e(t) (N) drives the housing's structural mode: acceleration A(s) = s²/(s² + 2ζω_r s +
+// ω_r²) · E(s)/m_eff (the acceleration of a mass m_eff on that mode's spring, the static part
+// gone), integrated with the bilinear transform at the simulation step; then measurement noise
+// (seeded, rms noise_rms_m_s2) and an anti-aliasing filter before sampling at sample_rate_hz.
+struct SensorDef {
+  std::string name;
+  std::string body;                  // the housing body the sensor sits on (its centre at t = 0)
+  double angle_rad = 0;              // sensor position about the body's centre, from world +x
+  double window_width_rad = 0;       // full width of the planet-pass window, (0, 2π]
+  double other_meshes_weight = 0;    // path gain of meshes not on `body`, (dimensionless)
+  double resonance_hz = 0;           // the structural mode the sensor sees
+  double damping_ratio = 0.05;       // of that mode
+  double effective_mass_kg = 0;      // its modal mass: 1/m_eff is the high-frequency gain, m/s² per N
+  double noise_rms_m_s2 = 0;         // white measurement noise added at the sensor rate
+  double sample_rate_hz = 0;         // the acquisition rate (a whole number of steps)
+};
+
 // The stiffness table of the meshes between two gear bodies (by body name): the contact radius
 // is measured on body_a, whichever of the two the world puts first.
 // body_stiffness_N_per_m (0: none) is the compliance of the two gear bodies between their bores
@@ -234,6 +257,7 @@ struct Scenario {
   std::vector<MotorDef> motors;
   std::vector<LoadDef> loads;
   std::vector<ImpulseDef> impulses;
+  std::vector<SensorDef> sensors;  // all at one sample rate (sensors.csv)
   ContactDef contact;
   SolverDef solver;
   OutputDef output;

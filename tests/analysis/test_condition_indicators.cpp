@@ -163,3 +163,37 @@ TEST(Envelope, AnAmplitudeModulatedCarrierShowsItsModulationLine) {
 
 }  // namespace test_condition_indicators
 }  // namespace gearsim
+
+#include "analysis/resonator.hpp"
+
+namespace gearsim {
+namespace test_condition_indicators {
+
+// The housing mode: 1/(2ζm) at resonance (prewarped, exactly), 1/m far above it, ~ (f/f_r)²/m
+// far below, and the running filter settles to the amplitude its response says.
+TEST(Resonator, AnswersAsASpringMountedMassDoes) {
+  const double fs = 50000, fr = 4000, zeta = 0.05, m = 2.0;
+  const Resonator r(fr, zeta, m, fs);
+  EXPECT_NEAR(std::abs(r.response(fr)), 1 / (2 * zeta * m), 1e-9);
+  // Below resonance the bilinear map shifts frequencies: digital f answers as the analog mode at
+  // K·tan(πf/fs)/2π, K = ω_r/tan(πf_r/fs) (2.1 % lower at 40 Hz for these rates).
+  const double K = kTwoPi * fr / std::tan(std::numbers::pi * fr / fs);
+  const double f_analog = K * std::tan(std::numbers::pi * 40 / fs) / kTwoPi;
+  const std::complex<double> s(0, kTwoPi * f_analog), w2(std::pow(kTwoPi * fr, 2), 0);
+  const double analog = std::abs(s * s / (s * s + 2 * zeta * kTwoPi * fr * s + w2)) / m;
+  EXPECT_NEAR(std::abs(r.response(40)), analog, 1e-6 * analog);
+  EXPECT_NEAR(f_analog, 40 * 0.9786, 0.001 * 40);
+  EXPECT_NEAR(std::abs(r.response(20000)), 1 / m, 0.2 / m);  // towards Nyquist the bilinear map bends it
+  Resonator run(fr, zeta, m, fs);
+  double peak = 0;
+  const double f = 1500;
+  for (int i = 0; i < 20000; ++i) {
+    const double y = run.step(std::cos(kTwoPi * f * i / fs));
+    if (i > 10000) peak = std::max(peak, std::abs(y));
+  }
+  EXPECT_NEAR(peak, std::abs(r.response(f)), 0.002 * std::abs(r.response(f)));
+  EXPECT_THROW(Resonator(30000, zeta, m, fs), InputError);  // above Nyquist
+}
+
+}  // namespace test_condition_indicators
+}  // namespace gearsim
