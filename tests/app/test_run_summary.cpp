@@ -60,7 +60,7 @@ TEST(RunSummary, ADivergingRunStopsWithItsOwnExitCodeAndCompleteLogs) {
   fs::remove_all(dir);
   const gearsim::test::CliRun r = gearsim::test::gearsim(
       std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
-      " --duration 0.05 --set solver.time_step_s=5e-4 --set output.sample_rate_hz=500");
+      " --duration 0.05 --set solver.time_step_s=5e-4 --set output.sample_rate_hz=500 --set sensors=null");
   EXPECT_EQ(r.exit_code, 4) << r.output;
   EXPECT_NE(r.output.find("diverged at t ="), std::string::npos) << r.output;
   std::ifstream f(dir / "summary.json");
