@@ -118,7 +118,17 @@ RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
                                                                  : window(p.point_force_N, s.time_s, s.from_s)));
   if (s.te) r.te = windowed_te_stats(*s.te, s.from_s);
   if (train.planetary) r.synchronous = synchronous_averages(s, train, r.synchronous_note);
-  if (s.tooth_contacts) r.tooth_loads = all_tooth_loads(s, train);
+  if (s.tooth_contacts) {
+    r.tooth_loads = all_tooth_loads(s, train);
+    r.diagnosis = diagnose_from_contacts(*r.tooth_loads, [&](const PairId& pair, const std::string& gear) -> std::string {
+      for (const TrainDescription::LoadedFlank& l : train.loaded_flanks) {
+        if (!(l.pair == pair) || l.flank_of_a.empty()) continue;
+        if (gear == pair.a || !l.b_internal) return l.flank_of_a;  // two external gears: ccw touches ccw
+        return l.flank_of_a == "ccw" ? "cw" : "ccw";
+      }
+      return "";
+    });
+  }
   return r;
 }
 

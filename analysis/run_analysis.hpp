@@ -14,6 +14,7 @@
 
 #include "analysis/pair_force_analysis.hpp"
 #include "analysis/run_signals.hpp"
+#include "analysis/diagnosis.hpp"
 #include "analysis/synchronous_teeth.hpp"
 #include "analysis/tooth_loads.hpp"
 #include "analysis/transmission_error.hpp"
@@ -32,6 +33,8 @@ struct RunAnalysis {
   // Per logged pair and side whose gear is counted and turns at least once in the window, in
   // log order (side a before b); nothing without a tooth-contact log.
   std::optional<std::vector<ToothLoads>> tooth_loads;
+  // From the tooth loads: the faults and the teeth that only respond to them.
+  std::optional<Diagnosis> diagnosis;
 };
 
 // Samples with time_s ≥ from_s.

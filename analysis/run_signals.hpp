@@ -89,6 +89,14 @@ struct TrainDescription {
   // Gears whose per-tooth loads are reported (the planets of a set; the driven gear of a pair),
   // on whichever side of a logged pair they are.
   std::vector<CountedGear> counted_gears;
+  // Which flank of gear a carried each pair's load ("ccw"/"cw"; none: unknown), and whether b is a
+  // ring (inside which the flanks' names swap: a's ccw flank touches a ring's cw flank).
+  struct LoadedFlank {
+    PairId pair;
+    std::string flank_of_a;
+    bool b_internal = false;
+  };
+  std::vector<LoadedFlank> loaded_flanks;
 };
 
 }  // namespace gearsim

@@ -1,5 +1,6 @@
 #include "analysis/tooth_loads.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -46,6 +47,34 @@ ToothLoads tooth_loads(const ToothContactLog& log, std::size_t pair_index, bool 
     t.mean_force_N[static_cast<std::size_t>(tooth)] += log.normal_impulse_N_s[c];
   }
   for (double& f : t.mean_force_N) f /= (to_s - from_s);
+  // Shares of the mesh: each step's contacts of this pair are contiguous in the log (one step
+  // after another), so a step's total is summed first, then handed out.
+  const int revs = std::max(1, static_cast<int>(std::lround(revolutions)));
+  t.share_steps.assign(static_cast<std::size_t>(teeth), 0.0);
+  t.share_per_revolution.assign(static_cast<std::size_t>(revs), std::vector<double>(static_cast<std::size_t>(teeth), 0.0));
+  for (std::size_t c = 0; c < log.time_s.size();) {
+    std::size_t end = c;
+    double total = 0;
+    while (end < log.time_s.size() && log.time_s[end] == log.time_s[c]) {
+      if (log.pair[end] == pair) total += log.normal_impulse_N_s[end];
+      ++end;
+    }
+    const double t_step = log.time_s[c];
+    if (total > 0 && t_step >= from_s && t_step < to_s) {
+      const auto r = static_cast<std::size_t>(std::min<double>(revs - 1, std::floor((t_step - from_s) / (to_s - from_s) * revs)));
+      for (std::size_t i = c; i < end; ++i) {
+        if (log.pair[i] != pair) continue;
+        const auto tooth = static_cast<std::size_t>(side_a ? log.tooth_a[i] : log.tooth_b[i]);
+        const double share = log.normal_impulse_N_s[i] / total;
+        t.share_steps[tooth] += share;
+        t.share_per_revolution[r][tooth] += share;
+      }
+    }
+    c = end;
+  }
+  t.share_z = leave_one_out_z_scores(t.share_steps);
+  t.share_flagged = teeth_standing_apart(t.share_steps, t.share_z, analysis_constants::kDefaultToothZThreshold,
+                                         analysis_constants::kDefaultToothMinRelativeDeviation);
   // How far each tooth stands from the others.
   t.z_score = leave_one_out_z_scores(t.mean_force_N);
   t.z_threshold = analysis_constants::kDefaultToothZThreshold;

@@ -24,6 +24,15 @@ struct ToothLoads {
   std::vector<double> z_score;       // per tooth k, leave-one-out
   std::vector<int> flagged;  // |z| > z_threshold and apart from the others' mean by > min_relative_deviation
   double z_threshold = 0, min_relative_deviation = 0;
+  // Each tooth's share of its own mesh: Σ over the logged steps of its impulse over the pair's
+  // total impulse that step (in steps). Healthy teeth carry equal shares whatever the mesh's total
+  // does; a flank that is not where the geometry puts it carries less, its neighbours more.
+  // Load moved between meshes (planets meshing in phase) changes mean_force_N, not the shares.
+  std::vector<double> share_steps;   // per tooth k
+  std::vector<double> share_z;       // per tooth k, leave-one-out
+  std::vector<int> share_flagged;    // by the same rule as `flagged`
+  // Per whole revolution r (the window cut into `revolutions` equal spans), per tooth k.
+  std::vector<std::vector<double>> share_per_revolution;
 };
 
 // The window [from_s, to_s] over which `angle_rad` (unwrapped, sampled at time_s) turns a whole

@@ -99,7 +99,29 @@ json tooth_loads_json(const ToothLoads& t) {
   j["min_relative_deviation"] = t.min_relative_deviation;
   j["flagged_teeth"] = t.flagged;
   j["teeth"] = teeth_json(t.mean_force_N, t.z_score);
+  // Each tooth's share of its own mesh (diagnosis.hpp), in steps, with its z-score.
+  for (std::size_t k = 0; k < t.share_steps.size(); ++k) {
+    j["teeth"][k]["share_of_mesh_steps"] = t.share_steps[k];
+    j["teeth"][k]["share_z_score"] = t.share_z[k];
+  }
+  j["share_flagged_teeth"] = t.share_flagged;
   return j;
+}
+
+json diagnosis_json(const Diagnosis& d) {
+  json faults = json::array();
+  for (const ToothFault& f : d.faults)
+    faults.push_back({{"gear", f.gear}, {"tooth", f.tooth}, {"flank", f.flank}, {"pair", pair_name(f.pair)}, {"source", f.source},
+                      {"evidence", f.evidence}, {"confidence", f.confidence}});
+  return {{"faults", faults}};
+}
+
+json responses_json(const Diagnosis& d) {
+  json list = json::array();
+  for (const ToothResponse& r : d.responses)
+    list.push_back({{"gear", r.gear}, {"tooth", r.tooth}, {"pair", pair_name(r.pair)}, {"load_z_score", r.load_z},
+                    {"share_z_score", r.share_z}, {"reason", r.reason}});
+  return list;
 }
 
 json gear_train_json(const input::GearTrain& train) {
@@ -137,6 +159,10 @@ json analysis_json(const RunAnalysis& a, const input::GearTrain& train, const st
     json loads = json::array();
     for (const ToothLoads& t : *a.tooth_loads) loads.push_back(tooth_loads_json(t));
     j["tooth_loads"] = loads;
+  }
+  if (a.diagnosis) {
+    j["diagnosis"] = diagnosis_json(*a.diagnosis);
+    j["tooth_responses"] = responses_json(*a.diagnosis);
   }
   return j;
 }

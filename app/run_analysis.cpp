@@ -181,9 +181,32 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
 
 }  // namespace
 
+// Per logged pair, the flank of gear a that carried its load over the steady window: the larger
+// of summary.json's gear_pairs[].mean_normal_force_N {ccw_flanks_of_a, cw_flanks_of_a}.
+std::vector<TrainDescription::LoadedFlank> loaded_flanks(const RunDir& run) {
+  std::vector<TrainDescription::LoadedFlank> out;
+  const json& list = run.summary.at("gear_pairs");
+  for (const json& p : list) {
+    if (!p.contains("mean_normal_force_N")) continue;
+    const json& m = p.at("mean_normal_force_N");
+    if (!m.contains("ccw_flanks_of_a") || !m.contains("cw_flanks_of_a") || !m.at("ccw_flanks_of_a").is_number() ||
+        !m.at("cw_flanks_of_a").is_number())
+      throw InputError((run.dir / "summary.json").string() + ": gear_pairs[].mean_normal_force_N: expected {ccw_flanks_of_a, cw_flanks_of_a} in N");
+    const double ccw = m.at("ccw_flanks_of_a").get<double>(), cw = m.at("cw_flanks_of_a").get<double>();
+    TrainDescription::LoadedFlank l{{p.at("a").get<std::string>(), p.at("b").get<std::string>()}, "", false};
+    if (ccw > 0 || cw > 0) l.flank_of_a = ccw >= cw ? "ccw" : "cw";
+    const physics::BodyDef* b = body_named(run.scenario, l.pair.b);
+    l.b_internal = b && input::is_internal(*b);
+    out.push_back(l);
+  }
+  return out;
+}
+
 RunAnalysis analyse_run_dir(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
-  const TrainDescription description = train_description(input::gear_train_of(s), s);
+  TrainDescription description = train_description(input::gear_train_of(s), s);
+  gear_pairs_of(run);  // checks the list's shape first
+  description.loaded_flanks = loaded_flanks(run);
   double from_s = o.from_s;
   // Not before the anti-aliased force is free of its start (held at the first value before t = 0).
   const double edge = edge_held_s(run);

@@ -79,6 +79,22 @@ TEST_F(Analyze, FaultyPlanetToothCarriesNothingAndStandsOut) {
   EXPECT_TRUE(h["tooth_loads"][0]["flagged_teeth"].empty()) << h["tooth_loads"][0]["flagged_teeth"].dump();
 }
 
+// The diagnosis names the cause, not its consequences: planet 0's tooth 0 on the flank the sun
+// loads, and no other tooth as a fault (the teeth that take up its load are listed as responses);
+// the healthy run gets no fault.
+TEST_F(Analyze, DiagnosisNamesPlanetZeroToothZeroAndNoOtherTooth) {
+  const nlohmann::json f = analysis(*faulty_), h = analysis(*healthy_);
+  const nlohmann::json& faults = f["diagnosis"]["faults"];
+  ASSERT_EQ(faults.size(), 1u) << faults.dump();
+  EXPECT_EQ(faults[0]["gear"], "planet_0");
+  EXPECT_EQ(faults[0]["tooth"], 0);
+  EXPECT_EQ(faults[0]["flank"], "ccw");  // the flank paper_gearset.yaml relieves by 43 µm
+  EXPECT_EQ(faults[0]["source"], "contact forces");
+  EXPECT_GT(faults[0]["confidence"].get<double>(), 0.5);
+  for (const auto& r : f["tooth_responses"]) EXPECT_FALSE(r["reason"].get<std::string>().empty());
+  EXPECT_TRUE(h["diagnosis"]["faults"].empty()) << h["diagnosis"]["faults"].dump();
+}
+
 TEST_F(Analyze, SynchronousAverageFindsTheSameTooth) {
   // The standard view from the output-rate logs alone: planet 0's force averaged over its
   // rotation relative to the carrier, one window per tooth where it faces the sun.
