@@ -118,6 +118,8 @@ RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
                                                                  : window(p.point_force_N, s.time_s, s.from_s)));
   if (s.te) r.te = windowed_te_stats(*s.te, s.from_s);
   if (train.planetary) r.synchronous = synchronous_averages(s, train, r.synchronous_note);
+  if (train.planetary && !train.carrier.empty())
+    for (const SensorSignal& sensor : s.sensors) r.sensors.push_back(analyse_sensor(sensor, s, train));
   if (s.tooth_contacts) {
     r.tooth_loads = all_tooth_loads(s, train);
     r.diagnosis = diagnose_from_contacts(*r.tooth_loads, [&](const PairId& pair, const std::string& gear) -> std::string {

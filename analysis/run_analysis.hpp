@@ -15,6 +15,7 @@
 #include "analysis/pair_force_analysis.hpp"
 #include "analysis/run_signals.hpp"
 #include "analysis/diagnosis.hpp"
+#include "analysis/sensor_analysis.hpp"
 #include "analysis/synchronous_teeth.hpp"
 #include "analysis/tooth_loads.hpp"
 #include "analysis/transmission_error.hpp"
@@ -35,6 +36,9 @@ struct RunAnalysis {
   std::optional<std::vector<ToothLoads>> tooth_loads;
   // From the tooth loads: the faults and the teeth that only respond to them.
   std::optional<Diagnosis> diagnosis;
+  // Per housing sensor (a planetary set's run with sensors.csv): planet-separated averages,
+  // indicators, and the fault the sensor alone points to.
+  std::vector<SensorAnalysis> sensors;
 };
 
 // Samples with time_s ≥ from_s.

@@ -52,6 +52,15 @@ struct ToothContactLog {
   std::vector<double> normal_impulse_N_s;            // normal impulse over the step, N·s
 };
 
+// A housing sensor's record (sensors.csv) and where it sits.
+struct SensorSignal {
+  std::string name;
+  double angle_rad = 0;         // about the set's centre, world
+  double window_width_rad = 0;  // its planet-pass window (the model's)
+  std::vector<double> time_s;
+  std::vector<double> acceleration_m_s2;
+};
+
 struct RunSignals {
   std::vector<double> time_s;          // output-rate sample instants, s (uniform from from_s on)
   std::vector<PairForce> pair_forces;  // every gear pair, in the world's order, sampled at time_s
@@ -60,6 +69,7 @@ struct RunSignals {
   std::optional<TransmissionError> te;
   std::vector<BodyAngle> angles;  // sampled at time_s: at least the planets and the counted gears
   std::optional<ToothContactLog> tooth_contacts;  // nothing: the run kept no per-step log
+  std::vector<SensorSignal> sensors;              // the run's housing sensors (at their own rate)
   double from_s = 0;  // start of the analysed window, s: samples with time_s ≥ from_s are analysed
 };
 
@@ -70,7 +80,11 @@ struct PlanetGear {
   // Where the sun lies seen from the planet at t = 0 in the carrier frame, less the planet's
   // tooth-0 angle, rad: tooth k faces the sun when the planet's relative angle is this − k·2π/z.
   double sun_direction_rad = 0;
+  // Where its centre sits about the set's centre at t = 0 (world angle, rad): with the carrier's
+  // turn, where it is when (a sensor's planet-pass window).
+  double position0_rad = 0;
 };
+
 
 // A gear whose per-tooth loads are taken from the tooth-contact log.
 struct CountedGear {
@@ -86,6 +100,7 @@ struct TrainDescription {
   bool planetary = false;
   std::string sun;                 // planetary: the sun's body
   std::vector<PlanetGear> planets;  // planetary: every planet
+  std::string carrier;              // planetary: the carrier's body (its angle is logged)
   // Gears whose per-tooth loads are reported (the planets of a set; the driven gear of a pair),
   // on whichever side of a logged pair they are.
   std::vector<CountedGear> counted_gears;

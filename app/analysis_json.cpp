@@ -108,11 +108,15 @@ json tooth_loads_json(const ToothLoads& t) {
   return j;
 }
 
+json fault_json(const ToothFault& f) {
+  return {{"gear", f.gear}, {"tooth", f.tooth}, {"flank", f.flank}, {"pair", f.pair.a.empty() ? "" : pair_name(f.pair)},
+          {"source", f.source}, {"evidence", f.evidence}, {"confidence", f.confidence}};
+}
+
 json diagnosis_json(const Diagnosis& d) {
   json faults = json::array();
   for (const ToothFault& f : d.faults)
-    faults.push_back({{"gear", f.gear}, {"tooth", f.tooth}, {"flank", f.flank}, {"pair", pair_name(f.pair)}, {"source", f.source},
-                      {"evidence", f.evidence}, {"confidence", f.confidence}});
+    faults.push_back(fault_json(f));
   return {{"faults", faults}};
 }
 
@@ -122,6 +126,28 @@ json responses_json(const Diagnosis& d) {
     list.push_back({{"gear", r.gear}, {"tooth", r.tooth}, {"pair", pair_name(r.pair)}, {"load_z_score", r.load_z},
                     {"share_z_score", r.share_z}, {"reason", r.reason}});
   return list;
+}
+
+json sensors_json(const std::vector<SensorAnalysis>& list) {
+  auto num_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json out = json::array();
+  for (const SensorAnalysis& a : list) {
+    json planets = json::array();
+    for (const PlanetSensorView& v : a.planets) {
+      const ConditionIndicators& c = v.indicators;
+      planets.push_back({{"planet", v.planet}, {"passes", v.passes}, {"coverage", v.coverage}, {"peak_tooth_facing_sun", v.peak_tooth},
+                         {"condition_indicators",
+                          {{"rms_m_s2", num_or_null(c.rms)}, {"crest_factor", num_or_null(c.crest_factor)}, {"kurtosis", num_or_null(c.kurtosis)},
+                           {"fm0", num_or_null(c.fm0)}, {"fm4", num_or_null(c.fm4)}, {"m6a", num_or_null(c.m6a)}, {"na4", num_or_null(c.na4)},
+                           {"er", num_or_null(c.er)}}}});
+    }
+    json j = {{"sensor", a.sensor}, {"sample_rate_hz", a.sample_rate_hz}, {"method", "McFadden's planet-separated averages (1991)"},
+              {"planets", planets}};
+    j["fault"] = a.fault ? fault_json(*a.fault) : json(nullptr);
+    if (!a.note.empty()) j["note"] = a.note;
+    out.push_back(j);
+  }
+  return out;
 }
 
 json gear_train_json(const input::GearTrain& train) {
@@ -163,6 +189,12 @@ json analysis_json(const RunAnalysis& a, const input::GearTrain& train, const st
   if (a.diagnosis) {
     j["diagnosis"] = diagnosis_json(*a.diagnosis);
     j["tooth_responses"] = responses_json(*a.diagnosis);
+  }
+  if (!a.sensors.empty()) {
+    j["sensors"] = sensors_json(a.sensors);
+    if (!j.contains("diagnosis")) j["diagnosis"] = {{"faults", json::array()}};
+    for (const SensorAnalysis& s : a.sensors)
+      if (s.fault) j["diagnosis"]["faults"].push_back(fault_json(*s.fault));
   }
   return j;
 }

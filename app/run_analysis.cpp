@@ -119,8 +119,12 @@ TrainDescription train_description(const input::GearTrain& train, const physics:
   d.frequencies = train.frequencies;
   d.planetary = train.planetary;
   d.sun = train.sun;
+  d.carrier = train.carrier;
   for (const std::string& planet : train.planets) {
-    d.planets.push_back({planet, train.planet_teeth, sun_direction_rad(s, planet)});
+    const physics::BodyDef* b = body_named(s, planet);
+    const physics::BodyDef* c = body_named(s, train.carrier);
+    const Eigen::Vector3d r = b && c ? Eigen::Vector3d(b->pose.position_m - c->pose.position_m) : Eigen::Vector3d::Zero();
+    d.planets.push_back({planet, train.planet_teeth, sun_direction_rad(s, planet), std::atan2(r.y(), r.x())});
     d.counted_gears.push_back({planet, teeth(planet)});
   }
   if (!train.planetary) d.counted_gears.push_back({train.driven, teeth(train.driven)});
@@ -175,6 +179,12 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
     if (std::none_of(s.angles.begin(), s.angles.end(), [&](const BodyAngle& a) { return a.body == p.body; }))
       s.angles.push_back({p.body, state.column(p.body + "_angle_rad")});
   if (std::filesystem::exists(run.dir / "steps.h5")) s.tooth_contacts = tooth_contacts(run.dir / "steps.h5", pairs);
+  if (!run.scenario.sensors.empty() && std::filesystem::exists(run.dir / "sensors.csv")) {
+    const input::CsvTable sensors = input::read_csv(run.dir / "sensors.csv");
+    for (const physics::SensorDef& d : run.scenario.sensors)
+      s.sensors.push_back({d.name, d.angle_rad, d.window_width_rad, sensors.column("time_s"), sensors.column(d.name + "_acceleration_m_s2")});
+    if (!train.carrier.empty()) s.angles.push_back({train.carrier, state.column(train.carrier + "_angle_rad")});
+  }
   drop_edge_held_end(s, edge_held_s(run));
   return s;
 }

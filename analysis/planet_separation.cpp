@@ -1,0 +1,56 @@
+#include "analysis/planet_separation.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/errors.hpp"
+
+namespace gearsim {
+
+PlanetSeparatedAverage planet_separated_average(const std::vector<double>& x, const std::vector<double>& position,
+                                                const std::vector<double>& spin, double sensor, double width, int n) {
+  constexpr double kTurn = 2 * std::numbers::pi;
+  if (x.size() != position.size() || x.size() != spin.size())
+    throw InputError("planet separation: signal, position and spin must be sampled together (" + std::to_string(x.size()) + ", " +
+                     std::to_string(position.size()) + ", " + std::to_string(spin.size()) + " samples)");
+  if (x.size() < 2) throw InputError("planet separation: expected at least 2 samples");
+  if (!(width > 0 && width <= kTurn + 1e-12)) throw InputError("planet separation: the window width must lie in (0, 2π]");
+  if (n < 4) throw InputError("planet separation: expected at least 4 samples per revolution");
+  PlanetSeparatedAverage a;
+  a.samples_per_revolution = n;
+  a.mean.assign(static_cast<std::size_t>(n), 0.0);
+  a.weight.assign(static_cast<std::size_t>(n), 0.0);
+  bool inside = false;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double delta = std::remainder(position[i] - sensor, kTurn);
+    const double w = std::abs(delta) < width / 2 ? 0.5 * (1 + std::cos(kTurn * delta / width)) : 0.0;
+    if (w > 0 && !inside) a.passes += 1;
+    inside = w > 0;
+    if (w == 0) continue;
+    // The grid bin of the planet's turn (nearest), in [0, n).
+    double turn = std::fmod(spin[i], kTurn);
+    if (turn < 0) turn += kTurn;
+    const auto j = static_cast<std::size_t>(std::lround(turn / kTurn * n)) % static_cast<std::size_t>(n);
+    a.mean[j] += w * x[i];
+    a.weight[j] += w;
+  }
+  if (a.passes == 0) throw InputError("planet separation: the planet never passes the sensor in this record");
+  int seen = 0;
+  for (std::size_t j = 0; j < a.mean.size(); ++j)
+    if (a.weight[j] > 0) a.mean[j] /= a.weight[j], ++seen;
+  a.coverage = static_cast<double>(seen) / n;
+  if (seen == 0) return a;
+  // Bins never seen: linear between the nearest seen bins on either side (around the circle).
+  const auto N = static_cast<std::size_t>(n);
+  for (std::size_t j = 0; j < N; ++j) {
+    if (a.weight[j] > 0) continue;
+    std::size_t lo = j, hi = j, dl = 0, dh = 0;
+    while (a.weight[lo] <= 0) lo = (lo + N - 1) % N, ++dl;
+    while (a.weight[hi] <= 0) hi = (hi + 1) % N, ++dh;
+    a.mean[j] = (a.mean[lo] * static_cast<double>(dh) + a.mean[hi] * static_cast<double>(dl)) / static_cast<double>(dl + dh);
+  }
+  return a;
+}
+
+}  // namespace gearsim
