@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "analysis/planet_pass.hpp"
 #include "input/scenario_file.hpp"
 #include "sim/sensor_log.hpp"
 #include "sim/simulate.hpp"
@@ -74,12 +75,32 @@ TEST(SensorLog, InPhasePlanetsLeaveOnlyEveryThirdSidebandAndTheFlawFillsTheRestI
     double kept = 0, cancelled = 0, faulty_cancelled = 0;
     for (int n = -3; n <= 3; ++n) {
       const double f = k * fm + n * fc;
-      if (n % 3 == 0) kept = std::max(kept, healthy.amplitude(f));
+      if (planet_pass_line_survives(3, 96, k, n)) kept = std::max(kept, healthy.amplitude(f));
       else cancelled = std::max(cancelled, healthy.amplitude(f)), faulty_cancelled = std::max(faulty_cancelled, faulty.amplitude(f));
     }
     EXPECT_LT(20 * std::log10(cancelled / kept), -20.0) << "harmonic " << k;
     EXPECT_GT(20 * std::log10(faulty_cancelled / cancelled), 10.0) << "harmonic " << k;
   }
+}
+
+// Sequential meshing (sun 25, ring 95): around k·f_m only n ≡ −95k ≡ k (mod 3) survive — the
+// pattern shifted off the mesh line, as McFadden & Smith predict; every cancelled line ≥ 20 dB
+// below the survivors.
+TEST(SensorLog, SequentialPlanetsShiftTheSurvivingSidebandsAsPredicted) {
+  const double fc = 104.7 / 4.8 / (2 * std::numbers::pi), fm = 95 * fc;
+  const SensorRecord rec = run_sensor("sequential_planetary.yaml");
+  for (int k = 1; k <= 3; ++k) {
+    double kept = 0, cancelled = 0;
+    for (int n = -5; n <= 5; ++n) {
+      const double a = rec.amplitude(k * fm + n * fc);
+      if (planet_pass_line_survives(3, 95, k, n)) kept = std::max(kept, a);
+      else cancelled = std::max(cancelled, a);
+    }
+    EXPECT_LT(20 * std::log10(cancelled / kept), -20.0) << "harmonic " << k;
+  }
+  // The mesh line itself (n = 0) cancels at k = 1 and 2, survives at k = 3.
+  EXPECT_FALSE(planet_pass_line_survives(3, 95, 1, 0));
+  EXPECT_TRUE(planet_pass_line_survives(3, 95, 3, 0));
 }
 
 }  // namespace test_sensor_log
