@@ -101,6 +101,9 @@ struct TrainDescription {
   std::string sun;                 // planetary: the sun's body
   std::vector<PlanetGear> planets;  // planetary: every planet
   std::string carrier;              // planetary: the carrier's body (its angle is logged)
+  // planetary: the planets mesh in phase (z_s/N whole): at every instant each is at the same
+  // point of its own mesh cycle, so a fixed sensor cannot tell one planet's events from another's.
+  bool planets_in_phase = false;
   // Gears whose per-tooth loads are reported (the planets of a set; the driven gear of a pair),
   // on whichever side of a logged pair they are.
   std::vector<CountedGear> counted_gears;

@@ -49,8 +49,10 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     v.peak_tooth = static_cast<int>(((std::lround((p.sun_direction_rad - turn) / pitch) % p.teeth) + p.teeth) % p.teeth);
     out.planets.push_back(v);
   }
-  // One planet standing apart: FM4 over the fault level and over twice every other planet's.
-  for (std::size_t i = 0; i < out.planets.size(); ++i) {
+  // One planet standing apart: FM4 over the fault level and over twice every other planet's —
+  // only where the separation can work: planets meshing in phase share every event (the paper's
+  // 43 µm run names no planet; its 5 and 10 µm runs would name planet 2, wrongly, by this rule).
+  for (std::size_t i = 0; i < out.planets.size() && !train.planets_in_phase; ++i) {
     const PlanetSensorView& v = out.planets[i];
     double others = 0;
     for (std::size_t j = 0; j < out.planets.size(); ++j)
@@ -76,9 +78,12 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     std::sort(fm4.rbegin(), fm4.rend());
     std::ostringstream n;
     n.precision(3);
-    n << "no planet's separated average stands out (largest FM4 " << fm4[0] << ", next " << fm4[1]
-      << "): when the planets mesh in phase, every planet's window carries the events of all of them, and the sensor alone "
-         "cannot say which planet they come from";
+    if (train.planets_in_phase)
+      n << "the planets mesh in phase (z_s/N whole): every planet's separated window carries the events of all of them, so the "
+           "sensor alone cannot say which planet an event comes from; no planet is named (largest separated FM4 "
+        << fm4[0] << ", next " << fm4[1] << "; a healthy gear's is about 3)";
+    else
+      n << "no planet's separated average stands out (largest FM4 " << fm4[0] << ", next " << fm4[1] << ")";
     out.note = n.str();
   }
   return out;

@@ -25,7 +25,8 @@ struct SensorAnalysis {
   std::string sensor;
   double sample_rate_hz = 0;
   std::vector<PlanetSensorView> planets;
-  // A planet whose separated average's FM4 exceeds kSensorFm4Fault and twice every other planet's.
+  // A planet whose separated average's FM4 exceeds kSensorFm4Fault and twice every other planet's;
+  // never for planets meshing in phase (TrainDescription::planets_in_phase).
   std::optional<ToothFault> fault;
   std::string note;  // why no planet is named when one might expect it
 };

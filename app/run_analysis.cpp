@@ -120,6 +120,7 @@ TrainDescription train_description(const input::GearTrain& train, const physics:
   d.planetary = train.planetary;
   d.sun = train.sun;
   d.carrier = train.carrier;
+  d.planets_in_phase = train.planetary && !train.planets.empty() && train.sun_teeth % static_cast<int>(train.planets.size()) == 0;
   for (const std::string& planet : train.planets) {
     const physics::BodyDef* b = body_named(s, planet);
     const physics::BodyDef* c = body_named(s, train.carrier);

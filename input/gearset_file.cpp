@@ -16,7 +16,9 @@ Flank parse_flank(const YamlMap& m) {
   return m.choice("flank", {"ccw", "cw"}) == "ccw" ? Flank::Ccw : Flank::Cw;
 }
 
-GearErrors parse_errors(const YamlMap& e) {
+}  // namespace
+
+GearErrors parse_gear_errors(const YamlMap& e) {
   GearErrors out;
   if (e.has("flank_offsets"))
     for (const YamlMap& f : e.list_of_maps("flank_offsets")) {
@@ -42,7 +44,6 @@ GearErrors parse_errors(const YamlMap& e) {
   return out;
 }
 
-}  // namespace
 
 double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad) {
   const bool deg = m.has(base + "_deg"), rad = m.has(base + "_rad");
@@ -87,7 +88,7 @@ GearSpec parse_gear(const YamlMap& g, const std::string& name, const YamlMap* de
   s.bore_diameter_m = g.number_or("bore_diameter_m", 0.0);
   s.rim_diameter_m = g.number_or("rim_diameter_m", 0.0);
   s.tooth0_angle_rad = angle_rad_or(g, "tooth0_angle", 0.0);
-  if (g.has("errors")) s.errors = parse_errors(g.map("errors"));
+  if (g.has("errors")) s.errors = parse_gear_errors(g.map("errors"));
   g.reject_unknown_keys();
   try {
     validate_gear_spec(s);

@@ -43,4 +43,8 @@ GearSpec parse_gear(const YamlMap& gear, const std::string& name, const YamlMap*
 // Reads `<base>_deg` or `<base>_rad` (not both) as radians; fallback when neither is present.
 double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad);
 
+// A gear's `errors:` mapping (flank_offsets, pitch_errors, profile_slopes, eccentricity), unknown
+// keys refused; the tooth indices are checked with the gear (validate_gear_spec).
+GearErrors parse_gear_errors(const YamlMap& e);
+
 }  // namespace gearsim::input

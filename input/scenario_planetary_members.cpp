@@ -27,9 +27,11 @@ const GearSpec& named_gear(const YamlMap& m, const std::string& key, const GearS
   m.fail(key, "no gear named '" + name + "' in " + f.path.string() + " (it has: " + names + ")");
 }
 
-// faulty_planets: {index: gear}; every other planet is the train's planet gear.
-std::vector<const GearSpec*> planet_gears(const YamlMap& m, const GearSetFile& f, const GearSpec& planet, int n) {
-  std::vector<const GearSpec*> gears(static_cast<std::size_t>(n), &planet);
+// faulty_planets: {index: gear} or {index: {gear: name, errors: {...}}} (the named spec gear with
+// these errors instead of its own: a fault depth a sweep can vary); every other planet is the
+// train's planet gear.
+std::vector<GearSpec> planet_gears(const YamlMap& m, const GearSetFile& f, const GearSpec& planet, int n) {
+  std::vector<GearSpec> gears(static_cast<std::size_t>(n), planet);
   if (!given(m, "faulty_planets")) return gears;  // absent or null: all healthy
   const YamlMap fp = m.map("faulty_planets");
   for (const std::string& key : fp.keys()) {
@@ -37,12 +39,26 @@ std::vector<const GearSpec*> planet_gears(const YamlMap& m, const GearSetFile& f
     const auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), k);
     if (ec != std::errc() || end != key.data() + key.size() || k < 0 || k >= n)
       fp.fail(key, "expected a planet index 0.." + std::to_string(n - 1) + " as the key");
-    const GearSpec& g = named_gear(fp, key, f, "");
+    GearSpec g;
+    if (fp.has_map(key)) {
+      const YamlMap entry = fp.map(key);
+      g = named_gear(entry, "gear", f, "");
+      g.errors = entry.has("errors") ? parse_gear_errors(entry.map("errors")) : GearErrors{};
+      g.name += "_planet" + key;  // its own gear: not the spec's of that name
+      entry.reject_unknown_keys();
+      try {
+        validate_gear_spec(g);
+      } catch (const InputError& e) {
+        entry.fail("errors", e.what());
+      }
+    } else {
+      g = named_gear(fp, key, f, "");
+    }
     if (g.kind != planet.kind || g.teeth != planet.teeth || g.module_m != planet.module_m ||
         g.pressure_angle_rad != planet.pressure_angle_rad || g.profile_shift != planet.profile_shift)
       fp.fail(key, "gear '" + g.name + "' cannot take planet " + key + "'s place: its kind, teeth, module, "
                    "pressure angle and profile shift must equal those of '" + planet.name + "'");
-    gears[static_cast<std::size_t>(k)] = &g;
+    gears[static_cast<std::size_t>(k)] = g;
   }
   return gears;
 }
@@ -94,8 +110,8 @@ PlanetaryMembers members_from_spec(const YamlMap& m, const fs::path& dir) {
   s.planet = spec_body("planet_0", s.spec->planet, f.density_kg_m3);
   s.ring = spec_body("ring", s.spec->ring, f.density_kg_m3);
   int k = 0;
-  for (const GearSpec* g : planet_gears(m, f, s.spec->planet, s.count))
-    s.planets.push_back(spec_body("planet_" + std::to_string(k++), *g, f.density_kg_m3));
+  for (const GearSpec& g : planet_gears(m, f, s.spec->planet, s.count))
+    s.planets.push_back(spec_body("planet_" + std::to_string(k++), g, f.density_kg_m3));
   return s;
 }
 
