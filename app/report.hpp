@@ -26,5 +26,6 @@ std::string report_gears_section(const RunDir& run);
 std::string report_signals_section(const RunDir& run, const std::optional<RunDir>& compare);
 std::string report_paper_section(const RunDir& run);
 std::string report_sampling_section(const RunDir& run);
+std::string report_sensors_section(const RunDir& run, const std::optional<RunDir>& compare);
 
 }  // namespace gearsim::app

@@ -33,12 +33,16 @@ TEST(Report, HoldsEverySectionInOneSelfContainedFile) {
   for (const char* section : {"The run", "The paper and this run", "Against the paper's Table 1", "Single flank error",
                               "Characteristic frequencies", "paper Fig. 4", "paper Fig. 5", "paper Fig. 6", "paper Fig. 7",
                               "Per-tooth load", "planet local-fault family", "Sampling: why the paper",
-                              "anti-aliased / point samples", "Contact ringing above the band", "Rendered frames"})
+                              "anti-aliased / point samples", "Contact ringing above the band", "Rendered frames", "Housing sensors",
+                              "separated average (McFadden 1991)"})
     EXPECT_NE(html.find(section), std::string::npos) << "missing section: " << section;
-  // Plots are gnuplot's SVG, inline: force (2), spectrum, three harmonic zooms, TE, teeth.
+  // Plots are gnuplot's SVG, inline: force (2), spectrum, three harmonic zooms, TE, teeth; the
+  // housing sensor's signal and its three harmonic zooms.
   std::size_t svgs = 0;
   for (std::size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 4)) ++svgs;
-  EXPECT_EQ(svgs, 8u);
+  EXPECT_EQ(svgs, 12u);
+  // The diagnosis in one sentence: the cause, from the contact forces.
+  EXPECT_NE(html.find("<b>Diagnosis:</b> planet_0 tooth 0 (ccw flank) from contact forces"), std::string::npos);
   EXPECT_NE(html.find("Gnuplot"), std::string::npos);
   // Opens offline: nothing fetched from elsewhere.
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
