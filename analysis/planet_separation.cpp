@@ -8,6 +8,11 @@
 
 namespace gearsim {
 
+namespace {
+// Means from sums, the coverage, and unseen bins interpolated.
+void finish_average(PlanetSeparatedAverage& a);
+}  // namespace
+
 PlanetSeparatedAverage planet_separated_average(const std::vector<double>& x, const std::vector<double>& position,
                                                 const std::vector<double>& spin, double sensor, double width, int n) {
   constexpr double kTurn = 2 * std::numbers::pi;
@@ -36,11 +41,18 @@ PlanetSeparatedAverage planet_separated_average(const std::vector<double>& x, co
     a.weight[j] += w;
   }
   if (a.passes == 0) throw InputError("planet separation: the planet never passes the sensor in this record");
+  finish_average(a);
+  return a;
+}
+
+namespace {
+void finish_average(PlanetSeparatedAverage& a) {
+  const int n = a.samples_per_revolution;
   int seen = 0;
   for (std::size_t j = 0; j < a.mean.size(); ++j)
     if (a.weight[j] > 0) a.mean[j] /= a.weight[j], ++seen;
   a.coverage = static_cast<double>(seen) / n;
-  if (seen == 0) return a;
+  if (seen == 0) return;
   // Bins never seen: linear between the nearest seen bins on either side (around the circle).
   const auto N = static_cast<std::size_t>(n);
   for (std::size_t j = 0; j < N; ++j) {
@@ -50,6 +62,40 @@ PlanetSeparatedAverage planet_separated_average(const std::vector<double>& x, co
     while (a.weight[hi] <= 0) hi = (hi + 1) % N, ++dh;
     a.mean[j] = (a.mean[lo] * static_cast<double>(dh) + a.mean[hi] * static_cast<double>(dl)) / static_cast<double>(dl + dh);
   }
+}
+}  // namespace
+
+PlanetSeparatedAverage sun_separated_average(const std::vector<double>& x, const std::vector<std::vector<double>>& position,
+                                             const std::vector<double>& offset, const std::vector<double>& sun, double sensor,
+                                             double width, int n) {
+  constexpr double kTurn = 2 * std::numbers::pi;
+  if (position.size() != offset.size() || position.empty()) throw InputError("sun separation: one position and one offset per planet");
+  for (const std::vector<double>& p : position)
+    if (p.size() != x.size()) throw InputError("sun separation: every planet's position must be sampled with the signal");
+  if (sun.size() != x.size() || x.size() < 2) throw InputError("sun separation: the sun's turn must be sampled with the signal");
+  if (!(width > 0 && width <= kTurn + 1e-12)) throw InputError("sun separation: the window width must lie in (0, 2π]");
+  if (n < 4) throw InputError("sun separation: expected at least 4 samples per revolution");
+  PlanetSeparatedAverage a;
+  a.samples_per_revolution = n;
+  a.mean.assign(static_cast<std::size_t>(n), 0.0);
+  a.weight.assign(static_cast<std::size_t>(n), 0.0);
+  for (std::size_t p = 0; p < position.size(); ++p) {
+    bool inside = false;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double delta = std::remainder(position[p][i] - sensor, kTurn);
+      const double w = std::abs(delta) < width / 2 ? 0.5 * (1 + std::cos(kTurn * delta / width)) : 0.0;
+      if (w > 0 && !inside) a.passes += 1;
+      inside = w > 0;
+      if (w == 0) continue;
+      double turn = std::fmod(sun[i] - offset[p], kTurn);
+      if (turn < 0) turn += kTurn;
+      const auto j = static_cast<std::size_t>(std::lround(turn / kTurn * n)) % static_cast<std::size_t>(n);
+      a.mean[j] += w * x[i];
+      a.weight[j] += w;
+    }
+  }
+  if (a.passes == 0) throw InputError("sun separation: no planet passes the sensor in this record");
+  finish_average(a);
   return a;
 }
 

@@ -31,4 +31,13 @@ PlanetSeparatedAverage planet_separated_average(const std::vector<double>& signa
                                                 const std::vector<double>& planet_spin_rad, double sensor_angle_rad,
                                                 double window_width_rad, int samples_per_revolution);
 
+// The sun's average from the same sensor (McFadden 1991): a sample weighted by planet i's window
+// is credited to the sun's turn relative to the carrier less planet i's position on the carrier
+// (which sun tooth meets planet i), summed over the planets. planet_position_rad[i] and
+// planet_offset_rad[i] per planet (its position angle in the world, and its position on the
+// carrier); sun_rel_carrier_rad the sun's turn relative to the carrier, all sampled with signal.
+PlanetSeparatedAverage sun_separated_average(const std::vector<double>& signal, const std::vector<std::vector<double>>& planet_position_rad,
+                                             const std::vector<double>& planet_offset_rad, const std::vector<double>& sun_rel_carrier_rad,
+                                             double sensor_angle_rad, double window_width_rad, int samples_per_revolution);
+
 }  // namespace gearsim

@@ -104,6 +104,7 @@ struct TrainDescription {
   // planetary: the planets mesh in phase (z_s/N whole): at every instant each is at the same
   // point of its own mesh cycle, so a fixed sensor cannot tell one planet's events from another's.
   bool planets_in_phase = false;
+  int sun_teeth = 0;  // planetary: for the sun's separated average
   // Gears whose per-tooth loads are reported (the planets of a set; the driven gear of a pair),
   // on whichever side of a logged pair they are.
   std::vector<CountedGear> counted_gears;

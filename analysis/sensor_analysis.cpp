@@ -49,6 +49,21 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     v.peak_tooth = static_cast<int>(((std::lround((p.sun_direction_rad - turn) / pitch) % p.teeth) + p.teeth) % p.teeth);
     out.planets.push_back(v);
   }
+  // The sun's average: every planet's window, each credited to the sun tooth that meets it.
+  if (!train.sun.empty() && train.sun_teeth > 0) {
+    std::vector<std::vector<double>> positions;
+    std::vector<double> offsets;
+    for (const PlanetGear& p : train.planets) {
+      std::vector<double> position(t.size());
+      for (std::size_t i = 0; i < t.size(); ++i) position[i] = p.position0_rad + carrier[i];
+      positions.push_back(std::move(position));
+      offsets.push_back(p.position0_rad);
+    }
+    std::vector<double> sun = interpolate_linear(s.time_s, angle_named(s, train.sun), t);
+    for (std::size_t i = 0; i < t.size(); ++i) sun[i] -= carrier[i];
+    const PlanetSeparatedAverage a = sun_separated_average(x, positions, offsets, sun, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
+    out.sun = PlanetSensorView{train.sun, a.coverage, a.passes, condition_indicators(a.mean, train.sun_teeth), -1};
+  }
   // One planet standing apart: FM4 over the fault level and over twice every other planet's —
   // only where the separation can work: planets meshing in phase share every event (the paper's
   // 43 µm run names no planet; its 5 and 10 µm runs would name planet 2, wrongly, by this rule).

@@ -25,6 +25,7 @@ struct SensorAnalysis {
   std::string sensor;
   double sample_rate_hz = 0;
   std::vector<PlanetSensorView> planets;
+  std::optional<PlanetSensorView> sun;  // the sun's separated average (all planets' windows), its indicators
   // A planet whose separated average's FM4 exceeds kSensorFm4Fault and twice every other planet's;
   // never for planets meshing in phase (TrainDescription::planets_in_phase).
   std::optional<ToothFault> fault;

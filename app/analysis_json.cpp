@@ -143,6 +143,14 @@ json sensors_json(const std::vector<SensorAnalysis>& list) {
     }
     json j = {{"sensor", a.sensor}, {"sample_rate_hz", a.sample_rate_hz}, {"method", "McFadden's planet-separated averages (1991)"},
               {"planets", planets}};
+    if (a.sun) {
+      const ConditionIndicators& c = a.sun->indicators;
+      j["sun"] = {{"gear", a.sun->planet}, {"passes", a.sun->passes}, {"coverage", a.sun->coverage},
+                  {"condition_indicators",
+                   {{"rms_m_s2", num_or_null(c.rms)}, {"crest_factor", num_or_null(c.crest_factor)}, {"kurtosis", num_or_null(c.kurtosis)},
+                    {"fm0", num_or_null(c.fm0)}, {"fm4", num_or_null(c.fm4)}, {"m6a", num_or_null(c.m6a)}, {"na4", num_or_null(c.na4)},
+                    {"er", num_or_null(c.er)}}}};
+    }
     j["fault"] = a.fault ? fault_json(*a.fault) : json(nullptr);
     if (!a.note.empty()) j["note"] = a.note;
     out.push_back(j);

@@ -120,6 +120,7 @@ TrainDescription train_description(const input::GearTrain& train, const physics:
   d.planetary = train.planetary;
   d.sun = train.sun;
   d.carrier = train.carrier;
+  d.sun_teeth = train.sun_teeth;
   d.planets_in_phase = train.planetary && !train.planets.empty() && train.sun_teeth % static_cast<int>(train.planets.size()) == 0;
   for (const std::string& planet : train.planets) {
     const physics::BodyDef* b = body_named(s, planet);
@@ -185,6 +186,8 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
     for (const physics::SensorDef& d : run.scenario.sensors)
       s.sensors.push_back({d.name, d.angle_rad, d.window_width_rad, sensors.column("time_s"), sensors.column(d.name + "_acceleration_m_s2")});
     if (!train.carrier.empty()) s.angles.push_back({train.carrier, state.column(train.carrier + "_angle_rad")});
+    if (!train.sun.empty() && std::none_of(s.angles.begin(), s.angles.end(), [&](const BodyAngle& a) { return a.body == train.sun; }))
+      s.angles.push_back({train.sun, state.column(train.sun + "_angle_rad")});
   }
   drop_edge_held_end(s, edge_held_s(run));
   return s;

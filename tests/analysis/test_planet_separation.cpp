@@ -94,3 +94,47 @@ TEST(PlanetSeparation, BadInputIsRefused) {
 
 }  // namespace test_planet_separation
 }  // namespace gearsim
+
+namespace gearsim {
+namespace test_planet_separation {
+
+// The sun's average: sun tooth 7 strikes whichever planet it meets (sun turn relative to the
+// carrier minus that planet's place on the carrier = tooth 7's angle), heard through that
+// planet's window; every window credits its samples to the sun tooth then meeting its planet.
+TEST(PlanetSeparation, TheSunsAverageGathersItsToothFromEveryPlanetsWindow) {
+  const double fs = 20000, fc = 3.0, f_sun = 12.0;  // turns per second; the sun's relative to the carrier
+  const int z_sun = 24;
+  const std::size_t n = static_cast<std::size_t>(4.0 * fs);
+  const double sensor = std::numbers::pi / 2, width = kTwoPi / 3;
+  std::vector<std::vector<double>> positions(3, std::vector<double>(n));
+  std::vector<double> offsets{0, kTwoPi / 3, 2 * kTwoPi / 3}, sun(n), faulty(n), healthy(n);
+  const auto noise = test::white_noise(n, 0.05, 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) / fs;
+    sun[i] = kTwoPi * f_sun * t;
+    healthy[i] = faulty[i] = noise[i];
+    for (int p = 0; p < 3; ++p) {
+      positions[p][i] = kTwoPi * fc * t + offsets[p];
+      const double delta = std::remainder(positions[p][i] - sensor, kTwoPi);
+      const double w = std::abs(delta) < width / 2 ? 0.5 * (1 + std::cos(kTwoPi * delta / width)) : 0.0;
+      const double meets = sun[i] - offsets[p];  // the sun's angle at planet p, relative to the carrier
+      const double mesh = std::cos(z_sun * meets);
+      const double from7 = std::remainder(meets - 7 * kTwoPi / z_sun, kTwoPi) / (kTwoPi / z_sun);
+      healthy[i] += w * mesh;
+      faulty[i] += w * (mesh + 3 * std::exp(-0.5 * std::pow(from7 / 0.05, 2)));
+    }
+  }
+  const PlanetSeparatedAverage h = sun_separated_average(healthy, positions, offsets, sun, sensor, width, 1024);
+  const PlanetSeparatedAverage f = sun_separated_average(faulty, positions, offsets, sun, sensor, width, 1024);
+  EXPECT_DOUBLE_EQ(f.coverage, 1.0);
+  EXPECT_LT(condition_indicators(h.mean, z_sun).fm4, 4.0);
+  EXPECT_GT(condition_indicators(f.mean, z_sun).fm4, 10.0);
+  // The impulse sits where sun tooth 7 is: angle 7·2π/24 of the sun's turn.
+  std::size_t at = 0;
+  for (std::size_t j = 1; j < f.mean.size(); ++j)
+    if (f.mean[j] > f.mean[at]) at = j;
+  EXPECT_NEAR(static_cast<double>(at) / 1024 * z_sun, 7.0, 0.05);
+}
+
+}  // namespace test_planet_separation
+}  // namespace gearsim
