@@ -57,6 +57,7 @@ struct SensorSignal {
   std::string name;
   double angle_rad = 0;         // about the set's centre, world
   double window_width_rad = 0;  // its planet-pass window (the model's)
+  double resonance_hz = 0;      // the housing mode it rings at (0: unknown): the envelope band's centre
   std::vector<double> time_s;
   std::vector<double> acceleration_m_s2;
 };

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "analysis/constants.hpp"
+#include "analysis/envelope.hpp"
 #include "analysis/planet_separation.hpp"
 #include "analysis/resample.hpp"
 #include "core/errors.hpp"
@@ -48,6 +49,18 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     const double pitch = 2 * std::numbers::pi / p.teeth;
     v.peak_tooth = static_cast<int>(((std::lround((p.sun_direction_rad - turn) / pitch) % p.teeth) + p.teeth) % p.teeth);
     out.planets.push_back(v);
+  }
+  // The envelope around the housing mode, read at the train's characteristic frequencies.
+  if (sensor.resonance_hz > 0) {
+    out.envelope_band_lo_hz = 0.5 * sensor.resonance_hz;
+    out.envelope_band_hi_hz = std::min(1.5 * sensor.resonance_hz, out.sample_rate_hz / 2);
+    const EnvelopeSpectrum e = envelope_spectrum(x, out.sample_rate_hz, out.envelope_band_lo_hz, out.envelope_band_hi_hz);
+    for (const CharacteristicFrequency& f : train.frequencies.frequencies)
+      for (int m = 1; m <= 2; ++m) {
+        const double at = m * f.value_hz;
+        if (!(at > 0) || at >= out.sample_rate_hz / 2) continue;
+        out.envelope_lines.push_back({f.key, m, at, e.spectrum.amplitude[nearest_bin(e.spectrum, at)]});
+      }
   }
   // The sun's average: every planet's window, each credited to the sun tooth that meets it.
   if (!train.sun.empty() && train.sun_teeth > 0) {

@@ -26,6 +26,16 @@ struct SensorAnalysis {
   double sample_rate_hz = 0;
   std::vector<PlanetSensorView> planets;
   std::optional<PlanetSensorView> sun;  // the sun's separated average (all planets' windows), its indicators
+  // Envelope analysis around the housing mode (band 0.5–1.5 f_r): the envelope's amplitude at
+  // each characteristic frequency of the train and twice it (a local fault's impacts modulate
+  // the resonance at their rate).
+  struct EnvelopeLine {
+    std::string key;
+    int multiple = 1;
+    double frequency_hz = 0, amplitude_m_s2 = 0;
+  };
+  double envelope_band_lo_hz = 0, envelope_band_hi_hz = 0;
+  std::vector<EnvelopeLine> envelope_lines;
   // A planet whose separated average's FM4 exceeds kSensorFm4Fault and twice every other planet's;
   // never for planets meshing in phase (TrainDescription::planets_in_phase).
   std::optional<ToothFault> fault;

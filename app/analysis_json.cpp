@@ -143,6 +143,12 @@ json sensors_json(const std::vector<SensorAnalysis>& list) {
     }
     json j = {{"sensor", a.sensor}, {"sample_rate_hz", a.sample_rate_hz}, {"method", "McFadden's planet-separated averages (1991)"},
               {"planets", planets}};
+    if (!a.envelope_lines.empty()) {
+      json lines = json::array();
+      for (const SensorAnalysis::EnvelopeLine& l : a.envelope_lines)
+        lines.push_back({{"key", l.key}, {"multiple", l.multiple}, {"frequency_hz", l.frequency_hz}, {"amplitude_m_s2", l.amplitude_m_s2}});
+      j["envelope"] = {{"band_hz", {a.envelope_band_lo_hz, a.envelope_band_hi_hz}}, {"lines", lines}};
+    }
     if (a.sun) {
       const ConditionIndicators& c = a.sun->indicators;
       j["sun"] = {{"gear", a.sun->planet}, {"passes", a.sun->passes}, {"coverage", a.sun->coverage},

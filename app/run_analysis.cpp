@@ -184,7 +184,8 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
   if (!run.scenario.sensors.empty() && std::filesystem::exists(run.dir / "sensors.csv")) {
     const input::CsvTable sensors = input::read_csv(run.dir / "sensors.csv");
     for (const physics::SensorDef& d : run.scenario.sensors)
-      s.sensors.push_back({d.name, d.angle_rad, d.window_width_rad, sensors.column("time_s"), sensors.column(d.name + "_acceleration_m_s2")});
+      s.sensors.push_back({d.name, d.angle_rad, d.window_width_rad, d.resonance_hz, sensors.column("time_s"),
+                           sensors.column(d.name + "_acceleration_m_s2")});
     if (!train.carrier.empty()) s.angles.push_back({train.carrier, state.column(train.carrier + "_angle_rad")});
     if (!train.sun.empty() && std::none_of(s.angles.begin(), s.angles.end(), [&](const BodyAngle& a) { return a.body == train.sun; }))
       s.angles.push_back({train.sun, state.column(train.sun + "_angle_rad")});

@@ -29,7 +29,7 @@ Synthetic synthetic() {
   const double fs = 20000, fc = 3.0, f_spin = 8.0;  // carrier turns/s, planet turns/s relative to it
   const std::size_t n = static_cast<std::size_t>(4.0 * fs);  // 4 s: 12 passes per planet
   const double sensor_angle = std::numbers::pi / 2, width = kTwoPi / 3;
-  s.sensor = {"top", sensor_angle, width, {}, {}};
+  s.sensor = {"top", sensor_angle, width, 0, {}, {}};
   std::vector<double> carrier(n), spin0(n), spin1(n), spin2(n);
   const auto noise = test::white_noise(n, 0.05, 2);
   for (std::size_t i = 0; i < n; ++i) {
