@@ -1,5 +1,6 @@
 #include "sim/csv_logs.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -53,6 +54,25 @@ void CsvLogs::on_start(const physics::World& world) {
           moving_.push_back({i, world.bodies()[i].position_m});
           state_ << ',' << j.body << "_dx_m," << j.body << "_dy_m";
         }
+  // Bodies on a bearing on a body that turns about the ground (planets on their carrier): the
+  // centre's displacement from its pin, radial and tangential in the carrier's frame.
+  carried_.clear();
+  auto index_of = [&](const std::string& name) {
+    for (std::size_t i = 0; i < world.bodies().size(); ++i)
+      if (world.bodies()[i].name == name) return static_cast<long>(i);
+    return -1L;
+  };
+  for (const physics::JointDef& j : scenario_.joints) {
+    if (!j.bearing || j.parent == "ground") continue;
+    bool parent_on_ground = false;
+    for (const physics::JointDef& pj : scenario_.joints) parent_on_ground = parent_on_ground || (pj.body == j.parent && pj.parent == "ground");
+    const long b = index_of(j.body), p = index_of(j.parent);
+    if (!parent_on_ground || b < 0 || p < 0) continue;
+    const auto bi = static_cast<std::size_t>(b), pi = static_cast<std::size_t>(p);
+    carried_.push_back({bi, pi, world.bodies()[pi].angle_rad, world.bodies()[bi].position_m - world.bodies()[pi].position_m,
+                        world.bodies()[pi].position_m});
+    state_ << ',' << j.body << "_dr_m," << j.body << "_dt_m";
+  }
   state_ << '\n';
   contacts_ << "time_s";
   for (const physics::GearPairInfo& p : world.gear_pairs()) {
@@ -94,6 +114,14 @@ void CsvLogs::on_sample(const physics::World& world) {
   for (const auto& [i, start] : moving_) {
     const Eigen::Vector3d d = world.bodies()[i].position_m - start;
     state_ << ',' << d.x() << ',' << d.y();
+  }
+  for (const Carried& c : carried_) {
+    const physics::BodyState &b = world.bodies()[c.body], &p = world.bodies()[c.parent];
+    // The pin: where the carrier's turn since the start has taken the body's start offset.
+    const Eigen::Vector3d pin = p.position_m + Eigen::AngleAxisd(p.angle_rad - c.parent_angle0, Eigen::Vector3d::UnitZ()) * c.offset0;
+    const Eigen::Vector3d er = (pin - p.position_m).normalized(), et = Eigen::Vector3d::UnitZ().cross(er);
+    const Eigen::Vector3d d = b.position_m - pin;
+    state_ << ',' << d.dot(er) << ',' << d.dot(et);
   }
   state_ << '\n';
   const long sample = world.steps() % every_ == 0 ? world.steps() / every_ : -1;

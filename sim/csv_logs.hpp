@@ -56,6 +56,12 @@ class CsvLogs : public Observer {
   const physics::Scenario& scenario_;
   std::ofstream state_, contacts_;
   std::vector<std::pair<std::size_t, Eigen::Vector3d>> moving_;  // bodies on a ground bearing, start position
+  struct Carried {  // a body on a bearing on a body that turns about the ground (a planet on its carrier)
+    std::size_t body = 0, parent = 0;
+    double parent_angle0 = 0;
+    Eigen::Vector3d offset0 = Eigen::Vector3d::Zero(), parent0 = Eigen::Vector3d::Zero();
+  };
+  std::vector<Carried> carried_;
   int te_in_ = -1, te_out_ = -1;  // bodies of the transmission's input and output joints
   long every_ = 1;                // steps per output sample
   std::optional<DecimationFilter> filter_;

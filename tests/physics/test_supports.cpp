@@ -45,3 +45,43 @@ TEST(Supports, ARingOnATorsionalSpringTurnsByTheReactionTorqueOverItsStiffness) 
 
 }  // namespace test_supports
 }  // namespace gearsim
+
+#include <fstream>
+#include <sstream>
+
+#include "input/csv_table.hpp"
+#include "sim/csv_logs.hpp"
+#include "tests/support/asset_scenario.hpp"
+
+namespace gearsim {
+namespace test_supports {
+
+// A planet on its carrier bearing deflects tangentially by the carrier's load share over the
+// bearing stiffness: T_c/(N·a·k_p) = 46.154/(3 · 0.098223 · 1e8) = 1.566 µm (state.csv
+// planet_<i>_dt_m), and barely radially.
+TEST(Supports, APlanetBearingDeflectsByItsShareOfTheCarrierTorque) {
+  const std::filesystem::path dir = test::fresh_test_dir();
+  const physics::Scenario s = input::load_scenario(std::filesystem::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/lin_parker_1999.yaml",
+                                                   {"duration_s=0.06", "solver.time_step_s=1e-5", "output.sample_rate_hz=1000"});
+  sim::CsvLogs logs(dir, s);
+  ASSERT_EQ(sim::simulate(s, {&logs}).status, sim::RunStatus::Completed);
+  const input::CsvTable state = input::read_csv(dir / "state.csv");
+  double a = 0;
+  for (const physics::BodyDef& b : s.bodies)
+    if (b.name == "planet_0") a = b.pose.position_m.head<2>().norm();
+  const double expected = -s.loads[1].constant_torque_N_m / (3 * a * 1e8);
+  for (const char* planet : {"planet_0", "planet_1", "planet_2"}) {
+    const std::vector<double>& t = state.column("time_s");
+    const std::vector<double>& dt = state.column(std::string(planet) + "_dt_m");
+    const std::vector<double>& dr = state.column(std::string(planet) + "_dr_m");
+    double mean_t = 0, mean_r = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < t.size(); ++i)
+      if (t[i] >= 0.03) mean_t += dt[i], mean_r += dr[i], ++n;
+    EXPECT_NEAR(std::abs(mean_t / n), expected, 0.02 * expected) << planet;
+    EXPECT_LT(std::abs(mean_r / n), 0.05 * expected) << planet;
+  }
+}
+
+}  // namespace test_supports
+}  // namespace gearsim
