@@ -45,6 +45,7 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     std::size_t jmax = 0;
     for (std::size_t j = 1; j < sig.difference.size(); ++j)
       if (std::abs(sig.difference[j]) > std::abs(sig.difference[jmax])) jmax = j;
+    v.difference_peak_m_s2 = std::abs(sig.difference[jmax]);
     const double turn = 2 * std::numbers::pi * static_cast<double>(jmax) / kSamplesPerTurn;
     const double pitch = 2 * std::numbers::pi / p.teeth;
     v.peak_tooth = static_cast<int>(((std::lround((p.sun_direction_rad - turn) / pitch) % p.teeth) + p.teeth) % p.teeth);

@@ -19,6 +19,7 @@ struct PlanetSensorView {
   double coverage = 0, passes = 0;
   ConditionIndicators indicators;
   int peak_tooth = -1;  // the tooth facing the sun where the difference signal peaks
+  double difference_peak_m_s2 = 0;  // the largest |difference signal|: the event's size, not its shape
 };
 
 struct SensorAnalysis {

@@ -136,6 +136,7 @@ json sensors_json(const std::vector<SensorAnalysis>& list) {
     for (const PlanetSensorView& v : a.planets) {
       const ConditionIndicators& c = v.indicators;
       planets.push_back({{"planet", v.planet}, {"passes", v.passes}, {"coverage", v.coverage}, {"peak_tooth_facing_sun", v.peak_tooth},
+                         {"difference_peak_m_s2", v.difference_peak_m_s2},
                          {"condition_indicators",
                           {{"rms_m_s2", num_or_null(c.rms)}, {"crest_factor", num_or_null(c.crest_factor)}, {"kurtosis", num_or_null(c.kurtosis)},
                            {"fm0", num_or_null(c.fm0)}, {"fm4", num_or_null(c.fm4)}, {"m6a", num_or_null(c.m6a)}, {"na4", num_or_null(c.na4)},
