@@ -52,6 +52,50 @@ void FlankTable::build_probe_knots() {
     tooth_axis_[static_cast<std::size_t>(t)] = {std::cos(tooth_angle_rad(t)), std::sin(tooth_angle_rad(t))};
   pitch_axis_ = {std::cos(pitch_), std::sin(pitch_)};
   tan_half_pitch_ = std::tan(0.5 * pitch_);
+  build_rise_bands();
+}
+
+void FlankTable::build_rise_bands() {
+  const int n = samples_;
+  const int intervals = n - 1, bands = (intervals + kRiseBand - 1) / kRiseBand;
+  rise_bands_.assign(static_cast<std::size_t>(bands), FirstOrderRise{0, 0, 0});
+  const std::size_t rows = tooth_of_row_.size();
+  auto worst = [](double& into, double v) { into = std::isnan(v) || !(v < kInfinity) ? kInfinity : std::max(into, v); };
+  for (int i = 0; i < intervals; ++i) {
+    FirstOrderRise& band = rise_bands_[static_cast<std::size_t>(i / kRiseBand)];
+    const double r_hi = r_min_ + (i + 1) * dr_;
+    double c_min = kInfinity, c_max = 0;
+    for (std::size_t row = 0; row < rows; ++row)
+      for (int side = 0; side < 2; ++side) {
+        const Knot& k0 = knots_[row * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)].side[side];
+        const Knot& k1 = knots_[row * static_cast<std::size_t>(n) + static_cast<std::size_t>(i) + 1].side[side];
+        const double c_lo = std::min(k0.cos_psi, k1.cos_psi), c_up = std::max(k0.cos_psi, k1.cos_psi);
+        const double v_up = std::max(std::hypot(k0.cos_a, k0.sin_a), std::hypot(k1.cos_a, k1.sin_a));
+        const double dv = std::hypot(k1.cos_a - k0.cos_a, k1.sin_a - k0.sin_a) / dr_;
+        // NaN knots (no material) and c → 0 make the band unbounded.
+        worst(band.slope, c_up * (v_up + r_hi * dv));
+        worst(band.growth, c_lo > 0 ? std::abs(k1.cos_psi - k0.cos_psi) / (dr_ * c_lo) : kInfinity);
+        c_min = std::isnan(c_lo) ? 0 : std::min(c_min, c_lo);
+        c_max = std::isnan(c_up) ? kInfinity : std::max(c_max, c_up);
+      }
+    worst(band.jump, c_min > 0 ? (c_max - c_min) / c_min : kInfinity);
+  }
+}
+
+FlankTable::FirstOrderRise FlankTable::first_order_rise(double r_lo_m, double r_hi_m) const {
+  const int intervals = samples_ - 1;
+  auto interval = [&](double r) {
+    const double x = std::floor((r - r_min_) * inv_dr_);
+    return x < 0 ? 0 : x >= intervals ? intervals - 1 : static_cast<int>(x);
+  };
+  FirstOrderRise out{0, 0, 0};
+  for (int b = interval(r_lo_m) / kRiseBand; b <= interval(r_hi_m) / kRiseBand; ++b) {
+    const FirstOrderRise& band = rise_bands_[static_cast<std::size_t>(b)];
+    out.slope = std::max(out.slope, band.slope);
+    out.growth = std::max(out.growth, band.growth);
+    out.jump = std::max(out.jump, band.jump);
+  }
+  return out;
 }
 
 int FlankTable::nearest_tooth(const Eigen::Vector2d& p) const {

@@ -79,6 +79,21 @@ class FlankTable {
   static constexpr double kNoDepth = -1e300;
   double first_order_depth(const Eigen::Vector2d& p, int& tooth_hint) const;
 
+  // How fast first_order_depth() D can change as a point moves, over radii [r_lo, r_hi] within
+  // the teeth: the bounds a search that skips a flank until its measured gap may have closed
+  // rests on (CoherentToothSearch, coherent_contact.hpp). Against one flank, D = c·(q × v)
+  // with v (the flank's direction) and c (cos ψ) linear in r between knots, so
+  //   |∇D| ≤ c·|v| + c·r·|dv/dr| + |dc/dr|·|D|/c ≤ slope + growth·|D|.
+  // In a tooth space D is taken on the nearer of its two flanks by their unscaled gaps g
+  // (D = −c_sel·g_sel); the larger of the two flanks' own depths, D̃ = max(−c·g) ≥ D, is
+  // continuous there and at most jump·|D| above D (jump = (max c − min c)/min c at the
+  // radius). Infinite where a flank has no material (D is not measured there).
+  struct FirstOrderRise {
+    double slope = kInfinity, growth = kInfinity, jump = kInfinity;  // 1, 1/m, 1
+  };
+  static constexpr double kInfinity = 1e300;
+  FirstOrderRise first_order_rise(double r_lo_m, double r_hi_m) const;
+
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
   // m; NaN where the flank has no material), kept so that probing a flank costs no trigonometry.
   static constexpr int kProbeRadii = 16;
@@ -162,6 +177,11 @@ class FlankTable {
   std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
   std::vector<int> tooth_of_row_;  // a tooth of each row
   std::vector<KnotPair> knots_;                 // [row * samples + i]
+  // first_order_rise() per band of kRiseBand knot intervals (max over rows and flanks).
+  static constexpr int kRiseBand = 32;
+  std::vector<FirstOrderRise> rise_bands_;
+  void build_rise_bands();
+
   double tan_half_pitch_ = 0;
   std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle
   Eigen::Vector2d pitch_axis_;                  // (cos, sin) of the pitch angle
