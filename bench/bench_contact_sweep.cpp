@@ -173,13 +173,15 @@ int main(int argc, char** argv) {
           ++calls;
         }
         flanks.searched += search.counts().searched, flanks.skipped += search.counts().skipped;
+        flanks.tracked += search.counts().tracked;
       }
   }
   std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",
               s.name.c_str(), pairs.size(), calls, steps, step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
               1e6 * seconds / static_cast<double>(calls));
   if (coherent)
-    std::printf("coherent search: %ld flanks searched, %ld skipped (%.1f %%)\n", flanks.searched, flanks.skipped,
-                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.skipped));
+    std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%)\n", flanks.searched,
+                flanks.tracked, flanks.skipped,
+                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped));
   return 0;
 }

@@ -89,6 +89,101 @@ double clear_travel(const FlankSamples& s, bool tip_only) {
   return std::isfinite(travel) ? travel : 0;
 }
 
+// Travel up to which a tracked flank's bounds hold, in refinement windows: beyond it the flank is
+// searched in full again (and tracked afresh). Normally 8 (40 µm on a module-1 tooth: 5–10
+// simulation steps at 1e-5 s). Wider spans reach the steep fillet bands.
+constexpr double kTrackSpanWindows = 8;
+
+using Track = CoherentToothSearch::TrackedFlank;
+
+// The bounds of a flank searched in full and found within the refinement window (s: as the
+// search left it), valid for travels up to span: per sample, with F the depth of the branch
+// nearest zero (in a tooth space the larger of its two flanks' depths, inside a tooth the
+// smaller of the tooth's two), continuous, |D − F| ≤ jump·|D| and |∇F| ≤ slope + growth·|F|
+// (FlankTable::first_order_rise), so after a travel δ ≤ span (Grönwall, as in
+// sample_travel()) F ≤ top + δ·(slope + growth·(|top| + slope·δ)·e^{growth·span}) where top
+// bounds F then: D(1 − jump) in a gap (D < 0), D inside. Samples near the teeth's circles
+// (D's definition changes there) or over steep bands are always probed.
+void track(const FlankSamples& s, Track& t, double span) {
+  const FlankTable& yt = s.xy.y.table;
+  t.best = s.best_i;
+  t.span_m = span;
+  int hint = s.hint;
+  for (int i = 0; i < Track::n; ++i) {
+    t.kind[i] = Track::kProbe;
+    if (s.missing(i)) continue;
+    const Vector2d p = s.xy.x.table.probe_point(s.k, s.f, i);
+    const double r = s.xy.in_y(p).norm();
+    if (yt.internal() ? r < yt.r_min_m() : r > yt.r_max_m()) {
+      t.kind[i] = Track::kFree;
+      t.free_m[i] = yt.internal() ? yt.r_min_m() - r : r - yt.r_max_m();
+      continue;
+    }
+    if (r - span < yt.r_min_m() || r + span > yt.r_max_m()) continue;
+    const double d = s.depth[i] > kNone ? s.depth[i] : depth_of(s.xy, p, hint);
+    if (d <= kNone) continue;
+    const FlankTable::FirstOrderRise rise = yt.first_order_rise(r - span, r + span);
+    const double factor = std::exp(rise.growth * span);
+    if (!(rise.slope < FlankTable::kInfinity && factor < FlankTable::kInfinity && rise.jump < 1)) continue;
+    t.kind[i] = Track::kBounded;
+    t.top[i] = d < 0 ? d * (1 - rise.jump) : d;
+    t.slope[i] = rise.slope;
+    t.growth[i] = rise.growth;
+    t.growth_factor[i] = factor;
+    t.jump[i] = rise.jump;
+  }
+}
+
+// A bound on sample i's first-order depth after a travel ≤ the track's span: kNone when it
+// measures nothing, +∞ when it must be probed.
+double sample_bound(const Track& t, int i, double travel) {
+  switch (t.kind[i]) {
+    case Track::kFree:
+      return travel < t.free_m[i] ? kNone : std::numeric_limits<double>::infinity();
+    case Track::kProbe:
+      return std::numeric_limits<double>::infinity();
+    case Track::kBounded:
+      break;
+  }
+  const double f = t.top[i] + travel * (t.slope[i] + t.growth[i] * (std::abs(t.top[i]) + t.slope[i] * travel) * t.growth_factor[i]);
+  return f > 0 ? f * (1 + t.jump[i]) : f;
+}
+
+// probe_flank()'s answer for a tracked flank, probing only the samples that can be the deepest:
+// the last best and its neighbours first, then every sample whose bound reaches the deepest of
+// them, then the neighbours of the deepest (refined_radius() fits through them; the full search
+// probes them too). The deepest probed sample is the deepest of all, which is the full search's
+// (its skipping keeps the answer of probing every sample).
+bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
+  constexpr int n = FlankSamples::n;
+  std::uint32_t probed = 0;
+  auto probe = [&](int i) {
+    if (i < 0 || i >= n || ((probed >> i) & 1u) || s.missing(i)) return;
+    s.probe(i);
+    probed |= std::uint32_t{1} << i;
+  };
+  for (int i = t.best - 1; i <= t.best + 1; ++i) probe(i);
+  const double level = s.best_i < 0 ? kNone : s.depth[s.best_i];
+  for (int i = 0; i < n; ++i)
+    if (!((probed >> i) & 1u) && !s.missing(i) && sample_bound(t, i, travel) >= level) probe(i);
+  if (s.best_i < 0 || s.depth[s.best_i] < -s.window) return false;
+  // The full search gives up on a flank whose coarse samples (every fourth, the last, those next
+  // to a radius without material, then every other where it can matter) all lie more than
+  // 4·window clear, even where a sample between them (next to one that measured nothing) is
+  // deeper: the same answer here. Coarse samples it skips lie below that level (its rise bound).
+  std::uint32_t coarse = coarse_samples(s.material);
+  bool reaches = false;
+  for (std::uint32_t todo = coarse; todo != 0 && !reaches; todo &= todo - 1) {
+    const int i = std::countr_zero(todo);
+    if (!((probed >> i) & 1u) && !s.missing(i) && sample_bound(t, i, travel) >= -4 * s.window) probe(i);
+    reaches = ((probed >> i) & 1u) && s.depth[i] >= -4 * s.window;
+  }
+  if (!reaches) return false;
+  probe(s.best_i - 1);
+  probe(s.best_i + 1);
+  return true;
+}
+
 }  // namespace
 
 void CoherentToothSearch::reset() {
@@ -101,10 +196,12 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     tables_[0] = &ta, tables_[1] = &tb;
     records_[0].assign(static_cast<std::size_t>(ta.teeth()) * 2, FlankRecord{});
     records_[1].assign(static_cast<std::size_t>(tb.teeth()) * 2, FlankRecord{});
+    tracks_.assign(records_[0].size(), TrackedFlank{});
   }
   const Frame a{ta, pa}, b{tb, pb};
   best.clear();
-  // As find_tooth_contacts(), flank by flank, but a flank whose record still holds is skipped.
+  // As find_tooth_contacts(), flank by flank, but a flank whose record still holds is skipped or
+  // probed only where it can hold its deepest sample.
   for (int pass = 0; pass < 2; ++pass) {
     const Frame& x = pass == 0 ? a : b;
     const Frame& y = pass == 0 ? b : a;
@@ -118,22 +215,33 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
       if (!window.holds(k, x.table.teeth()) || !tooth_near(x, k, y)) continue;
       const Vector2d centre = xy.in_y(x.table.tooth_centre(k));
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
-        FlankRecord& rec = records[static_cast<std::size_t>(k) * 2 + (f == Flank::Cw)];
+        const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
+        FlankRecord& rec = records[at];
         // Any point p of the tooth moves in y's frame by Δc + (R1 − R0)(p − c): at most the
         // tooth centre's move plus |Δturn| times the tooth's bounding radius (|R1 − R0| =
         // 2|sin(Δturn/2)| ≤ |Δturn|).
-        if (rec.travel_m > 0 &&
-            (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m <
-                rec.travel_m) {
+        const double travel =
+            rec.travel_m > 0 || rec.tracked
+                ? (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m
+                : 0;
+        if (rec.travel_m > 0 && travel < rec.travel_m) {
           ++counts_.skipped;
           continue;
         }
-        ++counts_.searched;
         FlankSamples s(xy, k, f, hint);
-        const bool refine = tip_only ? probe_tip(s) : probe_flank(s);
-        rec.tooth_centre_in_y_m = centre;
-        rec.turn_rad = turn;
-        rec.travel_m = refine ? -1 : clear_travel(s, tip_only);
+        bool refine;
+        if (rec.tracked && travel <= tracks_[at].span_m) {
+          ++counts_.tracked;
+          refine = probe_tracked(s, tracks_[at], travel);
+        } else {
+          ++counts_.searched;
+          refine = tip_only ? probe_tip(s) : probe_flank(s);
+          rec.tooth_centre_in_y_m = centre;
+          rec.turn_rad = turn;
+          rec.travel_m = refine ? -1 : clear_travel(s, tip_only);
+          rec.tracked = refine && !tip_only;
+          if (rec.tracked) track(s, tracks_[at], kTrackSpanWindows * s.window);
+        }
         if (!refine) continue;
         const Hit h = refined_hit(s);
         if (h.tooth_y < 0) continue;

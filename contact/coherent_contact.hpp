@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "contact/flank_table.hpp"
@@ -25,23 +26,39 @@ class CoherentToothSearch {
   // Forget every measurement: the next call searches every flank.
   void reset();
 
-  // Flanks searched and flanks skipped since construction (both probing passes).
+  // Flanks searched in full, tracked (only the samples that can hold the deepest probed) and
+  // skipped since construction (both probing passes).
   struct Counts {
-    long searched = 0, skipped = 0;
+    long searched = 0, tracked = 0, skipped = 0;
   };
   const Counts& counts() const { return counts_; }
 
-  // What the last search of a flank (pass, tooth, flank) proved: for any motion of its tooth's
-  // points by less than `travel_m` in the other gear's frame, it still has no contact.
+  // What the last full search of a flank (pass, tooth, flank) proved, for any motion of its
+  // tooth's points in the other gear's frame shorter than a travel: no contact (`travel_m`), or,
+  // for a flank of the first gear then within the refinement window (`tracked`), a bound on each
+  // probe sample's first-order depth.
   struct FlankRecord {
     Eigen::Vector2d tooth_centre_in_y_m = Eigen::Vector2d::Zero();  // its tooth's centre then
     double turn_rad = 0;   // the probed gear's angle less the other's, then
-    double travel_m = -1;  // < 0: no record (search it)
+    double travel_m = -1;  // > 0: no contact within this travel
+    bool tracked = false;  // the flank's TrackedFlank holds
+  };
+  // Per probe sample of a tracked flank (coherent_contact.cpp, sample_bound()): how its depth D
+  // can have risen since the full search, up to a travel of span_m.
+  struct TrackedFlank {
+    static constexpr int n = FlankTable::kProbeRadii;
+    enum Kind : signed char { kBounded, kFree, kProbe };
+    int best = -1;  // the best sample then
+    double span_m = 0;
+    std::array<Kind, n> kind{};
+    std::array<double, n> top, slope, growth, growth_factor, jump;  // kBounded; top: F's upper bound then
+    std::array<double, n> free_m;                                  // kFree: distance to the teeth's circle
   };
 
  private:
   const FlankTable* tables_[2] = {nullptr, nullptr};
   std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
+  std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
   Counts counts_;
 };
 

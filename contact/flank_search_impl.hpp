@@ -243,6 +243,26 @@ bool probe_tip(FlankSamples& s) {
   return s.best_i != end + 2 * dir;
 }
 
+// probe_flank()'s first samples: every fourth, the last, and any next to a radius without material
+// (bits of the material mask shifted onto their neighbours).
+constexpr std::uint32_t first_samples(std::uint32_t material) {
+  constexpr int n = FlankTable::kProbeRadii;
+  constexpr std::uint32_t kAll = (std::uint32_t{1} << n) - 1;
+  std::uint32_t every_fourth = std::uint32_t{1} << (n - 1);
+  for (int i = 0; i < n; i += 4) every_fourth |= std::uint32_t{1} << i;
+  const std::uint32_t without = ~material & kAll;
+  return (every_fourth | (without << 1) | (without >> 1)) & kAll;
+}
+
+// The samples probe_flank() probes before it gives up on a flank more than 4·window clear: the
+// first ones and every other between them (where they can matter).
+constexpr std::uint32_t coarse_samples(std::uint32_t material) {
+  constexpr int n = FlankTable::kProbeRadii;
+  std::uint32_t m = first_samples(material);
+  for (int i = 2; i < n - 1; i += 4) m |= std::uint32_t{1} << i;
+  return m & material;
+}
+
 // Coarse to fine, probing a sample only where it can matter. Between two samples s·step apart
 // the depth rises at most s²·window above the higher (the parabola bound window rests on, with
 // room to spare); a stretch next to a sample that measured nothing has no such bound and is
@@ -271,17 +291,8 @@ bool probe_flank(FlankSamples& s) {
     top[i] = reach;
     return false;
   };
-  // Every fourth sample, the last, and any next to a radius without material (bits of the
-  // material mask shifted onto their neighbours), in increasing order.
-  constexpr std::uint32_t kAll = (std::uint32_t{1} << n) - 1;
-  constexpr std::uint32_t kEveryFourth = [] {
-    std::uint32_t m = std::uint32_t{1} << (n - 1);
-    for (int i = 0; i < n; i += 4) m |= std::uint32_t{1} << i;
-    return m;
-  }();
-  const std::uint32_t without = ~s.material & kAll;
-  for (std::uint32_t todo = (kEveryFourth | (without << 1) | (without >> 1)) & kAll; todo != 0; todo &= todo - 1)
-    probe_at_i(std::countr_zero(todo));
+  // Every fourth sample, the last, and any next to a radius without material, in increasing order.
+  for (std::uint32_t todo = first_samples(s.material); todo != 0; todo &= todo - 1) probe_at_i(std::countr_zero(todo));
   // Every other: a flank whose best stays more than 4·window clear is done.
   for (int i = 2; i < n - 1; i += 4)
     if (!((probed >> i) & 1u) && has(i) &&
