@@ -22,6 +22,10 @@ constexpr double kRecordBeyondWindows = 4;
 // the steep fillet bands that a wide one reaches.
 constexpr int kSpanTries = 4;
 
+// An upper bound on e^x for x ≥ 0 without a libm call: 1/(1 − x) below x = 1/2 (e^x ≤ 1/(1 − x)
+// for x < 1), infinite beyond (the bound is useless there anyway).
+double exp_bound(double x) { return x < 0.5 ? 1 / (1 - x) : FlankTable::kInfinity; }
+
 // How far the points of x's tooth may move in y's frame before a sample of this flank can reach
 // the refinement window, m (0: it may reach it now). The sample measured nothing (free space
 // beyond y's teeth) or first-order depth D < 0 there. The stateless search finds no contact on
@@ -35,7 +39,7 @@ constexpr int kSpanTries = 4;
 //    D̃(q0) ≤ −E with E = |D|·(1 − jump).
 //  - On any path of length δ inside the teeth' annulus over radii within r ± span:
 //    |∇D̃| ≤ slope + growth·|D̃|, hence (Grönwall) |D̃| ≤ (E + slope·s)·e^{growth·s} along it and
-//    D̃ rises by at most δ·(slope + growth·(E + slope·δ)·e^{growth·δ}). Below
+//    D̃ rises by at most δ·(slope + growth·(E + slope·δ)·e^{growth·δ}) (e^x taken as 1/(1 − x)). Below
 //    travel = (E − T) / (slope + growth·(E + slope·span)·e^{growth·span}), capped at span, it
 //    stays below −T. span is kept inside the annulus (no path leaves it: D is not measured
 //    beyond the tips and is radial past the root).
@@ -53,7 +57,7 @@ double sample_travel(const XY& xy, const Vector2d& p_x, double d, double window,
   double span = std::min(gap, std::min(r - yt.r_min_m(), yt.r_max_m() - r)), best = 0;
   for (int attempt = 0; attempt < kSpanTries && span > 0; ++attempt, span *= 0.25) {
     const FlankTable::FirstOrderRise rise = yt.first_order_rise(r - span, r + span);
-    const double rate = rise.slope + rise.growth * (e + rise.slope * span) * std::exp(rise.growth * span);
+    const double rate = rise.slope + rise.growth * (e + rise.slope * span) * exp_bound(rise.growth * span);
     const double travel = gap / rate;
     if (!(travel > 0)) continue;
     best = std::max(best, std::min(travel, span));
@@ -123,7 +127,7 @@ void track(const FlankSamples& s, Track& t, double span) {
     const double d = s.depth[i] > kNone ? s.depth[i] : depth_of(s.xy, p, hint);
     if (d <= kNone) continue;
     const FlankTable::FirstOrderRise rise = yt.first_order_rise(r - span, r + span);
-    const double factor = std::exp(rise.growth * span);
+    const double factor = exp_bound(rise.growth * span);
     if (!(rise.slope < FlankTable::kInfinity && factor < FlankTable::kInfinity && rise.jump < 1)) continue;
     t.kind[i] = Track::kBounded;
     t.top[i] = d < 0 ? d * (1 - rise.jump) : d;

@@ -82,21 +82,6 @@ void FlankTable::build_rise_bands() {
   }
 }
 
-FlankTable::FirstOrderRise FlankTable::first_order_rise(double r_lo_m, double r_hi_m) const {
-  const int intervals = samples_ - 1;
-  auto interval = [&](double r) {
-    const double x = std::floor((r - r_min_) * inv_dr_);
-    return x < 0 ? 0 : x >= intervals ? intervals - 1 : static_cast<int>(x);
-  };
-  FirstOrderRise out{0, 0, 0};
-  for (int b = interval(r_lo_m) / kRiseBand; b <= interval(r_hi_m) / kRiseBand; ++b) {
-    const FirstOrderRise& band = rise_bands_[static_cast<std::size_t>(b)];
-    out.slope = std::max(out.slope, band.slope);
-    out.growth = std::max(out.growth, band.growth);
-    out.jump = std::max(out.jump, band.jump);
-  }
-  return out;
-}
 
 int FlankTable::nearest_tooth(const Eigen::Vector2d& p) const {
   return wrap_tooth(static_cast<int>(round_to_even((rough_atan2(p.y(), p.x()) - layout_.tooth0_angle_rad) * inv_pitch_)));

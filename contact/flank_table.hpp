@@ -92,7 +92,19 @@ class FlankTable {
     double slope = kInfinity, growth = kInfinity, jump = kInfinity;  // 1, 1/m, 1
   };
   static constexpr double kInfinity = 1e300;
-  FirstOrderRise first_order_rise(double r_lo_m, double r_hi_m) const;
+  FirstOrderRise first_order_rise(double r_lo_m, double r_hi_m) const {
+    const double last = samples_ - 2, lo = (r_lo_m - r_min_) * inv_dr_, hi = (r_hi_m - r_min_) * inv_dr_;
+    const int b_lo = static_cast<int>(lo <= 0 ? 0 : lo >= last ? last : lo) / kRiseBand;
+    const int b_hi = static_cast<int>(hi <= 0 ? 0 : hi >= last ? last : hi) / kRiseBand;
+    FirstOrderRise out = rise_bands_[static_cast<std::size_t>(b_lo)];
+    for (int b = b_lo + 1; b <= b_hi; ++b) {
+      const FirstOrderRise& band = rise_bands_[static_cast<std::size_t>(b)];
+      out.slope = out.slope > band.slope ? out.slope : band.slope;
+      out.growth = out.growth > band.growth ? out.growth : band.growth;
+      out.jump = out.jump > band.jump ? out.jump : band.jump;
+    }
+    return out;
+  }
 
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
   // m; NaN where the flank has no material), kept so that probing a flank costs no trigonometry.
