@@ -22,6 +22,9 @@ constexpr double kRecordBeyondWindows = 4;
 // the steep fillet bands that a wide one reaches.
 constexpr int kSpanTries = 4;
 
+// The longest arc of a circle (up to a half circle) against its chord.
+constexpr double kArcOverChord = 1.5707963267948966;
+
 // An upper bound on e^x for x ≥ 0 without a libm call: 1/(1 − x) below x = 1/2 (e^x ≤ 1/(1 − x)
 // for x < 1), infinite beyond (the bound is useless there anyway).
 double exp_bound(double x) { return x < 0.5 ? 1 / (1 - x) : FlankTable::kInfinity; }
@@ -41,8 +44,11 @@ double exp_bound(double x) { return x < 0.5 ? 1 / (1 - x) : FlankTable::kInfinit
 //    |∇D̃| ≤ slope + growth·|D̃|, hence (Grönwall) |D̃| ≤ (E + slope·s)·e^{growth·s} along it and
 //    D̃ rises by at most δ·(slope + growth·(E + slope·δ)·e^{growth·δ}) (e^x taken as 1/(1 − x)). Below
 //    travel = (E − T) / (slope + growth·(E + slope·span)·e^{growth·span}), capped at span, it
-//    stays below −T. span is kept inside the annulus (no path leaves it: D is not measured
-//    beyond the tips and is radial past the root).
+//    stays below −T. span stays clear of the root circle (past it D is radial). Beyond the
+//    tips D is not measured: a straight path that leaves the annulus there and comes back is
+//    replaced by one along the tip circle between the two crossings, at most π/2 times longer
+//    (an arc of up to a half circle against its chord), so where r ± span reaches that circle
+//    the travel is divided by π/2.
 //  - A sample beyond y's tips (external y: r > r_max, internal: r < r_min) measures nothing
 //    until it crosses that circle: its travel is its distance to it.
 double sample_travel(const XY& xy, const Vector2d& p_x, double d, double window, int& hint) {
@@ -54,13 +60,16 @@ double sample_travel(const XY& xy, const Vector2d& p_x, double d, double window,
   if (d <= kNone || !(d < -window)) return 0;
   const double e = -d * (1 - yt.first_order_rise(r, r).jump), gap = e - window;
   if (!(gap > 0)) return 0;
-  double span = std::min(gap, std::min(r - yt.r_min_m(), yt.r_max_m() - r)), best = 0;
+  // Radii from the root circle (solid) to the tip circle (free), whichever way the teeth point.
+  const double to_root = yt.internal() ? yt.r_max_m() - r : r - yt.r_min_m();
+  const double to_tips = yt.internal() ? r - yt.r_min_m() : yt.r_max_m() - r;
+  double span = std::min(gap, to_root), best = 0;
   for (int attempt = 0; attempt < kSpanTries && span > 0; ++attempt, span *= 0.25) {
     const FlankTable::FirstOrderRise rise = yt.first_order_rise(r - span, r + span);
     const double rate = rise.slope + rise.growth * (e + rise.slope * span) * exp_bound(rise.growth * span);
     const double travel = gap / rate;
     if (!(travel > 0)) continue;
-    best = std::max(best, std::min(travel, span));
+    best = std::max(best, std::min(travel, span) / (span > to_tips ? kArcOverChord : 1));
     if (travel >= 0.25 * span) break;  // a narrower span cannot allow more
   }
   return best;
@@ -123,7 +132,9 @@ void track(const FlankSamples& s, Track& t, double span) {
       t.free_m[i] = yt.internal() ? yt.r_min_m() - r : r - yt.r_max_m();
       continue;
     }
-    if (r - span < yt.r_min_m() || r + span > yt.r_max_m()) continue;
+    const double to_root = yt.internal() ? yt.r_max_m() - r : r - yt.r_min_m();
+    const double to_tips = yt.internal() ? r - yt.r_min_m() : yt.r_max_m() - r;
+    if (to_root < span) continue;
     const double d = s.depth[i] > kNone ? s.depth[i] : depth_of(s.xy, p, hint);
     if (d <= kNone) continue;
     const FlankTable::FirstOrderRise rise = yt.first_order_rise(r - span, r + span);
@@ -135,6 +146,7 @@ void track(const FlankSamples& s, Track& t, double span) {
     t.growth[i] = rise.growth;
     t.growth_factor[i] = factor;
     t.jump[i] = rise.jump;
+    t.path[i] = to_tips < span ? kArcOverChord : 1;  // a path around the tips (sample_travel())
   }
 }
 
@@ -149,6 +161,8 @@ double sample_bound(const Track& t, int i, double travel) {
     case Track::kBounded:
       break;
   }
+  travel *= t.path[i];
+  if (travel > t.span_m) return std::numeric_limits<double>::infinity();
   const double f = t.top[i] + travel * (t.slope[i] + t.growth[i] * (std::abs(t.top[i]) + t.slope[i] * travel) * t.growth_factor[i]);
   return f > 0 ? f * (1 + t.jump[i]) : f;
 }
@@ -243,7 +257,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           rec.tooth_centre_in_y_m = centre;
           rec.turn_rad = turn;
           rec.travel_m = refine ? -1 : clear_travel(s, tip_only);
-          rec.tracked = refine && !tip_only;
+          // A flank of the first gear that cannot be skipped is tracked (its probing is what costs).
+          rec.tracked = !tip_only && s.best_i >= 0 && !(rec.travel_m > 0);
           if (rec.tracked) track(s, tracks_[at], kTrackSpanWindows * s.window);
         }
         if (!refine) continue;

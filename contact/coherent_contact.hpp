@@ -51,7 +51,9 @@ class CoherentToothSearch {
     int best = -1;  // the best sample then
     double span_m = 0;
     std::array<Kind, n> kind{};
-    std::array<double, n> top, slope, growth, growth_factor, jump;  // kBounded; top: F's upper bound then
+    // kBounded: top bounds F then; path: how much longer than the travel a path inside the
+    // teeth' annulus may be (1, or π/2 around the tips).
+    std::array<double, n> top, slope, growth, growth_factor, jump, path;
     std::array<double, n> free_m;                                  // kFree: distance to the teeth's circle
   };
 
