@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "contact/flank_table.hpp"
 #include "geometry/constants.hpp"
@@ -58,11 +59,11 @@ void FlankTable::build_probe_knots() {
 void FlankTable::build_rise_bands() {
   const int n = samples_;
   const int intervals = n - 1, bands = (intervals + kRiseBand - 1) / kRiseBand;
-  rise_bands_.assign(static_cast<std::size_t>(bands), FirstOrderRise{0, 0, 0});
+  std::vector<FirstOrderRise> bands_max(static_cast<std::size_t>(bands), FirstOrderRise{0, 0, 0});
   const std::size_t rows = tooth_of_row_.size();
   auto worst = [](double& into, double v) { into = std::isnan(v) || !(v < kInfinity) ? kInfinity : std::max(into, v); };
   for (int i = 0; i < intervals; ++i) {
-    FirstOrderRise& band = rise_bands_[static_cast<std::size_t>(i / kRiseBand)];
+    FirstOrderRise& band = bands_max[static_cast<std::size_t>(i / kRiseBand)];
     const double r_hi = r_min_ + (i + 1) * dr_;
     double c_min = kInfinity, c_max = 0;
     for (std::size_t row = 0; row < rows; ++row)
@@ -79,6 +80,16 @@ void FlankTable::build_rise_bands() {
         c_max = std::isnan(c_up) ? kInfinity : std::max(c_max, c_up);
       }
     worst(band.jump, c_min > 0 ? (c_max - c_min) / c_min : kInfinity);
+  }
+  rise_runs_.assign(1, bands_max);
+  for (int run = 2; run <= bands; run *= 2) {
+    const std::vector<FirstOrderRise>& half = rise_runs_.back();
+    std::vector<FirstOrderRise> level(static_cast<std::size_t>(bands - run + 1));
+    for (std::size_t b = 0; b < level.size(); ++b) {
+      const FirstOrderRise &u = half[b], &v = half[b + static_cast<std::size_t>(run / 2)];
+      level[b] = {std::max(u.slope, v.slope), std::max(u.growth, v.growth), std::max(u.jump, v.jump)};
+    }
+    rise_runs_.push_back(std::move(level));
   }
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -96,14 +97,12 @@ class FlankTable {
     const double last = samples_ - 2, lo = (r_lo_m - r_min_) * inv_dr_, hi = (r_hi_m - r_min_) * inv_dr_;
     const int b_lo = static_cast<int>(lo <= 0 ? 0 : lo >= last ? last : lo) / kRiseBand;
     const int b_hi = static_cast<int>(hi <= 0 ? 0 : hi >= last ? last : hi) / kRiseBand;
-    FirstOrderRise out = rise_bands_[static_cast<std::size_t>(b_lo)];
-    for (int b = b_lo + 1; b <= b_hi; ++b) {
-      const FirstOrderRise& band = rise_bands_[static_cast<std::size_t>(b)];
-      out.slope = out.slope > band.slope ? out.slope : band.slope;
-      out.growth = out.growth > band.growth ? out.growth : band.growth;
-      out.jump = out.jump > band.jump ? out.jump : band.jump;
-    }
-    return out;
+    // The range's maximum from two overlapping power-of-two runs of bands (a sparse table).
+    const int level = std::bit_width(static_cast<unsigned>(b_hi - b_lo + 1)) - 1;
+    const std::vector<FirstOrderRise>& runs = rise_runs_[static_cast<std::size_t>(level)];
+    const FirstOrderRise &u = runs[static_cast<std::size_t>(b_lo)], &v = runs[static_cast<std::size_t>(b_hi - (1 << level) + 1)];
+    return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth,
+            u.jump > v.jump ? u.jump : v.jump};
   }
 
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
@@ -189,9 +188,10 @@ class FlankTable {
   std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
   std::vector<int> tooth_of_row_;  // a tooth of each row
   std::vector<KnotPair> knots_;                 // [row * samples + i]
-  // first_order_rise() per band of kRiseBand knot intervals (max over rows and flanks).
+  // first_order_rise() per band of kRiseBand knot intervals (max over rows and flanks), and over
+  // runs of bands: rise_runs_[l][b] over bands b to b + 2^l − 1.
   static constexpr int kRiseBand = 32;
-  std::vector<FirstOrderRise> rise_bands_;
+  std::vector<std::vector<FirstOrderRise>> rise_runs_;
   void build_rise_bands();
 
   double tan_half_pitch_ = 0;
