@@ -351,7 +351,7 @@ Hit refined_hit(FlankSamples& s) {
   return probe_at(xy, k, f, r_b);
 }
 
-Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
+[[maybe_unused]] Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
   FlankSamples s(xy, k, f, hint);
   if (!(tip_only ? probe_tip(s) : probe_flank(s))) return {};
   return refined_hit(s);

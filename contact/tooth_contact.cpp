@@ -1,13 +1,6 @@
 #include "contact/tooth_contact.hpp"
 
-#include <Eigen/Geometry>
-#include <cmath>
-#include <algorithm>
-#include <array>
-#include <bit>
-#include <cstdint>
-#include <numbers>
-#include <tuple>
+#include <vector>
 
 #include "contact/flank_search_impl.hpp"
 
