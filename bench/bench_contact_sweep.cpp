@@ -6,7 +6,9 @@
 // sweep (binary, host order), and `--compare A B` reports how two dumps differ: calls whose
 // tooth-pair sets differ, and the largest depth, point and normal differences. Used to show
 // that a faster contact search returns the same contacts as the one it replaces.
-// Usage: bench_contact_sweep [scenario.yaml=assets/scenarios/paper_dynamics.yaml] [--dump FILE]
+// With `--coherent` each sweep (pair, press, offset) runs through one CoherentToothSearch, as a
+// simulation steps a pair: its dump compares with the stateless one's.
+// Usage: bench_contact_sweep [scenario.yaml=assets/scenarios/paper_dynamics.yaml] [--dump FILE] [--coherent]
 //        bench_contact_sweep --compare A B
 #include <chrono>
 #include <cmath>
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "input/scenario_file.hpp"
+#include "contact/coherent_contact.hpp"
 #include "contact/tooth_contact.hpp"
 #include "physics/world_bodies.hpp"
 
@@ -89,8 +92,10 @@ double angle_of(const Eigen::Quaterniond& q) {
 int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--compare") return compare(argv[2], argv[3]);
   std::string file = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml", dump;
+  bool coherent = false;
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--dump" && i + 1 < argc) dump = argv[++i];
+    else if (std::string(argv[i]) == "--coherent") coherent = true;
     else file = argv[i];
   }
   const Scenario s = input::load_scenario(file);
@@ -138,13 +143,16 @@ int main(int argc, char** argv) {
   std::ofstream out;
   if (!dump.empty()) out.open(dump, std::ios::binary);
   long calls = 0, contacts = 0;
+  std::vector<ToothContact> found;
+  CoherentToothSearch::Counts flanks;
   double seconds = 0;
   for (const auto& [ia, ib] : pairs) {
     const Gear &ga = gears[ia], &gb = gears[ib];
     // Press: the external gear a turned forward by press/r (its tip radius, a bound on r_b).
     const double r_press = ga.table->r_max_m();
     for (double press : presses_m)
-      for (double shift : shifts_m)
+      for (double shift : shifts_m) {
+        CoherentToothSearch search;
         for (long i = 0; i < steps; ++i) {
           const double phi = static_cast<double>(i) * step_rad;
           PlanarPose pa = ga.pose, pb = gb.pose;
@@ -153,7 +161,8 @@ int main(int argc, char** argv) {
           if (ga.name == "sun") pa.centre_m.x() += shift, pa.centre_m.y() += 0.5 * shift;
           if (gb.name == "sun") pb.centre_m.x() += shift, pb.centre_m.y() += 0.5 * shift;
           const auto t0 = Clock::now();
-          const std::vector<ToothContact> found = find_tooth_contacts(*ga.table, pa, *gb.table, pb);
+          if (coherent) search.find(*ga.table, pa, *gb.table, pb, found);
+          else find_tooth_contacts(*ga.table, pa, *gb.table, pb, found);
           seconds += std::chrono::duration<double>(Clock::now() - t0).count();
           for (const ToothContact& c : found) {
             const Record r{calls, c.tooth_a, c.tooth_b, c.flank_a == Flank::Ccw ? 0 : 1, 0, c.point_m.x(), c.point_m.y(),
@@ -163,9 +172,16 @@ int main(int argc, char** argv) {
           contacts += static_cast<long>(found.size());
           ++calls;
         }
+        flanks.searched += search.counts().searched, flanks.skipped += search.counts().skipped;
+        flanks.tracked += search.counts().tracked;
+      }
   }
   std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",
               s.name.c_str(), pairs.size(), calls, steps, step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
               1e6 * seconds / static_cast<double>(calls));
+  if (coherent)
+    std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%)\n", flanks.searched,
+                flanks.tracked, flanks.skipped,
+                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped));
   return 0;
 }

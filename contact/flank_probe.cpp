@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "contact/flank_table.hpp"
 #include "geometry/constants.hpp"
@@ -52,7 +53,46 @@ void FlankTable::build_probe_knots() {
     tooth_axis_[static_cast<std::size_t>(t)] = {std::cos(tooth_angle_rad(t)), std::sin(tooth_angle_rad(t))};
   pitch_axis_ = {std::cos(pitch_), std::sin(pitch_)};
   tan_half_pitch_ = std::tan(0.5 * pitch_);
+  build_rise_bands();
 }
+
+void FlankTable::build_rise_bands() {
+  const int n = samples_;
+  const int intervals = n - 1, bands = (intervals + kRiseBand - 1) / kRiseBand;
+  std::vector<FirstOrderRise> bands_max(static_cast<std::size_t>(bands), FirstOrderRise{0, 0, 0});
+  const std::size_t rows = tooth_of_row_.size();
+  auto worst = [](double& into, double v) { into = std::isnan(v) || !(v < kInfinity) ? kInfinity : std::max(into, v); };
+  for (int i = 0; i < intervals; ++i) {
+    FirstOrderRise& band = bands_max[static_cast<std::size_t>(i / kRiseBand)];
+    const double r_hi = r_min_ + (i + 1) * dr_;
+    double c_min = kInfinity, c_max = 0;
+    for (std::size_t row = 0; row < rows; ++row)
+      for (int side = 0; side < 2; ++side) {
+        const Knot& k0 = knots_[row * static_cast<std::size_t>(n) + static_cast<std::size_t>(i)].side[side];
+        const Knot& k1 = knots_[row * static_cast<std::size_t>(n) + static_cast<std::size_t>(i) + 1].side[side];
+        const double c_lo = std::min(k0.cos_psi, k1.cos_psi), c_up = std::max(k0.cos_psi, k1.cos_psi);
+        const double v_up = std::max(std::hypot(k0.cos_a, k0.sin_a), std::hypot(k1.cos_a, k1.sin_a));
+        const double dv = std::hypot(k1.cos_a - k0.cos_a, k1.sin_a - k0.sin_a) / dr_;
+        // NaN knots (no material) and c → 0 make the band unbounded.
+        worst(band.slope, c_up * (v_up + r_hi * dv));
+        worst(band.growth, c_lo > 0 ? std::abs(k1.cos_psi - k0.cos_psi) / (dr_ * c_lo) : kInfinity);
+        c_min = std::isnan(c_lo) ? 0 : std::min(c_min, c_lo);
+        c_max = std::isnan(c_up) ? kInfinity : std::max(c_max, c_up);
+      }
+    worst(band.jump, c_min > 0 ? (c_max - c_min) / c_min : kInfinity);
+  }
+  rise_runs_.assign(1, bands_max);
+  for (int run = 2; run <= bands; run *= 2) {
+    const std::vector<FirstOrderRise>& half = rise_runs_.back();
+    std::vector<FirstOrderRise> level(static_cast<std::size_t>(bands - run + 1));
+    for (std::size_t b = 0; b < level.size(); ++b) {
+      const FirstOrderRise &u = half[b], &v = half[b + static_cast<std::size_t>(run / 2)];
+      level[b] = {std::max(u.slope, v.slope), std::max(u.growth, v.growth), std::max(u.jump, v.jump)};
+    }
+    rise_runs_.push_back(std::move(level));
+  }
+}
+
 
 int FlankTable::nearest_tooth(const Eigen::Vector2d& p) const {
   return wrap_tooth(static_cast<int>(round_to_even((rough_atan2(p.y(), p.x()) - layout_.tooth0_angle_rad) * inv_pitch_)));

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -78,6 +79,31 @@ class FlankTable {
   // on, or one of the two that bound the tooth space it lies in, and so the same depth.
   static constexpr double kNoDepth = -1e300;
   double first_order_depth(const Eigen::Vector2d& p, int& tooth_hint) const;
+
+  // How fast first_order_depth() D can change as a point moves, over radii [r_lo, r_hi] within
+  // the teeth: the bounds a search that skips a flank until its measured gap may have closed
+  // rests on (CoherentToothSearch, coherent_contact.hpp). Against one flank, D = c·(q × v)
+  // with v (the flank's direction) and c (cos ψ) linear in r between knots, so
+  //   |∇D| ≤ c·|v| + c·r·|dv/dr| + |dc/dr|·|D|/c ≤ slope + growth·|D|.
+  // In a tooth space D is taken on the nearer of its two flanks by their unscaled gaps g
+  // (D = −c_sel·g_sel); the larger of the two flanks' own depths, D̃ = max(−c·g) ≥ D, is
+  // continuous there and at most jump·|D| above D (jump = (max c − min c)/min c at the
+  // radius). Infinite where a flank has no material (D is not measured there).
+  struct FirstOrderRise {
+    double slope = kInfinity, growth = kInfinity, jump = kInfinity;  // 1, 1/m, 1
+  };
+  static constexpr double kInfinity = 1e300;
+  FirstOrderRise first_order_rise(double r_lo_m, double r_hi_m) const {
+    const double last = samples_ - 2, lo = (r_lo_m - r_min_) * inv_dr_, hi = (r_hi_m - r_min_) * inv_dr_;
+    const int b_lo = static_cast<int>(lo <= 0 ? 0 : lo >= last ? last : lo) / kRiseBand;
+    const int b_hi = static_cast<int>(hi <= 0 ? 0 : hi >= last ? last : hi) / kRiseBand;
+    // The range's maximum from two overlapping power-of-two runs of bands (a sparse table).
+    const int level = std::bit_width(static_cast<unsigned>(b_hi - b_lo + 1)) - 1;
+    const std::vector<FirstOrderRise>& runs = rise_runs_[static_cast<std::size_t>(level)];
+    const FirstOrderRise &u = runs[static_cast<std::size_t>(b_lo)], &v = runs[static_cast<std::size_t>(b_hi - (1 << level) + 1)];
+    return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth,
+            u.jump > v.jump ? u.jump : v.jump};
+  }
 
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
   // m; NaN where the flank has no material), kept so that probing a flank costs no trigonometry.
@@ -162,6 +188,12 @@ class FlankTable {
   std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
   std::vector<int> tooth_of_row_;  // a tooth of each row
   std::vector<KnotPair> knots_;                 // [row * samples + i]
+  // first_order_rise() per band of kRiseBand knot intervals (max over rows and flanks), and over
+  // runs of bands: rise_runs_[l][b] over bands b to b + 2^l − 1.
+  static constexpr int kRiseBand = 32;
+  std::vector<std::vector<FirstOrderRise>> rise_runs_;
+  void build_rise_bands();
+
   double tan_half_pitch_ = 0;
   std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle
   Eigen::Vector2d pitch_axis_;                  // (cos, sin) of the pitch angle

@@ -177,6 +177,7 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
     c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
     c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
+    c.coherent_search = m.boolean_or("coherent_search", c.coherent_search);
     // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
     if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
     if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");

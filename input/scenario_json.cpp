@@ -123,7 +123,8 @@ json scenario_json(const physics::Scenario& s) {
                   {"damping_ratio", s.contact.damping_ratio},
                   {"friction", s.contact.friction},
                   {"chordal_deviation_m", s.contact.chordal_deviation_m},
-                  {"max_flank_departure_m", s.contact.max_flank_departure_m}};
+                  {"max_flank_departure_m", s.contact.max_flank_departure_m},
+                  {"coherent_search", s.contact.coherent_search}};
   if (!s.contact.stiffness_tables.empty()) {
     json tables = json::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)

@@ -185,6 +185,8 @@ physics::ContactDef contact_of(const Node& n) {
   c.friction = n.number("friction");
   c.chordal_deviation_m = n.number_within("chordal_deviation_m", limits::kChordalDeviation_m);
   c.max_flank_departure_m = n.number("max_flank_departure_m");
+  // Records written before the key existed ran the stateless search.
+  c.coherent_search = n.has("coherent_search") ? n.boolean("coherent_search") : false;
   if (n.has("stiffness_tables"))
     for (const Node& t : n.list("stiffness_tables")) {
       physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),

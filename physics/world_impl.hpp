@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "physics/world.hpp"
+#include "contact/coherent_contact.hpp"
 #include "physics/tooth_pair_stiffness.hpp"
 #include "physics/world_bodies.hpp"
 
@@ -63,6 +64,7 @@ struct PairRec {
   std::vector<contact::ToothContact> current;                          // in manifold point order
   std::vector<double> current_stiffness_N_per_m;              // the stiffness each was given
   MeshStiffnessModel stiffness;  // how each touching tooth pair's stiffness is set
+  contact::CoherentToothSearch search;  // the pair's flank records (contact.coherent_search)
 };
 
 struct World::Impl {

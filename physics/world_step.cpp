@@ -19,7 +19,8 @@ void World::Impl::generate_contacts() {
   for (PairRec& pr : pairs) {
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
     std::vector<contact::ToothContact>& found = pr.found;
-    contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
+    if (scenario.contact.coherent_search) pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
+    else contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
     if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
       std::sort(found.begin(), found.end(), [](const contact::ToothContact& x, const contact::ToothContact& y) { return x.depth_m > y.depth_m; });
       dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;

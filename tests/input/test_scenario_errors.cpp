@@ -88,6 +88,12 @@ TEST(ScenarioErrors, WrongType) {
   EXPECT_NAMES(error_for(edited("duration_s: 0.1", "duration_s: fast")), "bad.yaml:2:", "duration_s: expected a number");
 }
 
+TEST(ScenarioErrors, CoherentSearchIsTrueOrFalse) {
+  EXPECT_NAMES(error_for(kGood + "contact: {coherent_search: sometimes}\n"), "bad.yaml:11:", "contact.coherent_search",
+               "expected true or false");
+  EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false}\n"), "");
+}
+
 TEST(ScenarioErrors, DuplicateBodyName) {
   EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")),
                "bodies[1].name", "a second body named 'wheel'");

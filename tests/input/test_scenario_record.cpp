@@ -52,6 +52,21 @@ TEST(ScenarioRecord, EveryAssetScenarioReadsBackToTheSameScenario) {
   }
 }
 
+TEST(ScenarioRecord, TheContactSearchReadsBack) {
+  // contact.coherent_search: the default (true) and false read back; a record written before the
+  // key existed ran the stateless search.
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_TRUE(s.contact.coherent_search);
+  EXPECT_TRUE(scenario_from_json(nlohmann::json::parse(scenario_json(s).dump()), "rec.json").contact.coherent_search);
+  s.contact.coherent_search = false;
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.coherent_search);
+  j["contact"].erase("coherent_search");
+  EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.coherent_search);
+  j["contact"]["coherent_search"] = "yes";
+  EXPECT_NE(error_of(j).find("contact.coherent_search"), std::string::npos) << error_of(j);
+}
+
 TEST(ScenarioRecord, ADamagedRecordNamesTheKey) {
   const nlohmann::json good = nlohmann::json::parse(scenario_json(load_scenario(asset("paper_dynamics.yaml"))).dump());
   nlohmann::json j = good;

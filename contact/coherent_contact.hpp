@@ -1,0 +1,67 @@
+// Tooth contact of one gear pair stepped through time: find_tooth_contacts() with a memory. Between
+// two steps the gears move little, so a flank whose last measurement left it far from the other
+// gear cannot touch it now; CoherentToothSearch skips such a flank until the relative motion since
+// that measurement could have closed the gap, with a bound that holds for any motion (no
+// velocities, no step size assumed: a jump of the poses makes it re-probe). Every flank it does
+// not skip is searched exactly as find_tooth_contacts() searches it, so it returns the same
+// contacts (docs/tooth-contact.md, "Temporal coherence"). One object per gear pair; not
+// thread-safe; no allocation per call once warm.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "contact/flank_table.hpp"
+#include "contact/tooth_contact.hpp"
+
+namespace gearsim::contact {
+
+class CoherentToothSearch {
+ public:
+  // The contacts find_tooth_contacts(a, pa, b, pb, out) returns, into `out` (cleared first). The
+  // tables must outlive the object; other tables than the last call's start it afresh.
+  void find(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb,
+            std::vector<ToothContact>& out);
+  // Forget every measurement: the next call searches every flank.
+  void reset();
+
+  // Flanks searched in full, tracked (only the samples that can hold the deepest probed) and
+  // skipped since construction (both probing passes).
+  struct Counts {
+    long searched = 0, tracked = 0, skipped = 0;
+  };
+  const Counts& counts() const { return counts_; }
+
+  // What the last full search of a flank (pass, tooth, flank) proved, for any motion of its
+  // tooth's points in the other gear's frame shorter than a travel: no contact (`travel_m`), or,
+  // for a flank of the first gear then within the refinement window (`tracked`), a bound on each
+  // probe sample's first-order depth.
+  struct FlankRecord {
+    Eigen::Vector2d tooth_centre_in_y_m = Eigen::Vector2d::Zero();  // its tooth's centre then
+    double turn_rad = 0;   // the probed gear's angle less the other's, then
+    double travel_m = -1;  // > 0: no contact within this travel
+    bool tracked = false;  // the flank's TrackedFlank holds
+  };
+  // Per probe sample of a tracked flank (coherent_contact.cpp, sample_bound()): how its depth D
+  // can have risen since the full search, up to a travel of span_m.
+  struct TrackedFlank {
+    static constexpr int n = FlankTable::kProbeRadii;
+    enum Kind : signed char { kBounded, kFree, kProbe };
+    int best = -1;  // the best sample then
+    double span_m = 0;
+    std::array<Kind, n> kind{};
+    // kBounded: top bounds F then; path: how much longer than the travel a path inside the
+    // teeth' annulus may be (1, or π/2 around the tips).
+    std::array<double, n> top, slope, growth, growth_factor, jump, path;
+    std::array<double, n> free_m;                                  // kFree: distance to the teeth's circle
+  };
+
+ private:
+  const FlankTable* tables_[2] = {nullptr, nullptr};
+  std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
+  std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
+  Counts counts_;
+};
+
+}  // namespace gearsim::contact

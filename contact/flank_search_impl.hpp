@@ -1,0 +1,391 @@
+// Internal to contact/: the flank search that find_tooth_contacts() and CoherentToothSearch share
+// (probe samples, coarse-to-fine skipping, parabola and golden-section refinement). Included by
+// tooth_contact.cpp and coherent_contact.cpp only: an anonymous namespace, so each file compiles
+// and inlines the same code as before it was shared. Not an interface.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
+#include "contact/tooth_contact.hpp"
+
+namespace gearsim::contact {
+namespace {
+
+using Eigen::Vector2d;
+
+// Golden-section steps refining the deepest point where a parabola cannot (a maximum at the end
+// of the sampled flank: a tip corner): the bracket shrinks by 0.618^20 ≈ 7e-5 of two sample
+// spacings (≈ 10 nm at 16 samples over 2.25 mm).
+constexpr int kGoldenIterations = 20;
+
+// Parabola fits refining an interior maximum, each on a bracket kParabolaShrink times narrower
+// than the last: the depth is smooth and flat at its maximum, so three fits (brackets of 150,
+// 19 and 2.3 µm on a module-1 tooth) place it to a few nm along the flank.
+constexpr int kParabolaFits = 3;
+constexpr double kParabolaShrink = 1.0 / 8;
+
+// Gap below which a flank's coarse maximum is refined, m, for probe samples up to
+// kRefineStep_m apart: 5 µm. The skipping of samples below rests on it: between two samples
+// s steps apart the depth rises at most s²·window above the higher, which holds where the
+// two flanks' relative radius of curvature exceeds step²/(8·window) — 0.56 mm at 150 µm steps
+// (16 samples over a 2.25 mm module-1 tooth; the sun–planet pair's is ~2.4 mm).
+constexpr double kRefineWithin_m = 5e-6;
+constexpr double kRefineStep_m = 150e-6;
+
+// The window for a table whose probe samples lie `step` apart, m. Radii of curvature grow with
+// the teeth as the step does, so the rise between samples grows as the step: on a module-4
+// tooth (604 µm steps, 7.9 mm relative radius) the depth rose 21 µm above the higher of two
+// samples two steps apart, beyond 4 × 5 µm, and a 1.2 µm contact went unseen for 4 steps.
+// Never below kRefineWithin_m.
+double refine_window_m(double step) { return kRefineWithin_m * std::max(1.0, step / kRefineStep_m); }
+
+constexpr double kNone = FlankTable::kNoDepth;
+
+// Step inward from golden section's last point that tells whether the depth still rises toward
+// the bracket's end, m. Normally 0.1 nm: below the 2.3 nm between golden section's last two
+// points (so the test speaks for the last comparison too), far above the depth's rounding
+// (~1e-17 m at gear scale) times any flank slope that matters.
+constexpr double kRisingCheck_m = 1e-10;
+
+struct Frame {
+  const FlankTable& table;
+  PlanarPose pose;
+  Eigen::Rotation2Dd rot{pose.angle_rad};
+  Eigen::Matrix2d to_world_m = rot.toRotationMatrix(), to_local_m = to_world_m.transpose();
+  Vector2d to_world(const Vector2d& p) const { return pose.centre_m + to_world_m * p; }
+  Vector2d to_local(const Vector2d& w) const { return to_local_m * (w - pose.centre_m); }
+  Vector2d dir_to_world(const Vector2d& d) const { return to_world_m * d; }
+};
+
+// A probing pass: points of x tested against y, with x's frame expressed in y's once.
+struct XY {
+  const Frame& x;
+  const Frame& y;
+  Eigen::Matrix2d rot = y.to_local_m * x.to_world_m;
+  Vector2d shift = y.to_local(x.pose.centre_m);
+  Vector2d in_y(const Vector2d& p_x) const { return shift + rot * p_x; }
+};
+
+// Could tooth k of `x` reach the toothed annulus of `y`? Bounding circle of the tooth against
+// the annulus [r_min, r_max] of y (or y's whole disc beyond it on its body side).
+bool tooth_near(const Frame& x, int k, const Frame& y) {
+  const double radius = x.table.tooth_bound_radius_m();
+  const double d2 = (x.to_world(x.table.tooth_centre(k)) - y.pose.centre_m).squaredNorm();
+  const double outer = y.table.r_max_m() + radius, inner = y.table.r_min_m() - radius;
+  return d2 < outer * outer && (inner < 0 || d2 > inner * inner);
+}
+
+// The teeth of x that tooth_near() can accept lie within an angular window about the direction
+// from x's centre to y's (tooth centres all sit on one circle about x's centre): a tooth outside
+// it is skipped without the test. `centre_k` is the tooth facing y, `half` the window's half
+// width in teeth (a tooth more for rounding); half < 0: every tooth is tested.
+struct ToothWindow {
+  int centre_k = 0, half = -1;
+  bool holds(int k, int teeth) const {
+    if (half < 0) return true;
+    int d = (k - centre_k) % teeth;
+    if (d < 0) d += teeth;
+    return d <= half || teeth - d <= half;
+  }
+};
+
+ToothWindow tooth_window(const Frame& x, const Frame& y) {
+  ToothWindow w;
+  const Vector2d to_y = y.pose.centre_m - x.pose.centre_m;
+  const double dist = to_y.norm(), r_c = x.table.tooth_centre(0).norm();
+  const double outer = y.table.r_max_m() + x.table.tooth_bound_radius_m();
+  if (!(dist > 0 && r_c > 0)) return w;
+  // |c_k − c_y|² = r_c² + dist² − 2·r_c·dist·cos Δ < outer² ⇔ cos Δ > cos_limit.
+  const double cos_limit = (r_c * r_c + dist * dist - outer * outer) / (2 * r_c * dist);
+  if (cos_limit <= -1) return w;
+  const double pitch = x.table.pitch_angle_rad();
+  const double facing = std::atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0);
+  const int teeth = x.table.teeth();
+  w.centre_k = static_cast<int>(std::lround(facing / pitch)) % teeth;
+  if (w.centre_k < 0) w.centre_k += teeth;
+  const double half_rad = cos_limit >= 1 ? 0.0 : std::acos(cos_limit);
+  w.half = static_cast<int>(std::ceil(half_rad / pitch)) + 1;
+  if (2 * w.half + 1 >= teeth) w.half = -1;
+  return w;
+}
+
+struct Hit {
+  double depth = kNone;
+  Vector2d point, normal_into_x;  // world: the probed point and the surface normal of y there
+  int tooth_y = -1;
+  Flank flank_y = Flank::Ccw;
+};
+
+// Exact depth of x's flank point at radius r inside y, with the contact geometry, in world terms.
+Hit probe_at(const XY& xy, int k, Flank f, double r) {
+  const Frame &x = xy.x, &y = xy.y;
+  Hit h;
+  const Vector2d w = x.to_world(x.table.flank_point(k, f, r));
+  const FlankTable::Probe p = y.table.probe(y.to_local(w));
+  if (!p.inside && !p.has_flank) return h;  // far from y's teeth: no gap to measure
+  h.depth = p.depth_m;
+  h.point = w;
+  h.normal_into_x = y.dir_to_world(p.normal);
+  h.tooth_y = p.tooth;
+  h.flank_y = p.flank;
+  return h;
+}
+
+// First-order depth of a point of x (gear frame of x) inside y, kNone where there is nothing to
+// measure. `hint`: a tooth of y near the point (or −1), updated to the one it faces.
+double depth_of(const XY& xy, const Vector2d& p_x, int& hint) {
+  return xy.y.table.first_order_depth(xy.in_y(p_x), hint);
+}
+
+// First-order depth of x's flank point at radius r, kNone where the flank has no material.
+double depth_at(const XY& xy, int k, Flank f, double r, int& hint) {
+  Vector2d p;
+  return xy.x.table.flank_point_if_material(k, f, r, &p) ? depth_of(xy, p, hint) : kNone;
+}
+
+// Radius of the deepest point near r_b, the best of samples spaced `step` apart whose
+// neighbours' depths are d_lo and d_hi: successive parabola fits on shrinking brackets.
+double parabola_refine(const XY& xy, int k, Flank f, double r, double step, double d_lo, double d0, double d_hi,
+                       int& hint) {
+  double h = step;
+  for (int fit = 0; fit < kParabolaFits; ++fit) {
+    const double curvature = d_lo - 2 * d0 + d_hi;
+    if (!(curvature < 0)) break;  // not a maximum (flat within rounding): keep the best sample
+    r += std::clamp(0.5 * h * (d_lo - d_hi) / curvature, -h, h);
+    if (fit + 1 == kParabolaFits) break;
+    h *= kParabolaShrink;
+    d_lo = depth_at(xy, k, f, r - h, hint), d0 = depth_at(xy, k, f, r, hint), d_hi = depth_at(xy, k, f, r + h, hint);
+    if (d_lo <= kNone || d0 <= kNone || d_hi <= kNone) break;
+  }
+  return r;
+}
+
+constexpr double kGolden = 0.6180339887498949;
+
+// Where golden_refine() ends when the depth rises monotonically toward one end of [lo, hi]
+// (toward hi with `at_hi`): every comparison then goes the same way, so its brackets follow
+// without evaluating the depth. The same arithmetic as golden_refine(), so the same radius.
+double golden_end(double lo, double hi, bool at_hi) {
+  double c = hi - kGolden * (hi - lo), d = lo + kGolden * (hi - lo);
+  for (int it = 0; it < kGoldenIterations; ++it) {
+    if (at_hi) {
+      lo = c, c = d;
+      d = lo + kGolden * (hi - lo);
+    } else {
+      hi = d, d = c;
+      c = hi - kGolden * (hi - lo);
+    }
+  }
+  return at_hi ? d : c;
+}
+
+// Radius of the deepest point in [lo, hi] by golden-section search: for a maximum at the end of
+// the sampled flank, where the depth is not smooth.
+double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hint) {
+  double c = hi - kGolden * (hi - lo), d = lo + kGolden * (hi - lo);
+  double fc = depth_at(xy, k, f, c, hint), fd = depth_at(xy, k, f, d, hint);
+  for (int it = 0; it < kGoldenIterations; ++it) {
+    if (fc > fd) {
+      hi = d, d = c, fd = fc;
+      c = hi - kGolden * (hi - lo), fc = depth_at(xy, k, f, c, hint);
+    } else {
+      lo = c, c = d, fc = fd;
+      d = lo + kGolden * (hi - lo), fd = depth_at(xy, k, f, d, hint);
+    }
+  }
+  return fc > fd ? c : d;
+}
+
+// The probe samples of one flank of x's tooth k: the depths measured so far (kNone where not
+// probed or clear of material) and the deepest of them.
+struct FlankSamples {
+  static constexpr int n = FlankTable::kProbeRadii;
+  FlankSamples(const XY& xy_, int k_, Flank f_, int& hint_)
+      : xy(xy_), k(k_), f(f_), hint(hint_), material(xy_.x.table.probe_material(k_, f_)),
+        step(xy_.x.table.probe_radius(1) - xy_.x.table.probe_radius(0)), window(refine_window_m(step)) {
+    depth.fill(kNone);
+  }
+  bool missing(int i) const { return i < 0 || i >= n || !((material >> i) & 1u); }
+  void probe(int i) {
+    depth[i] = missing(i) ? kNone : depth_of(xy, xy.x.table.probe_point(k, f, i), hint);
+    if (depth[i] > kNone && (best_i < 0 || depth[i] > depth[best_i])) best_i = i;
+  }
+  const XY& xy;
+  int k;
+  Flank f;
+  int& hint;
+  std::uint32_t material;
+  double step, window;
+  std::array<double, n> depth;
+  int best_i = -1;
+};
+
+// The three samples nearest the tooth's free end (an internal gear's teeth point inward); a
+// maximum at the farthest of them lies down the flank, where the other probing direction finds
+// it, so the third is probed only when one of the first two is within the refinement window.
+// False: no hit on this flank.
+bool probe_tip(FlankSamples& s) {
+  constexpr int n = FlankSamples::n;
+  const int dir = s.xy.x.table.internal() ? 1 : -1;
+  int end = s.xy.x.table.internal() ? 0 : n - 1;
+  while (s.missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
+  for (int j = 0; j < 2; ++j)
+    if (!s.missing(end + j * dir)) s.probe(end + j * dir);
+  if (s.best_i < 0 || s.depth[s.best_i] < -s.window) return false;
+  if (!s.missing(end + 2 * dir)) s.probe(end + 2 * dir);
+  return s.best_i != end + 2 * dir;
+}
+
+// probe_flank()'s first samples: every fourth, the last, and any next to a radius without material
+// (bits of the material mask shifted onto their neighbours).
+constexpr std::uint32_t first_samples(std::uint32_t material) {
+  constexpr int n = FlankTable::kProbeRadii;
+  constexpr std::uint32_t kAll = (std::uint32_t{1} << n) - 1;
+  std::uint32_t every_fourth = std::uint32_t{1} << (n - 1);
+  for (int i = 0; i < n; i += 4) every_fourth |= std::uint32_t{1} << i;
+  const std::uint32_t without = ~material & kAll;
+  return (every_fourth | (without << 1) | (without >> 1)) & kAll;
+}
+
+// The samples probe_flank() probes before it gives up on a flank more than 4·window clear: the
+// first ones and every other between them (where they can matter).
+constexpr std::uint32_t coarse_samples(std::uint32_t material) {
+  constexpr int n = FlankTable::kProbeRadii;
+  std::uint32_t m = first_samples(material);
+  for (int i = 2; i < n - 1; i += 4) m |= std::uint32_t{1} << i;
+  return m & material;
+}
+
+// Coarse to fine, probing a sample only where it can matter. Between two samples s·step apart
+// the depth rises at most s²·window above the higher (the parabola bound window rests on, with
+// room to spare); a stretch next to a sample that measured nothing has no such bound and is
+// probed. The answer is that of probing every sample: the deepest one, and no refinement when it
+// stays more than window clear (then false: no hit).
+bool probe_flank(FlankSamples& s) {
+  constexpr int n = FlankSamples::n;
+  const double window = s.window;
+  std::array<double, n>& depth = s.depth;
+  // `top[i]`: what sample i can reach, its depth once probed, or a bound when it is skipped.
+  std::array<double, n> top;
+  std::uint32_t probed = 0;  // bit i: sample i probed
+  auto has = [&](int i) { return ((s.material >> i) & 1u) != 0; };  // i within [0, n)
+  auto probe_at_i = [&](int i) {
+    s.probe(i);
+    probed |= std::uint32_t{1} << i;
+    top[i] = depth[i];
+  };
+  // Whether sample i, between samples lo and hi (s·step around it, both probed or bounded),
+  // can reach `level`; if not, the bound is kept for the samples between.
+  auto needed = [&](int i, int lo, int hi, double rise, double level) {
+    const bool lo_probed = (probed >> lo) & 1u, hi_probed = (probed >> hi) & 1u;
+    if (!has(lo) || !has(hi) || (lo_probed && depth[lo] <= kNone) || (hi_probed && depth[hi] <= kNone)) return true;
+    const double reach = std::max(lo_probed ? depth[lo] + rise : top[lo], hi_probed ? depth[hi] + rise : top[hi]);
+    if (reach >= level) return true;
+    top[i] = reach;
+    return false;
+  };
+  // Every fourth sample, the last, and any next to a radius without material, in increasing order.
+  for (std::uint32_t todo = first_samples(s.material); todo != 0; todo &= todo - 1) probe_at_i(std::countr_zero(todo));
+  // Every other: a flank whose best stays more than 4·window clear is done.
+  for (int i = 2; i < n - 1; i += 4)
+    if (!((probed >> i) & 1u) && has(i) &&
+        needed(i, i - 2, std::min(i + 2, n - 1), 16 * window, std::max(s.best_i < 0 ? kNone : depth[s.best_i], -4 * window)))
+      probe_at_i(i);
+  if (s.best_i < 0 || depth[s.best_i] < -4 * window) return false;
+  // The rest: where they could be the best or lift it into the refinement window.
+  for (int i = 1; i < n - 1; i += 2)
+    if (!((probed >> i) & 1u) && has(i) && needed(i, i - 1, i + 1, 4 * window, std::max(depth[s.best_i], -window)))
+      probe_at_i(i);
+  return depth[s.best_i] >= -window;
+}
+
+// The radius of the deepest point near the best sample: a parabola through it and its neighbours
+// inside the flank, golden section at an end of it.
+double refined_radius(FlankSamples& s) {
+  constexpr int n = FlankSamples::n;
+  const FlankTable& table = s.xy.x.table;
+  const int best_i = s.best_i;
+  const double r_b = table.probe_radius(best_i), step = s.step;
+  const bool interior = best_i > 0 && best_i < n - 1 && s.depth[best_i - 1] > kNone && s.depth[best_i + 1] > kNone;
+  if (interior)
+    return parabola_refine(s.xy, s.k, s.f, r_b, step, s.depth[best_i - 1], s.depth[best_i], s.depth[best_i + 1], s.hint);
+  const double lo = std::max(r_b - step, table.probe_radius(0)), hi = std::min(r_b + step, table.probe_radius(n - 1));
+  // Best at an end of the bracket (a tip corner, or the flank's end): where the depth still
+  // rises toward that end at golden section's last point, a search with one maximum in the
+  // bracket (what golden section assumes) ends exactly there, found with two evaluations
+  // instead of 22.
+  if (r_b == hi || r_b == lo) {
+    const bool at_hi = r_b == hi;
+    const double r_end = golden_end(lo, hi, at_hi);
+    const double d_end = depth_at(s.xy, s.k, s.f, r_end, s.hint);
+    const double d_in = depth_at(s.xy, s.k, s.f, r_end + (at_hi ? -kRisingCheck_m : kRisingCheck_m), s.hint);
+    if (d_end > kNone && d_in > kNone && d_end > d_in) return r_end;
+  }
+  return golden_refine(s.xy, s.k, s.f, lo, hi, s.hint);
+}
+
+// The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
+// first order, the best refined, and the result measured exactly. A flank whose best sample
+// stays more than its refinement window (refine_window_m) clear of y returns no hit. With
+// `tip_only`, only a maximum at the tooth's free end (its tip corner) is looked for.
+// `hint`: y's tooth the last probe faced (or −1); the next ones along the flank, or on the next
+// flank, face it or a neighbour. Updated.
+// The hit of a flank whose probing found a best sample within the refinement window: refined,
+// then measured exactly.
+Hit refined_hit(FlankSamples& s) {
+  const XY& xy = s.xy;
+  const int k = s.k;
+  const Flank f = s.f;
+  const double r_b = xy.x.table.probe_radius(s.best_i);
+  double r_best = refined_radius(s);
+  if (std::isnan(xy.x.table.flank_angle(k, f, r_best))) r_best = r_b;
+  const Hit refined = probe_at(xy, k, f, r_best);
+  if (refined.depth > kNone) return refined;
+  return probe_at(xy, k, f, r_b);
+}
+
+[[maybe_unused]] Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
+  FlankSamples s(xy, k, f, hint);
+  if (!(tip_only ? probe_tip(s) : probe_flank(s))) return {};
+  return refined_hit(s);
+}
+
+// Keeps a hit as the contact of (tooth_a, tooth_b, flank_a), the deeper of two for the same key.
+// `x_is_a`: the probed gear x is a (pass 0).
+void keep_contact(std::vector<ToothContact>& best, int tooth_a, int tooth_b, Flank flank_a, const Hit& h, bool x_is_a) {
+  if (h.depth <= 0) return;
+  ToothContact c;
+  c.tooth_a = tooth_a;
+  c.tooth_b = tooth_b;
+  c.flank_a = flank_a;
+  c.depth_m = h.depth;
+  // h.normal_into_x is the outward normal of the probed gear y at the point; the contact
+  // normal on b points from b toward a.
+  c.normal_on_b = x_is_a ? h.normal_into_x : Vector2d(-h.normal_into_x);
+  // The probed point lies on x's surface, y's surface lies a depth further along y's outward
+  // normal: the overlap's mid-point is half-way.
+  c.point_m = h.point + 0.5 * h.depth * h.normal_into_x;
+  auto same = [&](const ToothContact& o) { return o.tooth_a == tooth_a && o.tooth_b == tooth_b && o.flank_a == flank_a; };
+  auto it = std::find_if(best.begin(), best.end(), same);
+  if (it == best.end()) best.push_back(c);
+  else if (it->depth_m < c.depth_m) *it = c;
+}
+
+// In a fixed order (as the map keyed by teeth and flank gave before), independent of probing order.
+void sort_contacts(std::vector<ToothContact>& best) {
+  std::sort(best.begin(), best.end(), [](const ToothContact& u, const ToothContact& v) {
+    return std::make_tuple(u.tooth_a, u.tooth_b, static_cast<int>(u.flank_a)) <
+           std::make_tuple(v.tooth_a, v.tooth_b, static_cast<int>(v.flank_a));
+  });
+}
+
+}  // namespace
+
+}  // namespace gearsim::contact
