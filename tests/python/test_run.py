@@ -1,10 +1,12 @@
 """gearsim.run: the same arrays as the CLI's CSV files, bit for bit; out= writes the CLI's files."""
 import json
+import threading
+import time
 
 import numpy
 
 import gearsim
-from conftest import read_csv_columns, scenario_path
+from conftest import read_csv_columns, run_cli, scenario_path
 
 
 def spur(**overrides):
@@ -43,3 +45,35 @@ def test_out_writes_the_cli_files(tmp_path, spur_cli_run):
     for name in ("state.csv", "contacts.csv", "scenario.json"):
         assert (tmp_path / name).read_bytes() == (spur_cli_run / name).read_bytes(), name
     assert json.loads((tmp_path / "summary.json").read_text())["status"] == "completed"
+
+
+def test_paper_arrays_with_sensors_equal_the_cli_csv(tmp_path):
+    overrides = ["output.per_step_log=false", "solver.time_step_s=2e-5"]
+    run_cli("run", scenario_path("paper_dynamics_healthy.yaml"), "--out", tmp_path, "--duration", "0.06",
+            *[f"--set={o}" for o in overrides], "--no-analyze")
+    r = gearsim.run(gearsim.load_scenario(scenario_path("paper_dynamics_healthy.yaml"), overrides), duration=0.06)
+    assert_same_columns(r.state, tmp_path / "state.csv")
+    assert_same_columns(r.contacts, tmp_path / "contacts.csv")
+    assert_same_columns(r.sensors, tmp_path / "sensors.csv")
+    assert {"sun_angle_rad", "te_rad"} <= set(r.state) and "sun__planet_0_force_N" in r.contacts
+
+
+def test_the_gil_is_released_while_the_world_steps():
+    ticks = []
+    stop = threading.Event()
+
+    def count():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    thread = threading.Thread(target=count)
+    thread.start()
+    start = time.perf_counter()
+    try:
+        gearsim.run(spur(), duration=0.5)  # ~0.7 s of stepping
+    finally:
+        stop.set()
+        thread.join()
+    during = [t for t in ticks if t > start + 0.1]
+    assert len(during) > 50  # a thread that could not run would not tick while the run steps
