@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "app/commands.hpp"
+#include "app/modes_analysis.hpp"
 #include "app/modes_outputs.hpp"
 #include "core/errors.hpp"
 #include "input/scenario_file.hpp"
@@ -29,15 +30,6 @@ struct ModesOptions {
   int pictured = 6;
   double max_speed_rad_s = std::numeric_limits<double>::infinity();
 };
-
-std::optional<std::pair<std::string, int>> parse_drive(const std::string& text) {
-  if (text.empty()) return std::nullopt;
-  const auto eq = text.rfind('=');
-  const std::string sense = eq == std::string::npos ? "" : text.substr(eq + 1);
-  if (eq == std::string::npos || eq == 0 || (sense != "ccw" && sense != "cw"))
-    throw InputError("--drive: expected BODY=ccw or BODY=cw (the gear whose torque drives the train, and its sense about +z), got '" + text + "'");
-  return std::make_pair(text.substr(0, eq), sense == "ccw" ? 1 : -1);
-}
 
 void print_table(const linear::LumpedModel& m, const linear::ModalAnalysis& a, const linear::Campbell& c) {
   std::cout << "drive: " << m.drive << "\n" << m.dofs() << " coordinates, " << a.free_coordinates << " free\n";
@@ -66,13 +58,10 @@ void print_table(const linear::LumpedModel& m, const linear::ModalAnalysis& a, c
 
 void modes(const ModesOptions& o) {
   const physics::Scenario s = input::load_scenario(o.scenario, o.sets);
-  const physics::World world(s);
-  linear::ModelOptions mo;
-  mo.drive = parse_drive(o.drive);
-  mo.phases_per_pitch = o.phases;
-  const linear::LumpedModel model = linear::build_lumped_model(world, s, mo);
-  const linear::ModalAnalysis a = linear::solve_modes(model);
-  const linear::Campbell c = linear::campbell(model, world.structure(), a, o.harmonics, o.max_speed_rad_s);
+  const ModesResult r = analyse_modes(s, ModesSettings{o.drive, o.harmonics, o.phases, o.max_speed_rad_s});
+  const linear::LumpedModel& model = r.model;
+  const linear::ModalAnalysis& a = r.modes;
+  const linear::Campbell& c = r.campbell;
   const nlohmann::json j = modes_json(s.name, model, a, c);
   if (o.json_only) std::cout << j.dump(2) << "\n";
   else print_table(model, a, c);

@@ -1,0 +1,170 @@
+#include "python/py_run.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+#include "app/run_scenario.hpp"
+#include "core/errors.hpp"
+#include "input/csv_table.hpp"
+#include "python/py_json.hpp"
+#include "python/py_scenario.hpp"
+
+namespace gearsim::python {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A private folder under the system's temporary directory, removed with everything in it when
+// the run is done (or failed).
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "gearsim-py-XXXXXX").string();
+    if (!mkdtemp(pattern.data())) throw std::runtime_error("gearsim: cannot create a temporary folder in " + pattern);
+    path_ = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+// A CSV log as {column: numpy float64 array}; the CSV holds %.17g, so every value is the double
+// the run computed. Empty when the file does not exist.
+py::dict read_columns(const fs::path& file) {
+  py::dict columns;
+  if (!fs::exists(file)) return columns;
+  const input::CsvTable table = input::read_csv(file);
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    const std::vector<double>& v = table.data[c];
+    py::array_t<double> a(static_cast<py::ssize_t>(v.size()));
+    if (!v.empty()) std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(double));
+    columns[py::str(table.columns[c])] = a;
+  }
+  return columns;
+}
+
+// What Python's signal handlers raised during the run (KeyboardInterrupt for Ctrl-C), held
+// until simulate returns; released with the GIL held.
+struct PendingError {
+  PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
+  bool set() const { return type != nullptr; }
+  void raise() {
+    PyErr_Restore(type, value, trace);
+    type = value = trace = nullptr;
+    throw py::error_already_set();
+  }
+  ~PendingError() {
+    Py_XDECREF(type);
+    Py_XDECREF(value);
+    Py_XDECREF(trace);
+  }
+};
+
+// The options simulate polls: every kPollSteps steps the GIL is taken to run Python's signal
+// handlers; an exception they raise stops the run (as SIGINT) and is kept in `pending`.
+sim::SimOptions poll_options(PendingError& pending, bool progress, const std::string& name) {
+  sim::SimOptions o;
+  o.stop_requested = [&pending, calls = 0L]() mutable {
+    if (pending.set()) return SIGINT;
+    if (++calls % kPollSteps != 0) return 0;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() == 0) return 0;
+    PyErr_Fetch(&pending.type, &pending.value, &pending.trace);
+    return SIGINT;
+  };
+  if (progress)
+    o.progress = [name, last = -1](long i, long total, double t) mutable {
+      const int percent = static_cast<int>(100 * i / total);
+      if (percent == last) return;
+      last = percent;
+      py::gil_scoped_acquire gil;
+      py::print("\r  " + name + ": " + std::to_string(percent) + "% (t = " + std::to_string(t) + " s)",
+                py::arg("end") = percent == 100 ? "\n" : "", py::arg("file") = py::module_::import("sys").attr("stderr"),
+                py::arg("flush") = true);
+    };
+  return o;
+}
+
+}  // namespace
+
+PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double> duration_s, bool progress) {
+  physics::Scenario s = scenario.scenario;
+  if (duration_s) app::set_duration(s, *duration_s);
+  std::optional<TempDir> temp;
+  const fs::path dir = out.is_none() ? temp.emplace().path()
+                                     : fs::path(py::module_::import("os").attr("fspath")(out).cast<std::string>());
+  app::prepare_run_dir(dir);
+  PendingError pending;
+  const sim::SimOptions options = poll_options(pending, progress, s.name);
+  app::DirRun r;
+  {
+    py::gil_scoped_release released;
+    r = app::run_into_dir(s, app::RunSource{scenario.file, scenario.overrides}, dir, options);
+  }
+  if (pending.set()) pending.raise();
+  PyRunResult result;
+  result.state = read_columns(dir / "state.csv");
+  result.contacts = read_columns(dir / "contacts.csv");
+  result.sensors = read_columns(dir / "sensors.csv");
+  result.summary = to_python(r.summary).cast<py::dict>();
+  result.out = out.is_none() ? py::object(py::none()) : py::object(py::str(dir.string()));
+  return result;
+}
+
+}  // namespace gearsim::python
+
+namespace gearsim::python {
+namespace {
+
+constexpr const char* kRunDoc = R"(Run a scenario headless, as `gearsim run` does, and return a RunResult.
+
+The run goes through the CLI's own code (the same observers write the same files): with
+out="DIR" the folder gets state.csv, contacts.csv, sensors.csv (with sensors), steps.h5 (with
+output.per_step_log), scenario.json, gearset.yaml and summary.json, byte for byte what
+`gearsim run SCENARIO --out DIR` writes (a previous run's outputs there are removed first); it is
+not analysed (call gearsim.analyze(DIR)). With out=None the files are written to a private
+temporary folder, read back and the folder removed. The arrays are read back from the CSV
+files, which hold every value with 17 significant digits: they are, bit for bit, the doubles the
+run computed and the CLI writes.
+
+duration: simulated seconds in place of the scenario's duration_s (the CLI's --duration).
+progress: print a progress line on stderr.
+
+A run that leaves its physical bounds returns normally with summary["status"] == "diverged"
+and summary["divergence"]. Ctrl-C (SIGINT) stops the run between two steps, writes every log up
+to that step (summary.json: status "interrupted") and raises KeyboardInterrupt. The GIL is
+released while the run steps. gearsim.InputError for a scenario the world refuses.)";
+
+}  // namespace
+
+void bind_run(py::module_& m) {
+  py::class_<PyRunResult>(m, "RunResult", "The logs of a run as numpy arrays and its summary.")
+      .def_readonly("state", &PyRunResult::state, "state.csv: {column: numpy float64 array} (time_s, <body>_angle_rad, te_rad, …).")
+      .def_readonly("contacts", &PyRunResult::contacts,
+                    "contacts.csv: {column: numpy float64 array} (time_s, <a>__<b>_force_N anti-aliased, _force_point_N, …).")
+      .def_readonly("sensors", &PyRunResult::sensors, "sensors.csv as {column: array}; empty without sensors.")
+      .def_readonly("summary", &PyRunResult::summary, "summary.json as a dict (status, sim_seconds, steps, bodies, gear_pairs, …).")
+      .def_readonly("out", &PyRunResult::out, "The run folder, or None when the files were temporary.")
+      .def("__repr__", [](const PyRunResult& r) {
+        return "<gearsim.RunResult " + py::str(r.summary["status"]).cast<std::string>() + ", " +
+               py::str(r.summary["sim_seconds"]).cast<std::string>() + " s, " + std::to_string(py::len(r.state)) +
+               " state and " + std::to_string(py::len(r.contacts)) + " contact columns>";
+      });
+  m.def("run", &run, py::arg("scenario"), py::arg("out") = py::none(), py::arg("duration") = py::none(),
+        py::arg("progress") = false, kRunDoc);
+}
+
+}  // namespace gearsim::python
