@@ -8,6 +8,11 @@
 
 namespace gearsim {
 
+double planet_pass_hann(double delta_rad, double width_rad) {
+  const double delta = std::remainder(delta_rad, 2 * std::numbers::pi);
+  return std::abs(delta) < width_rad / 2 ? 0.5 * (1 + std::cos(2 * std::numbers::pi * delta / width_rad)) : 0.0;
+}
+
 namespace {
 // Means from sums, the coverage, and unseen bins interpolated.
 void finish_average(PlanetSeparatedAverage& a);
@@ -28,8 +33,7 @@ PlanetSeparatedAverage planet_separated_average(const std::vector<double>& x, co
   a.weight.assign(static_cast<std::size_t>(n), 0.0);
   bool inside = false;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const double delta = std::remainder(position[i] - sensor, kTurn);
-    const double w = std::abs(delta) < width / 2 ? 0.5 * (1 + std::cos(kTurn * delta / width)) : 0.0;
+    const double w = planet_pass_hann(position[i] - sensor, width);
     if (w > 0 && !inside) a.passes += 1;
     inside = w > 0;
     if (w == 0) continue;
@@ -82,8 +86,7 @@ PlanetSeparatedAverage sun_separated_average(const std::vector<double>& x, const
   for (std::size_t p = 0; p < position.size(); ++p) {
     bool inside = false;
     for (std::size_t i = 0; i < x.size(); ++i) {
-      const double delta = std::remainder(position[p][i] - sensor, kTurn);
-      const double w = std::abs(delta) < width / 2 ? 0.5 * (1 + std::cos(kTurn * delta / width)) : 0.0;
+      const double w = planet_pass_hann(position[p][i] - sensor, width);
       if (w > 0 && !inside) a.passes += 1;
       inside = w > 0;
       if (w == 0) continue;

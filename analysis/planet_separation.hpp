@@ -12,6 +12,11 @@
 
 namespace gearsim {
 
+// The Hann window of full width `width_rad` about 0, at the angle `delta_rad` (wrapped to
+// (−π, π]): 1 at 0, 0 beyond ±width/2. The planet-pass window of the sensor model and of the
+// separation.
+double planet_pass_hann(double delta_rad, double width_rad);
+
 struct PlanetSeparatedAverage {
   int samples_per_revolution = 0;
   // Per grid angle j·2π/samples_per_revolution of the planet's turn; bins the windows never

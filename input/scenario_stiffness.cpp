@@ -53,6 +53,15 @@ std::pair<double, double> active_flank(const GearSpec& a, const GearSpec& b, dou
   return {std::min(start, da.tip_radius_m), std::max(start, da.tip_radius_m)};
 }
 
+// Refuses (naming `gears`) an entry whose names match no gear body.
+void require_gear_names(const YamlMap& m, const std::vector<std::string>& names, const physics::Scenario& s) {
+  for (const std::string& name : names) {
+    bool any = false;
+    for (const physics::BodyDef& b : s.bodies) any = any || (toothed(b) && matches(name, b.name));
+    if (!any) m.fail("gears", "no gear body named '" + name + "' (or '" + name + "_<n>')");
+  }
+}
+
 contact::StiffnessTable read_table(const YamlMap& m, const fs::path& dir) {
   contact::StiffnessTable t;
   const fs::path file = resolve(dir, m.string("file"));
@@ -97,11 +106,7 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
         m.fail("body_stiffness_N_per_m", "expected a stiffness > 0 in N/m (omit the key for rigid gear bodies)");
     }
     m.reject_unknown_keys();
-    for (int side = 0; side < 2; ++side) {
-      bool any = false;
-      for (const physics::BodyDef& b : s.bodies) any = any || (toothed(b) && matches(names[side], b.name));
-      if (!any) m.fail("gears", "no gear body named '" + names[side] + "' (or '" + names[side] + "_<n>')");
-    }
+    require_gear_names(m, names, s);
     int pairs = 0;
     for (const physics::BodyDef& a : s.bodies)
       for (const physics::BodyDef& b : s.bodies) {
@@ -142,11 +147,7 @@ void parse_mesh_stiffnesses(const std::vector<YamlMap>& entries, physics::Scenar
     const double k = positive(m, "stiffness_N_per_m", "mesh stiffness in N/m");
     if (!std::isfinite(k)) m.fail("stiffness_N_per_m", "expected a finite mesh stiffness in N/m");
     m.reject_unknown_keys();
-    for (int side = 0; side < 2; ++side) {
-      bool any = false;
-      for (const physics::BodyDef& b : s.bodies) any = any || (toothed(b) && matches(names[side], b.name));
-      if (!any) m.fail("gears", "no gear body named '" + names[side] + "' (or '" + names[side] + "_<n>')");
-    }
+    require_gear_names(m, names, s);
     int pairs = 0;
     for (const physics::BodyDef& a : s.bodies)
       for (const physics::BodyDef& b : s.bodies) {

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "analysis/decimation_filter.hpp"
+#include "analysis/planet_separation.hpp"
 #include "core/errors.hpp"
 
 namespace gearsim::sim {
@@ -19,9 +20,7 @@ long steps_per_sample(const physics::Scenario& s) {
 
 double planet_pass_window(const Eigen::Vector2d& point, const Eigen::Vector2d& centre, double sensor_angle_rad, double width_rad) {
   const Eigen::Vector2d r = point - centre;
-  const double delta = std::remainder(std::atan2(r.y(), r.x()) - sensor_angle_rad, 2 * std::numbers::pi);
-  if (std::abs(delta) >= width_rad / 2) return 0.0;
-  return 0.5 * (1 + std::cos(2 * std::numbers::pi * delta / width_rad));
+  return planet_pass_hann(std::atan2(r.y(), r.x()) - sensor_angle_rad, width_rad);
 }
 
 SensorLog::SensorLog(const std::filesystem::path& dir, const physics::Scenario& s)
