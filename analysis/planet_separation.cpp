@@ -16,6 +16,26 @@ double planet_pass_hann(double delta_rad, double width_rad) {
 namespace {
 // Means from sums, the coverage, and unseen bins interpolated.
 void finish_average(PlanetSeparatedAverage& a);
+
+// The samples taken while a planet at `position` passes the sensor, weighted by its window and
+// summed into the grid bin of `turn` (the turn the average is taken over); passes counted.
+void add_passes(PlanetSeparatedAverage& a, const std::vector<double>& x, const std::vector<double>& position,
+                const std::vector<double>& turn, double sensor, double width) {
+  constexpr double kTurn = 2 * std::numbers::pi;
+  const auto n = static_cast<std::size_t>(a.samples_per_revolution);
+  bool inside = false;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double w = planet_pass_hann(position[i] - sensor, width);
+    if (w > 0 && !inside) a.passes += 1;
+    inside = w > 0;
+    if (w == 0) continue;
+    double t = std::fmod(turn[i], kTurn);
+    if (t < 0) t += kTurn;
+    const auto j = static_cast<std::size_t>(std::lround(t / kTurn * static_cast<double>(n))) % n;
+    a.mean[j] += w * x[i];
+    a.weight[j] += w;
+  }
+}
 }  // namespace
 
 PlanetSeparatedAverage planet_separated_average(const std::vector<double>& x, const std::vector<double>& position,
@@ -31,19 +51,7 @@ PlanetSeparatedAverage planet_separated_average(const std::vector<double>& x, co
   a.samples_per_revolution = n;
   a.mean.assign(static_cast<std::size_t>(n), 0.0);
   a.weight.assign(static_cast<std::size_t>(n), 0.0);
-  bool inside = false;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double w = planet_pass_hann(position[i] - sensor, width);
-    if (w > 0 && !inside) a.passes += 1;
-    inside = w > 0;
-    if (w == 0) continue;
-    // The grid bin of the planet's turn (nearest), in [0, n).
-    double turn = std::fmod(spin[i], kTurn);
-    if (turn < 0) turn += kTurn;
-    const auto j = static_cast<std::size_t>(std::lround(turn / kTurn * n)) % static_cast<std::size_t>(n);
-    a.mean[j] += w * x[i];
-    a.weight[j] += w;
-  }
+  add_passes(a, x, position, spin, sensor, width);
   if (a.passes == 0) throw InputError("planet separation: the planet never passes the sensor in this record");
   finish_average(a);
   return a;
@@ -83,19 +91,11 @@ PlanetSeparatedAverage sun_separated_average(const std::vector<double>& x, const
   a.samples_per_revolution = n;
   a.mean.assign(static_cast<std::size_t>(n), 0.0);
   a.weight.assign(static_cast<std::size_t>(n), 0.0);
+  std::vector<double> turn(x.size());
   for (std::size_t p = 0; p < position.size(); ++p) {
-    bool inside = false;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const double w = planet_pass_hann(position[p][i] - sensor, width);
-      if (w > 0 && !inside) a.passes += 1;
-      inside = w > 0;
-      if (w == 0) continue;
-      double turn = std::fmod(sun[i] - offset[p], kTurn);
-      if (turn < 0) turn += kTurn;
-      const auto j = static_cast<std::size_t>(std::lround(turn / kTurn * n)) % static_cast<std::size_t>(n);
-      a.mean[j] += w * x[i];
-      a.weight[j] += w;
-    }
+    // The sun tooth that meets planet p: the sun's turn relative to the carrier less p's place.
+    for (std::size_t i = 0; i < x.size(); ++i) turn[i] = sun[i] - offset[p];
+    add_passes(a, x, position[p], turn, sensor, width);
   }
   if (a.passes == 0) throw InputError("sun separation: no planet passes the sensor in this record");
   finish_average(a);

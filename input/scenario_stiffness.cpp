@@ -62,6 +62,27 @@ void require_gear_names(const YamlMap& m, const std::vector<std::string>& names,
   }
 }
 
+// The body pairs an entry's `gears: [A, B]` names that can mesh (A's body first, its centre
+// distance d); refused naming `gears` when a name matches no gear body or no pair meshes.
+struct NamedPair {
+  const physics::BodyDef* a;
+  const physics::BodyDef* b;
+  double distance_m;
+};
+std::vector<NamedPair> meshing_pairs(const YamlMap& m, const std::vector<std::string>& names, const physics::Scenario& s) {
+  require_gear_names(m, names, s);
+  std::vector<NamedPair> out;
+  for (const physics::BodyDef& a : s.bodies)
+    for (const physics::BodyDef& b : s.bodies) {
+      if (&a == &b || !toothed(a) || !toothed(b) || !matches(names[0], a.name) || !matches(names[1], b.name)) continue;
+      const double d = (a.pose.position_m - b.pose.position_m).head<2>().norm();
+      if (a.gear && b.gear && !can_reach(*a.gear, *b.gear, d)) continue;
+      out.push_back({&a, &b, d});
+    }
+  if (out.empty()) m.fail("gears", "gears '" + names[0] + "' and '" + names[1] + "' do not mesh anywhere in this scenario");
+  return out;
+}
+
 contact::StiffnessTable read_table(const YamlMap& m, const fs::path& dir) {
   contact::StiffnessTable t;
   const fs::path file = resolve(dir, m.string("file"));
@@ -106,35 +127,28 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
         m.fail("body_stiffness_N_per_m", "expected a stiffness > 0 in N/m (omit the key for rigid gear bodies)");
     }
     m.reject_unknown_keys();
-    require_gear_names(m, names, s);
-    int pairs = 0;
-    for (const physics::BodyDef& a : s.bodies)
-      for (const physics::BodyDef& b : s.bodies) {
-        if (&a == &b || !toothed(a) || !toothed(b) || !matches(names[0], a.name) || !matches(names[1], b.name)) continue;
-        const bool generated = a.gear && b.gear;
-        const double d = (a.pose.position_m - b.pose.position_m).head<2>().norm();
-        if (generated && !can_reach(*a.gear, *b.gear, d)) continue;
-        const auto key = a.name < b.name ? std::make_pair(a.name, b.name) : std::make_pair(b.name, a.name);
-        if (const auto [it, fresh] = taken.emplace(key, table.source); !fresh)
-          m.fail("gears", "gears '" + a.name + "' and '" + b.name + "' already have a stiffness table (" + it->second + ")");
-        if (generated) {
-          // The table must span the active flank on a (contacts outside it are counted in the run).
-          const auto at = std::make_tuple(a.gear->name, b.gear->name, std::llround(d * 1e9));
-          if (!flanks.count(at)) try {
-              flanks[at] = active_flank(*a.gear, *b.gear, d);
-            } catch (const InputError& e) {
-              m.fail("gears", "'" + a.name + "' and '" + b.name + "': " + e.what());
-            }
-          const std::pair<double, double> flank = flanks.at(at);
-          if (table.radius_m.front() > flank.first + kCoverageSlack_m || table.radius_m.back() < flank.second - kCoverageSlack_m)
-            m.fail("file", table.source + " covers radii " + mm(table.radius_m.front()) + "–" + mm(table.radius_m.back()) +
-                               " mm on '" + a.name + "', but its active flank meshing '" + b.name + "' spans " +
-                               mm(flank.first) + "–" + mm(flank.second) + " mm (start of active profile to tip)");
-        }
-        s.contact.stiffness_tables.push_back({a.name, b.name, table, body});
-        ++pairs;
+    for (const auto& [pa, pb, d] : meshing_pairs(m, names, s)) {
+      const physics::BodyDef &a = *pa, &b = *pb;
+      const bool generated = a.gear && b.gear;
+      const auto key = a.name < b.name ? std::make_pair(a.name, b.name) : std::make_pair(b.name, a.name);
+      if (const auto [it, fresh] = taken.emplace(key, table.source); !fresh)
+        m.fail("gears", "gears '" + a.name + "' and '" + b.name + "' already have a stiffness table (" + it->second + ")");
+      if (generated) {
+        // The table must span the active flank on a (contacts outside it are counted in the run).
+        const auto at = std::make_tuple(a.gear->name, b.gear->name, std::llround(d * 1e9));
+        if (!flanks.count(at)) try {
+            flanks[at] = active_flank(*a.gear, *b.gear, d);
+          } catch (const InputError& e) {
+            m.fail("gears", "'" + a.name + "' and '" + b.name + "': " + e.what());
+          }
+        const std::pair<double, double> flank = flanks.at(at);
+        if (table.radius_m.front() > flank.first + kCoverageSlack_m || table.radius_m.back() < flank.second - kCoverageSlack_m)
+          m.fail("file", table.source + " covers radii " + mm(table.radius_m.front()) + "–" + mm(table.radius_m.back()) +
+                             " mm on '" + a.name + "', but its active flank meshing '" + b.name + "' spans " +
+                             mm(flank.first) + "–" + mm(flank.second) + " mm (start of active profile to tip)");
       }
-    if (pairs == 0) m.fail("gears", "gears '" + names[0] + "' and '" + names[1] + "' do not mesh anywhere in this scenario");
+      s.contact.stiffness_tables.push_back({a.name, b.name, table, body});
+    }
   }
 }
 
@@ -147,19 +161,11 @@ void parse_mesh_stiffnesses(const std::vector<YamlMap>& entries, physics::Scenar
     const double k = positive(m, "stiffness_N_per_m", "mesh stiffness in N/m");
     if (!std::isfinite(k)) m.fail("stiffness_N_per_m", "expected a finite mesh stiffness in N/m");
     m.reject_unknown_keys();
-    require_gear_names(m, names, s);
-    int pairs = 0;
-    for (const physics::BodyDef& a : s.bodies)
-      for (const physics::BodyDef& b : s.bodies) {
-        if (&a == &b || !toothed(a) || !toothed(b) || !matches(names[0], a.name) || !matches(names[1], b.name)) continue;
-        const double d = (a.pose.position_m - b.pose.position_m).head<2>().norm();
-        if (a.gear && b.gear && !can_reach(*a.gear, *b.gear, d)) continue;
-        if (const auto [it, fresh] = taken.emplace(std::minmax(a.name, b.name), "a mesh stiffness"); !fresh)
-          m.fail("gears", "gears '" + a.name + "' and '" + b.name + "' already have " + it->second);
-        s.contact.mesh_stiffnesses.push_back({a.name, b.name, k});
-        ++pairs;
-      }
-    if (pairs == 0) m.fail("gears", "gears '" + names[0] + "' and '" + names[1] + "' do not mesh anywhere in this scenario");
+    for (const auto& [a, b, d] : meshing_pairs(m, names, s)) {
+      if (const auto [it, fresh] = taken.emplace(std::minmax(a->name, b->name), "a mesh stiffness"); !fresh)
+        m.fail("gears", "gears '" + a->name + "' and '" + b->name + "' already have " + it->second);
+      s.contact.mesh_stiffnesses.push_back({a->name, b->name, k});
+    }
   }
 }
 

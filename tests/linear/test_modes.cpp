@@ -15,6 +15,7 @@
 #include "linear/modes.hpp"
 #include "physics/world.hpp"
 #include "tests/support/asset_scenario.hpp"
+#include "tests/support/mcad_planetary.hpp"
 
 namespace gearsim {
 namespace test_modes {
@@ -167,20 +168,8 @@ namespace test_modes {
 // — split by the meshes' own asymmetry (centres of mass microns off their axes, facets), by less
 // than 0.1 %, and reported split rather than merged.
 TEST(CadPlanetary, McadSetHasRotationalModesAndTranslationalNearPairs) {
-  const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
-  const std::filesystem::path file = test::fresh_test_dir() / "mcad_planetary.yaml";
-  std::ofstream(file) << "name: mcad_planetary\nduration_s: 0.03\n"
-                         "solver: {time_step_s: 1.0e-5, iterations: 50}\n"
-                         "output: {sample_rate_hz: 2000, per_step_log: false}\n"
-                         "planetary:\n"
-                         "  sun: {density_kg_m3: 7850, mesh: {file: " << data << "mcad_m1_z12_a20_f5_b005.stl, unit: mm}}\n"
-                         "  planet: {density_kg_m3: 7850, mesh: {file: " << data << "mcad_m1_z18_a20_f5_b005.stl, unit: mm}}\n"
-                         "  ring: {density_kg_m3: 7850, mesh: {file: " << data << "mcadring_m1_z48_a20_f5_b005.stl, unit: mm}}\n"
-                         "  planets: 3\n"
-                         "  carrier: {mass_kg: 0.1, inertia_z_kg_m2: 5.0e-5}\n"
-                         "  supports: {sun: {radial_stiffness_N_per_m: 1.0e7}, planets: {radial_stiffness_N_per_m: 5.0e7}}\n"
-                         "motors: [{joint: sun, target_speed_rad_s: 20, ramp_time_s: 0.01, max_torque_N_m: 5}]\n"
-                         "loads: [{joint: carrier, constant_torque_N_m: -1, ramp_time_s: 0.01}]\n";
+  const std::filesystem::path file = test::mcad_planetary_file(
+      test::fresh_test_dir(), 1.0, "{sun: {radial_stiffness_N_per_m: 1.0e7}, planets: {radial_stiffness_N_per_m: 5.0e7}}");
   const Solved s = solve(file);
   int rotational = 0, translational = 0;
   for (std::size_t i = 0; i < s.modes.modes.size(); ++i) {

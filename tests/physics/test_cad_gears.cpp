@@ -14,6 +14,7 @@
 #include "sim/run_bounds.hpp"
 #include "physics/world.hpp"
 #include "tests/support/asset_scenario.hpp"
+#include "tests/support/mcad_planetary.hpp"
 
 namespace gearsim::physics {
 namespace test_cad_gears {
@@ -124,20 +125,8 @@ TEST(CadGears, McadRingFromThePairMacroTurnsWithItsPinionAndCarriesTheLoad) {
 // planets sit 15 mm out at 0°, 120°, 240°, the ratio is Willis' 1 + 48/12, and the sun–planet
 // meshes carry the sun's torque T_c/5 between them (F·r_b,sun summed over the planets).
 TEST(CadGears, McadPlanetarySetFromMeshesCarriesTheSunTorqueOverItsPlanets) {
-  const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
-  const fs::path file = test::fresh_test_dir() / "planetary.yaml";
   const double carrier_load_N_m = 1.0;
-  std::ofstream(file) << "name: mcad_planetary\nduration_s: 0.03\n"
-                         "solver: {time_step_s: 1.0e-5, iterations: 50}\n"
-                         "output: {sample_rate_hz: 2000, per_step_log: false}\n"
-                         "planetary:\n"
-                         "  sun: {density_kg_m3: 7850, mesh: {file: " << data << "mcad_m1_z12_a20_f5_b005.stl, unit: mm}}\n"
-                         "  planet: {density_kg_m3: 7850, mesh: {file: " << data << "mcad_m1_z18_a20_f5_b005.stl, unit: mm}}\n"
-                         "  ring: {density_kg_m3: 7850, mesh: {file: " << data << "mcadring_m1_z48_a20_f5_b005.stl, unit: mm}}\n"
-                         "  planets: 3\n"
-                         "  carrier: {mass_kg: 0.1, inertia_z_kg_m2: 5.0e-5}\n"
-                         "motors: [{joint: sun, target_speed_rad_s: 20, ramp_time_s: 0.01, max_torque_N_m: 5}]\n"
-                         "loads: [{joint: carrier, constant_torque_N_m: " << -carrier_load_N_m << ", ramp_time_s: 0.01}]\n";
+  const fs::path file = test::mcad_planetary_file(test::fresh_test_dir(), carrier_load_N_m);
   const Scenario s = input::load_scenario(file, {});
   ASSERT_TRUE(s.transmission);
   EXPECT_NEAR(s.transmission->ratio, 5.0, 1e-12);
