@@ -124,6 +124,9 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     const YamlMap m = top.map("solver");
     s.solver.time_step_s = number_within_or(m, "time_step_s", s.solver.time_step_s, limits::kTimeStep_s);
     s.solver.iterations = integer_within_or(m, "iterations", s.solver.iterations, limits::kSolverIterations);
+    s.solver.engine = m.choice_or("engine", {"rigid_bodies", "multibody"}, physics::engine_name(s.solver.engine)) == "multibody"
+                          ? physics::SolverEngine::multibody
+                          : physics::SolverEngine::rigid_bodies;
     m.reject_unknown_keys();
   }
   if (given(top, "output")) {

@@ -303,6 +303,11 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
   s.seed = r.at("seed").get<std::uint64_t>();
   const Node solver = r.object("solver"), output = r.object("output");
   s.solver = {solver.number_within("time_step_s", limits::kTimeStep_s), solver.integer("iterations", limits::kSolverIterations)};
+  if (solver.has("engine")) {  // records written before the multibody engine have none: rigid bodies
+    const std::string e = solver.string("engine");
+    if (e != "rigid_bodies" && e != "multibody") solver.fail("engine", "expected rigid_bodies or multibody");
+    s.solver.engine = e == "multibody" ? physics::SolverEngine::multibody : physics::SolverEngine::rigid_bodies;
+  }
   s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
   if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");
   s.contact = contact_of(r.object("contact"));

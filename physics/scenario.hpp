@@ -188,10 +188,20 @@ struct ContactDef {
   bool coherent_search = true;
 };
 
+// How Bullet advances the bodies. `rigid_bodies`: each body a btRigidBody, joints, bearings,
+// motors and tooth contacts rows of the sequential-impulse solver (`iterations` sweeps).
+// `multibody`: the joint tree in reduced coordinates (btMultiBody, Featherstone), joints exact by
+// construction; tooth contacts (with friction), bearing springs and motors rows of one direct
+// (Dantzig) solve per step, exact whatever `iterations` says (physics/world_multibody.cpp).
+enum class SolverEngine { rigid_bodies, multibody };
+
 struct SolverDef {
   double time_step_s = 2e-5;
   int iterations = 50;
+  SolverEngine engine = SolverEngine::rigid_bodies;
 };
+
+inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }
 
 struct OutputDef {
   double sample_rate_hz = 2000;  // state.csv and contacts.csv rate

@@ -67,7 +67,8 @@ World::Impl::~Impl() {
     world.removeConstraint(j.constraint);
     delete j.constraint;
   }
-  for (PairRec& p : pairs) dispatcher.releaseManifold(p.manifold);
+  for (PairRec& p : pairs)
+    if (p.manifold) dispatcher.releaseManifold(p.manifold);
   for (BuiltBody& b : bodies)
     if (b.rigid && b.rigid->getBroadphaseHandle()) world.removeRigidBody(b.rigid.get());
 }
@@ -93,6 +94,7 @@ World::World(const Scenario& s) : impl_(std::make_unique<Impl>()) {
   m.attach_drives();
   m.find_pairs();
   m.check_start();
+  if (s.solver.engine == SolverEngine::multibody) m.build_multibody();
   m.measure();
 }
 
@@ -113,9 +115,12 @@ void World::Impl::add_bodies() {
       }
     const bool gear = b.flanks != nullptr;
     const bool shapeless = b.shape->getShapeType() == EMPTY_SHAPE_PROXYTYPE;
+    states.push_back({def.name, 0, 0, Eigen::Vector3d::Zero()});
+    // The multibody engine keeps the rigid bodies out of Bullet's world: they only carry the
+    // poses and velocities its tree computes, for measuring and rendering.
+    if (scenario.solver.engine == SolverEngine::multibody) continue;
     if (shapeless) world.addRigidBody(b.rigid.get(), kShapelessGroup, 0);
     else world.addRigidBody(b.rigid.get(), gear ? kGearGroup : kOtherGroup, gear ? kOtherGroup : (kGearGroup | kOtherGroup));
-    states.push_back({def.name, 0, 0, Eigen::Vector3d::Zero()});
   }
 }
 
@@ -135,6 +140,7 @@ void World::Impl::add_joints() {
     j.axis_world = jd.axis.normalized();
     joints.push_back(j);
     JointRec& jr = joints.back();
+    if (scenario.solver.engine == SolverEngine::multibody) continue;  // joints of the tree (world_multibody.cpp)
     make_constraint(jr, *bodies[jr.body].rigid, jr.parent >= 0 ? bodies[jr.parent].rigid.get() : nullptr);
     jr.constraint->setJointFeedback(&jr.feedback);
     world.addConstraint(jr.constraint, true);
@@ -163,8 +169,10 @@ void World::Impl::find_pairs() {
       // The external gear first, so that tooth_a is always the external one's.
       pr.a = static_cast<int>(ga.flanks->internal() ? b : a);
       pr.b = static_cast<int>(ga.flanks->internal() ? a : b);
-      pr.manifold = dispatcher.getNewManifold(bodies[pr.a].rigid.get(), bodies[pr.b].rigid.get());
-      pr.manifold->setContactProcessingThreshold(BT_LARGE_FLOAT);
+      if (scenario.solver.engine == SolverEngine::rigid_bodies) {
+        pr.manifold = dispatcher.getNewManifold(bodies[pr.a].rigid.get(), bodies[pr.b].rigid.get());
+        pr.manifold->setContactProcessingThreshold(BT_LARGE_FLOAT);
+      }
       pr.info = pair_contact(bodies[pr.a], bodies[pr.b], scenario.contact);
       pr.stiffness.pair_stiffness_N_per_m = pr.info.stiffness_N_per_m;
       pr.stiffness.face_width_m = pr.info.face_width_m;

@@ -4,6 +4,10 @@
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigLCP.h>
+
+#include <Eigen/Dense>
 
 #include <chrono>
 #include <map>
@@ -67,6 +71,42 @@ struct PairRec {
   contact::CoherentToothSearch search;  // the pair's flank records (contact.coherent_search)
 };
 
+// The `multibody` engine (world_multibody.cpp): the joint tree as one btMultiBody on a fixed base
+// (reduced coordinates, Featherstone), and per step one direct solve of every row that is not a
+// joint: tooth contacts (normal, friction), bearing springs, torsional springs, motors.
+struct MultibodyRow {
+  enum Kind { contact_normal, contact_friction, bearing, torsion, motor } kind = contact_normal;
+  int owner = -1;       // contact_*: index into World::Impl::contacts; the others: joint index
+  double cfm = 0;       // compliance of the implicit spring–damper, (N·s)⁻¹·… per unit impulse
+  double target = 0;    // right-hand side before the predicted velocity is taken off
+  double lo = 0, hi = 0;
+  int friction_of = -1;  // contact_friction: the row of its normal (bounds ±μ times its impulse)
+};
+
+struct MultibodyEngine {
+  std::unique_ptr<btMultiBody> tree;
+  int dofs = 0;                       // joint coordinates, without the fixed base's six
+  std::vector<int> link_of_body;      // per body: its link, −1 for the ground and fixed bodies
+  std::vector<int> dof_of_joint;      // per joint: index of its spin coordinate among the dofs
+  std::vector<btVector3> pivot_in_body, pivot_in_parent;  // per joint: bearing centre in the body's and the parent's frame (world for the ground)
+  std::vector<double> motor_torque_N_m;                   // per joint, last step
+  std::vector<MultibodyRow> rows;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jac;  // rows × dofs
+  Eigen::MatrixXd inverse_mass;                                                // dofs × dofs
+  Eigen::MatrixXd minv_jt;                                                     // dofs × rows
+  std::vector<double> a, b, x, w, lo, hi;
+  std::vector<int> findex;
+  btDantzigScratchMemory dantzig;
+  std::vector<double> buf, out;  // 6 + dofs
+  btAlignedObjectArray<btScalar> scratch_r;
+  btAlignedObjectArray<btVector3> scratch_v;
+  btAlignedObjectArray<btMatrix3x3> scratch_m;
+  btAlignedObjectArray<btQuaternion> world_to_local;
+  btAlignedObjectArray<btVector3> local_origin;
+  std::vector<btVector3> omega, vel;
+  long failed_solves = 0;
+};
+
 struct World::Impl {
   Scenario scenario;
   btDefaultCollisionConfiguration config;
@@ -89,6 +129,7 @@ struct World::Impl {
   long table_misses = 0;
   World::Profile profile;
   PowerFlows power;
+  std::unique_ptr<MultibodyEngine> mb;  // solver.engine multibody
 
   // Takes constraints, manifolds and bodies out of Bullet's world before its members go: also
   // when World's constructor throws half way (then ~World never runs, but ~Impl does).
@@ -101,13 +142,22 @@ struct World::Impl {
   void find_pairs();
   void check_start();
   // Stepping (world_step.cpp).
+  void build_multibody();
   void generate_contacts();
   void pair_stiffnesses(PairRec& pr);
   void add_manifold_points(PairRec& pr, double z);
+  double contact_damping(const PairRec& pr, double k) const;
   void apply_motors_and_loads();
   void apply_impulses();
-  void measure();
+  void measure();  // joints (from the bodies' transforms), then contacts of the rigid-body engine
+  void measure_joints();
+  void measure_contacts();
   void measure_power();
+  double kinetic_energy_J() const;
+  void step_multibody();
+  void multibody_rows();
+  void solve_multibody_rows();
+  void multibody_results();
 };
 
 // Gear-frame pose projected on the common plane (the gear axes must be parallel to world z).

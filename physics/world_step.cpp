@@ -21,17 +21,20 @@ void World::Impl::generate_contacts() {
     std::vector<contact::ToothContact>& found = pr.found;
     if (scenario.contact.coherent_search) pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
     else contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
-    if (static_cast<int>(found.size()) > kMaxPointsPerPair) {
+    // A manifold holds kMaxPointsPerPair points; the multibody engine's rows have no such limit.
+    if (pr.manifold && static_cast<int>(found.size()) > kMaxPointsPerPair) {
       std::sort(found.begin(), found.end(), [](const contact::ToothContact& x, const contact::ToothContact& y) { return x.depth_m > y.depth_m; });
       dropped_points += static_cast<long>(found.size()) - kMaxPointsPerPair;
       found.resize(kMaxPointsPerPair);
     }
-    pr.manifold->clearManifold();
-    const double z = 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
-                            (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     pr.current.clear();
     pr.current_stiffness_N_per_m.clear();
     pair_stiffnesses(pr);
+    for (const contact::ToothContact& c : found) max_penetration = std::max(max_penetration, c.depth_m);
+    if (!pr.manifold) continue;  // the multibody engine makes its rows from pr.found itself
+    pr.manifold->clearManifold();
+    const double z = 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
+                            (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     add_manifold_points(pr, z);
   }
   profile.tooth_contact_s += seconds_since(start);
@@ -49,7 +52,6 @@ void World::Impl::add_manifold_points(PairRec& pr, double z) {
   const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
   for (std::size_t i = 0; i < pr.found.size(); ++i) {
     const contact::ToothContact& c = pr.found[i];
-    max_penetration = std::max(max_penetration, c.depth_m);
     if (!pr.active[i]) continue;
     const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
     const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
@@ -62,15 +64,8 @@ void World::Impl::add_manifold_points(PairRec& pr, double z) {
     pt.m_combinedRestitution = 0;
     pt.m_contactPointFlags |= BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
     const double k = pr.pair_stiffness[i];
-    // A constant mesh stiffness has a constant mesh damping too (ζ of the whole mesh), shared alike.
-    const double damping = pr.stiffness.mesh_stiffness_N_per_m > 0
-                               ? contact_damping_N_s_per_m(pr.stiffness.mesh_stiffness_N_per_m, pr.info.reduced_mass_kg, scenario.contact.damping_ratio) *
-                                     (k / pr.stiffness.mesh_stiffness_N_per_m)
-                           : pr.stiffness.table || pr.stiffness.body_stiffness_N_per_m > 0
-                               ? contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, scenario.contact.damping_ratio)
-                               : pr.info.damping_N_s_per_m;
     pt.m_combinedContactStiffness1 = k;
-    pt.m_combinedContactDamping1 = damping;
+    pt.m_combinedContactDamping1 = contact_damping(pr, k);
     const auto key = std::make_tuple(c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a));
     for (const auto& [k_last, impulse] : pr.last_impulse)
       if (k_last == key) pt.m_appliedImpulse = impulse;
@@ -79,6 +74,17 @@ void World::Impl::add_manifold_points(PairRec& pr, double z) {
     pr.current.push_back(c);
     pr.current_stiffness_N_per_m.push_back(k);
   }
+}
+
+// Damping of a tooth-pair contact of stiffness k (N/m) in pair pr, N·s/m.
+double World::Impl::contact_damping(const PairRec& pr, double k) const {
+  // A constant mesh stiffness has a constant mesh damping too (ζ of the whole mesh), shared alike.
+  return pr.stiffness.mesh_stiffness_N_per_m > 0
+             ? contact_damping_N_s_per_m(pr.stiffness.mesh_stiffness_N_per_m, pr.info.reduced_mass_kg, scenario.contact.damping_ratio) *
+                   (k / pr.stiffness.mesh_stiffness_N_per_m)
+         : pr.stiffness.table || pr.stiffness.body_stiffness_N_per_m > 0
+             ? contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, scenario.contact.damping_ratio)
+             : pr.info.damping_N_s_per_m;
 }
 
 void World::Impl::apply_motors_and_loads() {
@@ -115,6 +121,12 @@ void World::Impl::apply_impulses() {
 }
 
 void World::Impl::measure() {
+  measure_joints();
+  if (mb) return;  // step_multibody measured its rows
+  measure_contacts();
+}
+
+void World::Impl::measure_joints() {
   // Joint angles: the body's gear-frame x axis against the parent's, about the joint axis.
   for (JointRec& j : joints) {
     const BuiltBody& b = bodies[j.body];
@@ -140,6 +152,9 @@ void World::Impl::measure() {
   }
   for (std::size_t i = 0; i < bodies.size(); ++i)
     states[i].position_m = eig((bodies[i].rigid->getWorldTransform() * bodies[i].com_from_gear).getOrigin());
+}
+
+void World::Impl::measure_contacts() {
   contacts.clear();
   const double dt = scenario.solver.time_step_s;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
@@ -166,6 +181,11 @@ void World::Impl::measure() {
 void World::step() {
   Impl& m = *impl_;
   const auto start = WorldClock::now();
+  if (m.mb) {
+    m.step_multibody();
+    m.profile.step_total_s += seconds_since(start);
+    return;
+  }
   m.apply_motors_and_loads();
   m.apply_impulses();
   m.world.stepSimulation(m.scenario.solver.time_step_s, 0, m.scenario.solver.time_step_s);
@@ -181,16 +201,22 @@ const PowerFlows& World::power() const { return impl_->power; }
 long World::dropped_contacts() const { return impl_->dropped_points; }
 long World::stiffness_table_misses() const { return impl_->table_misses; }
 
-void World::Impl::measure_power() {
-  const double dt = scenario.solver.time_step_s;
-  PowerFlows pw;
+double World::Impl::kinetic_energy_J() const {
+  double kinetic = 0;
   for (const BuiltBody& b : bodies) {
     const btRigidBody& r = *b.rigid;
     if (r.getInvMass() == 0) continue;
     const btVector3 v = r.getLinearVelocity(), w = r.getAngularVelocity();
     const btMatrix3x3 inertia = r.getInvInertiaTensorWorld().inverse();
-    pw.kinetic_J += 0.5 * v.dot(v) / r.getInvMass() + 0.5 * w.dot(inertia * w);
+    kinetic += 0.5 * v.dot(v) / r.getInvMass() + 0.5 * w.dot(inertia * w);
   }
+  return kinetic;
+}
+
+void World::Impl::measure_power() {
+  const double dt = scenario.solver.time_step_s;
+  PowerFlows pw;
+  pw.kinetic_J = kinetic_energy_J();
   for (const JointRec& j : joints) {
     const btRigidBody& a = j.constraint->getRigidBodyA();
     const btRigidBody& b = j.constraint->getRigidBodyB();
@@ -234,6 +260,7 @@ double World::max_penetration_m() const { return impl_->max_penetration; }
 double World::motor_torque_N_m(const std::string& joint) const {
   for (const JointRec& j : impl_->joints)
     if (j.def.name == joint) {
+      if (impl_->mb) return impl_->mb->motor_torque_N_m[static_cast<std::size_t>(&j - impl_->joints.data())];
       // The joint's own body is Bullet's body A of a hinge and body B of a bearing constraint.
       const btVector3& t = j.hinge ? j.feedback.m_appliedTorqueBodyA : j.feedback.m_appliedTorqueBodyB;
       return eig(t).dot(j.axis_world);

@@ -1,0 +1,370 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "physics/world_impl.hpp"
+
+// The `multibody` engine (solver.engine: multibody). The joints form a tree: every body that is
+// neither fixed nor free turns in one joint about its parent (the ground, a fixed body, or
+// another body). Bullet's btMultiBody holds that tree in reduced coordinates (Featherstone's
+// articulated-body algorithm): a rigid hinge is one coordinate, a bearing a planar joint (spin
+// and two translations). Joints are then exact by construction: nothing to iterate.
+//
+// Everything else that acts between bodies is one row of a small system solved directly each
+// step (Bullet's Dantzig LCP solver, the one its MLCP solvers use), with row Jacobians J and the
+// inverse mass matrix M⁻¹ from the btMultiBody:
+//   tooth contact, normal    unilateral implicit spring–damper (k, c): impulse λ ≥ 0 with
+//                            λ/h = k·δ⁺ + c·δ̇⁺ at the end of the step (δ⁺ = δ − h·J·v⁺)
+//   tooth contact, friction  in-plane tangent, sticking unless |λ_t| would exceed μ·λ_n
+//   bearing, radial          two bilateral implicit springs (k_r, c_r) on the bearing centre's
+//                            displacement from its housing
+//   bearing, torsional       one on the spin coordinate, about its start angle
+//   motor                    the spin coordinate's speed equals the target, |torque| ≤ limit
+// (J·M⁻¹·Jᵀ + Γ)·λ = b + w with Γ = diag(1/(h·(h·k + c))) for the springs: the same implicit
+// spring–damper Bullet's rigid-body solver makes of a contact's stiffness and damping (ERP and
+// CFM), here solved exactly, whatever solver.iterations says.
+namespace gearsim::physics {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+btVector3 unit_perpendicular(const btVector3& a) {
+  const btVector3 t = std::abs(a.x()) < 0.9 ? btVector3(1, 0, 0) : btVector3(0, 1, 0);
+  return (t - a * t.dot(a)).normalized();
+}
+
+}  // namespace
+
+void World::Impl::build_multibody() {
+  mb = std::make_unique<MultibodyEngine>();
+  MultibodyEngine& e = *mb;
+  const std::string who = "scenario: solver.engine multibody: ";
+  std::vector<int> joint_of(bodies.size(), -1);
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const int b = joints[j].body;
+    if (joint_of[static_cast<std::size_t>(b)] >= 0)
+      throw InputError(who + "body '" + bodies[static_cast<std::size_t>(b)].name + "' turns in two joints (the joints must form a tree)");
+    if (bodies[static_cast<std::size_t>(b)].fixed)
+      throw InputError(who + "joint '" + joints[j].def.name + "' turns the fixed body '" + bodies[static_cast<std::size_t>(b)].name + "'");
+    joint_of[static_cast<std::size_t>(b)] = static_cast<int>(j);
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const BuiltBody& b = bodies[i];
+    if (!b.fixed && joint_of[i] < 0)
+      throw InputError(who + "body '" + b.name + "' has no joint; a free body needs solver.engine rigid_bodies");
+    if (!b.flanks && b.shape->getShapeType() != EMPTY_SHAPE_PROXYTYPE)
+      throw InputError(who + "body '" + b.name + "' has a shape but no teeth; bodies touch only through tooth contact in this engine (solver.engine rigid_bodies collides shapes)");
+  }
+  // Links in an order where every parent comes before its children.
+  e.link_of_body.assign(bodies.size(), -1);
+  std::vector<int> order;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (bodies[i].fixed || e.link_of_body[i] >= 0) continue;
+      const int p = joints[static_cast<std::size_t>(joint_of[i])].parent;
+      if (p >= 0 && !bodies[static_cast<std::size_t>(p)].fixed && e.link_of_body[static_cast<std::size_t>(p)] < 0) continue;
+      e.link_of_body[i] = static_cast<int>(order.size());
+      order.push_back(static_cast<int>(i));
+      grew = true;
+    }
+  }
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (!bodies[i].fixed && e.link_of_body[i] < 0)
+      throw InputError(who + "body '" + bodies[i].name + "' is in a loop of joints (the joints must form a tree)");
+
+  e.tree = std::make_unique<btMultiBody>(static_cast<int>(order.size()), 0, btVector3(0, 0, 0), true, false);
+  e.dof_of_joint.assign(joints.size(), -1);
+  e.pivot_in_body.assign(joints.size(), btVector3(0, 0, 0));
+  e.pivot_in_parent.assign(joints.size(), btVector3(0, 0, 0));
+  e.motor_torque_N_m.assign(joints.size(), 0);
+  for (std::size_t l = 0; l < order.size(); ++l) {
+    const std::size_t i = static_cast<std::size_t>(order[l]);
+    const BuiltBody& b = bodies[i];
+    const std::size_t j = static_cast<std::size_t>(joint_of[i]);
+    const JointRec& jr = joints[j];
+    const bool on_body = jr.parent >= 0 && !bodies[static_cast<std::size_t>(jr.parent)].fixed;
+    const int parent_link = on_body ? e.link_of_body[static_cast<std::size_t>(jr.parent)] : -1;
+    // Link frames are the bodies' centre-of-mass principal frames at t = 0; the base is the world.
+    const btTransform ti = b.rigid->getWorldTransform();
+    const btTransform tp = on_body ? bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() : btTransform::getIdentity();
+    const btQuaternion parent_to_this = ti.getRotation().inverse() * tp.getRotation();
+    const btVector3 inv = b.rigid->getInvInertiaDiagLocal();
+    if (!(inv.x() > 0 && inv.y() > 0 && inv.z() > 0 && b.mass_kg > 0))
+      throw InputError(who + "body '" + b.name + "' needs a positive mass and principal moments of inertia");
+    const btVector3 inertia(1 / inv.x(), 1 / inv.y(), 1 / inv.z());
+    const btVector3 pivot = bt(jr.def.pivot_m);
+    const btVector3 axis_here = quatRotate(ti.getRotation().inverse(), bt(jr.axis_world));
+    if (jr.def.bearing)
+      e.tree->setupPlanar(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(ti.getOrigin()), false);
+    else
+      e.tree->setupRevolute(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(pivot),
+                            quatRotate(ti.getRotation().inverse(), ti.getOrigin() - pivot), false);
+    e.pivot_in_body[j] = ti.invXform(pivot);
+    e.pivot_in_parent[j] = tp.invXform(pivot);
+  }
+  btMultiBody& t = *e.tree;
+  t.finalizeMultiDof();
+  t.setLinearDamping(0);
+  t.setAngularDamping(0);
+  t.setMaxCoordinateVelocity(std::numeric_limits<double>::max());
+  t.setCanSleep(false);
+  t.setUseGyroTerm(true);
+  t.setHasSelfCollision(false);
+  for (std::size_t l = 0; l < order.size(); ++l)
+    e.dof_of_joint[static_cast<std::size_t>(joint_of[static_cast<std::size_t>(order[l])])] = t.getLink(static_cast<int>(l)).m_dofOffset;
+  e.dofs = t.getNumDofs();
+  e.buf.assign(static_cast<std::size_t>(6 + e.dofs), 0);
+  e.out.assign(static_cast<std::size_t>(6 + e.dofs), 0);
+  e.omega.assign(order.size() + 1, btVector3(0, 0, 0));
+  e.vel.assign(order.size() + 1, btVector3(0, 0, 0));
+  e.inverse_mass.resize(e.dofs, e.dofs);
+  // The tree at q = 0 reproduces the bodies' poses.
+  t.forwardKinematics(e.world_to_local, e.local_origin);
+  for (std::size_t l = 0; l < order.size(); ++l) {
+    const btTransform& tl = t.getLink(static_cast<int>(l)).m_cachedWorldTransform;
+    const btTransform& tb = bodies[static_cast<std::size_t>(order[l])].rigid->getWorldTransform();
+    GEARSIM_CHECK((tl.getOrigin() - tb.getOrigin()).length() < 1e-12 && (tl.getBasis().getColumn(0) - tb.getBasis().getColumn(0)).length() < 1e-12,
+                  "a multibody link must start at its body's pose");
+  }
+}
+
+void World::Impl::step_multibody() {
+  MultibodyEngine& e = *mb;
+  btMultiBody& t = *e.tree;
+  const double h = scenario.solver.time_step_s;
+  generate_contacts();
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const JointRec& jr = joints[j];
+    if (!jr.load) continue;
+    const int link = e.link_of_body[static_cast<std::size_t>(jr.body)];
+    t.addJointTorqueMultiDof(link, 0, load_torque_N_m(*jr.load, time, states[static_cast<std::size_t>(jr.body)].speed_rad_s));
+  }
+  for (const ImpulseDef& i : scenario.impulses) {
+    const double share = impulse_shape(i, time);
+    const int link = e.link_of_body[static_cast<std::size_t>(body_index.at(i.body))];
+    if (share == 0 || link < 0) continue;
+    t.addLinkForce(link, bt(i.force_N * share));
+    t.addLinkTorque(link, bt(i.torque_N_m * share));
+  }
+  // Velocities after the external and gyroscopic forces alone.
+  t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
+  multibody_rows();
+  solve_multibody_rows();
+  t.stepPositionsMultiDof(h);
+  t.clearForcesAndTorques();
+  // The links' poses and velocities onto the rigid bodies, which measuring and rendering read.
+  t.forwardKinematics(e.world_to_local, e.local_origin);
+  t.compTreeLinkVelocities(e.omega.data(), e.vel.data());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const int l = e.link_of_body[i];
+    if (l < 0) continue;
+    const btTransform& tl = t.getLink(l).m_cachedWorldTransform;
+    btRigidBody& r = *bodies[i].rigid;
+    r.setCenterOfMassTransform(tl);
+    r.updateInertiaTensor();
+    r.setAngularVelocity(tl.getBasis() * e.omega[static_cast<std::size_t>(l) + 1]);
+    r.setLinearVelocity(tl.getBasis() * e.vel[static_cast<std::size_t>(l) + 1]);
+  }
+  time += h;
+  ++steps;
+  measure_joints();
+  multibody_results();
+}
+
+// The rows of this step: their Jacobians (e.jac), compliances, targets and bounds.
+void World::Impl::multibody_rows() {
+  MultibodyEngine& e = *mb;
+  btMultiBody& t = *e.tree;
+  const double h = scenario.solver.time_step_s;
+  const int dofs = e.dofs;
+  e.rows.clear();
+  contacts.clear();
+  std::vector<double> jrows;  // grown row by row, then copied into e.jac
+  jrows.reserve(64 * static_cast<std::size_t>(dofs));
+  // J of the velocity of `point` (world) on the body of link `link`, along `dir`, added × sign.
+  auto add_point = [&](std::size_t row, int link, const btVector3& point, const btVector3& dir, double sign) {
+    if (link < 0) return;
+    t.fillContactJacobianMultiDof(link, point, dir, e.buf.data(), e.scratch_r, e.scratch_v, e.scratch_m);
+    for (int k = 0; k < dofs; ++k) jrows[row * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(k)] += sign * e.buf[static_cast<std::size_t>(6 + k)];
+  };
+  auto new_row = [&](const MultibodyRow& r) {
+    e.rows.push_back(r);
+    jrows.resize(e.rows.size() * static_cast<std::size_t>(dofs), 0.0);
+    return e.rows.size() - 1;
+  };
+  const double mu = scenario.contact.friction;
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    const PairRec& pr = pairs[p];
+    const BuiltBody &a = bodies[static_cast<std::size_t>(pr.a)], &b = bodies[static_cast<std::size_t>(pr.b)];
+    const int la = mb->link_of_body[static_cast<std::size_t>(pr.a)], lb = mb->link_of_body[static_cast<std::size_t>(pr.b)];
+    const double z = 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
+                            (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
+    for (std::size_t i = 0; i < pr.found.size(); ++i) {
+      if (!pr.active[i]) continue;
+      const contact::ToothContact& c = pr.found[i];
+      ContactSample cs;
+      cs.pair = static_cast<int>(p);
+      cs.geometry = c;
+      cs.stiffness_N_per_m = pr.pair_stiffness[i];
+      contacts.push_back(cs);
+      const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
+      const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
+      const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
+      const double k = cs.stiffness_N_per_m, damping = contact_damping(pr, k), spring = h * k + damping;
+      MultibodyRow r;
+      r.kind = MultibodyRow::contact_normal;
+      r.owner = static_cast<int>(contacts.size() - 1);
+      r.cfm = 1 / (h * spring);
+      r.target = k * c.depth_m / spring;
+      r.lo = 0;
+      r.hi = kInfinity;
+      const std::size_t normal = new_row(r);
+      add_point(normal, la, on_a, n, 1);
+      add_point(normal, lb, on_b, n, -1);
+      if (mu <= 0) continue;
+      const btVector3 tangent(-n.y(), n.x(), 0);
+      MultibodyRow f;
+      f.kind = MultibodyRow::contact_friction;
+      f.owner = r.owner;
+      f.lo = -mu;
+      f.hi = mu;
+      f.friction_of = static_cast<int>(normal);
+      const std::size_t fr = new_row(f);
+      add_point(fr, la, on_a, tangent, 1);
+      add_point(fr, lb, on_b, tangent, -1);
+    }
+  }
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const JointRec& jr = joints[j];
+    const int link = e.link_of_body[static_cast<std::size_t>(jr.body)];
+    const int dof = e.dof_of_joint[j];
+    if (jr.def.bearing) {
+      const BearingDef& bd = *jr.def.bearing;
+      const bool on_body = jr.parent >= 0 && e.link_of_body[static_cast<std::size_t>(jr.parent)] >= 0;
+      const int parent_link = on_body ? e.link_of_body[static_cast<std::size_t>(jr.parent)] : -1;
+      const btVector3 centre = bodies[static_cast<std::size_t>(jr.body)].rigid->getWorldTransform() * e.pivot_in_body[j];
+      const btVector3 housing = on_body ? bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() * e.pivot_in_parent[j] : e.pivot_in_parent[j];
+      const btVector3 axis = bt(jr.axis_world);
+      const btVector3 e1 = unit_perpendicular(axis), e2 = axis.cross(e1);
+      const double spring = h * bd.radial_stiffness_N_per_m + bd.radial_damping_N_s_per_m;
+      for (const btVector3& d : {e1, e2}) {
+        if (!(spring > 0)) break;
+        MultibodyRow r;
+        r.kind = MultibodyRow::bearing;
+        r.owner = static_cast<int>(j);
+        r.cfm = 1 / (h * spring);
+        r.target = -bd.radial_stiffness_N_per_m * (centre - housing).dot(d) / spring;
+        r.lo = -kInfinity;
+        r.hi = kInfinity;
+        const std::size_t row = new_row(r);
+        add_point(row, link, centre, d, 1);
+        add_point(row, parent_link, housing, d, -1);
+      }
+      const double torsion = h * bd.torsional_stiffness_N_m_per_rad + bd.torsional_damping_N_m_s_per_rad;
+      if (torsion > 0) {
+        MultibodyRow r;
+        r.kind = MultibodyRow::torsion;
+        r.owner = static_cast<int>(j);
+        r.cfm = 1 / (h * torsion);
+        r.target = -bd.torsional_stiffness_N_m_per_rad * e.tree->getJointPosMultiDof(link)[0] / torsion;
+        r.lo = -kInfinity;
+        r.hi = kInfinity;
+        jrows[new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;
+      }
+    }
+    if (jr.motor) {
+      const double ramp = jr.motor->ramp_time_s > 0 ? std::min(1.0, time / jr.motor->ramp_time_s) : 1.0;
+      MultibodyRow r;
+      r.kind = MultibodyRow::motor;
+      r.owner = static_cast<int>(j);
+      r.target = jr.motor->target_speed_rad_s * ramp;
+      r.lo = -jr.motor->max_torque_N_m * h;
+      r.hi = jr.motor->max_torque_N_m * h;
+      jrows[new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;
+    }
+  }
+  e.jac = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(jrows.data(), static_cast<Eigen::Index>(e.rows.size()), dofs);
+}
+
+// λ from (J·M⁻¹·Jᵀ + Γ)·λ = target − J·v* + w (Dantzig), then v⁺ = v* + M⁻¹·Jᵀ·λ.
+void World::Impl::solve_multibody_rows() {
+  MultibodyEngine& e = *mb;
+  btMultiBody& t = *e.tree;
+  const int n = static_cast<int>(e.rows.size()), dofs = e.dofs;
+  e.x.assign(static_cast<std::size_t>(n), 0);
+  if (n == 0) return;
+  // M⁻¹, column by column, from the articulated-body inertias of this step.
+  for (int k = 0; k < dofs; ++k) {
+    std::fill(e.buf.begin(), e.buf.end(), 0.0);
+    e.buf[static_cast<std::size_t>(6 + k)] = 1;
+    t.calcAccelerationDeltasMultiDof(e.buf.data(), e.out.data(), e.scratch_r, e.scratch_v);
+    for (int r = 0; r < dofs; ++r) e.inverse_mass(r, k) = e.out[static_cast<std::size_t>(6 + r)];
+  }
+  e.minv_jt.noalias() = e.inverse_mass * e.jac.transpose();
+  const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs);
+  const Eigen::VectorXd j_v = e.jac * v_pred;
+  e.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(e.a.data(), n, n);
+  a.noalias() = e.jac * e.minv_jt;
+  e.b.resize(static_cast<std::size_t>(n));
+  e.w.assign(static_cast<std::size_t>(n), 0);
+  e.lo.resize(static_cast<std::size_t>(n));
+  e.hi.resize(static_cast<std::size_t>(n));
+  e.findex.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
+    a(i, i) += r.cfm;
+    e.b[static_cast<std::size_t>(i)] = r.target - j_v(i);
+    e.lo[static_cast<std::size_t>(i)] = r.lo;
+    e.hi[static_cast<std::size_t>(i)] = r.hi;
+    e.findex[static_cast<std::size_t>(i)] = r.friction_of;
+  }
+  if (!btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig))
+    ++e.failed_solves;
+  const Eigen::Map<const Eigen::VectorXd> lambda(e.x.data(), n);
+  std::fill(e.buf.begin(), e.buf.end(), 0.0);
+  Eigen::Map<Eigen::VectorXd>(e.buf.data() + 6, dofs).noalias() = e.minv_jt * lambda;
+  t.applyDeltaVeeMultiDof(e.buf.data(), 1);
+}
+
+// Forces, motor torques and power flows of the step just taken (velocities after it).
+void World::Impl::multibody_results() {
+  MultibodyEngine& e = *mb;
+  const double h = scenario.solver.time_step_s;
+  const Eigen::Map<const Eigen::VectorXd> v(e.tree->getVelocityVector() + 6, e.dofs);
+  PowerFlows pw;
+  std::fill(e.motor_torque_N_m.begin(), e.motor_torque_N_m.end(), 0.0);
+  for (std::size_t r = 0; r < e.rows.size(); ++r) {
+    const MultibodyRow& row = e.rows[r];
+    const double force = e.x[r] / h, rate = e.jac.row(static_cast<Eigen::Index>(r)).dot(v);
+    switch (row.kind) {
+      case MultibodyRow::contact_normal:
+        contacts[static_cast<std::size_t>(row.owner)].normal_force_N = force;
+        pw.contact_W += force * rate;
+        break;
+      case MultibodyRow::contact_friction:
+        contacts[static_cast<std::size_t>(row.owner)].friction_force_N = std::abs(force);
+        pw.contact_W += force * rate;
+        break;
+      case MultibodyRow::bearing:
+      case MultibodyRow::torsion:
+        pw.joint_W += force * rate;
+        break;
+      case MultibodyRow::motor:
+        e.motor_torque_N_m[static_cast<std::size_t>(row.owner)] = force;
+        pw.motor_W += force * rate;
+        break;
+    }
+  }
+  for (const JointRec& j : joints)
+    if (j.load) {
+      const double speed = states[static_cast<std::size_t>(j.body)].speed_rad_s;
+      pw.load_W += load_torque_N_m(*j.load, time - h, speed) * speed;
+    }
+  pw.kinetic_J = kinetic_energy_J();
+  power = pw;
+}
+
+}  // namespace gearsim::physics
