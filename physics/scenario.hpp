@@ -198,7 +198,7 @@ enum class SolverEngine { rigid_bodies, multibody };
 struct SolverDef {
   double time_step_s = 2e-5;
   int iterations = 50;
-  SolverEngine engine = SolverEngine::rigid_bodies;
+  SolverEngine engine = SolverEngine::multibody;
 };
 
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }

@@ -122,6 +122,9 @@ class World {
   // Contacts since construction whose radius lay outside their pair's stiffness table: they took
   // the nearest end row's value. Counted, reported in the run summary, never silent.
   long stiffness_table_misses() const;
+  // Steps since construction whose direct row solve (solver.engine multibody) found no solution;
+  // always 0 for rigid_bodies. A run stops at the first (sim/run_bounds.hpp).
+  long failed_solves() const;
 
   // Bodies, joints and meshing pairs as built (call before the first step for t = 0).
   WorldStructure structure() const;

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 
 #include "core/errors.hpp"
 #include "physics/world_impl.hpp"
@@ -28,6 +29,11 @@ namespace gearsim::physics {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kStiffRow = 1e-8;
+
+// Bullet's Dantzig solver reports failure through one global flag (btDantzigLCP.cpp, s_error):
+// worlds stepped in parallel threads (the Python module releases the GIL) take turns.
+std::mutex dantzig_flag;
 
 btVector3 unit_perpendicular(const btVector3& a) {
   const btVector3 t = std::abs(a.x()) < 0.9 ? btVector3(1, 0, 0) : btVector3(0, 1, 0);
@@ -315,14 +321,22 @@ void World::Impl::solve_multibody_rows() {
   e.findex.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
-    a(i, i) += r.cfm;
+    // Rows without a spring (friction sticking, a motor) get a compliance of kStiffRow times their
+    // own diagonal: the matrix is then positive definite, so the solve exists and is unique even
+    // for dependent rows (several sticking contacts on two one-coordinate gears), while a
+    // sticking contact creeps by 1e-8 of the velocity change its impulse makes.
+    a(i, i) += r.cfm > 0 ? r.cfm : kStiffRow * a(i, i);
     e.b[static_cast<std::size_t>(i)] = r.target - j_v(i);
     e.lo[static_cast<std::size_t>(i)] = r.lo;
     e.hi[static_cast<std::size_t>(i)] = r.hi;
     e.findex[static_cast<std::size_t>(i)] = r.friction_of;
   }
-  if (!btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig))
-    ++e.failed_solves;
+  bool solved = false;
+  {
+    const std::lock_guard<std::mutex> lock(dantzig_flag);
+    solved = btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig);
+  }
+  if (!solved) ++e.failed_solves;
   const Eigen::Map<const Eigen::VectorXd> lambda(e.x.data(), n);
   std::fill(e.buf.begin(), e.buf.end(), 0.0);
   Eigen::Map<Eigen::VectorXd>(e.buf.data() + 6, dofs).noalias() = e.minv_jt * lambda;

@@ -200,6 +200,7 @@ const World::Profile& World::profile() const { return impl_->profile; }
 const PowerFlows& World::power() const { return impl_->power; }
 long World::dropped_contacts() const { return impl_->dropped_points; }
 long World::stiffness_table_misses() const { return impl_->table_misses; }
+long World::failed_solves() const { return impl_->mb ? impl_->mb->failed_solves : 0; }
 
 double World::Impl::kinetic_energy_J() const {
   double kinetic = 0;

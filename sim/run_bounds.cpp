@@ -33,6 +33,8 @@ Divergence RunBounds::at(const physics::World& world, std::string what, std::str
 }
 
 std::optional<Divergence> RunBounds::check(const physics::World& world) {
+  if (world.failed_solves() > 0)
+    return at(world, "solver", "", "the direct solve of the contact, bearing and motor rows found no solution (solver.engine multibody): the rows are contradictory or singular", static_cast<double>(world.failed_solves()), 0);
   if (auto d = check_contacts(world)) return d;
   if (auto d = check_speeds(world)) return d;
   return check_energy(world);

@@ -16,7 +16,7 @@ namespace gearsim::sim {
 
 // Where and why a run left its physical bounds.
 struct Divergence {
-  std::string what;     // "tooth penetration", "dropped contacts", "speed", "motor speed", "energy", "non-finite"
+  std::string what;     // "tooth penetration", "dropped contacts", "speed", "motor speed", "energy", "non-finite", "solver"
   std::string where;    // the gear pair "a/b", body or joint name
   std::string message;  // one sentence with the figures and the likely cause
   double time_s = 0;

@@ -46,24 +46,38 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 // with those two columns dropped hash to the previous value 0x1b03d0f9fe6b203e (every other
 // column, contacts.csv and steps.h5 unchanged bit for bit; the tooth-pair stiffness rule moved to
 // physics/tooth_pair_stiffness.cpp without changing a bit).
+// Since solver.engine multibody became the default this is the rigid-body engine's hash (it runs
+// with --set solver.engine=rigid_bodies, unchanged bit for bit by the multibody engine's arrival).
 constexpr std::uint64_t kGoldenHash = 0x9fc32627fafb85fcull;
+// The default engine's (multibody) hash. First value: the engine's first commit as default.
+constexpr std::uint64_t kGoldenHashMultibody = 0x222341b69e61f6abull;
 
 TEST(RunDeterminism, SameScenarioGivesByteIdenticalLogs) {
   const fs::path a = run_paper("a"), b = run_paper("b");
   EXPECT_EQ(hash_files(a), hash_files(b));
 }
 
-TEST(RunDeterminism, ShortPaperRunMatchesTheCommittedHash) {
-  const std::uint64_t h = hash_files(run_paper("golden"));
+std::string hex_of(std::uint64_t h) {
   char hex[32];
   std::snprintf(hex, sizeof hex, "0x%016llxull", static_cast<unsigned long long>(h));
-  EXPECT_EQ(h, kGoldenHash) << "logs of the short paper run changed; new hash " << hex;
+  return hex;
+}
+
+TEST(RunDeterminism, ShortPaperRunMatchesTheCommittedHash) {
+  const std::uint64_t h = hash_files(run_paper("golden"));
+  EXPECT_EQ(h, kGoldenHashMultibody) << "logs of the short paper run changed; new hash " << hex_of(h);
+}
+
+TEST(RunDeterminism, TheRigidBodyEngineStillGivesItsCommittedHash) {
+  const std::uint64_t h = hash_files(run_paper("golden_rigid", " --set solver.engine=rigid_bodies"));
+  EXPECT_EQ(h, kGoldenHash) << "logs of the short paper run (rigid_bodies) changed; new hash " << hex_of(h);
 }
 
 TEST(RunDeterminism, TheStatelessContactSearchGivesTheSameLogs) {
   // contact.coherent_search (default true) skips and tracks flanks only where that provably
-  // changes nothing: the stateless search gives the same bytes.
-  EXPECT_EQ(hash_files(run_paper("stateless", " --set contact.coherent_search=false")), kGoldenHash);
+  // changes nothing: the stateless search gives the same bytes, with either engine.
+  EXPECT_EQ(hash_files(run_paper("stateless", " --set contact.coherent_search=false")), kGoldenHashMultibody);
+  EXPECT_EQ(hash_files(run_paper("stateless_rigid", " --set contact.coherent_search=false --set solver.engine=rigid_bodies")), kGoldenHash);
 }
 
 }  // namespace test_run_determinism
