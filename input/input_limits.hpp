@@ -41,6 +41,8 @@ constexpr Limit kDuration_s{0, 1e4, true, "s", "a duration"};
 constexpr Limit kTimeStep_s{1e-7, 1e-2, false, "s", "a time step"};
 // Constraint solver iterations per step: 2000× the default 50; each is a sweep over every constraint.
 constexpr Limit kSolverIterations{1, 1e5, false, "", "a number of solver iterations"};
+// θ of the multibody engine's θ-method: below ½ it is unstable for stiff springs, 1 is implicit Euler.
+constexpr Limit kSolverTheta{0.5, 1, false, "", "a θ-method weight"};
 // Motor and load ramps, s: no longer than the longest run (kDuration_s).
 constexpr Limit kRampTime_s{0, 1e4, false, "s", "a ramp time"};
 // Render slow motion: 1000× shows 1 ms of the run as 1 s of video; frames = duration·fps·slowmo.

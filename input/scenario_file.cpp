@@ -127,6 +127,9 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     s.solver.engine = m.choice_or("engine", {"rigid_bodies", "multibody"}, physics::engine_name(s.solver.engine)) == "multibody"
                           ? physics::SolverEngine::multibody
                           : physics::SolverEngine::rigid_bodies;
+    s.solver.theta = number_within_or(m, "theta", s.solver.theta, limits::kSolverTheta);
+    if (s.solver.engine == physics::SolverEngine::rigid_bodies && given(m, "theta"))
+      m.fail("theta", "only engine multibody has the θ-method (rigid_bodies integrates its contacts by implicit Euler)");
     m.reject_unknown_keys();
   }
   if (given(top, "output")) {

@@ -308,6 +308,7 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
     if (e != "rigid_bodies" && e != "multibody") solver.fail("engine", "expected rigid_bodies or multibody");
     s.solver.engine = e == "multibody" ? physics::SolverEngine::multibody : physics::SolverEngine::rigid_bodies;
   }
+  if (solver.has("theta")) s.solver.theta = solver.number_within("theta", limits::kSolverTheta);
   s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
   if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");
   s.contact = contact_of(r.object("contact"));

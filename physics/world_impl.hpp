@@ -81,6 +81,7 @@ struct MultibodyRow {
   double target = 0;    // right-hand side before the predicted velocity is taken off
   double lo = 0, hi = 0;
   int friction_of = -1;  // contact_friction: the row of its normal (bounds ±μ times its impulse)
+  double start_rate_weight = 0;  // trapezoidal spring rows: 1 (the start-of-step rate enters)
 };
 
 struct MultibodyEngine {
@@ -98,6 +99,8 @@ struct MultibodyEngine {
   std::vector<int> findex;
   btDantzigScratchMemory dantzig;
   std::vector<double> buf, out;  // 6 + dofs
+  std::vector<double> v_start, v_end, v_mid;  // joint velocities at the step's start, end, mean
+  double theta = 1;  // spring rows at s + θ·h·ṡ_θ, positions with (1 − θ)·v + θ·v⁺; 1: implicit Euler
   btAlignedObjectArray<btScalar> scratch_r;
   btAlignedObjectArray<btVector3> scratch_v;
   btAlignedObjectArray<btMatrix3x3> scratch_m;
@@ -156,6 +159,7 @@ struct World::Impl {
   double kinetic_energy_J() const;
   void step_multibody();
   void multibody_rows();
+  MultibodyRow spring_row(double k, double c, double force0) const;
   void solve_multibody_rows();
   void multibody_results();
 };

@@ -35,6 +35,10 @@ constexpr double kStiffRow = 1e-8;
 // worlds stepped in parallel threads (the Python module releases the GIL) take turns.
 std::mutex dantzig_flag;
 
+void set_joint_velocities(btMultiBody& t, const std::vector<double>& v) {
+  for (int l = 0; l < t.getNumLinks(); ++l) t.setJointVelMultiDof(l, v.data() + t.getLink(l).m_dofOffset);
+}
+
 btVector3 unit_perpendicular(const btVector3& a) {
   const btVector3 t = std::abs(a.x()) < 0.9 ? btVector3(1, 0, 0) : btVector3(0, 1, 0);
   return (t - a * t.dot(a)).normalized();
@@ -122,6 +126,8 @@ void World::Impl::build_multibody() {
     e.dof_of_joint[static_cast<std::size_t>(joint_of[static_cast<std::size_t>(order[l])])] = t.getLink(static_cast<int>(l)).m_dofOffset;
   e.dofs = t.getNumDofs();
   e.buf.assign(static_cast<std::size_t>(6 + e.dofs), 0);
+  e.v_mid.assign(static_cast<std::size_t>(e.dofs), 0);
+  e.theta = scenario.solver.theta;
   e.out.assign(static_cast<std::size_t>(6 + e.dofs), 0);
   e.omega.assign(order.size() + 1, btVector3(0, 0, 0));
   e.vel.assign(order.size() + 1, btVector3(0, 0, 0));
@@ -154,11 +160,23 @@ void World::Impl::step_multibody() {
     t.addLinkForce(link, bt(i.force_N * share));
     t.addLinkTorque(link, bt(i.torque_N_m * share));
   }
+  e.v_start.assign(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + e.dofs);
   // Velocities after the external and gyroscopic forces alone.
   t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
   multibody_rows();
   solve_multibody_rows();
-  t.stepPositionsMultiDof(h);
+  if (e.theta < 1) {
+    // Positions advance with the θ-weighted mean of the step's start and end velocities, then v⁺ returns.
+    const double* v = t.getVelocityVector() + 6;
+    e.v_end.assign(v, v + e.dofs);
+    for (int k = 0; k < e.dofs; ++k)
+      e.v_mid[static_cast<std::size_t>(k)] = (1 - e.theta) * e.v_start[static_cast<std::size_t>(k)] + e.theta * e.v_end[static_cast<std::size_t>(k)];
+    set_joint_velocities(t, e.v_mid);
+    t.stepPositionsMultiDof(h);
+    set_joint_velocities(t, e.v_end);
+  } else {
+    t.stepPositionsMultiDof(h);
+  }
   t.clearForcesAndTorques();
   // The links' poses and velocities onto the rigid bodies, which measuring and rendering read.
   t.forwardKinematics(e.world_to_local, e.local_origin);
@@ -177,6 +195,23 @@ void World::Impl::step_multibody() {
   ++steps;
   measure_joints();
   multibody_results();
+}
+
+// A spring–damper row (stiffness k, damping c) whose spring force at the start of the step is
+// `force0` (k·δ for a contact, −k·s for a bearing). Implicit Euler: the force at the end of the
+// step, f = force0 − (h·k + c)·ṡ⁺, σ = h·k + c. Trapezoidal: the force at mid-step,
+// f = force0 − σ·(ṡ + ṡ⁺) with σ = h·k/4 + c/2 (ṡ_mid = (ṡ + ṡ⁺)/2, s_mid = s + h/2·ṡ_mid). Either
+// way λ/h = f gives the row (A + 1/(h·σ))·λ = force0/σ − w·ṡ − ṡ*, w = 0 or 1.
+MultibodyRow World::Impl::spring_row(double k, double c, double force0) const {
+  const double h = scenario.solver.time_step_s, theta = mb->theta;
+  const double sigma = theta * (theta * h * k + c);
+  MultibodyRow r;
+  r.cfm = 1 / (h * sigma);
+  r.target = force0 / sigma;
+  r.start_rate_weight = (1 - theta) / theta;
+  r.lo = -kInfinity;
+  r.hi = kInfinity;
+  return r;
 }
 
 // The rows of this step: their Jacobians (e.jac), compliances, targets and bounds.
@@ -218,12 +253,10 @@ void World::Impl::multibody_rows() {
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
       const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
       const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
-      const double k = cs.stiffness_N_per_m, damping = contact_damping(pr, k), spring = h * k + damping;
-      MultibodyRow r;
+      const double k = cs.stiffness_N_per_m;
+      MultibodyRow r = spring_row(k, contact_damping(pr, k), k * c.depth_m);
       r.kind = MultibodyRow::contact_normal;
       r.owner = static_cast<int>(contacts.size() - 1);
-      r.cfm = 1 / (h * spring);
-      r.target = k * c.depth_m / spring;
       r.lo = 0;
       r.hi = kInfinity;
       const std::size_t normal = new_row(r);
@@ -254,27 +287,22 @@ void World::Impl::multibody_rows() {
       const btVector3 housing = on_body ? bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() * e.pivot_in_parent[j] : e.pivot_in_parent[j];
       const btVector3 axis = bt(jr.axis_world);
       const btVector3 e1 = unit_perpendicular(axis), e2 = axis.cross(e1);
-      const double spring = h * bd.radial_stiffness_N_per_m + bd.radial_damping_N_s_per_m;
       for (const btVector3& d : {e1, e2}) {
-        if (!(spring > 0)) break;
-        MultibodyRow r;
+        if (!(bd.radial_stiffness_N_per_m > 0 || bd.radial_damping_N_s_per_m > 0)) break;
+        MultibodyRow r = spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m, -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
         r.kind = MultibodyRow::bearing;
         r.owner = static_cast<int>(j);
-        r.cfm = 1 / (h * spring);
-        r.target = -bd.radial_stiffness_N_per_m * (centre - housing).dot(d) / spring;
         r.lo = -kInfinity;
         r.hi = kInfinity;
         const std::size_t row = new_row(r);
         add_point(row, link, centre, d, 1);
         add_point(row, parent_link, housing, d, -1);
       }
-      const double torsion = h * bd.torsional_stiffness_N_m_per_rad + bd.torsional_damping_N_m_s_per_rad;
-      if (torsion > 0) {
-        MultibodyRow r;
+      if (bd.torsional_stiffness_N_m_per_rad > 0 || bd.torsional_damping_N_m_s_per_rad > 0) {
+        MultibodyRow r = spring_row(bd.torsional_stiffness_N_m_per_rad, bd.torsional_damping_N_m_s_per_rad,
+                                    -bd.torsional_stiffness_N_m_per_rad * e.tree->getJointPosMultiDof(link)[0]);
         r.kind = MultibodyRow::torsion;
         r.owner = static_cast<int>(j);
-        r.cfm = 1 / (h * torsion);
-        r.target = -bd.torsional_stiffness_N_m_per_rad * e.tree->getJointPosMultiDof(link)[0] / torsion;
         r.lo = -kInfinity;
         r.hi = kInfinity;
         jrows[new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;
@@ -309,8 +337,8 @@ void World::Impl::solve_multibody_rows() {
     for (int r = 0; r < dofs; ++r) e.inverse_mass(r, k) = e.out[static_cast<std::size_t>(6 + r)];
   }
   e.minv_jt.noalias() = e.inverse_mass * e.jac.transpose();
-  const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs);
-  const Eigen::VectorXd j_v = e.jac * v_pred;
+  const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs), v_start(e.v_start.data(), dofs);
+  const Eigen::VectorXd j_v = e.jac * v_pred, j_v_start = e.jac * v_start;
   e.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(e.a.data(), n, n);
   a.noalias() = e.jac * e.minv_jt;
@@ -326,7 +354,7 @@ void World::Impl::solve_multibody_rows() {
     // for dependent rows (several sticking contacts on two one-coordinate gears), while a
     // sticking contact creeps by 1e-8 of the velocity change its impulse makes.
     a(i, i) += r.cfm > 0 ? r.cfm : kStiffRow * a(i, i);
-    e.b[static_cast<std::size_t>(i)] = r.target - j_v(i);
+    e.b[static_cast<std::size_t>(i)] = r.target - r.start_rate_weight * j_v_start(i) - j_v(i);
     e.lo[static_cast<std::size_t>(i)] = r.lo;
     e.hi[static_cast<std::size_t>(i)] = r.hi;
     e.findex[static_cast<std::size_t>(i)] = r.friction_of;
