@@ -100,6 +100,9 @@ struct MultibodyEngine {
   btDantzigScratchMemory dantzig;
   std::vector<double> buf, out;  // 6 + dofs
   std::vector<double> v_start, v_end, v_mid;  // joint velocities at the step's start, end, mean
+  bool planar = false;            // every joint axis along z: rows from link_jac (world_multibody.cpp)
+  std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs
+  std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
   double theta = 1;  // spring rows at s + θ·h·ṡ_θ, positions with (1 − θ)·v + θ·v⁺; 1: implicit Euler
   btAlignedObjectArray<btScalar> scratch_r;
   btAlignedObjectArray<btVector3> scratch_v;

@@ -128,6 +128,8 @@ void World::Impl::build_multibody() {
   e.buf.assign(static_cast<std::size_t>(6 + e.dofs), 0);
   e.v_mid.assign(static_cast<std::size_t>(e.dofs), 0);
   e.theta = scenario.solver.theta;
+  e.planar = true;
+  for (const JointRec& jr : joints) e.planar = e.planar && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
   e.out.assign(static_cast<std::size_t>(6 + e.dofs), 0);
   e.omega.assign(order.size() + 1, btVector3(0, 0, 0));
   e.vel.assign(order.size() + 1, btVector3(0, 0, 0));
@@ -222,13 +224,41 @@ void World::Impl::multibody_rows() {
   const int dofs = e.dofs;
   e.rows.clear();
   contacts.clear();
-  std::vector<double> jrows;  // grown row by row, then copied into e.jac
-  jrows.reserve(64 * static_cast<std::size_t>(dofs));
+  std::vector<double>& jrows = e.jrows;  // grown row by row, then copied into e.jac
+  jrows.clear();
+  // A planar tree (every joint axis along z): each link's spin rate and centre velocity as rows
+  // over the coordinates, once per step; a point's velocity along an in-plane direction is then
+  // a combination of the three (v_p = v_c + ω × r), without walking the tree per row.
+  const std::size_t links = static_cast<std::size_t>(t.getNumLinks()), ud = static_cast<std::size_t>(dofs);
+  if (e.planar) {
+    e.link_jac.assign(links * 3 * ud, 0.0);
+    // ω_z as the y velocity of a point 1 m along x from the centre less the centre's (Bullet's
+    // angular Jacobian of a planar joint leaves out the spin: fillConstraintJacobianMultiDof).
+    const btVector3 ex(1, 0, 0), ey(0, 1, 0);
+    for (std::size_t l = 0; l < links; ++l) {
+      const btVector3 centre = t.getLink(static_cast<int>(l)).m_cachedWorldTransform.getOrigin();
+      const btVector3 points[3] = {centre + ex, centre, centre}, dirs[3] = {ey, ex, ey};
+      for (std::size_t c = 0; c < 3; ++c) {
+        t.fillContactJacobianMultiDof(static_cast<int>(l), points[c], dirs[c], e.buf.data(), e.scratch_r, e.scratch_v, e.scratch_m);
+        std::copy(e.buf.begin() + 6, e.buf.end(), e.link_jac.begin() + static_cast<std::ptrdiff_t>((l * 3 + c) * ud));
+      }
+      double* jl = e.link_jac.data() + l * 3 * ud;
+      for (std::size_t k = 0; k < ud; ++k) jl[k] -= jl[2 * ud + k];
+    }
+  }
   // J of the velocity of `point` (world) on the body of link `link`, along `dir`, added × sign.
   auto add_point = [&](std::size_t row, int link, const btVector3& point, const btVector3& dir, double sign) {
     if (link < 0) return;
+    double* out = jrows.data() + row * ud;
+    if (e.planar) {
+      const btVector3 r = point - t.getLink(link).m_cachedWorldTransform.getOrigin();
+      const double* jl = e.link_jac.data() + static_cast<std::size_t>(link) * 3 * ud;
+      const double w = sign * (r.x() * dir.y() - r.y() * dir.x()), wx = sign * dir.x(), wy = sign * dir.y();
+      for (std::size_t k = 0; k < ud; ++k) out[k] += w * jl[k] + wx * jl[ud + k] + wy * jl[2 * ud + k];
+      return;
+    }
     t.fillContactJacobianMultiDof(link, point, dir, e.buf.data(), e.scratch_r, e.scratch_v, e.scratch_m);
-    for (int k = 0; k < dofs; ++k) jrows[row * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(k)] += sign * e.buf[static_cast<std::size_t>(6 + k)];
+    for (std::size_t k = 0; k < ud; ++k) out[k] += sign * e.buf[6 + k];
   };
   auto new_row = [&](const MultibodyRow& r) {
     e.rows.push_back(r);
@@ -375,7 +405,9 @@ void World::Impl::solve_multibody_rows() {
 void World::Impl::multibody_results() {
   MultibodyEngine& e = *mb;
   const double h = scenario.solver.time_step_s;
-  const Eigen::Map<const Eigen::VectorXd> v(e.tree->getVelocityVector() + 6, e.dofs);
+  // Work of a row over the step: its force times its travel, h·J·v_θ (positions moved with v_θ).
+  const Eigen::Map<const Eigen::VectorXd> v_end(e.tree->getVelocityVector() + 6, e.dofs), v_start(e.v_start.data(), e.dofs);
+  const Eigen::VectorXd v = (1 - e.theta) * v_start + e.theta * v_end;
   PowerFlows pw;
   std::fill(e.motor_torque_N_m.begin(), e.motor_torque_N_m.end(), 0.0);
   for (std::size_t r = 0; r < e.rows.size(); ++r) {
