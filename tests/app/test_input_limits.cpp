@@ -72,6 +72,15 @@ TEST(InputLimits, TimeStepAndIterations) {
   EXPECT_REFUSED(kWheel + "solver: {iterations: 2000000}\n", "9:", "solver.iterations: expected a number of solver iterations in [1, 100000]");
 }
 
+TEST(InputLimits, EngineAndTheta) {
+  EXPECT_EQ(error_for(kWheel + "solver: {engine: rigid_bodies}\n"), "");
+  EXPECT_EQ(error_for(kWheel + "solver: {engine: multibody, theta: 0.5}\n"), "");
+  EXPECT_REFUSED(kWheel + "solver: {engine: featherstone}\n", "9:", "solver.engine");
+  EXPECT_REFUSED(kWheel + "solver: {theta: 0.4}\n", "9:", "solver.theta: expected a θ-method weight in [0.5, 1], got 0.4");
+  EXPECT_REFUSED(kWheel + "solver: {theta: 1.5}\n", "9:", "solver.theta: expected a θ-method weight in [0.5, 1]");
+  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, theta: 0.6}\n", "9:", "solver.theta: only engine multibody has the θ-method");
+}
+
 TEST(InputLimits, SampleRateGivesAtLeastOneRowAndAtMostOnePerStep) {
   EXPECT_REFUSED(kWheel + "output: {sample_rate_hz: 1e-300}\n", "9:", "output.sample_rate_hz: expected at least one output row");
   EXPECT_REFUSED(kWheel + "output: {sample_rate_hz: 1e6}\n", "9:", "output.sample_rate_hz: sample rate 1e+06 Hz is above the step rate");
