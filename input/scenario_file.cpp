@@ -130,6 +130,8 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     s.solver.theta = number_within_or(m, "theta", s.solver.theta, limits::kSolverTheta);
     if (s.solver.engine == physics::SolverEngine::rigid_bodies && given(m, "theta"))
       m.fail("theta", "only engine multibody has the θ-method (rigid_bodies integrates its contacts by implicit Euler)");
+    if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
+      m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
     m.reject_unknown_keys();
   }
   if (given(top, "output")) {

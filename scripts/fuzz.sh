@@ -56,7 +56,7 @@ motors:
 loads:
   - {joint: hinge, constant_torque_N_m: -0.1, viscous_N_m_s_per_rad: 0.01}
 transmission: {input_joint: hinge, output_joint: hinge, ratio: 1}
-solver: {time_step_s: 1.0e-5, iterations: 50}
+solver: {time_step_s: 1.0e-5}
 output: {sample_rate_hz: 1000, per_step_log: false}
 render: {camera: overview, fps: 30, slowmo: 2, from_s: 0, to_s: 0.05, width_px: 64, height_px: 64, msaa: 0}
 EOF

@@ -100,7 +100,7 @@ def mesh_yaml(mesh, corpus_dir):
 def scenario_text(pair, a, b, p, corpus_dir):
     head = ['# cad_corpus pair %s (written by run_pairs.py)' % pair['id'],
             'name: %s' % json.dumps(pair['id']), 'duration_s: %r' % p['duration'], 'seed: 0',
-            'solver: {time_step_s: %r, iterations: 50}' % p['dt'],
+            'solver: {time_step_s: %r}' % p['dt'],
             'output: {sample_rate_hz: %r, per_step_log: false}' % float(round(1 / p['dt'])),
             'contact: {stiffness_N_per_m_per_m: %r, damping_ratio: 0.05, friction: 0.05}' % STIFFNESS_PER_FACE]
     ramp = ', ramp_time_s: %r' % p['load_ramp'] if p['load_ramp'] is not None else ''

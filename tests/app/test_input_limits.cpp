@@ -68,8 +68,11 @@ TEST(InputLimits, Duration) {
 TEST(InputLimits, TimeStepAndIterations) {
   EXPECT_REFUSED(kWheel + "solver: {time_step_s: 1e-9}\n", "9:", "solver.time_step_s: expected a time step in [1e-07, 0.01] s, got 1e-09");
   EXPECT_REFUSED(kWheel + "solver: {time_step_s: 0.05}\n", "9:", "solver.time_step_s: expected a time step in [1e-07, 0.01] s, got 0.05");
-  EXPECT_REFUSED(kWheel + "solver: {iterations: 0}\n", "9:", "solver.iterations: expected a number of solver iterations in [1, 100000], got 0");
-  EXPECT_REFUSED(kWheel + "solver: {iterations: 2000000}\n", "9:", "solver.iterations: expected a number of solver iterations in [1, 100000]");
+  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, iterations: 0}\n", "9:", "solver.iterations: expected a number of solver iterations in [1, 100000], got 0");
+  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, iterations: 2000000}\n", "9:", "solver.iterations: expected a number of solver iterations in [1, 100000]");
+  EXPECT_EQ(error_for(kWheel + "solver: {engine: rigid_bodies, iterations: 400}\n"), "");
+  // The default engine has no iteration count: the key would be ignored, so it is refused.
+  EXPECT_REFUSED(kWheel + "solver: {iterations: 50}\n", "9:", "solver.iterations: only engine rigid_bodies iterates");
 }
 
 TEST(InputLimits, EngineAndTheta) {

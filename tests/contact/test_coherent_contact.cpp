@@ -249,7 +249,7 @@ TEST(CoherentToothSearch, CadPairMatchesTheStatelessSearch) {
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
   std::ofstream(dir / "pair.yaml")
       << "name: mcad_pair\nduration_s: 0.01\n"
-         "solver: {time_step_s: 1.0e-5, iterations: 50}\n"
+         "solver: {time_step_s: 1.0e-5}\n"
          "output: {sample_rate_hz: 2000, per_step_log: false}\n"
          "pair:\n"
          "  driver: {name: pinion, mesh: {file: " << data << "mcad_m1_z12_a20_f5_b005.stl, unit: mm, teeth: 12}, "

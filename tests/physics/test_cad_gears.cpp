@@ -37,7 +37,7 @@ fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, dou
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
   std::ofstream f(dir / "pair.yaml");
   f << "name: mcad_pair\nduration_s: 0.03\n"
-       "solver: {time_step_s: 1.0e-5, iterations: 50}\n"
+       "solver: {time_step_s: 1.0e-5}\n"
        "output: {sample_rate_hz: 2000, per_step_log: false}\n"
        "pair:\n"
        "  driver: {name: pinion, mesh: {file: " << data << driver_file << ", unit: " << unit << pinion

@@ -15,7 +15,7 @@ inline std::filesystem::path mcad_planetary_file(const std::filesystem::path& di
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
   const std::filesystem::path file = dir / "mcad_planetary.yaml";
   std::ofstream(file) << "name: mcad_planetary\nduration_s: 0.03\n"
-                         "solver: {time_step_s: 1.0e-5, iterations: 50}\n"
+                         "solver: {time_step_s: 1.0e-5}\n"
                          "output: {sample_rate_hz: 2000, per_step_log: false}\n"
                          "planetary:\n"
                          "  sun: {density_kg_m3: 7850, mesh: {file: " << data << "mcad_m1_z12_a20_f5_b005.stl, unit: mm}}\n"
