@@ -114,6 +114,10 @@ int main(int argc, char** argv) {
               1e6 * cpu / n);
   std::printf("  tooth contact         %8.3f s (%.0f %%, %.1f us per step)\n", contact, 100 * contact / wall, 1e6 * contact / n);
   std::printf("  Bullet + measuring    %8.3f s (%.0f %%, %.1f us per step)\n", bullet, 100 * bullet / wall, 1e6 * bullet / n);
+  if (r.profile.row_solve_s > 0) {
+    const double rows = r.profile.row_solve_s;
+    std::printf("    of it rows + solve  %8.3f s (%.0f %%, %.1f us per step: Jacobians, M⁻¹, Dantzig)\n", rows, 100 * rows / wall, 1e6 * rows / n);
+  }
   std::printf("  bounds, means, logs   %8.3f s (%.0f %%, %.1f us per step)\n", rest, 100 * rest / wall, 1e6 * rest / n);
   if (a.log) std::printf("per-step log            %8.1f MB per simulated second\n", log_bytes / sim_s / 1e6);
   std::printf("peak resident memory    %8.1f MiB\n", static_cast<double>(usage.ru_maxrss) / 1024.0);

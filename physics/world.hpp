@@ -112,6 +112,7 @@ class World {
   // everything else Bullet does (constraint solve, integration) plus measuring.
   struct Profile {
     double tooth_contact_s = 0;
+    double row_solve_s = 0;  // multibody: rows, M⁻¹ and the direct solve (part of the rest)
     double step_total_s = 0;
   };
   const Profile& profile() const;

@@ -165,8 +165,10 @@ void World::Impl::step_multibody() {
   e.v_start.assign(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + e.dofs);
   // Velocities after the external and gyroscopic forces alone.
   t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
+  const auto solve_start = WorldClock::now();
   multibody_rows();
   solve_multibody_rows();
+  profile.row_solve_s += seconds_since(solve_start);
   if (e.theta < 1) {
     // Positions advance with the θ-weighted mean of the step's start and end velocities, then v⁺ returns.
     const double* v = t.getVelocityVector() + 6;
