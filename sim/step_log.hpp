@@ -1,10 +1,12 @@
 // StepLog: the per-step binary log of a run, as HDF5 (readable by h5py, MATLAB, h5dump without
-// our code). /state holds one row per step (time_s, then angle_rad and speed_rad_s of every
-// body); /contacts holds one row per tooth-pair contact per step, column by column (time_s,
-// step, pair, tooth_a, tooth_b, flank_a, point_x_m, point_y_m, normal_x, normal_y, depth_m,
-// normal_impulse_N_s, friction_impulse_N_s); /pairs names the gear pairs "a__b". Rows are
-// buffered and written in chunks; close() (or the destructor) leaves a valid file also after an
-// interrupted run. Not a CSV writer and not a reader.
+// our code; layout, types and resolution per column in docs/hdf5-log.md, format 2). /state holds
+// one row per step (angle_rad and speed_rad_s of every body, float64); /contacts one row per
+// tooth-pair contact per step, column by column (step, pair, tooth_a, tooth_b, flank_a as narrow
+// ints; point_x_m, point_y_m, normal_x, normal_y, depth_m, friction_impulse_N_s as float32;
+// normal_impulse_N_s as float64). Time is stored once, as the attribute time_step_s: step k ends
+// at k·time_step_s. Rows are buffered and written every few thousand steps; close() (or the
+// destructor, while an exception unwinds) leaves a valid file holding every appended step. Not a
+// CSV writer and not a reader (step_log_reader.hpp).
 #pragma once
 
 #include <filesystem>

@@ -41,6 +41,21 @@ std::string string_attribute(hid_t file, const std::filesystem::path& path, cons
   return value;
 }
 
+// Each row's step time: time_step_s added step times, the sum the World keeps (world.time_s()),
+// so a step's time here is bit for bit the one state.csv and contacts.csv were sampled at.
+std::vector<double> step_times(const std::vector<std::int64_t>& step, double dt, const std::filesystem::path& path) {
+  std::vector<double> t(step.size());
+  std::int64_t k = 0;
+  double time = 0;
+  for (std::size_t c = 0; c < step.size(); ++c) {
+    if (step[c] < k) throw InputError(path.string() + ": contact row " + std::to_string(c) + " has step " +
+                                      std::to_string(step[c]) + " after step " + std::to_string(k) + " (a damaged log)");
+    for (; k < step[c]; ++k) time += dt;
+    t[c] = time;
+  }
+  return t;
+}
+
 }  // namespace
 
 StepLogContacts read_step_log_contacts(const std::filesystem::path& path) {
@@ -55,13 +70,18 @@ StepLogContacts read_step_log_contacts(const std::filesystem::path& path) {
   H5Aclose(attr);
   std::stringstream pairs(string_attribute(f.id, path, "pairs"));
   for (std::string p; std::getline(pairs, p, ',');) c.pairs.push_back(p);
-  c.time_s = read_column<double>(f.id, path, "contacts/time_s", H5T_NATIVE_DOUBLE);
+  // Any stored integer or floating-point type reads into these (HDF5 converts): format 2 stores
+  // narrow ints and float32, format 1 int64 and float64.
   c.normal_impulse_N_s = read_column<double>(f.id, path, "contacts/normal_impulse_N_s", H5T_NATIVE_DOUBLE);
   c.step = read_column<std::int64_t>(f.id, path, "contacts/step", H5T_NATIVE_INT64);
   c.pair = read_column<std::int64_t>(f.id, path, "contacts/pair", H5T_NATIVE_INT64);
   c.tooth_a = read_column<std::int64_t>(f.id, path, "contacts/tooth_a", H5T_NATIVE_INT64);
   c.tooth_b = read_column<std::int64_t>(f.id, path, "contacts/tooth_b", H5T_NATIVE_INT64);
   c.flank_a = read_column<std::int64_t>(f.id, path, "contacts/flank_a", H5T_NATIVE_INT64);
+  if (H5Lexists(f.id, "contacts/time_s", H5P_DEFAULT) > 0)  // format 1 stored every row's time
+    c.time_s = read_column<double>(f.id, path, "contacts/time_s", H5T_NATIVE_DOUBLE);
+  else
+    c.time_s = step_times(c.step, c.time_step_s, path);
   const std::size_t n = c.time_s.size();
   if (c.normal_impulse_N_s.size() != n || c.step.size() != n || c.pair.size() != n || c.tooth_a.size() != n ||
       c.tooth_b.size() != n || c.flank_a.size() != n)

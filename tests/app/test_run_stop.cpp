@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "sim/step_log_reader.hpp"
 #include "tests/support/cli_run.hpp"
 
 namespace test_run_stop {
@@ -97,6 +99,11 @@ void expect_interrupted(const fs::path& dir, const std::string& signal_name) {
   EXPECT_EQ(state.rows, contacts.rows);
   EXPECT_DOUBLE_EQ(state.last_time_s, t);
   EXPECT_DOUBLE_EQ(contacts.last_time_s, t);
+  // steps.h5 closed and valid, its last contact row at that step (the paper set touches every step).
+  const gearsim::sim::StepLogContacts log = gearsim::sim::read_step_log_contacts(dir / "steps.h5");
+  ASSERT_FALSE(log.step.empty());
+  EXPECT_EQ(log.step.back(), s["steps"].get<std::int64_t>());
+  EXPECT_DOUBLE_EQ(log.time_s.back(), t);
   EXPECT_FALSE(fs::exists(dir / "analysis.json"));  // an interrupted run is not analysed
 }
 
