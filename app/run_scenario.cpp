@@ -140,9 +140,12 @@ DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, const s
   sim::CsvLogs csv(dir, s);
   sim::StepLogObserver step_log(dir / "steps.h5", s.name, s.solver.time_step_s);
   std::vector<sim::Observer*> observers{&csv};
-  if (s.output.per_step_log) observers.push_back(&step_log);
   std::optional<sim::SensorLog> sensors;
-  if (!s.sensors.empty()) observers.push_back(&sensors.emplace(dir, s));
+  if (!s.sensors.empty()) {
+    observers.push_back(&sensors.emplace(dir, s));
+    step_log.log_sensors(&*sensors);  // the sensors step first: the log takes this step's values
+  }
+  if (s.output.per_step_log) observers.push_back(&step_log);
   DirRun run;
   run.result = sim::simulate(s, observers, options);
   const sim::RunSummary& r = run.result;

@@ -73,6 +73,12 @@ void SensorLog::push(const physics::World& world) {
 
 void SensorLog::on_step(const physics::World& world) { push(world); }
 
+std::vector<std::string> SensorLog::names() const {
+  std::vector<std::string> n;
+  for (const physics::SensorDef& d : scenario_.sensors) n.push_back(d.name);
+  return n;
+}
+
 void SensorLog::write(const DecimatedRow& row) {
   if (row.time_s <= 0) return;  // t = 0: the world at rest, not a row
   out_ << row.time_s;

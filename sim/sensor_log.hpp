@@ -30,6 +30,10 @@ class SensorLog : public Observer {
   void on_start(const physics::World& world) override;
   void on_step(const physics::World& world) override;
   void on_stop(const physics::World& world) override;
+  // Each sensor's acceleration at the last step, before the acquisition's anti-aliasing filter,
+  // decimation and noise, m/s² (what the per-step log records), and the sensors' names.
+  const std::vector<double>& step_acceleration_m_s2() const { return row_; }
+  std::vector<std::string> names() const;
 
  private:
   struct Channel {

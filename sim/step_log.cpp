@@ -128,6 +128,8 @@ struct StepLog::Impl {
   double dt = 0;
   std::size_t buffered_steps = 0;
   Column<double> state;  // per step: angle_rad, speed_rad_s of every body
+  Column<double> sensors;  // per step: every sensor's acceleration before acquisition (none: no dataset)
+  std::size_t sensor_count = 0;
   // Contact columns (docs/hdf5-log.md gives each one's type and resolution).
   Column<std::int32_t> step;
   Column<std::int8_t> pair, flank_a;
@@ -145,13 +147,15 @@ struct StepLog::Impl {
 
   void flush() {
     state.write();
+    if (sensor_count) sensors.write();
     each_contact_column([](auto& c) { c.write(); });
     buffered_steps = 0;
     H5Fflush(file, H5F_SCOPE_GLOBAL);
   }
 };
 
-StepLog::StepLog(const std::filesystem::path& path, const physics::World& world, const std::string& scenario_name, double dt)
+StepLog::StepLog(const std::filesystem::path& path, const physics::World& world, const std::string& scenario_name, double dt,
+                 const std::vector<std::string>& sensor_names)
     : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.path = path;
@@ -170,6 +174,13 @@ StepLog::StepLog(const std::filesystem::path& path, const physics::World& world,
     columns += (columns.empty() ? "" : ",") + b.name + "_angle_rad," + b.name + "_speed_rad_s";
   m.state.create(m.file, "state", H5T_IEEE_F64LE, 2 * world.bodies().size(), kStateChunkRows, Filter::None);
   string_attribute(m.state.dataset, "columns", columns);
+  m.sensor_count = sensor_names.size();
+  if (m.sensor_count) {
+    std::string names;
+    for (const std::string& n : sensor_names) names += (names.empty() ? "" : ",") + n + "_acceleration_m_s2";
+    m.sensors.create(m.file, "sensors", H5T_IEEE_F64LE, m.sensor_count, kStateChunkRows, Filter::None);
+    string_attribute(m.sensors.dataset, "columns", names);
+  }
   std::string pairs;
   for (const physics::GearPairInfo& p : world.gear_pairs()) pairs += (pairs.empty() ? "" : ",") + p.body_a + "__" + p.body_b;
   string_attribute(m.file, "pairs", pairs);
@@ -196,9 +207,11 @@ StepLog::~StepLog() {
   }
 }
 
-void StepLog::append(const physics::World& world) {
+void StepLog::append(const physics::World& world, const std::vector<double>& sensor_values_m_s2) {
   Impl& m = *impl_;
   GEARSIM_CHECK(m.file >= 0, "StepLog::append after close");
+  GEARSIM_CHECK(sensor_values_m_s2.size() == m.sensor_count, "one value per sensor of the step log");
+  m.sensors.buffer.insert(m.sensors.buffer.end(), sensor_values_m_s2.begin(), sensor_values_m_s2.end());
   for (const physics::BodyState& b : world.bodies()) {
     m.state.buffer.push_back(b.angle_rad);
     m.state.buffer.push_back(b.speed_rad_s);
@@ -223,6 +236,7 @@ void StepLog::close() {
   if (m.file < 0) return;
   m.flush();
   m.state.close();
+  if (m.sensor_count) m.sensors.close();
   m.each_contact_column([](auto& c) { c.close(); });
   H5Gclose(m.contacts_group);
   H5Fclose(m.file);

@@ -16,20 +16,23 @@
 
 #include "physics/world.hpp"
 #include "sim/observer.hpp"
+#include "sim/sensor_log.hpp"
 
 namespace gearsim::sim {
 
 class StepLog {
  public:
-  // Creates (truncates) the file. Throws InputError naming the path when it cannot.
+  // Creates (truncates) the file. Throws InputError naming the path when it cannot. With sensor
+  // names, a dataset /sensors holds one value per sensor and step (docs/hdf5-log.md).
   StepLog(const std::filesystem::path& path, const physics::World& world, const std::string& scenario_name,
-          double time_step_s);
+          double time_step_s, const std::vector<std::string>& sensor_names = {});
   ~StepLog();
   StepLog(const StepLog&) = delete;
   StepLog& operator=(const StepLog&) = delete;
 
-  // Appends the world's state and contacts of its last step.
-  void append(const physics::World& world);
+  // Appends the world's state and contacts of its last step, and the sensors' values then (one
+  // per sensor name given at construction, m/s²).
+  void append(const physics::World& world, const std::vector<double>& sensor_values_m_s2 = {});
   // Writes what is buffered and closes the file; further appends are errors.
   void close();
   // Bytes written so far (after the last flush), for the log-size report.
@@ -47,8 +50,16 @@ class StepLogObserver : public Observer {
  public:
   StepLogObserver(std::filesystem::path path, std::string scenario_name, double time_step_s)
       : path_(std::move(path)), name_(std::move(scenario_name)), dt_(time_step_s) {}
-  void on_start(const physics::World& world) override { log_ = std::make_unique<StepLog>(path_, world, name_, dt_); }
-  void on_step(const physics::World& world) override { log_->append(world); }
+  // Also log the sensors' per-step values (SensorLog::step_acceleration_m_s2()); the SensorLog
+  // must be an observer ahead of this one, so that its values are the same step's.
+  void log_sensors(const SensorLog* sensors) { sensors_ = sensors; }
+  void on_start(const physics::World& world) override {
+    log_ = std::make_unique<StepLog>(path_, world, name_, dt_, sensors_ ? sensors_->names() : std::vector<std::string>{});
+  }
+  void on_step(const physics::World& world) override {
+    if (sensors_) log_->append(world, sensors_->step_acceleration_m_s2());
+    else log_->append(world);
+  }
   void on_stop(const physics::World&) override {
     if (log_) log_->close();
   }
@@ -59,6 +70,7 @@ class StepLogObserver : public Observer {
   std::string name_;
   double dt_;
   std::unique_ptr<StepLog> log_;
+  const SensorLog* sensors_ = nullptr;
 };
 
 }  // namespace gearsim::sim

@@ -41,15 +41,14 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 
 // The hash of the 0.004 s paper run (200 steps) on Debian 12 / x86-64 with this build. Update
 // it (the failure message prints the new value) only together with the change that explains it.
-// Last change: steps.h5 format 2 (docs/hdf5-log.md: narrow integer columns, float32 geometry and
-// friction, no per-row time, /state without time_s, floats unfiltered). Checked: state.csv and
-// contacts.csv of both engines' runs byte-identical to those of the previous build (sha256), so
-// the log format alone changed the hashes (were 0x9fc32627fafb85fc rigid_bodies,
-// 0xc81a40ba00e1d91c multibody).
+// Last change: steps.h5 gained /sensors, the housing sensor's acceleration at every step
+// (docs/hdf5-log.md). Checked: state.csv and contacts.csv byte-identical to the previous build
+// (sha256), so the new dataset alone changed the hashes (were 0xd24f9df26a7c4f52 rigid_bodies,
+// 0x8dc803fe82519dad multibody; before that steps.h5 format 2).
 // kGoldenHash is the rigid-body engine's (it runs with --set solver.engine=rigid_bodies).
-constexpr std::uint64_t kGoldenHash = 0xd24f9df26a7c4f52ull;
+constexpr std::uint64_t kGoldenHash = 0x5417afe7d57d9b67ull;
 // The default engine's (multibody, θ = 1) hash.
-constexpr std::uint64_t kGoldenHashMultibody = 0x8dc803fe82519dadull;
+constexpr std::uint64_t kGoldenHashMultibody = 0x74e17eebdb863d78ull;
 
 TEST(RunDeterminism, SameScenarioGivesByteIdenticalLogs) {
   const fs::path a = run_paper("a"), b = run_paper("b");

@@ -4,6 +4,7 @@
 // survive at a fixed sensor, the others cancel; the flawed planet breaks the symmetry and fills
 // them in.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <complex>
@@ -15,6 +16,7 @@
 #include "input/scenario_file.hpp"
 #include "sim/sensor_log.hpp"
 #include "sim/simulate.hpp"
+#include "sim/step_log.hpp"
 #include "tests/support/asset_scenario.hpp"
 
 namespace gearsim {
@@ -101,6 +103,74 @@ TEST(SensorLog, SequentialPlanetsShiftTheSurvivingSidebandsAsPredicted) {
   // The mesh line itself (n = 0) cancels at k = 1 and 2, survives at k = 3.
   EXPECT_FALSE(planet_pass_line_survives(3, 95, 1, 0));
   EXPECT_TRUE(planet_pass_line_survives(3, 95, 3, 0));
+}
+
+}  // namespace test_sensor_log
+}  // namespace gearsim
+
+namespace gearsim {
+namespace test_sensor_log {
+
+// The per-step log records each sensor's acceleration at every step, before the acquisition
+// (anti-aliasing filter, decimation, noise). Sampled at the step rate without noise the
+// acquisition is the identity, so sensors.csv and steps.h5 /sensors hold the same numbers; at
+// 25 kHz (every second step) steps.h5 still has one row per step.
+std::vector<double> read_sensor_dataset(const std::filesystem::path& h5, std::string* columns) {
+  const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(file, 0) << h5;
+  const hid_t d = H5Dopen2(file, "sensors", H5P_DEFAULT);
+  EXPECT_GE(d, 0) << "no /sensors in " << h5;
+  const hid_t space = H5Dget_space(d);
+  std::vector<double> out(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
+  const hid_t a = H5Aopen(d, "columns", H5P_DEFAULT);
+  const hid_t t = H5Aget_type(a);
+  std::string text(H5Tget_size(t), '\0');
+  H5Aread(a, t, text.data());
+  *columns = text.c_str();
+  H5Tclose(t), H5Aclose(a), H5Sclose(space), H5Dclose(d), H5Fclose(file);
+  return out;
+}
+
+std::vector<double> run_with_step_log(const std::string& rate, const std::filesystem::path& dir, long* steps, std::string* columns) {
+  const physics::Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+                                                   {"duration_s=0.01", "sensors[0].sample_rate_hz=" + rate});
+  sim::SensorLog sensors(dir, s);
+  sim::StepLogObserver step_log(dir / "steps.h5", s.name, s.solver.time_step_s);
+  step_log.log_sensors(&sensors);
+  const sim::RunSummary r = sim::simulate(s, {&sensors, &step_log});
+  EXPECT_EQ(r.status, sim::RunStatus::Completed);
+  *steps = r.steps;
+  return read_sensor_dataset(dir / "steps.h5", columns);
+}
+
+TEST(SensorLog, TheStepLogHoldsEverySensorsAccelerationAtEveryStep) {
+  const std::filesystem::path dir = test::fresh_test_dir();
+  long steps = 0;
+  std::string columns;
+  const std::vector<double> logged = run_with_step_log("50000", dir, &steps, &columns);  // dt 2e-5 s: the step rate
+  EXPECT_EQ(columns, "housing_top_acceleration_m_s2");
+  ASSERT_EQ(static_cast<long>(logged.size()), steps);
+  std::ifstream csv(dir / "sensors.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line, "time_s,housing_top_acceleration_m_s2");
+  std::size_t row = 0;
+  double largest = 0;
+  while (std::getline(csv, line)) {
+    const double value = std::stod(line.substr(line.find(',') + 1));
+    ASSERT_LT(row, logged.size());
+    EXPECT_EQ(value, logged[row]) << "step " << row + 1;
+    largest = std::max(largest, std::abs(value));
+    ++row;
+  }
+  EXPECT_EQ(static_cast<long>(row), steps);
+  EXPECT_GT(largest, 0.0);  // the meshes load the housing: a signal, not zeros
+
+  const std::filesystem::path dir25 = test::fresh_test_dir();
+  const std::vector<double> logged25 = run_with_step_log("25000", dir25, &steps, &columns);
+  EXPECT_EQ(static_cast<long>(logged25.size()), steps);  // one per step, whatever the acquisition rate
+  EXPECT_EQ(logged25, logged);                           // the same signal before acquisition
 }
 
 }  // namespace test_sensor_log
