@@ -1,6 +1,7 @@
 #include "app/render_run.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -17,6 +18,13 @@ namespace {
 
 // The contact sheet: up to this many of the PNG frames, 4 columns, each reduced 4×.
 constexpr std::size_t kSheetFrames = 8;
+
+// The shortest text that reads back to the same double ("0.0499999999999983", not "0.050000").
+std::string shortest(double v) {
+  char text[32];
+  const auto r = std::to_chars(text, text + sizeof text, v);
+  return std::string(text, r.ptr);
+}
 
 // The renderer's settings for a run's frames. Multisampling when asked for (msaa ≥ 2 samples),
 // else edge anti-aliasing: as smooth at the gears' edges and several times cheaper on llvmpipe
@@ -47,8 +55,8 @@ render::Image draw_frame(render::Renderer& renderer, const RunMeshes& meshes, co
 render::Image render_run_frame(const RunDir& run, const physics::RenderDef& o, double t_s) {
   const PoseReplay replay(run.scenario, input::read_csv(run.dir / "state.csv"));
   if (!(t_s >= replay.start_s() && t_s <= replay.end_s()))
-    throw InputError("t_s: " + std::to_string(t_s) + " s is outside the logged " + std::to_string(replay.start_s()) + "–" +
-                     std::to_string(replay.end_s()) + " s of " + (run.dir / "state.csv").string());
+    throw InputError("t_s: " + shortest(t_s) + " s is outside the logged " + shortest(replay.start_s()) + "–" +
+                     shortest(replay.end_s()) + " s of " + (run.dir / "state.csv").string());
   const RunMeshes meshes = run_meshes(run.scenario);
   render::Renderer renderer(frame_settings(o));
   return draw_frame(renderer, meshes, replay, run, o, t_s);
