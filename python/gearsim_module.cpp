@@ -1,6 +1,6 @@
 // The gearsim Python module (pybind11): load_scenario, run, analyze, modes, gear, inspect,
-// tolerance, render_frame and sweep over the same
-// libraries and the same app/ code paths as the CLI — no second implementation. Bad input raises
+// tolerance, render_frame and sweep over the same libraries and the same app/ and sweep/ code
+// paths as the CLI — no second implementation. Bad input raises
 // gearsim.InputError (a ValueError) with the CLI's message (file:line:col: key: what was expected).
 // docs/python.md is the reference.
 #include <pybind11/pybind11.h>
