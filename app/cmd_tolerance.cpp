@@ -59,51 +59,21 @@ void print_text(const ToleranceOptions& o, const std::vector<ToleranceResult>& p
   }
 }
 
-json input_json(const ToleranceInput& in) {
-  return {{"module_mm", in.module_mm},
-          {"teeth", in.teeth},
-          {"reference_diameter_mm", in.reference_diameter_mm},
-          {"quality", in.quality},
-          {"contact_ratio", in.contact_ratio ? json(*in.contact_ratio) : json(nullptr)}};
-}
-
 // Computes what --standard asks for and prints it.
 void run(ToleranceOptions& o, bool has_contact_ratio) {
   if (has_contact_ratio) o.input.contact_ratio = o.contact_ratio;
-  const bool din = o.standard != "iso";
-  const bool iso = o.standard != "din";
-
-  std::vector<ToleranceResult> paper;
-  if (din) paper.push_back(paper_tolerances(o.input, ToleranceStandard::Din3961));
-  if (iso) paper.push_back(paper_tolerances(o.input, ToleranceStandard::Iso1328));
-  std::unique_ptr<ToleranceResult> iso_own;
-  if (iso) iso_own = std::make_unique<ToleranceResult>(iso1328_tolerances(o.input));
-
-  if (!o.json) {
-    print_text(o, paper, iso_own.get());
+  if (o.json) {
+    std::cout << tolerance_json(o.input, o.standard).dump(2) << "\n";
     return;
   }
-  // Single standard: that standard's object. Both: the paper's DIN answer on top (the paper
-  // uses DIN), each standard's object under its key.
-  json iso_json;
-  if (iso) {
-    iso_json = tolerance_result_json(paper.back());
-    iso_json["iso1328_formulas"] = tolerance_result_json(*iso_own);
+  std::vector<ToleranceResult> paper;
+  if (o.standard != "iso") paper.push_back(paper_tolerances(o.input, ToleranceStandard::Din3961));
+  std::unique_ptr<ToleranceResult> iso_own;
+  if (o.standard != "din") {
+    paper.push_back(paper_tolerances(o.input, ToleranceStandard::Iso1328));
+    iso_own = std::make_unique<ToleranceResult>(iso1328_tolerances(o.input));
   }
-  json out;
-  if (din && iso) {
-    const ToleranceResult& d = paper.front();
-    out["single_flank_error_um"] = *d.single_flank_error_um;
-    out["standard"] = standard_key(d.standard);
-    out["step_factor"] = d.step_factor;
-    out["quality"] = d.quality;
-    out["din3961"] = tolerance_result_json(d);
-    out["iso1328"] = iso_json;
-  } else {
-    out = din ? tolerance_result_json(paper.front()) : iso_json;
-  }
-  out["input"] = input_json(o.input);
-  std::cout << out.dump(2) << "\n";
+  print_text(o, paper, iso_own.get());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "app/render_run.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -18,7 +19,48 @@ namespace {
 // The contact sheet: up to this many of the PNG frames, 4 columns, each reduced 4×.
 constexpr std::size_t kSheetFrames = 8;
 
+// The shortest text that reads back to the same double ("0.0499999999999983", not "0.050000").
+std::string shortest(double v) {
+  char text[32];
+  const auto r = std::to_chars(text, text + sizeof text, v);
+  return std::string(text, r.ptr);
+}
+
+// The renderer's settings for a run's frames. Multisampling when asked for (msaa ≥ 2 samples),
+// else edge anti-aliasing: as smooth at the gears' edges and several times cheaper on llvmpipe
+// (bench_render).
+render::RenderSettings frame_settings(const physics::RenderDef& o) {
+  render::RenderSettings rs;
+  rs.width_px = o.width_px;
+  rs.height_px = o.height_px;
+  if (o.msaa >= 2) {
+    rs.anti_aliasing = render::AntiAliasing::Multisample;
+    rs.msaa_samples = o.msaa;
+  }
+  return rs;
+}
+
+// The frame at simulated time t: the bodies posed, the overlay line, the camera.
+render::Image draw_frame(render::Renderer& renderer, const RunMeshes& meshes, const PoseReplay& replay, const RunDir& run,
+                         const physics::RenderDef& o, double t) {
+  const std::vector<Eigen::Isometry3d> poses = replay.poses(t);
+  char line[128];
+  std::snprintf(line, sizeof line, "%s  t = %.4f s  (%s, %gx slower)", run.scenario.name.c_str(), t, o.camera.c_str(), o.slowmo);
+  const render::Scene scene = run_scene(meshes, poses, {line});
+  return renderer.render(scene, run_camera(o.camera, run.scenario, scene, poses, renderer.aspect()));
+}
+
 }  // namespace
+
+render::Image render_run_frame(const RunDir& run, const physics::RenderDef& o, double t_s) {
+  const PoseReplay replay(run.scenario, input::read_csv(run.dir / "state.csv"));
+  if (!(t_s >= replay.start_s() && t_s <= replay.end_s()))
+    throw InputError("t_s: " + shortest(t_s) + " s is outside the logged " + shortest(replay.start_s()) + "–" +
+                     shortest(replay.end_s()) + " s of " + (run.dir / "state.csv").string());
+  const RunMeshes meshes = run_meshes(run.scenario);
+  render::Renderer renderer(frame_settings(o));
+  return draw_frame(renderer, meshes, replay, run, o, t_s);
+}
 
 RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
   const PoseReplay replay(run.scenario, input::read_csv(run.dir / "state.csv"));
@@ -33,16 +75,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
   const double dt = 1.0 / (o.fps * o.slowmo);  // simulated seconds per frame
   r.frames = static_cast<long>(std::floor((r.to_s - r.from_s) / dt + 1e-9)) + 1;
   const RunMeshes meshes = run_meshes(run.scenario);
-  render::RenderSettings rs;
-  rs.width_px = o.width_px;
-  rs.height_px = o.height_px;
-  // Multisampling when asked for (msaa ≥ 2 samples), else edge anti-aliasing: as smooth at the
-  // gears' edges and several times cheaper on llvmpipe (bench_render).
-  if (o.msaa >= 2) {
-    rs.anti_aliasing = render::AntiAliasing::Multisample;
-    rs.msaa_samples = o.msaa;
-  }
-  render::Renderer renderer(rs);
+  render::Renderer renderer(frame_settings(o));
   r.video = run.dir / (o.camera == "overview" ? std::string("video.mp4") : "video_" + o.camera + ".mp4");
   render::VideoWriter writer(r.video, {o.width_px, o.height_px, o.fps});
   if (o.png_every > 0) std::filesystem::create_directories(run.dir / "frames");
@@ -50,11 +83,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
   std::vector<std::string> labels;
   for (long k = 0; k < r.frames; ++k) {
     const double t = std::min(r.from_s + static_cast<double>(k) * dt, r.to_s);  // rounding of the last frame
-    const std::vector<Eigen::Isometry3d> poses = replay.poses(t);
-    char line[128];
-    std::snprintf(line, sizeof line, "%s  t = %.4f s  (%s, %gx slower)", run.scenario.name.c_str(), t, o.camera.c_str(), o.slowmo);
-    const render::Scene scene = run_scene(meshes, poses, {line});
-    const render::Image image = renderer.render(scene, run_camera(o.camera, run.scenario, scene, poses, renderer.aspect()));
+    const render::Image image = draw_frame(renderer, meshes, replay, run, o, t);
     writer.add_frame(image);
     if (o.png_every > 0 && k % o.png_every == 0) {
       char name[64];

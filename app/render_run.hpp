@@ -1,12 +1,14 @@
 // Rendering a finished run folder (what `gearsim render` and a scenario's `render:` section do):
 // poses replayed from state.csv, frames drawn off-screen, an H.264 video DIR/video.mp4 (the
 // overview camera) or DIR/video_<camera>.mp4, every Nth frame as DIR/frames/<camera>_NNNNN.png
-// and a contact sheet DIR/frames/<camera>_sheet.png for reports. Prints nothing.
+// and a contact sheet DIR/frames/<camera>_sheet.png for reports; or one frame as an image.
+// Prints nothing.
 #pragma once
 
 #include <filesystem>
 
 #include "app/run_dir.hpp"
+#include "render/image.hpp"
 
 namespace gearsim::app {
 
@@ -19,5 +21,10 @@ struct RenderResult {
 // InputError naming --from/--to (or render.from_s/to_s) when the span is empty or outside the
 // logged one; RenderError when no OpenGL context can be created.
 RenderResult render_run(const RunDir& run, const physics::RenderDef& settings);
+
+// One frame of the run at simulated time t_s, drawn as render_run draws its frames (the same
+// camera, size, anti-aliasing and overlay line): render_run's frame at t_s, pixel for pixel.
+// InputError naming t_s when it lies outside the logged span; RenderError as render_run.
+render::Image render_run_frame(const RunDir& run, const physics::RenderDef& settings, double t_s);
 
 }  // namespace gearsim::app

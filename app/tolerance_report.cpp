@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/errors.hpp"
+
 namespace gearsim::app {
 
 std::string pad(const std::string& s, std::size_t width, bool right) {
@@ -72,6 +74,49 @@ json tolerance_result_json(const ToleranceResult& r) {
   }
   j["components"] = components;
   return j;
+}
+
+namespace {
+
+json input_json(const ToleranceInput& in) {
+  return {{"module_mm", in.module_mm},
+          {"teeth", in.teeth},
+          {"reference_diameter_mm", in.reference_diameter_mm},
+          {"quality", in.quality},
+          {"contact_ratio", in.contact_ratio ? json(*in.contact_ratio) : json(nullptr)}};
+}
+
+}  // namespace
+
+json tolerance_json(const ToleranceInput& input, const std::string& standard) {
+  if (standard != "din" && standard != "iso" && standard != "both")
+    throw InputError("standard: '" + standard + "' is none of din, iso, both");
+  const bool din = standard != "iso";
+  const bool iso = standard != "din";
+  std::vector<ToleranceResult> paper;
+  if (din) paper.push_back(paper_tolerances(input, ToleranceStandard::Din3961));
+  if (iso) paper.push_back(paper_tolerances(input, ToleranceStandard::Iso1328));
+  // Single standard: that standard's object. Both: the paper's DIN answer on top (the paper
+  // uses DIN), each standard's object under its key.
+  json iso_json;
+  if (iso) {
+    iso_json = tolerance_result_json(paper.back());
+    iso_json["iso1328_formulas"] = tolerance_result_json(iso1328_tolerances(input));
+  }
+  json out;
+  if (din && iso) {
+    const ToleranceResult& d = paper.front();
+    out["single_flank_error_um"] = *d.single_flank_error_um;
+    out["standard"] = standard_key(d.standard);
+    out["step_factor"] = d.step_factor;
+    out["quality"] = d.quality;
+    out["din3961"] = tolerance_result_json(d);
+    out["iso1328"] = iso_json;
+  } else {
+    out = din ? tolerance_result_json(paper.front()) : iso_json;
+  }
+  out["input"] = input_json(input);
+  return out;
 }
 
 }  // namespace gearsim::app

@@ -1,5 +1,5 @@
 // Text and JSON forms of tolerance results (geometry/tolerance.hpp), shared by the `tolerance`
-// and `gears` subcommands. Units are the standards' own: µm.
+// and `gears` subcommands and the Python module. Units are the standards' own: µm.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -24,5 +24,11 @@ void print_tolerance_grading(std::ostream& out, const ToleranceResult& r);
 void print_tolerance_table(std::ostream& out, const std::vector<ToleranceResult>& results);
 // One standard's result: flat `<key>_um` values plus every intermediate in `components`.
 json tolerance_result_json(const ToleranceResult& r);
+
+// What `gearsim tolerance --json` prints: `standard` "din" or "iso" gives that standard's object
+// (ISO's with its own formulas under iso1328_formulas), "both" the paper's DIN answer on top and
+// each standard's object under din3961 and iso1328; the input under `input`. InputError naming
+// the parameter for out-of-range input, or `standard` when it is none of the three.
+json tolerance_json(const ToleranceInput& input, const std::string& standard);
 
 }  // namespace gearsim::app

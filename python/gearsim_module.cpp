@@ -1,5 +1,6 @@
-// The gearsim Python module (pybind11): load_scenario, run, analyze and modes over the same
-// libraries and the same app/ code paths as the CLI — no second implementation. Bad input raises
+// The gearsim Python module (pybind11): load_scenario, run, analyze, modes, gear, inspect,
+// tolerance, render_frame and sweep over the same libraries and the same app/ and sweep/ code
+// paths as the CLI — no second implementation. Bad input raises
 // gearsim.InputError (a ValueError) with the CLI's message (file:line:col: key: what was expected).
 // docs/python.md is the reference.
 #include <pybind11/pybind11.h>
@@ -11,9 +12,12 @@
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
 #include "core/errors.hpp"
+#include "python/py_geometry.hpp"
 #include "python/py_json.hpp"
+#include "python/py_render.hpp"
 #include "python/py_run.hpp"
 #include "python/py_scenario.hpp"
+#include "python/py_sweep.hpp"
 
 namespace py = pybind11;
 
@@ -56,4 +60,7 @@ PYBIND11_MODULE(gearsim, m) {
   m.def("analyze", &analyze, py::arg("run_dir"), py::arg("from_s") = -1.0, kAnalyzeDoc);
   m.def("modes", &modes, py::arg("scenario"), py::arg("drive") = "", py::arg("harmonics") = 3, py::arg("phases") = 64,
         py::arg("max_speed_rad_s") = std::numeric_limits<double>::infinity(), kModesDoc);
+  bind_geometry(m);
+  bind_render(m);
+  bind_sweep(m);
 }

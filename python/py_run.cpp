@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "input/csv_table.hpp"
 #include "python/py_json.hpp"
+#include "python/py_pending.hpp"
 #include "python/py_scenario.hpp"
 
 namespace gearsim::python {
@@ -56,23 +57,6 @@ py::dict read_columns(const fs::path& file) {
   return columns;
 }
 
-// What Python's signal handlers raised during the run (KeyboardInterrupt for Ctrl-C), held
-// until simulate returns; released with the GIL held.
-struct PendingError {
-  PyObject *type = nullptr, *value = nullptr, *trace = nullptr;
-  bool set() const { return type != nullptr; }
-  void raise() {
-    PyErr_Restore(type, value, trace);
-    type = value = trace = nullptr;
-    throw py::error_already_set();
-  }
-  ~PendingError() {
-    Py_XDECREF(type);
-    Py_XDECREF(value);
-    Py_XDECREF(trace);
-  }
-};
-
 // The options simulate polls: every kPollSteps steps the GIL is taken to run Python's signal
 // handlers; an exception they raise stops the run (as SIGINT) and is kept in `pending`.
 sim::SimOptions poll_options(PendingError& pending, bool progress, const std::string& name) {
@@ -81,9 +65,7 @@ sim::SimOptions poll_options(PendingError& pending, bool progress, const std::st
     if (pending.set()) return SIGINT;
     if (++calls % kPollSteps != 0) return 0;
     py::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() == 0) return 0;
-    PyErr_Fetch(&pending.type, &pending.value, &pending.trace);
-    return SIGINT;
+    return pending.check_signals() ? SIGINT : 0;
   };
   if (progress)
     o.progress = [name, last = -1](long i, long total, double t) mutable {

@@ -38,12 +38,12 @@ SweepOutcome run_sweep(const SweepOptions& o, const Scheduler& schedule, const S
   // The table, from the case folders only, in index order.
   std::vector<std::string> columns;
   for (const input::SweepParameter& p : f.parameters) columns.push_back(p.key);
-  const SweepTable table = gather_table(dir, columns, cases.size());
+  out.table = gather_table(dir, columns, cases.size());
   out.csv = dir / "sweep.csv";
   out.h5 = dir / "sweep.h5";
-  write_table_csv(table, out.csv);
-  write_table_h5(table, out.h5);
-  out.statuses = count_statuses(table);
+  write_table_csv(out.table, out.csv);
+  write_table_h5(out.table, out.h5);
+  out.statuses = count_statuses(out.table);
   return out;
 }
 

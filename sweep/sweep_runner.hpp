@@ -30,6 +30,7 @@ struct SweepOutcome {
   std::size_t ran = 0;        // run by this call
   int removed_outputs = 0;    // with --fresh: sweep outputs of an earlier sweep removed
   StatusCounts statuses;      // over the whole table
+  SweepTable table;           // what sweep.csv and sweep.h5 hold
   std::filesystem::path csv, h5;
 };
 
