@@ -15,6 +15,7 @@
 #include "python/py_json.hpp"
 #include "python/py_pending.hpp"
 #include "python/py_scenario.hpp"
+#include "sim/step_log_reader.hpp"
 
 namespace gearsim::python {
 namespace {
@@ -55,6 +56,31 @@ py::dict read_columns(const fs::path& file) {
     columns[py::str(table.columns[c])] = a;
   }
   return columns;
+}
+
+template <class T>
+py::array_t<T> array_of(const std::vector<T>& v) {
+  py::array_t<T> a(static_cast<py::ssize_t>(v.size()));
+  if (!v.empty()) std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(T));
+  return a;
+}
+
+// steps.h5's contact rows as {column: numpy array} (sim/step_log_reader.hpp: the columns the
+// analysis reads), with the pair names and the time step. Empty when the run kept no step log.
+py::dict read_step_contacts(const fs::path& file) {
+  py::dict d;
+  if (!fs::exists(file)) return d;
+  const sim::StepLogContacts c = sim::read_step_log_contacts(file);
+  d["time_step_s"] = c.time_step_s;
+  d["pairs"] = c.pairs;
+  d["time_s"] = array_of(c.time_s);
+  d["step"] = array_of(c.step);
+  d["pair"] = array_of(c.pair);
+  d["tooth_a"] = array_of(c.tooth_a);
+  d["tooth_b"] = array_of(c.tooth_b);
+  d["flank_a"] = array_of(c.flank_a);
+  d["normal_impulse_N_s"] = array_of(c.normal_impulse_N_s);
+  return d;
 }
 
 // The options simulate polls: every kPollSteps steps the GIL is taken to run Python's signal
@@ -101,6 +127,7 @@ PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double
   result.state = read_columns(dir / "state.csv");
   result.contacts = read_columns(dir / "contacts.csv");
   result.sensors = read_columns(dir / "sensors.csv");
+  result.steps = read_step_contacts(dir / "steps.h5");
   result.summary = to_python(r.summary).cast<py::dict>();
   result.out = out.is_none() ? py::object(py::none()) : py::object(py::str(dir.string()));
   return result;
@@ -138,6 +165,10 @@ void bind_run(py::module_& m) {
       .def_readonly("contacts", &PyRunResult::contacts,
                     "contacts.csv: {column: numpy float64 array} (time_s, <a>__<b>_force_N anti-aliased, _force_point_N, …).")
       .def_readonly("sensors", &PyRunResult::sensors, "sensors.csv as {column: array}; empty without sensors.")
+      .def_readonly("steps", &PyRunResult::steps,
+                    "steps.h5's tooth contacts, one entry per contact per step: {'time_s', 'step', 'pair', 'tooth_a', 'tooth_b', "
+                    "'flank_a' (0 ccw, 1 cw), 'normal_impulse_N_s': arrays; 'pairs': pair names by index; 'time_step_s'} "
+                    "(force = impulse / time_step_s); empty without the per-step log.")
       .def_readonly("summary", &PyRunResult::summary, "summary.json as a dict (status, sim_seconds, steps, bodies, gear_pairs, …).")
       .def_readonly("out", &PyRunResult::out, "The run folder, or None when the files were temporary.")
       .def("__repr__", [](const PyRunResult& r) {

@@ -20,6 +20,7 @@ struct PyRunResult {
   py::dict state;     // state.csv: column name → numpy float64 array
   py::dict contacts;  // contacts.csv
   py::dict sensors;   // sensors.csv (empty without sensors)
+  py::dict steps;     // steps.h5's contacts, one entry per tooth-pair contact per step (empty without the log)
   py::dict summary;   // summary.json
   py::object out;     // the run folder (str), or None when the files were temporary
 };
