@@ -24,7 +24,9 @@ namespace py = pybind11;
 namespace gearsim::python {
 namespace {
 
-constexpr const char* kAnalyzeDoc = R"(Analyse a run folder as `gearsim analyze DIR` does and return analysis.json as a dict.
+constexpr const char* kAnalyzeDoc = R"(Analyse a run folder as `gearsim analyze DIR` does and return analysis.json as a dict,
+with the force spectra as arrays under "spectrum" (spectrum.csv by column: frequency_hz and
+<pair>_amplitude_N, numpy float64).
 
 Writes DIR/analysis.json, spectrum.csv, sidebands.csv, teeth.csv and the analysis keys of
 summary.json, as the CLI does. from_s: start of the analysed window, s (default: the end of the
@@ -40,7 +42,9 @@ pitch for the mean mesh stiffness; max_speed_rad_s: leave out crossings above it
 py::object analyze(const std::filesystem::path& run_dir, double from_s) {
   app::AnalyzeOptions o;
   o.from_s = from_s;
-  return to_python(app::analyze_run(app::open_run_dir(run_dir), o));
+  py::dict analysis = to_python(app::analyze_run(app::open_run_dir(run_dir), o)).cast<py::dict>();
+  analysis["spectrum"] = read_csv_columns(run_dir / "spectrum.csv");
+  return std::move(analysis);
 }
 
 py::object modes(const PyScenario& s, const std::string& drive, int harmonics, int phases, double max_speed_rad_s) {

@@ -43,9 +43,9 @@ class TempDir {
   fs::path path_;
 };
 
-// A CSV log as {column: numpy float64 array}; the CSV holds %.17g, so every value is the double
-// the run computed. Empty when the file does not exist.
-py::dict read_columns(const fs::path& file) {
+}  // namespace
+
+py::dict read_csv_columns(const fs::path& file) {
   py::dict columns;
   if (!fs::exists(file)) return columns;
   const input::CsvTable table = input::read_csv(file);
@@ -57,6 +57,8 @@ py::dict read_columns(const fs::path& file) {
   }
   return columns;
 }
+
+namespace {
 
 template <class T>
 py::array_t<T> array_of(const std::vector<T>& v) {
@@ -124,9 +126,9 @@ PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double
   }
   if (pending.set()) pending.raise();
   PyRunResult result;
-  result.state = read_columns(dir / "state.csv");
-  result.contacts = read_columns(dir / "contacts.csv");
-  result.sensors = read_columns(dir / "sensors.csv");
+  result.state = read_csv_columns(dir / "state.csv");
+  result.contacts = read_csv_columns(dir / "contacts.csv");
+  result.sensors = read_csv_columns(dir / "sensors.csv");
   result.steps = read_step_contacts(dir / "steps.h5");
   result.summary = to_python(r.summary).cast<py::dict>();
   result.out = out.is_none() ? py::object(py::none()) : py::object(py::str(dir.string()));

@@ -30,6 +30,10 @@ inline constexpr long kPollSteps = 200;
 
 PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double> duration_s, bool progress);
 
+// A CSV log as {column: numpy float64 array}; the CSV holds %.17g, so every value is the double
+// the run computed. Empty when the file does not exist.
+py::dict read_csv_columns(const std::filesystem::path& file);
+
 // Binds gearsim.RunResult and gearsim.run.
 void bind_run(py::module_& m);
 
