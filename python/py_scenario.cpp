@@ -1,5 +1,7 @@
 #include "python/py_scenario.hpp"
 
+#include <yaml-cpp/yaml.h>
+
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
@@ -8,6 +10,42 @@
 #include "python/py_json.hpp"
 
 namespace gearsim::python {
+namespace {
+
+void emit_yaml(YAML::Emitter& out, const nlohmann::json& j) {
+  if (j.is_object()) {
+    out << YAML::BeginMap;
+    for (const auto& [k, v] : j.items()) {
+      out << YAML::Key << k << YAML::Value;
+      emit_yaml(out, v);
+    }
+    out << YAML::EndMap;
+  } else if (j.is_array()) {
+    out << YAML::BeginSeq;
+    for (const nlohmann::json& v : j) emit_yaml(out, v);
+    out << YAML::EndSeq;
+  } else if (j.is_string()) {
+    out << YAML::DoubleQuoted << j.get<std::string>();
+  } else if (j.is_boolean()) {
+    out << j.get<bool>();
+  } else if (j.is_number_integer()) {
+    out << j.get<std::int64_t>();
+  } else if (j.is_number()) {
+    out << j.get<double>();
+  } else {
+    out << YAML::Null;
+  }
+}
+
+// The scenario record as block YAML, doubles to 17 significant digits (they read back exactly).
+std::string yaml_text(const nlohmann::json& j) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  emit_yaml(out, j);
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace
 
 std::string override_text(const std::string& key, py::handle value) {
   if (py::isinstance<py::str>(value)) return key + "=" + value.cast<std::string>();
@@ -62,8 +100,8 @@ void bind_scenario(py::module_& m) {
       .def_property_readonly("sample_rate_hz", [](const PyScenario& s) { return s.scenario.output.sample_rate_hz; })
       .def("to_dict", [](const PyScenario& s) { return to_python(input::scenario_json(s.scenario)); },
            "The expanded scenario as a dict (the run folder's scenario.json).")
-      .def("__str__", [](const PyScenario& s) { return input::scenario_json(s.scenario).dump(2); },
-           "The expanded scenario as JSON (scenario.json).")
+      .def("__str__", [](const PyScenario& s) { return yaml_text(input::scenario_json(s.scenario)); },
+           "The expanded scenario as YAML (the content of scenario.json; numbers to 17 digits).")
       .def("__repr__", [](const PyScenario& s) {
         return "<gearsim.Scenario '" + s.scenario.name + "' from " + s.file.string() + ", " +
                std::to_string(s.overrides.size()) + " overrides>";

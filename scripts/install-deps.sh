@@ -23,7 +23,7 @@ packages=(
   gmsh libgmsh-dev                        # meshing of gear sections for ccx
   libgtest-dev libgmock-dev               # unit tests
   python3-dev python3-pybind11 pybind11-dev python3-numpy  # the gearsim Python module (python/)
-  python3-pytest python3-matplotlib python3-h5py           # its tests and examples/python
+  python3-pytest python3-matplotlib python3-h5py python3-yaml  # its tests and examples/python
 )
 
 missing=()

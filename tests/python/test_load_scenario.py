@@ -1,7 +1,6 @@
 """gearsim.load_scenario: the scenario file through input::load_scenario, errors as gearsim.InputError."""
-import json
-
 import pytest
+import yaml
 
 import gearsim
 from conftest import scenario_path
@@ -33,11 +32,13 @@ def test_a_missing_file_raises_input_error():
         gearsim.load_scenario(scenario_path("no_such_scenario.yaml"))
 
 
-def test_str_is_the_expanded_scenario_as_json():
-    s = gearsim.load_scenario(scenario_path("spur_pair.yaml"))
-    record = json.loads(str(s))
-    assert record == s.to_dict()
-    assert record["name"] == "spur_pair"
+def test_str_is_the_expanded_scenario_as_yaml():
+    s = gearsim.load_scenario(scenario_path("paper_dynamics.yaml"))
+    text = str(s)
+    assert "\nname: " in text and "\n  time_step_s: " in text and not text.startswith("{")  # block YAML, not JSON
+    record = yaml.safe_load(text)
+    assert record == s.to_dict()  # every value, doubles to the last bit
+    assert record["name"] == "paper_dynamics"
 
 
 def test_set_reloads_with_one_more_override():
