@@ -16,9 +16,17 @@ long tooth_pair_stiffnesses(const MeshStiffnessModel& model, const std::vector<c
       k_pair[i] = k.stiffness_N_per_m_per_m * model.face_width_m;
       if (k.outside) ++misses;
     }
-  // A constant mesh stiffness: shared equally by the pairs in contact.
-  if (model.mesh_stiffness_N_per_m > 0 && !found.empty())
-    k_pair.assign(found.size(), model.mesh_stiffness_N_per_m / static_cast<double>(found.size()));
+  // A constant mesh stiffness: shared equally by the pairs in contact on the same flanks. A pair
+  // without backlash also touches on its back flanks now and then: they are the mesh in the other
+  // sense, with the same stiffness of its own; counted together, each touch of a back flank would
+  // halve the loaded flanks' stiffness for a step (and pump energy into the mesh).
+  if (model.mesh_stiffness_N_per_m > 0 && !found.empty()) {
+    std::size_t ccw = 0;
+    for (const contact::ToothContact& c : found) ccw += c.flank_a == Flank::Ccw;
+    const std::size_t cw = found.size() - ccw;
+    for (std::size_t i = 0; i < found.size(); ++i)
+      k_pair[i] = model.mesh_stiffness_N_per_m / static_cast<double>(found[i].flank_a == Flank::Ccw ? ccw : cw);
+  }
   // Gear bodies in series with all pairs (compliance c): F_i = k_i (δ_i − c F),
   // F = Σ k_i δ_i / (1 + c Σ k_i) over the pairs with δ_i > c F (found by dropping the others
   // until none is left to drop). Each active pair then gets the secant stiffness

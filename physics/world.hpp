@@ -40,6 +40,7 @@ struct PowerFlows {
   double load_W = 0;      // delivered by the load torques (< 0 for a brake)
   double contact_W = 0;   // delivered by tooth contacts (< 0: friction and contact damping dissipate)
   double joint_W = 0;     // delivered by joints apart from their motors (< 0: bearing damping)
+  double impulse_W = 0;   // delivered by the scenario's force and torque pulses (impulses:)
   double kinetic_J = 0;   // kinetic energy of all bodies, J
 };
 

@@ -160,6 +160,7 @@ struct World::Impl {
   void measure_contacts();
   void measure_power();
   double kinetic_energy_J() const;
+  double impulse_power_W() const;
   void step_multibody();
   void multibody_rows();
   MultibodyRow spring_row(double k, double c, double force0) const;

@@ -440,6 +440,7 @@ void World::Impl::multibody_results() {
       pw.load_W += load_torque_N_m(*j.load, time - h, speed) * speed;
     }
   pw.kinetic_J = kinetic_energy_J();
+  pw.impulse_W = impulse_power_W();
   power = pw;
 }
 

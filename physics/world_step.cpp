@@ -202,6 +202,20 @@ long World::dropped_contacts() const { return impl_->dropped_points; }
 long World::stiffness_table_misses() const { return impl_->table_misses; }
 long World::failed_solves() const { return impl_->mb ? impl_->mb->failed_solves : 0; }
 
+// Power of the force and torque pulses applied in the step just taken (at time − dt), with the
+// bodies' velocities after it, as load_W takes its joint speeds.
+double World::Impl::impulse_power_W() const {
+  double w = 0;
+  for (const ImpulseDef& i : scenario.impulses) {
+    const double share = impulse_shape(i, time - scenario.solver.time_step_s);
+    if (share == 0) continue;
+    const btRigidBody& r = *bodies[static_cast<std::size_t>(body_index.at(i.body))].rigid;
+    if (r.getInvMass() == 0) continue;
+    w += share * (bt(i.force_N).dot(r.getLinearVelocity()) + bt(i.torque_N_m).dot(r.getAngularVelocity()));
+  }
+  return w;
+}
+
 double World::Impl::kinetic_energy_J() const {
   double kinetic = 0;
   for (const BuiltBody& b : bodies) {
@@ -218,6 +232,7 @@ void World::Impl::measure_power() {
   const double dt = scenario.solver.time_step_s;
   PowerFlows pw;
   pw.kinetic_J = kinetic_energy_J();
+  pw.impulse_W = impulse_power_W();
   for (const JointRec& j : joints) {
     const btRigidBody& a = j.constraint->getRigidBodyA();
     const btRigidBody& b = j.constraint->getRigidBodyB();

@@ -13,6 +13,7 @@ void PowerBalance::add(const physics::PowerFlows& p, double time_s) {
   sum_.load_W += p.load_W;
   sum_.contact_W += p.contact_W;
   sum_.joint_W += p.joint_W;
+  sum_.impulse_W += p.impulse_W;
   ++n_;
 }
 
@@ -23,7 +24,7 @@ double PowerBalance::kinetic_rate_W() const {
 double PowerBalance::imbalance_fraction() const {
   const double in = motor_W();
   if (in == 0) return 0;
-  return (motor_W() + load_W() + contact_W() + joint_W() - kinetic_rate_W()) / in;
+  return (motor_W() + load_W() + contact_W() + joint_W() + mean(sum_.impulse_W) - kinetic_rate_W()) / in;
 }
 
 }  // namespace gearsim::sim

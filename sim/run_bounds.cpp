@@ -97,8 +97,8 @@ std::optional<Divergence> RunBounds::check_speeds(const physics::World& world) c
 std::optional<Divergence> RunBounds::check_energy(const physics::World& world) {
   const physics::PowerFlows& p = world.power();
   const double dt = scenario_.solver.time_step_s;
-  external_J_ += (p.motor_W + p.load_W) * dt;
-  moved_J_ += (std::abs(p.motor_W) + std::abs(p.load_W)) * dt;
+  external_J_ += (p.motor_W + p.load_W + p.impulse_W) * dt;
+  moved_J_ += (std::abs(p.motor_W) + std::abs(p.load_W) + std::abs(p.impulse_W)) * dt;
   created_J_ = (p.kinetic_J - kinetic0_J_) - external_J_;
   const double limit = def_.max_created_energy_share * (moved_J_ + p.kinetic_J) + def_.created_energy_floor_J;
   if (!std::isfinite(created_J_))

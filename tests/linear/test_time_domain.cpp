@@ -86,13 +86,17 @@ std::string pulse_on(const std::string& body, const std::string& pulse) {
   return "  - {body: " + body + ", at_s: 0.02, duration_s: 1.0e-4, " + pulse + "}\n";
 }
 
-void expect_peaks_at_modes(const std::string& pulses, bool turns, linear::ModeType type, const std::string& asset = "lin_parker_1999.yaml",
-                           const std::vector<std::string>& bodies = {}) {
+// One experiment per entry of `pulse_sets` (each a scenario's `impulses:` entries); a mode counts
+// as found when a peak of any experiment is within 2 % of it and nearer to it than to any other.
+void expect_peaks_at_modes(const std::vector<std::string>& pulse_sets, bool turns, linear::ModeType type,
+                           const std::string& asset = "lin_parker_1999.yaml", const std::vector<std::string>& bodies = {}) {
+  std::vector<double> peaks;
+  linear::ModalAnalysis modes;
+  for (const std::string& pulses : pulse_sets) {
   const std::filesystem::path dir = test::fresh_test_dir();
   const auto file = test::asset_scenario_copy(
       asset, dir, {{"  damping_ratio: 0.01", "  damping_ratio: 0.001"}, {"loads:", "impulses:\n" + pulses + "loads:"}});
   physics::Scenario s = input::load_scenario(file, {"duration_s=0.14", "output.per_step_log=false"});
-  linear::ModalAnalysis modes;
   {
     const physics::World w(s);
     modes = linear::solve_modes(linear::build_lumped_model(w, s, {}));
@@ -103,12 +107,12 @@ void expect_peaks_at_modes(const std::string& pulses, bool turns, linear::ModeTy
   const std::vector<double> spec = summed_spectrum(rec.rows, 1.0 / (kEvery * s.solver.time_step_s), f0, f1);
   // Peaks: local maxima above 2 % of the largest, refined by a parabola through three points.
   const double top = *std::max_element(spec.begin(), spec.end());
-  std::vector<double> peaks;
   for (std::size_t k = 1; k + 1 < spec.size(); ++k)
     if (spec[k] > spec[k - 1] && spec[k] >= spec[k + 1] && spec[k] > 0.02 * top) {
       const double a = spec[k - 1], b = spec[k], c = spec[k + 1];
       peaks.push_back(f0 + static_cast<double>(k) + 0.5 * (a - c) / (a - 2 * b + c));
     }
+  }
   int checked = 0;
   for (const linear::ModeGroup& g : modes.groups) {
     if (g.type != type || g.frequency_hz > 3000) continue;
@@ -146,12 +150,15 @@ TEST(TimeDomain, ATorquePulseOnTheRingRingsAtTheRotationalModes) {
   std::snprintf(carrier, sizeof carrier, "torque_N_m: [0, 0, %.9g]", -20 * ratio);
   // Recorded: the central members' angles. The planets' also carry the translational modes, which
   // the three planets' sequential mesh phasing (z_s = 26 is no multiple of 3) couples in.
-  expect_peaks_at_modes(pulse_on("ring", "torque_N_m: [0, 0, 200]") + pulse_on("sun", "torque_N_m: [0, 0, 20]") + pulse_on("carrier", carrier), true,
+  expect_peaks_at_modes({pulse_on("ring", "torque_N_m: [0, 0, 200]") + pulse_on("sun", "torque_N_m: [0, 0, 20]") + pulse_on("carrier", carrier)}, true,
                         linear::ModeType::Rotational, "lin_parker_1999.yaml", {"sun", "carrier", "ring"});
 }
 
-TEST(TimeDomain, AForcePulseOnTheSunRingsAtTheTranslationalModes) {
-  expect_peaks_at_modes(pulse_on("sun", "force_N: [300, 200, 0]"), false, linear::ModeType::Translational);
+TEST(TimeDomain, ForcePulsesOnSunAndRingRingAtTheTranslationalModes) {
+  // The 2276 Hz pair hardly moves the sun (its peak stays below 1 % of the others in the sun
+  // experiment): a second experiment strikes the ring.
+  expect_peaks_at_modes({pulse_on("sun", "force_N: [300, 200, 0]"), pulse_on("ring", "force_N: [1500, -3000, 0]")}, false,
+                        linear::ModeType::Translational);
 }
 
 // Four planets: turn pulses of alternating sense on the planets (+, −, +, −) are orthogonal to the
@@ -161,7 +168,7 @@ TEST(TimeDomain, AForcePulseOnTheSunRingsAtTheTranslationalModes) {
 TEST(TimeDomain, AlternatingTorquePulsesOnTheFourPlanetsRingAtThePlanetModes) {
   std::string pulses;
   for (int i = 0; i < 4; ++i) pulses += pulse_on("planet_" + std::to_string(i), i % 2 ? "torque_N_m: [0, 0, -5]" : "torque_N_m: [0, 0, 5]");
-  expect_peaks_at_modes(pulses, true, linear::ModeType::Planet, "lin_parker_1999_4planets.yaml");
+  expect_peaks_at_modes({pulses}, true, linear::ModeType::Planet, "lin_parker_1999_4planets.yaml");
 }
 
 }  // namespace test_time_domain
