@@ -95,6 +95,7 @@ struct MultibodyEngine {
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jac;  // rows × dofs
   Eigen::MatrixXd inverse_mass;                                                // dofs × dofs
   Eigen::MatrixXd minv_jt;                                                     // dofs × rows
+  Eigen::VectorXd row_rate, row_rate_start, v_theta;  // per step, kept for their storage
   std::vector<double> a, b, x, w, lo, hi;
   std::vector<int> findex;
   btDantzigScratchMemory dantzig;

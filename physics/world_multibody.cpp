@@ -370,7 +370,9 @@ void World::Impl::solve_multibody_rows() {
   }
   e.minv_jt.noalias() = e.inverse_mass * e.jac.transpose();
   const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs), v_start(e.v_start.data(), dofs);
-  const Eigen::VectorXd j_v = e.jac * v_pred, j_v_start = e.jac * v_start;
+  e.row_rate.noalias() = e.jac * v_pred;
+  e.row_rate_start.noalias() = e.jac * v_start;
+  const Eigen::VectorXd &j_v = e.row_rate, &j_v_start = e.row_rate_start;
   e.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(e.a.data(), n, n);
   a.noalias() = e.jac * e.minv_jt;
@@ -409,7 +411,8 @@ void World::Impl::multibody_results() {
   const double h = scenario.solver.time_step_s;
   // Work of a row over the step: its force times its travel, h·J·v_θ (positions moved with v_θ).
   const Eigen::Map<const Eigen::VectorXd> v_end(e.tree->getVelocityVector() + 6, e.dofs), v_start(e.v_start.data(), e.dofs);
-  const Eigen::VectorXd v = (1 - e.theta) * v_start + e.theta * v_end;
+  e.v_theta.noalias() = (1 - e.theta) * v_start + e.theta * v_end;
+  const Eigen::VectorXd& v = e.v_theta;
   PowerFlows pw;
   std::fill(e.motor_torque_N_m.begin(), e.motor_torque_N_m.end(), 0.0);
   for (std::size_t r = 0; r < e.rows.size(); ++r) {
