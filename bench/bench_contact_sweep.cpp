@@ -9,6 +9,7 @@
 // With `--coherent` each sweep (pair, press, offset) runs through one CoherentToothSearch, as a
 // simulation steps a pair: its dump compares with the stateless one's.
 // Usage: bench_contact_sweep [scenario.yaml=assets/scenarios/paper_dynamics.yaml] [--dump FILE] [--coherent]
+//                            [--press-offset-um U] (added to every press: a CAD gear's backlash taken up)
 //        bench_contact_sweep --compare A B
 #include <chrono>
 #include <cmath>
@@ -93,9 +94,11 @@ int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--compare") return compare(argv[2], argv[3]);
   std::string file = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml", dump;
   bool coherent = false;
+  double press_offset_m = 0;  // added to every press: takes up a CAD gear's backlash
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--dump" && i + 1 < argc) dump = argv[++i];
     else if (std::string(argv[i]) == "--coherent") coherent = true;
+    else if (std::string(argv[i]) == "--press-offset-um" && i + 1 < argc) press_offset_m = 1e-6 * std::stod(argv[++i]);
     else file = argv[i];
   }
   const Scenario s = input::load_scenario(file);
@@ -106,22 +109,20 @@ int main(int argc, char** argv) {
     double ratio;  // spin in the carrier frame per unit sun spin
   };
   std::vector<Gear> gears;
+  // Every body with flank tables: generated gears and recognised CAD meshes alike.
   int sun_teeth = 0;
-  for (const BodyDef& d : s.bodies)
-    if (d.gear && d.gear->kind == GearKind::External && d.name == "sun") sun_teeth = d.gear->teeth;
+  for (const BodyDef& d : s.bodies) {
+    const BuiltBody b = build_body(d, s.contact);
+    if (!b.flanks) continue;
+    if (d.name == "sun") sun_teeth = b.flanks->teeth();
+    gears.push_back({d.name, b.flanks, {d.pose.position_m.head<2>(), angle_of(d.pose.orientation)}, 0});
+  }
   if (sun_teeth == 0) {
     std::fprintf(stderr, "%s: no gear body named 'sun'\n", file.c_str());
     return 1;
   }
-  for (const BodyDef& d : s.bodies) {
-    if (!d.gear) continue;
-    const BuiltBody b = build_body(d, s.contact);
-    const bool internal = d.gear->kind == GearKind::Internal;
-    // Carrier-frame kinematics: the sun turns by φ, a planet by −φ·Zs/Zp, the ring by −φ·Zs/Zr.
-    const double ratio = d.name == "sun" ? 1.0 : -static_cast<double>(sun_teeth) / d.gear->teeth;
-    gears.push_back({d.name, b.flanks, {d.pose.position_m.head<2>(), angle_of(d.pose.orientation)}, ratio});
-    (void)internal;
-  }
+  // Carrier-frame kinematics: the sun turns by φ, a planet by −φ·Zs/Zp, the ring by −φ·Zs/Zr.
+  for (Gear& g : gears) g.ratio = g.name == "sun" ? 1.0 : -static_cast<double>(sun_teeth) / g.table->teeth();
   // Pairs that mesh: the sun with each planet, each planet with the ring (the external gear first).
   std::vector<std::pair<int, int>> pairs;
   for (std::size_t i = 0; i < gears.size(); ++i)
@@ -156,7 +157,7 @@ int main(int argc, char** argv) {
         for (long i = 0; i < steps; ++i) {
           const double phi = static_cast<double>(i) * step_rad;
           PlanarPose pa = ga.pose, pb = gb.pose;
-          pa.angle_rad += phi * ga.ratio + press / r_press;
+          pa.angle_rad += phi * ga.ratio + (press + press_offset_m) / r_press;
           pb.angle_rad += phi * gb.ratio;
           if (ga.name == "sun") pa.centre_m.x() += shift, pa.centre_m.y() += 0.5 * shift;
           if (gb.name == "sun") pb.centre_m.x() += shift, pb.centre_m.y() += 0.5 * shift;

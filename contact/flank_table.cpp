@@ -192,4 +192,45 @@ FlankTable::FlankFrame FlankTable::flank_frame(int tooth, Flank flank, double r)
   return f;
 }
 
+void FlankTable::flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const {
+  const double* row = (flank == Flank::Ccw ? ccw_ : cw_).data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
+  int lo = 0, hi = samples_ - 1;
+  while (lo < samples_ && std::isnan(row[lo])) ++lo;
+  while (hi > lo && std::isnan(row[hi])) --hi;
+  *r_lo = r_min_ + lo * dr_;
+  *r_hi = r_min_ + hi * dr_;
+}
+
+bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const {
+  const double x = (r - r_min_) * inv_dr_;
+  if (!(x >= 0 && x <= samples_ - 1)) return false;
+  int i = std::min(static_cast<int>(x), samples_ - 2);
+  double t = x - i;
+  const double* row = (flank == Flank::Ccw ? ccw_ : cw_).data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
+  double y0 = row[i], y1 = row[i + 1];
+  if (std::isnan(y1) && t == 0 && i > 0) {  // the flank's last sample: the interval below, at its end
+    --i;
+    t = 1;
+    y1 = y0;
+    y0 = row[i];
+  }
+  if (std::isnan(y0) || std::isnan(y1)) return false;
+  // Slopes per sample step at i and i + 1: central where both neighbours have material.
+  const double ym = i > 0 ? row[i - 1] : kNaN, yp = i + 2 < samples_ ? row[i + 2] : kNaN;
+  const double m0 = std::isnan(ym) ? y1 - y0 : 0.5 * (y1 - ym);
+  const double m1 = std::isnan(yp) ? y1 - y0 : 0.5 * (yp - y0);
+  // Cubic Hermite in t ∈ [0, 1] and its derivatives.
+  const double t2 = t * t, t3 = t2 * t;
+  const double theta = (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * m1;
+  const double dt1 = (6 * t2 - 6 * t) * y0 + (3 * t2 - 4 * t + 1) * m0 + (-6 * t2 + 6 * t) * y1 + (3 * t2 - 2 * t) * m1;
+  const double dt2 = (12 * t - 6) * y0 + (6 * t - 4) * m0 + (-12 * t + 6) * y1 + (6 * t - 2) * m1;
+  const double th1 = dt1 * inv_dr_, th2 = dt2 * inv_dr_ * inv_dr_;  // dθ/dr, d²θ/dr²
+  const Eigen::Vector2d u = direction(tooth, theta), v(-u.y(), u.x());
+  // p = r·u(θ(r)): p' = u + r·θ'·v, p'' = (2θ' + r·θ'')·v − r·θ'²·u.
+  jet->point = r * u;
+  jet->d1 = u + (r * th1) * v;
+  jet->d2 = (2 * th1 + r * th2) * v - (r * th1 * th1) * u;
+  return true;
+}
+
 }  // namespace gearsim::contact

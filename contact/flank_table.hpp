@@ -133,6 +133,23 @@ class FlankTable {
   };
   FlankFrame flank_frame(int tooth, Flank flank, double r) const;
 
+  // A flank point at r with its first and second derivatives in r (gear frame), on the smooth
+  // (C¹) interpolant of the table: cubic Hermite through the samples with slopes by central
+  // differences (one-sided next to a radius without material). Its normal turns continuously
+  // along the flank, so a contact on it can be solved by Newton's method (contact_newton.hpp).
+  // False where the interval around r lacks material (no jet then).
+  struct FlankJet {
+    Eigen::Vector2d point, d1, d2;  // m, 1, 1/m
+  };
+  bool flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const;
+  // The radii of a flank's first and last sample with material (its root and tip ends), m.
+  void flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const;
+  // The outward unit normal of a flank with derivative d1 (FlankJet::d1) at a point.
+  static Eigen::Vector2d outward_normal(Flank flank, const Eigen::Vector2d& d1) {
+    const Eigen::Vector2d n = Eigen::Vector2d(-d1.y(), d1.x()).normalized();
+    return flank == Flank::Ccw ? n : Eigen::Vector2d(-n);
+  }
+
  private:
   double sample(const std::vector<double>& table, int tooth, double r, double* slope) const;
   void share_identical_teeth();
