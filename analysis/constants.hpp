@@ -129,4 +129,25 @@ inline constexpr std::size_t kResponseGridOversampling = 16;
 // down to θ ≈ 3e-5 (0.25 Hz at 50 kHz) are still fitted.
 inline constexpr double kRingingRankTolerance = 1e-9;
 
+// --- Sensor-alone localisation in in-phase sets (in_phase_localisation.hpp) ----------------------
+
+// A planet's event counts as an event when the RMS of its difference signal over the event window
+// (one tooth pitch) stands this many times over its RMS more than one pitch away. Normally 3: for
+// a Gaussian background of M ≥ 40 independent samples per window the RMS of a window scatters by
+// 1/√(2M) ≤ 11 %, so the largest of a turn's 36 windows stays under about 1.4× the background;
+// 3 is twice that, and a healthy run's windows read 0.9–1.4 (docs/condition-monitoring.md).
+inline constexpr double kInPhaseEventOverBackground = 3.0;
+
+// A correlation of two event waveforms counts as positive or negative when |ρ| reaches this many
+// standard deviations of the correlation of two independent noise records of M samples (1/√M).
+// Normally 2 (a 2.3 % one-sided chance per correlation that noise alone passes it).
+inline constexpr double kInPhaseCorrelationSigmas = 2.0;
+
+// The event waveforms are compared on a grid whose bins are no wider than one sensor sample (the next power of two at or above the
+// sensor's samples per planet turn, at least kDefaultSamplesPerRevolution), and again on twice
+// that grid; a planet is named only when both grids name it. Normally 2 (one doubling): a
+// housing mode's ringing has a polarity only if its timing is resolved, and a bin as wide as a
+// sample can move it by half a period of a mode at a quarter of the sample rate.
+inline constexpr int kInPhaseGridRefinement = 2;
+
 }  // namespace gearsim::analysis_constants

@@ -30,7 +30,8 @@ struct ToothResponse {
   std::string gear;
   int tooth = -1;
   PairId pair;
-  double load_z = 0, share_z = 0;
+  double load_z = 0, share_z = 0;  // contact forces; NaN for a sensor's response
+  std::string source = "contact forces";
   std::string reason;
 };
 

@@ -55,7 +55,7 @@ Diagnosis diagnose_from_contacts(const std::vector<ToothLoads>& loads, LoadedFla
     for (int k : standing) {
       const auto ku = static_cast<std::size_t>(k);
       if (is_fault(t.gear, k)) continue;
-      ToothResponse r{t.gear, k, t.pair, t.z_score[ku], t.share_z[ku], ""};
+      ToothResponse r{t.gear, k, t.pair, t.z_score[ku], t.share_z[ku], "contact forces", ""};
       double others = 0;
       for (std::size_t j = 0; j < t.share_steps.size(); ++j)
         if (j != ku) others += t.share_steps[j];

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "analysis/constants.hpp"
+#include "core/errors.hpp"
 
 namespace gearsim {
 namespace {

@@ -7,6 +7,7 @@
 
 #include "analysis/constants.hpp"
 #include "analysis/envelope.hpp"
+#include "analysis/in_phase_localisation.hpp"
 #include "analysis/planet_separation.hpp"
 #include "analysis/resample.hpp"
 #include "core/errors.hpp"
@@ -18,6 +19,79 @@ const std::vector<double>& angle_named(const RunSignals& s, const std::string& b
   for (const BodyAngle& a : s.angles)
     if (a.body == body) return a.angle_rad;
   throw InputError("sensor analysis: no logged angle of '" + body + "'");
+}
+
+// Planets meshing in phase: the localisation of the event at their common tooth, on a grid whose
+// bins are no wider than one sensor sample and on kInPhaseGridRefinement times it.
+void localise_in_phase_planets(SensorAnalysis& out, const std::vector<double>& t, const std::vector<double>& x,
+                               const std::vector<double>& carrier, const std::vector<std::vector<double>>& spins,
+                               const SensorSignal& sensor, const TrainDescription& train) {
+  constexpr double kTurn = 2 * std::numbers::pi;
+  // Sensor samples per planet turn relative to the carrier.
+  const double turns = std::abs(spins.front().back() - spins.front().front()) / kTurn;
+  if (!(turns > 0)) return;
+  const double per_turn = out.sample_rate_hz * (t.back() - t.front()) / turns;
+  int n = analysis_constants::kDefaultSamplesPerRevolution;
+  while (n < per_turn) n *= 2;
+  std::vector<double> sun_direction;
+  for (const PlanetGear& p : train.planets) sun_direction.push_back(p.sun_direction_rad);
+  for (int grid : {n, analysis_constants::kInPhaseGridRefinement * n}) {
+    std::vector<std::vector<double>> means;
+    for (std::size_t k = 0; k < train.planets.size(); ++k) {
+      std::vector<double> position(t.size());
+      for (std::size_t i = 0; i < t.size(); ++i) position[i] = train.planets[k].position0_rad + carrier[i];
+      means.push_back(planet_separated_average(x, position, spins[k], sensor.angle_rad, sensor.window_width_rad, grid).mean);
+    }
+    (grid == n ? out.in_phase : out.in_phase_refined) = localise_in_phase(means, sun_direction, train.planets.front().teeth, per_turn);
+  }
+  const InPhaseLocalisation& a = *out.in_phase;
+  const InPhaseLocalisation& b = *out.in_phase_refined;
+  std::ostringstream ev;
+  ev.precision(3);
+  auto events = [&](std::ostringstream& o) {
+    o << "event RMS at the common tooth";
+    for (std::size_t k = 0; k < a.planets.size(); ++k)
+      o << (k ? ", " : " ") << train.planets[k].body << " " << a.planets[k].event_rms_m_s2 << " m/s² (background " << a.planets[k].background_rms_m_s2
+        << ")";
+    o << "; correlations";
+    for (std::size_t i = 0; i < a.planets.size(); ++i)
+      for (std::size_t j = i + 1; j < a.planets.size(); ++j) o << " " << i << "–" << j << " " << a.correlation[i][j];
+    o << " (grid " << a.samples_per_revolution << " per turn)";
+  };
+  if (a.named < 0 || a.named != b.named) {
+    std::ostringstream why;
+    why.precision(3);
+    why << "the planets mesh in phase (z_s/N whole): every planet's window hears an event at the same tooth; no planet is named: ";
+    if (a.named != b.named)
+      why << "the grid of " << a.samples_per_revolution << " per turn and that of " << b.samples_per_revolution
+          << " disagree (the events' timing is not resolved)";
+    else
+      why << a.reason;
+    why << "; ";
+    events(why);
+    out.note = why.str();
+    return;
+  }
+  const PlanetGear& p = train.planets[static_cast<std::size_t>(a.named)];
+  ToothFault f;
+  f.gear = p.body;
+  f.tooth = a.event_tooth;
+  f.source = "sensor " + sensor.name;
+  ev << "the planets mesh in phase; at the tooth they share (tooth " << a.event_tooth << " facing the sun, tooth "
+     << (a.event_tooth + p.teeth / 2) % p.teeth << " the ring) " << a.reason << "; ";
+  events(ev);
+  f.evidence = ev.str();
+  f.confidence = std::min(a.confidence, b.confidence);
+  out.fault = f;
+  for (std::size_t k = 0; k < train.planets.size(); ++k) {
+    if (static_cast<int>(k) == a.named) continue;
+    std::ostringstream why;
+    why.precision(3);
+    why << "its event at the same tooth (" << a.planets[k].event_rms_m_s2 << " m/s², against " << a.planets[static_cast<std::size_t>(a.named)].event_rms_m_s2
+        << " on " << p.body << ") has the opposite polarity to " << p.body << "'s (correlation " << a.correlation[k][static_cast<std::size_t>(a.named)]
+        << ") and agrees with the other responders: it takes up the load " << p.body << " sheds (in-phase load sharing), not a fault";
+    out.responses.push_back({train.planets[k].body, a.event_tooth, PairId{}, std::nan(""), std::nan(""), "sensor " + sensor.name, why.str()});
+  }
 }
 
 }  // namespace
@@ -33,8 +107,10 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
   out.sample_rate_hz = uniform_sample_rate_hz(t);
   const std::vector<double> carrier = interpolate_linear(s.time_s, angle_named(s, train.carrier), t);
   constexpr int kSamplesPerTurn = analysis_constants::kDefaultSamplesPerRevolution;
+  std::vector<std::vector<double>> spins;
   for (const PlanetGear& p : train.planets) {
     const std::vector<double> spin = interpolate_linear(s.time_s, angle_named(s, p.body), t);
+    spins.push_back(spin);
     std::vector<double> position(t.size());
     for (std::size_t i = 0; i < t.size(); ++i) position[i] = p.position0_rad + carrier[i];
     const PlanetSeparatedAverage a = planet_separated_average(x, position, spin, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
@@ -78,9 +154,10 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     const PlanetSeparatedAverage a = sun_separated_average(x, positions, offsets, sun, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
     out.sun = PlanetSensorView{train.sun, a.coverage, a.passes, condition_indicators(a.mean, train.sun_teeth), -1};
   }
-  // One planet standing apart: FM4 over the fault level and over twice every other planet's —
-  // only where the separation can work: planets meshing in phase share every event (the paper's
-  // 43 µm run names no planet; its 5 and 10 µm runs would name planet 2, wrongly, by this rule).
+  // Sequentially phased: one planet standing apart, FM4 over the fault level and over twice every
+  // other planet's. Not for planets meshing in phase: they share every event (the paper's 43 µm
+  // run names no planet by it; its 5 and 10 µm runs would name planet 2, wrongly); they have
+  // their own rule (in_phase_localisation.hpp).
   for (std::size_t i = 0; i < out.planets.size() && !train.planets_in_phase; ++i) {
     const PlanetSensorView& v = out.planets[i];
     double others = 0;
@@ -101,18 +178,17 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     f.confidence = 1 - others / v.indicators.fm4;
     out.fault = f;
   }
+  if (train.planets_in_phase && out.planets.size() > 1) {
+    localise_in_phase_planets(out, t, x, carrier, spins, sensor, train);
+    return out;
+  }
   if (!out.fault && out.planets.size() > 1) {
     std::vector<double> fm4;
     for (const PlanetSensorView& v : out.planets) fm4.push_back(std::isfinite(v.indicators.fm4) ? v.indicators.fm4 : 0.0);
     std::sort(fm4.rbegin(), fm4.rend());
     std::ostringstream n;
     n.precision(3);
-    if (train.planets_in_phase)
-      n << "the planets mesh in phase (z_s/N whole): every planet's separated window carries the events of all of them, so the "
-           "sensor alone cannot say which planet an event comes from; no planet is named (largest separated FM4 "
-        << fm4[0] << ", next " << fm4[1] << "; a healthy gear's is about 3)";
-    else
-      n << "no planet's separated average stands out (largest FM4 " << fm4[0] << ", next " << fm4[1] << ")";
+    n << "no planet's separated average stands out (largest FM4 " << fm4[0] << ", next " << fm4[1] << ")";
     out.note = n.str();
   }
   return out;

@@ -10,6 +10,7 @@
 
 #include "analysis/condition_indicators.hpp"
 #include "analysis/diagnosis.hpp"
+#include "analysis/in_phase_localisation.hpp"
 #include "analysis/run_signals.hpp"
 
 namespace gearsim {
@@ -37,9 +38,14 @@ struct SensorAnalysis {
   };
   double envelope_band_lo_hz = 0, envelope_band_hi_hz = 0;
   std::vector<EnvelopeLine> envelope_lines;
-  // A planet whose separated average's FM4 exceeds kSensorFm4Fault and twice every other planet's;
-  // never for planets meshing in phase (TrainDescription::planets_in_phase).
+  // Sequentially phased planets: a planet whose separated average's FM4 exceeds kSensorFm4Fault and
+  // twice every other planet's. Planets meshing in phase (TrainDescription::planets_in_phase): the
+  // planet whose event at the common tooth opposes all the others' (in_phase_localisation.hpp),
+  // on the grid that resolves the sensor's samples and on twice that grid.
   std::optional<ToothFault> fault;
+  std::vector<ToothResponse> responses;  // in phase: the other planets' events, load-sharing responses
+  // In phase: the localisation on the grid that resolves the sensor's samples, and on twice it.
+  std::optional<InPhaseLocalisation> in_phase, in_phase_refined;
   std::string note;  // why no planet is named when one might expect it
 };
 

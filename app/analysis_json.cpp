@@ -120,12 +120,31 @@ json diagnosis_json(const Diagnosis& d) {
   return {{"faults", faults}};
 }
 
+json response_json(const ToothResponse& r) {
+  auto num_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  return {{"gear", r.gear},          {"tooth", r.tooth},     {"pair", r.pair.a.empty() ? "" : pair_name(r.pair)},
+          {"load_z_score", num_or_null(r.load_z)}, {"share_z_score", num_or_null(r.share_z)}, {"source", r.source},
+          {"reason", r.reason}};
+}
+
 json responses_json(const Diagnosis& d) {
   json list = json::array();
-  for (const ToothResponse& r : d.responses)
-    list.push_back({{"gear", r.gear}, {"tooth", r.tooth}, {"pair", pair_name(r.pair)}, {"load_z_score", r.load_z},
-                    {"share_z_score", r.share_z}, {"reason", r.reason}});
+  for (const ToothResponse& r : d.responses) list.push_back(response_json(r));
   return list;
+}
+
+// The in-phase localisation (in_phase_localisation.hpp): per planet its event and background,
+// the correlations of the event waveforms, what was named.
+json in_phase_json(const InPhaseLocalisation& l, const std::vector<PlanetSensorView>& planets) {
+  json per = json::array();
+  for (std::size_t k = 0; k < l.planets.size(); ++k)
+    per.push_back({{"planet", k < planets.size() ? planets[k].planet : ""},
+                   {"event_rms_m_s2", l.planets[k].event_rms_m_s2},
+                   {"background_rms_m_s2", l.planets[k].background_rms_m_s2}});
+  return {{"samples_per_revolution", l.samples_per_revolution}, {"event_tooth_facing_sun", l.event_tooth}, {"planets", per},
+          {"correlation", l.correlation}, {"min_correlation", l.min_correlation}, {"event", l.event},
+          {"named", l.named >= 0 && static_cast<std::size_t>(l.named) < planets.size() ? json(planets[static_cast<std::size_t>(l.named)].planet) : json(nullptr)},
+          {"confidence", l.confidence}, {"reason", l.reason}};
 }
 
 json sensors_json(const std::vector<SensorAnalysis>& list) {
@@ -158,6 +177,8 @@ json sensors_json(const std::vector<SensorAnalysis>& list) {
                     {"fm0", num_or_null(c.fm0)}, {"fm4", num_or_null(c.fm4)}, {"m6a", num_or_null(c.m6a)}, {"na4", num_or_null(c.na4)},
                     {"er", num_or_null(c.er)}}}};
     }
+    if (a.in_phase) j["in_phase"] = in_phase_json(*a.in_phase, a.planets);
+    if (a.in_phase_refined) j["in_phase_refined_grid"] = in_phase_json(*a.in_phase_refined, a.planets);
     j["fault"] = a.fault ? fault_json(*a.fault) : json(nullptr);
     if (!a.note.empty()) j["note"] = a.note;
     out.push_back(j);
@@ -208,8 +229,13 @@ json analysis_json(const RunAnalysis& a, const input::GearTrain& train, const st
   if (!a.sensors.empty()) {
     j["sensors"] = sensors_json(a.sensors);
     if (!j.contains("diagnosis")) j["diagnosis"] = {{"faults", json::array()}};
-    for (const SensorAnalysis& s : a.sensors)
+    for (const SensorAnalysis& s : a.sensors) {
       if (s.fault) j["diagnosis"]["faults"].push_back(fault_json(*s.fault));
+      for (const ToothResponse& r : s.responses) {
+        if (!j.contains("tooth_responses")) j["tooth_responses"] = json::array();
+        j["tooth_responses"].push_back(response_json(r));
+      }
+    }
   }
   return j;
 }

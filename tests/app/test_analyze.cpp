@@ -95,6 +95,20 @@ TEST_F(Analyze, DiagnosisNamesPlanetZeroToothZeroAndNoOtherTooth) {
   EXPECT_TRUE(h["diagnosis"]["faults"].empty()) << h["diagnosis"]["faults"].dump();
 }
 
+// From the housing sensor alone (in-phase planets, in_phase_localisation.hpp): whatever the
+// sensor names on the faulty run is planet 0 and no other planet, and on the healthy run nothing;
+// every in-phase localisation says why it named what it named.
+TEST_F(Analyze, TheSensorNamesNoPlanetButTheFaultyOne) {
+  const nlohmann::json f = analysis(*faulty_), h = analysis(*healthy_);
+  for (const auto& fault : f["diagnosis"]["faults"])
+    if (fault["source"].get<std::string>().rfind("sensor", 0) == 0) EXPECT_EQ(fault["gear"], "planet_0") << fault.dump();
+  for (const auto& fault : h["diagnosis"]["faults"]) EXPECT_NE(fault["source"].get<std::string>().rfind("sensor", 0), 0u) << fault.dump();
+  for (const nlohmann::json* j : {&f, &h}) {
+    ASSERT_TRUE((*j)["sensors"][0].contains("in_phase"));
+    EXPECT_FALSE((*j)["sensors"][0]["in_phase"]["reason"].get<std::string>().empty());
+  }
+}
+
 TEST_F(Analyze, SynchronousAverageFindsTheSameTooth) {
   // The standard view from the output-rate logs alone: planet 0's force averaged over its
   // rotation relative to the carrier, one window per tooth where it faces the sun.
