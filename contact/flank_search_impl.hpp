@@ -344,6 +344,18 @@ double refined_radius(FlankSamples& s) {
 constexpr double kNewtonTolerance_m = 1e-13;
 constexpr int kNewtonIterations = 12;
 
+// A solved contact: x's point P, the foot Q on y's flank (tooth j, flank g) with y's outward
+// normal n there, all in y's frame; the hit in world terms.
+Hit solved_hit(const XY& xy, const Vector2d& P, const Vector2d& Q, const Vector2d& n, int j, Flank g) {
+  Hit h;
+  h.depth = (Q - P).dot(n);
+  h.point = xy.y.to_world(P);
+  h.normal_into_x = xy.y.dir_to_world(n);
+  h.tooth_y = j;
+  h.flank_y = g;
+  return h;
+}
+
 Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi) {
   const FlankTable &xt = xy.x.table, &yt = xy.y.table;
   FlankTable::FlankJet a, b;
@@ -373,13 +385,7 @@ Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi
       if (g == Flank::Cw) dn = -dn;
       const double d2 = -P2.dot(n) - P1.dot(dn) * (-J11 / J12);
       if (!(d2 < 0) || !(J12 != 0)) return {};
-      Hit h;
-      h.depth = (Q - P).dot(n);
-      h.point = xy.y.to_world(P);
-      h.normal_into_x = xy.y.dir_to_world(n);
-      h.tooth_y = j;
-      h.flank_y = g;
-      return h;
+      return solved_hit(xy, P, Q, n, j, g);
     }
     r += dr;
     s += ds;
@@ -412,13 +418,7 @@ Hit corner_hit(const XY& xy, int k, Flank f, double r_end, bool high_end) {
       const Vector2d n = FlankTable::outward_normal(g, b.d1);
       const double rise = -P1.dot(n);
       if (!(high_end ? rise > 0 : rise < 0)) return {};
-      Hit h;
-      h.depth = (b.point - P).dot(n);
-      h.point = xy.y.to_world(P);
-      h.normal_into_x = xy.y.dir_to_world(n);
-      h.tooth_y = j;
-      h.flank_y = g;
-      return h;
+      return solved_hit(xy, P, b.point, n, j, g);
     }
     s += ds;
   }
