@@ -1,0 +1,105 @@
+// Internal to contact/, included by flank_search_impl.hpp only (after Hit and XY): Newton's
+// method on the smooth (C¹) flanks for a contact's deepest point — an interior maximum of the
+// overlap (newton_hit) or a flank's corner (corner_hit). docs/tooth-contact.md, "Newton
+// refinement on smooth flanks". Not an interface.
+#pragma once
+
+namespace gearsim::contact {
+namespace {
+
+// Newton's method on the smooth flanks (FlankTable::flank_jet): the deepest point of x's flank
+// (tooth k, f) inside y's facing flank, started at radius r0 and kept within [r_lo, r_hi]. The
+// unknowns are the radius r on x's flank and s on y's; with P(r), Q(s) both in y's frame:
+//   F1 = (P − Q)·Q' = 0      (Q is the foot of the normal from P),
+//   F2 = P' × Q'   = 0      (the flanks parallel there: the depth along x's flank stationary),
+// and a maximum, not a minimum, of the depth D = (Q − P)·n_y (n_y: y's outward normal). Iterates
+// until a step moves both points by less than kNewtonTolerance_m. No hit (depth kNone) when the
+// start faces no flank of y, a point leaves the flanks' material, r leaves [r_lo, r_hi], the
+// stationary point is not a maximum, or kNewtonIterations do not converge: the caller falls
+// back to the sampled refinement then.
+constexpr double kNewtonTolerance_m = 1e-13;
+constexpr int kNewtonIterations = 12;
+
+// A solved contact: x's point P, the foot Q on y's flank (tooth j, flank g) with y's outward
+// normal n there, all in y's frame; the hit in world terms.
+Hit solved_hit(const XY& xy, const Vector2d& P, const Vector2d& Q, const Vector2d& n, int j, Flank g) {
+  Hit h;
+  h.depth = (Q - P).dot(n);
+  h.point = xy.y.to_world(P);
+  h.normal_into_x = xy.y.dir_to_world(n);
+  h.tooth_y = j;
+  h.flank_y = g;
+  return h;
+}
+
+Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi) {
+  const FlankTable &xt = xy.x.table, &yt = xy.y.table;
+  FlankTable::FlankJet a, b;
+  if (!xt.flank_jet(k, f, r0, &a)) return {};
+  const FlankTable::Probe start = yt.probe_depth(xy.in_y(a.point));
+  if (!start.has_flank) return {};
+  const int j = start.tooth;
+  const Flank g = start.flank;
+  double r = r0, s = xy.in_y(a.point).norm();
+  for (int it = 0; it < kNewtonIterations; ++it) {
+    if (!xt.flank_jet(k, f, r, &a) || !yt.flank_jet(j, g, s, &b)) return {};
+    const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1, P2 = xy.rot * a.d2;
+    const Vector2d &Q = b.point, &Q1 = b.d1, &Q2 = b.d2;
+    auto cross = [](const Vector2d& u, const Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+    const Vector2d PQ = P - Q;
+    const double F1 = PQ.dot(Q1), F2 = cross(P1, Q1);
+    const double J11 = P1.dot(Q1), J12 = -Q1.squaredNorm() + PQ.dot(Q2), J21 = cross(P2, Q1), J22 = cross(P1, Q2);
+    const double det = J11 * J22 - J12 * J21;
+    if (!(std::abs(det) > 0)) return {};
+    const double dr = -(F1 * J22 - F2 * J12) / det, ds = -(J11 * F2 - J21 * F1) / det;
+    if (std::abs(dr) < kNewtonTolerance_m && std::abs(ds) < kNewtonTolerance_m) {
+      // At the foot: D(r) = (Q(s(r)) − P(r))·n_y, dD/dr = −P'·n_y, and
+      // d²D/dr² = −P''·n_y − P'·(dn_y/ds)·(ds/dr) with ds/dr = −J11/J12 (F1 held at 0).
+      const Vector2d n = FlankTable::outward_normal(g, Q1);
+      const double q1 = Q1.norm();
+      Vector2d dn = Vector2d(-Q2.y(), Q2.x()) / q1 - Vector2d(-Q1.y(), Q1.x()) * (Q1.dot(Q2) / (q1 * q1 * q1));
+      if (g == Flank::Cw) dn = -dn;
+      const double d2 = -P2.dot(n) - P1.dot(dn) * (-J11 / J12);
+      if (!(d2 < 0) || !(J12 != 0)) return {};
+      return solved_hit(xy, P, Q, n, j, g);
+    }
+    r += dr;
+    s += ds;
+    if (!(r >= r_lo && r <= r_hi)) return {};
+  }
+  return {};
+}
+
+// The depth of x's flank end at r_end (its tip corner, or its root end) inside y's facing flank:
+// the foot of the normal by Newton's method on F1 alone. No hit unless the depth still rises
+// toward that end there (dD/dr = −P'·n_y > 0 at a high end, < 0 at a low end): the maximum is
+// then the corner itself.
+Hit corner_hit(const XY& xy, int k, Flank f, double r_end, bool high_end) {
+  const FlankTable &xt = xy.x.table, &yt = xy.y.table;
+  FlankTable::FlankJet a, b;
+  if (!xt.flank_jet(k, f, r_end, &a)) return {};
+  const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1;
+  const FlankTable::Probe start = yt.probe_depth(P);
+  if (!start.has_flank) return {};
+  const int j = start.tooth;
+  const Flank g = start.flank;
+  double s = P.norm();
+  for (int it = 0; it < kNewtonIterations; ++it) {
+    if (!yt.flank_jet(j, g, s, &b)) return {};
+    const Vector2d PQ = P - b.point;
+    const double F1 = PQ.dot(b.d1), dF = -b.d1.squaredNorm() + PQ.dot(b.d2);
+    if (!(dF < 0)) return {};
+    const double ds = -F1 / dF;
+    if (std::abs(ds) < kNewtonTolerance_m) {
+      const Vector2d n = FlankTable::outward_normal(g, b.d1);
+      const double rise = -P1.dot(n);
+      if (!(high_end ? rise > 0 : rise < 0)) return {};
+      return solved_hit(xy, P, b.point, n, j, g);
+    }
+    s += ds;
+  }
+  return {};
+}
+
+}  // namespace
+}  // namespace gearsim::contact
