@@ -32,15 +32,28 @@ Hit solved_hit(const XY& xy, const Vector2d& P, const Vector2d& Q, const Vector2
   return h;
 }
 
+// y's flank that x's point P (y's frame) faces, and the start of the search for its foot there
+// (the flank point at P's own radius). False where P faces no flank.
+struct Facing {
+  int tooth = -1;
+  Flank flank = Flank::Ccw;
+  double s = 0;
+};
+bool facing_flank(const FlankTable& yt, const Vector2d& P, Facing* out) {
+  const FlankTable::Probe start = yt.probe_depth(P);
+  if (!start.has_flank) return false;
+  *out = {start.tooth, start.flank, P.norm()};
+  return true;
+}
+
 Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi) {
   const FlankTable &xt = xy.x.table, &yt = xy.y.table;
   FlankTable::FlankJet a, b;
-  if (!xt.flank_jet(k, f, r0, &a)) return {};
-  const FlankTable::Probe start = yt.probe_depth(xy.in_y(a.point));
-  if (!start.has_flank) return {};
-  const int j = start.tooth;
-  const Flank g = start.flank;
-  double r = r0, s = xy.in_y(a.point).norm();
+  Facing y_flank;
+  if (!xt.flank_jet(k, f, r0, &a) || !facing_flank(yt, xy.in_y(a.point), &y_flank)) return {};
+  const int j = y_flank.tooth;
+  const Flank g = y_flank.flank;
+  double r = r0, s = y_flank.s;
   for (int it = 0; it < kNewtonIterations; ++it) {
     if (!xt.flank_jet(k, f, r, &a) || !yt.flank_jet(j, g, s, &b)) return {};
     const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1, P2 = xy.rot * a.d2;
@@ -79,11 +92,11 @@ Hit corner_hit(const XY& xy, int k, Flank f, double r_end, bool high_end) {
   FlankTable::FlankJet a, b;
   if (!xt.flank_jet(k, f, r_end, &a)) return {};
   const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1;
-  const FlankTable::Probe start = yt.probe_depth(P);
-  if (!start.has_flank) return {};
-  const int j = start.tooth;
-  const Flank g = start.flank;
-  double s = P.norm();
+  Facing y_flank;
+  if (!facing_flank(yt, P, &y_flank)) return {};
+  const int j = y_flank.tooth;
+  const Flank g = y_flank.flank;
+  double s = y_flank.s;
   for (int it = 0; it < kNewtonIterations; ++it) {
     if (!yt.flank_jet(j, g, s, &b)) return {};
     const Vector2d PQ = P - b.point;

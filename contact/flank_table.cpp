@@ -70,6 +70,7 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
       if (d.departure_m > departure_.departure_m) departure_ = {d.departure_m, t, side == 0 ? Flank::Ccw : Flank::Cw, d.r_m};
     }
   share_identical_teeth();
+  build_extents();
   build_probe_knots();
   probe_points_.resize(static_cast<std::size_t>(layout.teeth) * 2 * kProbeRadii);
   probe_material_.assign(static_cast<std::size_t>(layout.teeth) * 2, 0);
@@ -192,13 +193,16 @@ FlankTable::FlankFrame FlankTable::flank_frame(int tooth, Flank flank, double r)
   return f;
 }
 
-void FlankTable::flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const {
-  const double* row = (flank == Flank::Ccw ? ccw_ : cw_).data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
-  int lo = 0, hi = samples_ - 1;
-  while (lo < samples_ && std::isnan(row[lo])) ++lo;
-  while (hi > lo && std::isnan(row[hi])) --hi;
-  *r_lo = r_min_ + lo * dr_;
-  *r_hi = r_min_ + hi * dr_;
+void FlankTable::build_extents() {
+  extents_.clear();
+  for (int tooth : tooth_of_row_)
+    for (Flank flank : {Flank::Ccw, Flank::Cw}) {
+      const double* row = row_data(tooth, flank);
+      int lo = 0, hi = samples_ - 1;
+      while (lo < samples_ && std::isnan(row[lo])) ++lo;
+      while (hi > lo && std::isnan(row[hi])) --hi;
+      extents_.emplace_back(r_min_ + lo * dr_, r_min_ + hi * dr_);
+    }
 }
 
 bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const {
@@ -206,7 +210,7 @@ bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) cons
   if (!(x >= 0 && x <= samples_ - 1)) return false;
   int i = std::min(static_cast<int>(x), samples_ - 2);
   double t = x - i;
-  const double* row = (flank == Flank::Ccw ? ccw_ : cw_).data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
+  const double* row = row_data(tooth, flank);
   double y0 = row[i], y1 = row[i + 1];
   if (std::isnan(y1) && t == 0 && i > 0) {  // the flank's last sample: the interval below, at its end
     --i;

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <bit>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "geometry/convex_decomposition.hpp"
@@ -136,14 +137,18 @@ class FlankTable {
   // A flank point at r with its first and second derivatives in r (gear frame), on the smooth
   // (C¹) interpolant of the table: cubic Hermite through the samples with slopes by central
   // differences (one-sided next to a radius without material). Its normal turns continuously
-  // along the flank, so a contact on it can be solved by Newton's method (contact_newton.hpp).
+  // along the flank, so a contact on it can be solved by Newton's method (flank_newton_impl.hpp).
   // False where the interval around r lacks material (no jet then).
   struct FlankJet {
     Eigen::Vector2d point, d1, d2;  // m, 1, 1/m
   };
   bool flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const;
   // The radii of a flank's first and last sample with material (its root and tip ends), m.
-  void flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const;
+  void flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const {
+    const std::pair<double, double>& e = extents_[static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)];
+    *r_lo = e.first;
+    *r_hi = e.second;
+  }
   // The outward unit normal of a flank with derivative d1 (FlankJet::d1) at a point.
   static Eigen::Vector2d outward_normal(Flank flank, const Eigen::Vector2d& d1) {
     const Eigen::Vector2d n = Eigen::Vector2d(-d1.y(), d1.x()).normalized();
@@ -152,6 +157,12 @@ class FlankTable {
 
  private:
   double sample(const std::vector<double>& table, int tooth, double r, double* slope) const;
+  // A flank's samples (its shared row), rad.
+  const double* row_data(int tooth, Flank flank) const {
+    return (flank == Flank::Ccw ? ccw_ : cw_).data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
+  }
+  void build_extents();
+  std::vector<std::pair<double, double>> extents_;  // [row * 2 + (flank == Cw)]: flank_extent()
   void share_identical_teeth();
   void build_probe_knots();
   // The probe_depth() path: per shared row, flank and radius sample, the flank direction and
