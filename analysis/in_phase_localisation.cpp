@@ -40,12 +40,13 @@ InPhaseLocalisation localise_in_phase(const std::vector<std::vector<double>>& me
   // Each planet's difference signal, turned so that index 0 is its tooth 0 facing the sun.
   std::vector<std::vector<double>> d(P, std::vector<double>(N));
   const auto Ni = static_cast<long>(N);
+  auto wrap = [&](long j) { return static_cast<std::size_t>((j % Ni + Ni) % Ni); };
   for (std::size_t k = 0; k < P; ++k) {
     const std::vector<double> diff = tsa_signals(means[k], teeth).difference;
     const long shift = std::lround(sun_direction_rad[k] / kTurn * static_cast<double>(N));
-    for (long j = 0; j < Ni; ++j) d[k][static_cast<std::size_t>(j)] = diff[static_cast<std::size_t>(((j + shift) % Ni + Ni) % Ni)];
+    for (long j = 0; j < Ni; ++j) d[k][static_cast<std::size_t>(j)] = diff[wrap(j + shift)];
   }
-  auto at = [&](std::size_t k, long j) { return d[k][static_cast<std::size_t>((j % Ni + Ni) % Ni)]; };
+  auto at = [&](std::size_t k, long j) { return d[k][wrap(j)]; };
   // The common event: the one-pitch window holding the most energy summed over the planets.
   const double pitch = static_cast<double>(N) / teeth;
   const long half = std::max(1L, std::lround(pitch / 2));
@@ -56,11 +57,11 @@ InPhaseLocalisation localise_in_phase(const std::vector<std::vector<double>>& me
   double best = -1;
   for (long j = 0; j < Ni; ++j) {
     double e = 0;
-    for (long i = -half; i <= half; ++i) e += energy[static_cast<std::size_t>(((j + i) % Ni + Ni) % Ni)];
+    for (long i = -half; i <= half; ++i) e += energy[wrap(j + i)];
     if (e > best) best = e, centre = j;
   }
   for (long i = -half; i <= half; ++i)
-    if (energy[static_cast<std::size_t>(((centre + i) % Ni + Ni) % Ni)] > energy[static_cast<std::size_t>(((centre + peak) % Ni + Ni) % Ni)]) peak = i;
+    if (energy[wrap(centre + i)] > energy[wrap(centre + peak)]) peak = i;
   // Tooth t faces the sun at index −t·pitch.
   out.event_tooth = static_cast<int>(((-std::lround(static_cast<double>(centre + peak) / pitch)) % teeth + teeth) % teeth);
   // Event waveforms and backgrounds.

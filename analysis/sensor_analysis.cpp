@@ -23,8 +23,10 @@ const std::vector<double>& angle_named(const RunSignals& s, const std::string& b
 
 // Planets meshing in phase: the localisation of the event at their common tooth, on a grid whose
 // bins are no wider than one sensor sample and on kInPhaseGridRefinement times it.
+// positions[k], spins[k]: planet k's position angle (world) and spin relative to the carrier,
+// sampled with x at times t.
 void localise_in_phase_planets(SensorAnalysis& out, const std::vector<double>& t, const std::vector<double>& x,
-                               const std::vector<double>& carrier, const std::vector<std::vector<double>>& spins,
+                               const std::vector<std::vector<double>>& positions, const std::vector<std::vector<double>>& spins,
                                const SensorSignal& sensor, const TrainDescription& train) {
   constexpr double kTurn = 2 * std::numbers::pi;
   // Sensor samples per planet turn relative to the carrier.
@@ -37,11 +39,8 @@ void localise_in_phase_planets(SensorAnalysis& out, const std::vector<double>& t
   for (const PlanetGear& p : train.planets) sun_direction.push_back(p.sun_direction_rad);
   for (int grid : {n, analysis_constants::kInPhaseGridRefinement * n}) {
     std::vector<std::vector<double>> means;
-    for (std::size_t k = 0; k < train.planets.size(); ++k) {
-      std::vector<double> position(t.size());
-      for (std::size_t i = 0; i < t.size(); ++i) position[i] = train.planets[k].position0_rad + carrier[i];
-      means.push_back(planet_separated_average(x, position, spins[k], sensor.angle_rad, sensor.window_width_rad, grid).mean);
-    }
+    for (std::size_t k = 0; k < train.planets.size(); ++k)
+      means.push_back(planet_separated_average(x, positions[k], spins[k], sensor.angle_rad, sensor.window_width_rad, grid).mean);
     (grid == n ? out.in_phase : out.in_phase_refined) = localise_in_phase(means, sun_direction, train.planets.front().teeth, per_turn);
   }
   const InPhaseLocalisation& a = *out.in_phase;
@@ -107,11 +106,12 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
   out.sample_rate_hz = uniform_sample_rate_hz(t);
   const std::vector<double> carrier = interpolate_linear(s.time_s, angle_named(s, train.carrier), t);
   constexpr int kSamplesPerTurn = analysis_constants::kDefaultSamplesPerRevolution;
-  std::vector<std::vector<double>> spins;
+  // Each planet's position angle (world) and spin relative to the carrier, with the samples.
+  std::vector<std::vector<double>> positions, spins;
   for (const PlanetGear& p : train.planets) {
-    const std::vector<double> spin = interpolate_linear(s.time_s, angle_named(s, p.body), t);
-    spins.push_back(spin);
-    std::vector<double> position(t.size());
+    spins.push_back(interpolate_linear(s.time_s, angle_named(s, p.body), t));
+    const std::vector<double>& spin = spins.back();
+    std::vector<double>& position = positions.emplace_back(t.size());
     for (std::size_t i = 0; i < t.size(); ++i) position[i] = p.position0_rad + carrier[i];
     const PlanetSeparatedAverage a = planet_separated_average(x, position, spin, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
     PlanetSensorView v{p.body, a.coverage, a.passes, condition_indicators(a.mean, p.teeth), -1};
@@ -141,14 +141,8 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
   }
   // The sun's average: every planet's window, each credited to the sun tooth that meets it.
   if (!train.sun.empty() && train.sun_teeth > 0) {
-    std::vector<std::vector<double>> positions;
     std::vector<double> offsets;
-    for (const PlanetGear& p : train.planets) {
-      std::vector<double> position(t.size());
-      for (std::size_t i = 0; i < t.size(); ++i) position[i] = p.position0_rad + carrier[i];
-      positions.push_back(std::move(position));
-      offsets.push_back(p.position0_rad);
-    }
+    for (const PlanetGear& p : train.planets) offsets.push_back(p.position0_rad);
     std::vector<double> sun = interpolate_linear(s.time_s, angle_named(s, train.sun), t);
     for (std::size_t i = 0; i < t.size(); ++i) sun[i] -= carrier[i];
     const PlanetSeparatedAverage a = sun_separated_average(x, positions, offsets, sun, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
@@ -179,7 +173,7 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     out.fault = f;
   }
   if (train.planets_in_phase && out.planets.size() > 1) {
-    localise_in_phase_planets(out, t, x, carrier, spins, sensor, train);
+    localise_in_phase_planets(out, t, x, positions, spins, sensor, train);
     return out;
   }
   if (!out.fault && out.planets.size() > 1) {
