@@ -7,8 +7,9 @@
 // tooth-pair sets differ, and the largest depth, point and normal differences. Used to show
 // that a faster contact search returns the same contacts as the one it replaces.
 // With `--coherent` each sweep (pair, press, offset) runs through one CoherentToothSearch, as a
-// simulation steps a pair: its dump compares with the stateless one's.
-// Usage: bench_contact_sweep [scenario.yaml=assets/scenarios/paper_dynamics.yaml] [--dump FILE] [--coherent]
+// simulation steps a pair: its dump compares with the stateless one's; `--continued` also turns
+// its continuation on (CoherentToothSearch::set_continuation).
+// Usage: bench_contact_sweep [scenario.yaml=assets/scenarios/paper_dynamics.yaml] [--dump FILE] [--coherent] [--continued]
 //                            [--press-offset-um U] (added to every press: a CAD gear's backlash taken up)
 //        bench_contact_sweep --compare A B
 #include <chrono>
@@ -93,11 +94,12 @@ double angle_of(const Eigen::Quaterniond& q) {
 int main(int argc, char** argv) {
   if (argc == 4 && std::string(argv[1]) == "--compare") return compare(argv[2], argv[3]);
   std::string file = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml", dump;
-  bool coherent = false;
+  bool coherent = false, continued = false;
   double press_offset_m = 0;  // added to every press: takes up a CAD gear's backlash
   for (int i = 1; i < argc; ++i) {
     if (std::string(argv[i]) == "--dump" && i + 1 < argc) dump = argv[++i];
     else if (std::string(argv[i]) == "--coherent") coherent = true;
+    else if (std::string(argv[i]) == "--continued") coherent = continued = true;
     else if (std::string(argv[i]) == "--press-offset-um" && i + 1 < argc) press_offset_m = 1e-6 * std::stod(argv[++i]);
     else file = argv[i];
   }
@@ -154,6 +156,7 @@ int main(int argc, char** argv) {
     for (double press : presses_m)
       for (double shift : shifts_m) {
         CoherentToothSearch search;
+        search.set_continuation(continued);
         for (long i = 0; i < steps; ++i) {
           const double phi = static_cast<double>(i) * step_rad;
           PlanarPose pa = ga.pose, pb = gb.pose;
@@ -174,15 +177,15 @@ int main(int argc, char** argv) {
           ++calls;
         }
         flanks.searched += search.counts().searched, flanks.skipped += search.counts().skipped;
-        flanks.tracked += search.counts().tracked;
+        flanks.tracked += search.counts().tracked, flanks.continued += search.counts().continued;
       }
   }
   std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",
               s.name.c_str(), pairs.size(), calls, steps, step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
               1e6 * seconds / static_cast<double>(calls));
   if (coherent)
-    std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%)\n", flanks.searched,
-                flanks.tracked, flanks.skipped,
-                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped));
+    std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%), %ld continued\n",
+                flanks.searched, flanks.tracked, flanks.skipped,
+                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped), flanks.continued);
   return 0;
 }

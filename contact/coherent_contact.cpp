@@ -204,10 +204,46 @@ bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
   return true;
 }
 
+// The deepest point of x's flank (tooth k, f) solved from the last call's solution `last` on the
+// same flank of y: an interior maximum by Newton's method from last step's radii, or the corner
+// at the flank's end while the depth still rises toward it; an interior maximum that leaves the
+// flank becomes the corner at the end it left by, a corner whose depth no longer rises toward the
+// end becomes an interior maximum started next to it. No hit (depth kNone) where the solves fail
+// or the point found faces another flank of y than the one solved on (the stateless search's
+// foot is on the flank the point faces): the caller searches the flank in full then.
+Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y) {
+  double lo, hi;
+  xy.x.table.flank_extent(k, f, &lo, &hi);
+  Hit h;
+  if (solved == Hit::kInterior) {
+    h = newton_solve(xy, k, f, std::clamp(r_x, lo, hi), j, g, s_y, lo, hi);
+    if (h.depth <= kNone) {
+      const bool high = r_x > 0.5 * (lo + hi);
+      h = corner_solve(xy, k, f, high ? hi : lo, high, j, g, s_y);
+    }
+  } else {
+    const bool high = solved == Hit::kCornerHigh;
+    h = corner_solve(xy, k, f, high ? hi : lo, high, j, g, s_y);
+    if (h.depth <= kNone) {
+      // Start a step inside the end: Newton's first step from the corner itself (where d²D/dr²
+      // may not yet be negative) could leave the flank.
+      const double step = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
+      h = newton_solve(xy, k, f, high ? std::max(lo, hi - 0.5 * step) : std::min(hi, lo + 0.5 * step), j, g, s_y, lo, hi);
+    }
+  }
+  if (h.depth <= kNone) return {};
+  const double spacing = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
+  if (!(h.rho_x > spacing && h.rho_y > spacing) || h.depth > refine_window_m(spacing)) return {};
+  const FlankTable::Probe p = xy.y.table.probe_depth(xy.y.to_local(h.point));
+  if (!p.has_flank || p.tooth != j || p.flank != g) return {};
+  return h;
+}
+
 }  // namespace
 
 void CoherentToothSearch::reset() {
   for (std::vector<FlankRecord>& r : records_) r.assign(r.size(), FlankRecord{});
+  solutions_.assign(solutions_.size(), Solution{});
 }
 
 void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
@@ -217,7 +253,9 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     records_[0].assign(static_cast<std::size_t>(ta.teeth()) * 2, FlankRecord{});
     records_[1].assign(static_cast<std::size_t>(tb.teeth()) * 2, FlankRecord{});
     tracks_.assign(records_[0].size(), TrackedFlank{});
+    solutions_.assign(records_[0].size(), Solution{});
   }
+  ++calls_;
   const Frame a{ta, pa}, b{tb, pb};
   best.clear();
   // As find_tooth_contacts(), flank by flank, but a flank whose record still holds is skipped or
@@ -231,12 +269,24 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     const double turn = x.pose.angle_rad - y.pose.angle_rad, reach = x.table.tooth_bound_radius_m();
     std::vector<FlankRecord>& records = records_[pass];
     int hint = -1;
-    for (int k = 0; k < x.table.teeth(); ++k) {
-      if (!window.holds(k, x.table.teeth()) || !tooth_near(x, k, y)) continue;
+    for_each_tooth(window, x.table.teeth(), [&](int k) {
+      if (!tooth_near(x, k, y)) return;
       const Vector2d centre = xy.in_y(x.table.tooth_centre(k));
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];
+        if (pass == 0 && continuation_ && solutions_[at].solved != 0 && solutions_[at].call + 1 == calls_) {
+          Solution& sol = solutions_[at];
+          const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y);
+          if (h.depth >= -refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0))) {
+            ++counts_.continued;
+            sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
+            rec.travel_m = -1;  // searched in full when the continuation ends
+            rec.tracked = false;
+            keep_contact(best, k, h.tooth_y, f, h, true);
+            continue;
+          }
+        }
         // Any point p of the tooth moves in y's frame by Δc + (R1 − R0)(p − c): at most the
         // tooth centre's move plus |Δturn| times the tooth's bounding radius (|R1 − R0| =
         // 2|sin(Δturn/2)| ≤ |Δturn|).
@@ -266,10 +316,11 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         if (!refine) continue;
         const Hit h = refined_hit(s);
         if (h.tooth_y < 0) continue;
+        if (pass == 0 && continuation_ && h.solved != Hit::kSampled) solutions_[at] = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
         if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
         else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
       }
-    }
+    });
   }
   sort_contacts(best);
 }

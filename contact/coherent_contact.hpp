@@ -26,10 +26,19 @@ class CoherentToothSearch {
   // Forget every measurement: the next call searches every flank.
   void reset();
 
-  // Flanks searched in full, tracked (only the samples that can hold the deepest probed) and
-  // skipped since construction (both probing passes).
+  // Continuation (off by default): a flank of the first gear whose deepest point the last call
+  // solved by Newton's method (an interior maximum or a corner, flank_newton_impl.hpp) is solved
+  // again from that solution, on the same flank of the other gear, without probing; where the
+  // solve fails, leaves the flank, faces another flank or falls more than the refinement window
+  // clear, the flank is searched in full as before. The same contacts as the stateless search to
+  // Newton's tolerance (not bit for bit), for a fraction of the probes (docs/tooth-contact.md,
+  // "Continuation").
+  void set_continuation(bool on) { continuation_ = on; }
+
+  // Flanks searched in full, tracked (only the samples that can hold the deepest probed),
+  // skipped and continued since construction (both probing passes).
   struct Counts {
-    long searched = 0, tracked = 0, skipped = 0;
+    long searched = 0, tracked = 0, skipped = 0, continued = 0;
   };
   const Counts& counts() const { return counts_; }
 
@@ -61,6 +70,19 @@ class CoherentToothSearch {
   const FlankTable* tables_[2] = {nullptr, nullptr};
   std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
   std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
+  // Pass 0's flanks, indexed as records_[0]: a call's solution (flank_search_impl.hpp's
+  // Hit::solved, r_x, s_y, tooth_y, flank_y), kept when continuation is on; continued only by
+  // the next call.
+  struct Solution {
+    signed char solved = 0;  // Hit::Solved; 0: none to continue
+    int tooth_y = -1;
+    Flank flank_y = Flank::Ccw;
+    double r_x = 0, s_y = 0;
+    long call = 0;  // the call that found it
+  };
+  std::vector<Solution> solutions_;
+  bool continuation_ = false;
+  long calls_ = 0;
   Counts counts_;
 };
 

@@ -32,6 +32,13 @@ Hit solved_hit(const XY& xy, const Vector2d& P, const Vector2d& Q, const Vector2
   return h;
 }
 
+// The radius of curvature of a flank curve with derivatives d1, d2 (FlankTable::FlankJet), m:
+// +∞ where it is straight.
+double radius_of_curvature(const Vector2d& d1, const Vector2d& d2) {
+  const double c = std::abs(d1.x() * d2.y() - d1.y() * d2.x()), n = d1.norm();
+  return c > 0 ? n * n * n / c : std::numeric_limits<double>::infinity();
+}
+
 // y's flank that x's point P (y's frame) faces, and the start of the search for its foot there
 // (the flank point at P's own radius). False where P faces no flank.
 struct Facing {
@@ -46,14 +53,11 @@ bool facing_flank(const FlankTable& yt, const Vector2d& P, Facing* out) {
   return true;
 }
 
-Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi) {
+// newton_hit() with the foot's flank (tooth j, g) and its start s0 given.
+Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double s0, double r_lo, double r_hi) {
   const FlankTable &xt = xy.x.table, &yt = xy.y.table;
   FlankTable::FlankJet a, b;
-  Facing y_flank;
-  if (!xt.flank_jet(k, f, r0, &a) || !facing_flank(yt, xy.in_y(a.point), &y_flank)) return {};
-  const int j = y_flank.tooth;
-  const Flank g = y_flank.flank;
-  double r = r0, s = y_flank.s;
+  double r = r0, s = s0;
   for (int it = 0; it < kNewtonIterations; ++it) {
     if (!xt.flank_jet(k, f, r, &a) || !yt.flank_jet(j, g, s, &b)) return {};
     const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1, P2 = xy.rot * a.d2;
@@ -74,7 +78,13 @@ Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi
       if (g == Flank::Cw) dn = -dn;
       const double d2 = -P2.dot(n) - P1.dot(dn) * (-J11 / J12);
       if (!(d2 < 0) || !(J12 != 0)) return {};
-      return solved_hit(xy, P, Q, n, j, g);
+      Hit h = solved_hit(xy, P, Q, n, j, g);
+      h.rho_x = radius_of_curvature(a.d1, a.d2);
+      h.rho_y = radius_of_curvature(Q1, Q2);
+      h.solved = Hit::kInterior;
+      h.r_x = r;
+      h.s_y = s;
+      return h;
     }
     r += dr;
     s += ds;
@@ -83,20 +93,24 @@ Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi
   return {};
 }
 
+Hit newton_hit(const XY& xy, int k, Flank f, double r0, double r_lo, double r_hi) {
+  FlankTable::FlankJet a;
+  Facing y_flank;
+  if (!xy.x.table.flank_jet(k, f, r0, &a) || !facing_flank(xy.y.table, xy.in_y(a.point), &y_flank)) return {};
+  return newton_solve(xy, k, f, r0, y_flank.tooth, y_flank.flank, y_flank.s, r_lo, r_hi);
+}
+
 // The depth of x's flank end at r_end (its tip corner, or its root end) inside y's facing flank:
 // the foot of the normal by Newton's method on F1 alone. No hit unless the depth still rises
 // toward that end there (dD/dr = −P'·n_y > 0 at a high end, < 0 at a low end): the maximum is
 // then the corner itself.
-Hit corner_hit(const XY& xy, int k, Flank f, double r_end, bool high_end) {
+// corner_hit() with the foot's flank (tooth j, g) and its start s0 given.
+Hit corner_solve(const XY& xy, int k, Flank f, double r_end, bool high_end, int j, Flank g, double s0) {
   const FlankTable &xt = xy.x.table, &yt = xy.y.table;
   FlankTable::FlankJet a, b;
   if (!xt.flank_jet(k, f, r_end, &a)) return {};
   const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1;
-  Facing y_flank;
-  if (!facing_flank(yt, P, &y_flank)) return {};
-  const int j = y_flank.tooth;
-  const Flank g = y_flank.flank;
-  double s = y_flank.s;
+  double s = s0;
   for (int it = 0; it < kNewtonIterations; ++it) {
     if (!yt.flank_jet(j, g, s, &b)) return {};
     const Vector2d PQ = P - b.point;
@@ -107,11 +121,24 @@ Hit corner_hit(const XY& xy, int k, Flank f, double r_end, bool high_end) {
       const Vector2d n = FlankTable::outward_normal(g, b.d1);
       const double rise = -P1.dot(n);
       if (!(high_end ? rise > 0 : rise < 0)) return {};
-      return solved_hit(xy, P, b.point, n, j, g);
+      Hit h = solved_hit(xy, P, b.point, n, j, g);
+      h.rho_x = radius_of_curvature(a.d1, a.d2);
+      h.rho_y = radius_of_curvature(b.d1, b.d2);
+      h.solved = high_end ? Hit::kCornerHigh : Hit::kCornerLow;
+      h.r_x = r_end;
+      h.s_y = s;
+      return h;
     }
     s += ds;
   }
   return {};
+}
+
+Hit corner_hit(const XY& xy, int k, Flank f, double r_end, bool high_end) {
+  FlankTable::FlankJet a;
+  Facing y_flank;
+  if (!xy.x.table.flank_jet(k, f, r_end, &a) || !facing_flank(xy.y.table, xy.in_y(a.point), &y_flank)) return {};
+  return corner_solve(xy, k, f, r_end, high_end, y_flank.tooth, y_flank.flank, y_flank.s);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <tuple>
 #include <vector>
 
@@ -88,13 +89,27 @@ bool tooth_near(const Frame& x, int k, const Frame& y) {
 // width in teeth (a tooth more for rounding); half < 0: every tooth is tested.
 struct ToothWindow {
   int centre_k = 0, half = -1;
-  bool holds(int k, int teeth) const {
-    if (half < 0) return true;
-    int d = (k - centre_k) % teeth;
-    if (d < 0) d += teeth;
-    return d <= half || teeth - d <= half;
-  }
 };
+
+// Calls visit(k) for every tooth k of `teeth` the window holds, in increasing k (the order the
+// probing's tooth hints follow), without testing the others.
+template <class Visit>
+void for_each_tooth(const ToothWindow& w, int teeth, Visit&& visit) {
+  if (w.half < 0) {
+    for (int k = 0; k < teeth; ++k) visit(k);
+    return;
+  }
+  const int lo = w.centre_k - w.half, hi = w.centre_k + w.half;  // 2·half + 1 < teeth
+  if (lo < 0) {
+    for (int k = 0; k <= hi; ++k) visit(k);
+    for (int k = lo + teeth; k < teeth; ++k) visit(k);
+  } else if (hi >= teeth) {
+    for (int k = 0; k <= hi - teeth; ++k) visit(k);
+    for (int k = lo; k < teeth; ++k) visit(k);
+  } else {
+    for (int k = lo; k <= hi; ++k) visit(k);
+  }
+}
 
 ToothWindow tooth_window(const Frame& x, const Frame& y) {
   ToothWindow w;
@@ -118,9 +133,17 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
 
 struct Hit {
   double depth = kNone;
-  Vector2d point, normal_into_x;  // world: the probed point and the surface normal of y there
+  Vector2d point = Vector2d::Zero(), normal_into_x = Vector2d::Zero();  // world: the probed point and the surface normal of y there
   int tooth_y = -1;
   Flank flank_y = Flank::Ccw;
+  // How the point was found: sampled (parabola or golden section), or solved by Newton's method
+  // (flank_newton_impl.hpp) as an interior maximum or a corner at x's flank end; for a solved
+  // hit, the radii of its point on x's flank and of the foot on y's (what a continued search
+  // starts from next step).
+  enum Solved : signed char { kSampled, kInterior, kCornerHigh, kCornerLow };
+  Solved solved = kSampled;
+  double r_x = 0, s_y = 0;
+  double rho_x = 0, rho_y = 0;  // a solved hit's radii of curvature of x's and y's flank there, m
 };
 
 // Exact depth of x's flank point at radius r inside y, with the contact geometry, in world terms.

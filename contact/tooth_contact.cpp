@@ -24,8 +24,8 @@ void find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const Flank
     const XY xy{x, y};
     const ToothWindow window = tooth_window(x, y);
     int hint = -1;
-    for (int k = 0; k < x.table.teeth(); ++k) {
-      if (!window.holds(k, x.table.teeth()) || !tooth_near(x, k, y)) continue;
+    for_each_tooth(window, x.table.teeth(), [&](int k) {
+      if (!tooth_near(x, k, y)) return;
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
         // An overlap of two teeth is deepest either along a's flank (a's tip corner included)
         // or at b's tip corner: a's flanks are probed whole, b's only at their tips.
@@ -35,7 +35,7 @@ void find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const Flank
         if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
         else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
       }
-    }
+    });
   }
   sort_contacts(best);
 }

@@ -186,6 +186,15 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
     c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
     c.coherent_search = m.boolean_or("coherent_search", c.coherent_search);
+    // The continuation is part of the coherent search: off with it unless asked for, and then
+    // refused.
+    if (given(m, "continued_search")) {
+      c.continued_search = m.boolean_or("continued_search", c.continued_search);
+      if (c.continued_search && !c.coherent_search)
+        m.fail("continued_search", "continued_search: true needs coherent_search: true (the continuation is part of the coherent search)");
+    } else if (!c.coherent_search) {
+      c.continued_search = false;
+    }
     // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
     if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
     if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");

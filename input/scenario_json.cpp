@@ -124,7 +124,8 @@ json scenario_json(const physics::Scenario& s) {
                   {"friction", s.contact.friction},
                   {"chordal_deviation_m", s.contact.chordal_deviation_m},
                   {"max_flank_departure_m", s.contact.max_flank_departure_m},
-                  {"coherent_search", s.contact.coherent_search}};
+                  {"coherent_search", s.contact.coherent_search},
+                  {"continued_search", s.contact.continued_search}};
   if (!s.contact.stiffness_tables.empty()) {
     json tables = json::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)

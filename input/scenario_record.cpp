@@ -187,6 +187,7 @@ physics::ContactDef contact_of(const Node& n) {
   c.max_flank_departure_m = n.number("max_flank_departure_m");
   // Records written before the key existed ran the stateless search.
   c.coherent_search = n.has("coherent_search") ? n.boolean("coherent_search") : false;
+  c.continued_search = n.has("continued_search") ? n.boolean("continued_search") : false;
   if (n.has("stiffness_tables"))
     for (const Node& t : n.list("stiffness_tables")) {
       physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),

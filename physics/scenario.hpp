@@ -186,6 +186,11 @@ struct ContactDef {
   // search left it clear is skipped until the pair's relative motion could have closed the gap.
   // The same contacts as the stateless search (false), found faster.
   bool coherent_search = true;
+  // Continuation on top of it (CoherentToothSearch::set_continuation): a flank whose contact was
+  // solved by Newton's method last step is solved again from there without probing, where the
+  // solution stays smooth and shallow. The stateless search's contacts to ~0.1 nm, not bit for
+  // bit (docs/tooth-contact.md, "Continuation"). Part of coherent_search: off without it.
+  bool continued_search = true;
 };
 
 // How Bullet advances the bodies. `rigid_bodies`: each body a btRigidBody, joints, bearings,

@@ -94,6 +94,15 @@ TEST(ScenarioErrors, CoherentSearchIsTrueOrFalse) {
   EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false}\n"), "");
 }
 
+TEST(ScenarioErrors, ContinuedSearchNeedsTheCoherentOne) {
+  // The continuation is part of the coherent search: asking for it without is refused, not ignored.
+  EXPECT_NAMES(error_for(kGood + "contact: {coherent_search: false, continued_search: true}\n"), "bad.yaml:11:",
+               "contact.continued_search", "needs coherent_search: true");
+  EXPECT_NAMES(error_for(kGood + "contact: {continued_search: 2}\n"), "contact.continued_search", "expected true or false");
+  EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false, continued_search: false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "contact: {continued_search: false}\n"), "");
+}
+
 TEST(ScenarioErrors, DuplicateBodyName) {
   EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")),
                "bodies[1].name", "a second body named 'wheel'");

@@ -67,6 +67,19 @@ TEST(ScenarioRecord, TheContactSearchReadsBack) {
   EXPECT_NE(error_of(j).find("contact.coherent_search"), std::string::npos) << error_of(j);
 }
 
+TEST(ScenarioRecord, TheContinuationReadsBack) {
+  // contact.continued_search: on by default, off without the coherent search; a record written
+  // before the key existed ran without it.
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_TRUE(s.contact.continued_search);
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_TRUE(scenario_from_json(j, "rec.json").contact.continued_search);
+  j["contact"]["continued_search"] = false;
+  EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.continued_search);
+  j["contact"].erase("continued_search");
+  EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.continued_search);
+}
+
 TEST(ScenarioRecord, ADamagedRecordNamesTheKey) {
   const nlohmann::json good = nlohmann::json::parse(scenario_json(load_scenario(asset("paper_dynamics.yaml"))).dump());
   nlohmann::json j = good;
