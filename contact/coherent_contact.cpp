@@ -211,7 +211,7 @@ bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
 // end becomes an interior maximum started next to it. No hit (depth kNone) where the solves fail
 // or the point found faces another flank of y than the one solved on (the stateless search's
 // foot is on the flank the point faces): the caller searches the flank in full then.
-Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y) {
+Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, bool tip_only) {
   double lo, hi;
   xy.x.table.flank_extent(k, f, &lo, &hi);
   Hit h;
@@ -234,6 +234,10 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
   if (h.depth <= kNone) return {};
   const double spacing = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
   if (!(h.rho_x > spacing && h.rho_y > spacing) || h.depth > refine_window_m(spacing)) return {};
+  // The second gear's flanks are searched at their tips only (probe_tip(): a maximum farther
+  // down than its third sample is the first gear's to find): a solution there must stay within
+  // 1.5 sample spacings of the tip.
+  if (tip_only && !(std::abs(h.r_x - (xy.x.table.internal() ? lo : hi)) <= 1.5 * spacing)) return {};
   const FlankTable::Probe p = xy.y.table.probe_depth(xy.y.to_local(h.point));
   if (!p.has_flank || p.tooth != j || p.flank != g) return {};
   return h;
@@ -243,7 +247,7 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
 
 void CoherentToothSearch::reset() {
   for (std::vector<FlankRecord>& r : records_) r.assign(r.size(), FlankRecord{});
-  solutions_.assign(solutions_.size(), Solution{});
+  for (std::vector<Solution>& s : solutions_) s.assign(s.size(), Solution{});
 }
 
 void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
@@ -253,7 +257,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     records_[0].assign(static_cast<std::size_t>(ta.teeth()) * 2, FlankRecord{});
     records_[1].assign(static_cast<std::size_t>(tb.teeth()) * 2, FlankRecord{});
     tracks_.assign(records_[0].size(), TrackedFlank{});
-    solutions_.assign(records_[0].size(), Solution{});
+    solutions_[0].assign(records_[0].size(), Solution{});
+    solutions_[1].assign(records_[1].size(), Solution{});
   }
   ++calls_;
   const Frame a{ta, pa}, b{tb, pb};
@@ -275,15 +280,16 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];
-        if (pass == 0 && continuation_ && solutions_[at].solved != 0 && solutions_[at].call + 1 == calls_) {
-          Solution& sol = solutions_[at];
-          const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y);
+        Solution& sol = solutions_[pass][at];
+        if (continuation_ && sol.solved != 0 && sol.call + 1 == calls_) {
+          const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y, tip_only);
           if (h.depth >= -refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0))) {
             ++counts_.continued;
             sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
             rec.travel_m = -1;  // searched in full when the continuation ends
             rec.tracked = false;
-            keep_contact(best, k, h.tooth_y, f, h, true);
+            if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
+            else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
             continue;
           }
         }
@@ -316,7 +322,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         if (!refine) continue;
         const Hit h = refined_hit(s);
         if (h.tooth_y < 0) continue;
-        if (pass == 0 && continuation_ && h.solved != Hit::kSampled) solutions_[at] = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
+        if (continuation_ && h.solved != Hit::kSampled) sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
         if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
         else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
       }

@@ -70,7 +70,7 @@ class CoherentToothSearch {
   const FlankTable* tables_[2] = {nullptr, nullptr};
   std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
   std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
-  // Pass 0's flanks, indexed as records_[0]: a call's solution (flank_search_impl.hpp's
+  // Per pass, indexed as records_: a call's solution (flank_search_impl.hpp's
   // Hit::solved, r_x, s_y, tooth_y, flank_y), kept when continuation is on; continued only by
   // the next call.
   struct Solution {
@@ -80,7 +80,7 @@ class CoherentToothSearch {
     double r_x = 0, s_y = 0;
     long call = 0;  // the call that found it
   };
-  std::vector<Solution> solutions_;
+  std::vector<Solution> solutions_[2];  // per pass, indexed as records_
   bool continuation_ = false;
   long calls_ = 0;
   Counts counts_;
