@@ -211,19 +211,21 @@ bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
 // end becomes an interior maximum started next to it. No hit (depth kNone) where the solves fail
 // or the point found faces another flank of y than the one solved on (the stateless search's
 // foot is on the flank the point faces): the caller searches the flank in full then.
-Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, bool tip_only) {
+// (r0, s0): where to start, last step's radii (r_x, s_y) or a prediction from them.
+Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, double r0,
+                  double s0, bool tip_only) {
   double lo, hi;
   xy.x.table.flank_extent(k, f, &lo, &hi);
   Hit h;
   if (solved == Hit::kInterior) {
-    h = newton_solve(xy, k, f, std::clamp(r_x, lo, hi), j, g, s_y, lo, hi);
+    h = newton_solve(xy, k, f, std::clamp(r0, lo, hi), j, g, s0, lo, hi);
     if (h.depth <= kNone) {
       const bool high = r_x > 0.5 * (lo + hi);
       h = corner_solve(xy, k, f, high ? hi : lo, high, j, g, s_y);
     }
   } else {
     const bool high = solved == Hit::kCornerHigh;
-    h = corner_solve(xy, k, f, high ? hi : lo, high, j, g, s_y);
+    h = corner_solve(xy, k, f, high ? hi : lo, high, j, g, s0);
     if (h.depth <= kNone) {
       // Start a step inside the end: Newton's first step from the corner itself (where d²D/dr²
       // may not yet be negative) could leave the flank.
@@ -282,10 +284,15 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         FlankRecord& rec = records[at];
         Solution& sol = solutions_[pass][at];
         if (continuation_ && sol.solved != 0 && sol.call + 1 == calls_) {
-          const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y, tip_only);
+          // Started where last step's motion, repeated, takes the solution (a linear
+          // prediction: the start is then off by the motion's change, not by the motion).
+          const double r0 = sol.has_prev ? 2 * sol.r_x - sol.r_prev : sol.r_x, s0 = sol.has_prev ? 2 * sol.s_y - sol.s_prev : sol.s_y;
+          const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y,
+                                      r0, s0, tip_only);
           if (h.depth >= -refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0))) {
             ++counts_.continued;
-            sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
+            const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y;
+            sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_, sol.r_x, sol.s_y, same};
             rec.travel_m = -1;  // searched in full when the continuation ends
             rec.tracked = false;
             if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
@@ -323,6 +330,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         const Hit h = refined_hit(s);
         if (h.tooth_y < 0) continue;
         if (continuation_ && h.solved != Hit::kSampled) sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
+        else sol = Solution{};
         if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
         else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
       }

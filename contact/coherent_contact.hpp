@@ -79,6 +79,8 @@ class CoherentToothSearch {
     Flank flank_y = Flank::Ccw;
     double r_x = 0, s_y = 0;
     long call = 0;  // the call that found it
+    double r_prev = 0, s_prev = 0;  // the call before's, where it was continued into this one
+    bool has_prev = false;
   };
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
   bool continuation_ = false;
