@@ -173,12 +173,13 @@ TEST(CoherentToothSearch, SearchesMostFlanksOnlyInPart) {
   EXPECT_GT(static_cast<double>(sw.counts.skipped + sw.counts.tracked) / visits, 0.5);
 }
 
-TEST(CoherentToothSearch, APoseJumpMakesItSearchEveryFlank) {
-  // 300 steps into the sweep the planet jumps by half a pitch and the sun's centre by 30 µm: no
-  // record holds for such a travel, so every flank is searched in full, and the answers match.
+// The sun–faulty planet mesh stepped 600 times; 300 steps in, the planet jumps by half a pitch
+// and the sun's centre by 30 µm. `search`'s counts before the jump's call and after it go to
+// `at_jump`; the comparison with the stateless search into the returned Sweep.
+template <class AtJump>
+Sweep sweep_with_jump(CoherentToothSearch& search, AtJump&& at_jump) {
   const std::vector<Gear>& g = paper_gears();
   const Gear &sun = named(g, "sun"), &planet = named(g, "planet_0");
-  CoherentToothSearch search;
   std::vector<ToothContact> stateless, coherent;
   Sweep sw;
   for (long i = 0; i < 600; ++i) {
@@ -193,12 +194,20 @@ TEST(CoherentToothSearch, APoseJumpMakesItSearchEveryFlank) {
     find_tooth_contacts(*sun.table, ps, *planet.table, pp, stateless);
     search.find(*sun.table, ps, *planet.table, pp, coherent);
     compare(stateless, coherent, sw);
-    if (i == 300) {
-      EXPECT_EQ(search.counts().skipped, before.skipped) << "flanks skipped across the jump";
-      EXPECT_EQ(search.counts().tracked, before.tracked) << "flanks tracked across the jump";
-      EXPECT_GT(search.counts().searched, before.searched);
-    }
+    if (i == 300) at_jump(before, search.counts());
   }
+  sw.counts = search.counts();
+  return sw;
+}
+
+TEST(CoherentToothSearch, APoseJumpMakesItSearchEveryFlank) {
+  // No record holds for such a travel, so every flank is searched in full, and the answers match.
+  CoherentToothSearch search;
+  const Sweep sw = sweep_with_jump(search, [](const CoherentToothSearch::Counts& before, const CoherentToothSearch::Counts& after) {
+    EXPECT_EQ(after.skipped, before.skipped) << "flanks skipped across the jump";
+    EXPECT_EQ(after.tracked, before.tracked) << "flanks tracked across the jump";
+    EXPECT_GT(after.searched, before.searched);
+  });
   expect_identical(sw, "sun–planet_0 with a jump");
 }
 
@@ -234,29 +243,11 @@ TEST(CoherentToothSearch, ContinuationFindsTheStatelessContactsOverAPlanetTurn) 
 TEST(CoherentToothSearch, ContinuationAcrossAPoseJumpSearchesAfresh) {
   // The jump of APoseJumpMakesItSearchEveryFlank: a continued solution then faces another flank
   // or leaves its own, and the flank is searched in full.
-  const std::vector<Gear>& g = paper_gears();
-  const Gear &sun = named(g, "sun"), &planet = named(g, "planet_0");
   CoherentToothSearch search;
   search.set_continuation(true);
-  std::vector<ToothContact> stateless, coherent;
-  Sweep sw;
-  for (long i = 0; i < 600; ++i) {
-    PlanarPose ps = sun.pose, pp = planet.pose;
-    ps.angle_rad += static_cast<double>(i) * kStepRad + 1e-6 / sun.table->r_max_m();
-    pp.angle_rad += static_cast<double>(i) * kStepRad * planet.ratio;
-    if (i >= 300) {
-      pp.angle_rad += 0.5 * planet.table->pitch_angle_rad();
-      ps.centre_m += Eigen::Vector2d(30e-6, -10e-6);
-    }
-    const CoherentToothSearch::Counts before = search.counts();
-    find_tooth_contacts(*sun.table, ps, *planet.table, pp, stateless);
-    search.find(*sun.table, ps, *planet.table, pp, coherent);
-    compare(stateless, coherent, sw);
-    if (i == 300) {
-      EXPECT_EQ(search.counts().continued, before.continued) << "flanks continued across the jump";
-    }
-  }
-  sw.counts = search.counts();
+  const Sweep sw = sweep_with_jump(search, [](const CoherentToothSearch::Counts& before, const CoherentToothSearch::Counts& after) {
+    EXPECT_EQ(after.continued, before.continued) << "flanks continued across the jump";
+  });
   expect_continued(sw, "sun–planet_0 with a jump, continued", 1);
 }
 
