@@ -204,8 +204,9 @@ bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
   return true;
 }
 
-// The deepest point of x's flank (tooth k, f) solved from the last call's solution `last` on the
-// same flank of y: an interior maximum by Newton's method from last step's radii, or the corner
+// The deepest point of x's flank (tooth k, f) solved from the last call's solution (`solved`:
+// its kind; on y's tooth j, flank g; at radii r_x on x's flank, s_y on y's) on the same flank of
+// y: an interior maximum by Newton's method, or the corner
 // at the flank's end while the depth still rises toward it; an interior maximum that leaves the
 // flank becomes the corner at the end it left by, a corner whose depth no longer rises toward the
 // end becomes an interior maximum started next to it. No hit (depth kNone) where the solves fail
