@@ -6,6 +6,7 @@
 #include <limits>
 #include <utility>
 
+#include "contact/fast_angle.hpp"
 #include "contact/flank_table.hpp"
 #include "geometry/constants.hpp"
 
@@ -13,19 +14,6 @@ namespace gearsim::contact {
 namespace {
 
 using gearsim::constants::kNaN;
-
-// atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49 on [0, 1], reduced by octant): enough to
-// pick the tooth a point faces; the angle within the tooth is then exact.
-double rough_atan2(double y, double x) {
-  const double ax = std::abs(x), ay = std::abs(y);
-  const bool steep = ay > ax;
-  const double z = steep ? ax / ay : (ax > 0 ? ay / ax : 0.0);
-  const double z2 = z * z;
-  double a = z * (0.9998660 + z2 * (-0.3302995 + z2 * (0.1801410 + z2 * (-0.0851330 + z2 * 0.0208351))));
-  if (steep) a = 1.5707963267948966 - a;
-  if (x < 0) a = 3.141592653589793 - a;
-  return y < 0 ? -a : a;
-}
 
 // std::nearbyint in the default rounding mode (to nearest, ties to even) without a libm call:
 // adding and subtracting 1.5·2^52 rounds |x| < 2^51 to an integer. Bit for bit nearbyint's answer.

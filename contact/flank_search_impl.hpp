@@ -14,6 +14,7 @@
 #include <tuple>
 #include <vector>
 
+#include "contact/fast_angle.hpp"
 #include "contact/tooth_contact.hpp"
 
 namespace gearsim::contact {
@@ -121,11 +122,13 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
   const double cos_limit = (r_c * r_c + dist * dist - outer * outer) / (2 * r_c * dist);
   if (cos_limit <= -1) return w;
   const double pitch = x.table.pitch_angle_rad();
-  const double facing = std::atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0);
+  // The window's centre and width from angles without libm (rough_atan2: 1e-5 rad; acos_above:
+  // never below acos): the tooth of margin covers both, so the teeth it holds are the same.
+  const double facing = rough_atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0);
   const int teeth = x.table.teeth();
   w.centre_k = static_cast<int>(std::lround(facing / pitch)) % teeth;
   if (w.centre_k < 0) w.centre_k += teeth;
-  const double half_rad = cos_limit >= 1 ? 0.0 : std::acos(cos_limit);
+  const double half_rad = cos_limit >= 1 ? 0.0 : acos_above(cos_limit);
   w.half = static_cast<int>(std::ceil(half_rad / pitch)) + 1;
   if (2 * w.half + 1 >= teeth) w.half = -1;
   return w;
