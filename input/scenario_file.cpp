@@ -130,6 +130,14 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     s.solver.theta = number_within_or(m, "theta", s.solver.theta, limits::kSolverTheta);
     if (s.solver.engine == physics::SolverEngine::rigid_bodies && given(m, "theta"))
       m.fail("theta", "only engine multibody has the θ-method (rigid_bodies integrates its contacts by implicit Euler)");
+    if (given(m, "integrator")) {
+      s.solver.integrator = m.choice_or("integrator", {"theta", "bdf2"}, "theta") == "bdf2" ? physics::SolverDef::Integrator::bdf2
+                                                                                         : physics::SolverDef::Integrator::theta;
+      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
+        m.fail("integrator", "only engine multibody has a choice of integrator (rigid_bodies integrates its contacts by implicit Euler)");
+      if (s.solver.integrator == physics::SolverDef::Integrator::bdf2 && given(m, "theta"))
+        m.fail("theta", "integrator bdf2 has no θ: remove theta or set integrator: theta");
+    }
     if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
       m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
     m.reject_unknown_keys();

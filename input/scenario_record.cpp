@@ -310,6 +310,11 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
     s.solver.engine = e == "multibody" ? physics::SolverEngine::multibody : physics::SolverEngine::rigid_bodies;
   }
   if (solver.has("theta")) s.solver.theta = solver.number_within("theta", limits::kSolverTheta);
+  if (solver.has("integrator")) {  // records written before BDF2 have none: the θ-method
+    const std::string i = solver.string("integrator");
+    if (i != "theta" && i != "bdf2") solver.fail("integrator", "expected theta or bdf2");
+    s.solver.integrator = i == "bdf2" ? physics::SolverDef::Integrator::bdf2 : physics::SolverDef::Integrator::theta;
+  }
   s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
   if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");
   s.contact = contact_of(r.object("contact"));

@@ -211,9 +211,14 @@ struct SolverDef {
   // θ < 1 is closer to second order (½: the trapezoidal rule) but not yet trusted: with contacts
   // that open and close it gains energy (docs/solver.md, "θ").
   double theta = 1.0;
+  // multibody: `theta` (the θ-method above) or `bdf2`: the two-step backward differentiation
+  // formula, second order and, like implicit Euler, damping the modes the step does not resolve
+  // (docs/solver.md, "BDF2"); its first step is implicit Euler. θ is then not read.
+  enum class Integrator { theta, bdf2 } integrator = Integrator::theta;
 };
 
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }
+inline const char* integrator_name(SolverDef::Integrator i) { return i == SolverDef::Integrator::bdf2 ? "bdf2" : "theta"; }
 
 
 struct OutputDef {

@@ -82,6 +82,7 @@ struct MultibodyRow {
   double lo = 0, hi = 0;
   int friction_of = -1;  // contact_friction: the row of its normal (bounds ±μ times its impulse)
   double start_rate_weight = 0;  // trapezoidal spring rows: 1 (the start-of-step rate enters)
+  double move_rate_weight = 0;   // BDF2 spring rows: k·h/(3σ) (the spring at the extrapolated position)
 };
 
 struct MultibodyEngine {
@@ -105,6 +106,13 @@ struct MultibodyEngine {
   std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
   double theta = 1;  // spring rows at s + θ·h·ṡ_θ, positions with (1 − θ)·v + θ·v⁺; 1: implicit Euler
+  // BDF2 (solver.integrator bdf2): v⁺ = v̂ + h_eff·M⁻¹·F(x⁺, v⁺), x⁺ = x + h·v_move with
+  // v̂ = (4v − v_prev)/3, h_eff = 2h/3, v_move = (v_move_prev + 2v⁺)/3 (so x⁺ = (4x − x_prev)/3 +
+  // h_eff·v⁺); implicit Euler (h_eff = h, v_move = v⁺) until there is a step behind.
+  bool bdf2 = false, has_history = false;
+  double h_eff = 0;                    // this step's h_eff (h for the θ-method)
+  std::vector<double> v_prev, v_move;  // BDF2: v at the last step's start; the last step's v_move
+  Eigen::VectorXd row_rate_move;       // BDF2: J·v_move of the last step (the spring's extrapolation)
   btAlignedObjectArray<btScalar> scratch_r;
   btAlignedObjectArray<btVector3> scratch_v;
   btAlignedObjectArray<btMatrix3x3> scratch_m;

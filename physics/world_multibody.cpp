@@ -127,7 +127,9 @@ void World::Impl::build_multibody() {
   e.dofs = t.getNumDofs();
   e.buf.assign(static_cast<std::size_t>(6 + e.dofs), 0);
   e.v_mid.assign(static_cast<std::size_t>(e.dofs), 0);
-  e.theta = scenario.solver.theta;
+  e.bdf2 = scenario.solver.integrator == SolverDef::Integrator::bdf2;
+  e.theta = e.bdf2 ? 1.0 : scenario.solver.theta;
+  e.h_eff = scenario.solver.time_step_s;
   e.planar = true;
   for (const JointRec& jr : joints) e.planar = e.planar && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
   e.out.assign(static_cast<std::size_t>(6 + e.dofs), 0);
@@ -148,6 +150,8 @@ void World::Impl::step_multibody() {
   MultibodyEngine& e = *mb;
   btMultiBody& t = *e.tree;
   const double h = scenario.solver.time_step_s;
+  const bool two_step = e.bdf2 && e.has_history;
+  e.h_eff = two_step ? 2 * h / 3 : h;
   generate_contacts();
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const JointRec& jr = joints[j];
@@ -163,13 +167,32 @@ void World::Impl::step_multibody() {
     t.addLinkTorque(link, bt(i.torque_N_m * share));
   }
   e.v_start.assign(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + e.dofs);
+  if (two_step) {  // BDF2 starts from v̂ = (4v − v_prev)/3
+    for (int k = 0; k < e.dofs; ++k)
+      e.v_mid[static_cast<std::size_t>(k)] = (4 * e.v_start[static_cast<std::size_t>(k)] - e.v_prev[static_cast<std::size_t>(k)]) / 3;
+    set_joint_velocities(t, e.v_mid);
+  }
   // Velocities after the external and gyroscopic forces alone.
-  t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
+  t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(e.h_eff, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
   const auto solve_start = WorldClock::now();
   multibody_rows();
   solve_multibody_rows();
   profile.row_solve_s += seconds_since(solve_start);
-  if (e.theta < 1) {
+  if (e.bdf2) {
+    // x⁺ = (4x − x_prev)/3 + h_eff·v⁺ = x + h·v_move, v_move = (v_move_prev + 2v⁺)/3; then v⁺ returns.
+    const double* v = t.getVelocityVector() + 6;
+    e.v_end.assign(v, v + e.dofs);
+    for (int k = 0; k < e.dofs; ++k) {
+      const std::size_t u = static_cast<std::size_t>(k);
+      e.v_mid[u] = two_step ? (e.v_move[u] + 2 * e.v_end[u]) / 3 : e.v_end[u];
+    }
+    set_joint_velocities(t, e.v_mid);
+    t.stepPositionsMultiDof(h);
+    set_joint_velocities(t, e.v_end);
+    e.v_prev = e.v_start;
+    e.v_move = e.v_mid;
+    e.has_history = true;
+  } else if (e.theta < 1) {
     // Positions advance with the θ-weighted mean of the step's start and end velocities, then v⁺ returns.
     const double* v = t.getVelocityVector() + 6;
     e.v_end.assign(v, v + e.dofs);
@@ -206,13 +229,16 @@ void World::Impl::step_multibody() {
 // step, f = force0 − (h·k + c)·ṡ⁺, σ = h·k + c. Trapezoidal: the force at mid-step,
 // f = force0 − σ·(ṡ + ṡ⁺) with σ = h·k/4 + c/2 (ṡ_mid = (ṡ + ṡ⁺)/2, s_mid = s + h/2·ṡ_mid). Either
 // way λ/h = f gives the row (A + 1/(h·σ))·λ = force0/σ − w·ṡ − ṡ*, w = 0 or 1.
+// BDF2 (θ = 1 with h_eff = 2h/3): the spring at the extrapolated position x̂ = (4x − x_prev)/3 =
+// x + h·v_move_prev/3, so force0 − k·(h/3)·ṡ_move enters.
 MultibodyRow World::Impl::spring_row(double k, double c, double force0) const {
-  const double h = scenario.solver.time_step_s, theta = mb->theta;
+  const double h = mb->h_eff, theta = mb->theta;
   const double sigma = theta * (theta * h * k + c);
   MultibodyRow r;
   r.cfm = 1 / (h * sigma);
   r.target = force0 / sigma;
   r.start_rate_weight = (1 - theta) / theta;
+  if (mb->bdf2 && mb->has_history) r.move_rate_weight = k * scenario.solver.time_step_s / (3 * sigma);
   r.lo = -kInfinity;
   r.hi = kInfinity;
   return r;
@@ -222,7 +248,6 @@ MultibodyRow World::Impl::spring_row(double k, double c, double force0) const {
 void World::Impl::multibody_rows() {
   MultibodyEngine& e = *mb;
   btMultiBody& t = *e.tree;
-  const double h = scenario.solver.time_step_s;
   const int dofs = e.dofs;
   e.rows.clear();
   contacts.clear();
@@ -346,8 +371,8 @@ void World::Impl::multibody_rows() {
       r.kind = MultibodyRow::motor;
       r.owner = static_cast<int>(j);
       r.target = jr.motor->target_speed_rad_s * ramp;
-      r.lo = -jr.motor->max_torque_N_m * h;
-      r.hi = jr.motor->max_torque_N_m * h;
+      r.lo = -jr.motor->max_torque_N_m * e.h_eff;  // impulses are force × h_eff
+      r.hi = jr.motor->max_torque_N_m * e.h_eff;
       jrows[new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;
     }
   }
@@ -372,6 +397,7 @@ void World::Impl::solve_multibody_rows() {
   const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs), v_start(e.v_start.data(), dofs);
   e.row_rate.noalias() = e.jac * v_pred;
   e.row_rate_start.noalias() = e.jac * v_start;
+  if (e.bdf2 && e.has_history) e.row_rate_move.noalias() = e.jac * Eigen::Map<const Eigen::VectorXd>(e.v_move.data(), dofs);
   const Eigen::VectorXd &j_v = e.row_rate, &j_v_start = e.row_rate_start;
   e.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(e.a.data(), n, n);
@@ -389,6 +415,7 @@ void World::Impl::solve_multibody_rows() {
     // sticking contact creeps by 1e-8 of the velocity change its impulse makes.
     a(i, i) += r.cfm > 0 ? r.cfm : kStiffRow * a(i, i);
     e.b[static_cast<std::size_t>(i)] = r.target - r.start_rate_weight * j_v_start(i) - j_v(i);
+    if (r.move_rate_weight != 0) e.b[static_cast<std::size_t>(i)] -= r.move_rate_weight * e.row_rate_move(i);
     e.lo[static_cast<std::size_t>(i)] = r.lo;
     e.hi[static_cast<std::size_t>(i)] = r.hi;
     e.findex[static_cast<std::size_t>(i)] = r.friction_of;
@@ -411,13 +438,14 @@ void World::Impl::multibody_results() {
   const double h = scenario.solver.time_step_s;
   // Work of a row over the step: its force times its travel, h·J·v_θ (positions moved with v_θ).
   const Eigen::Map<const Eigen::VectorXd> v_end(e.tree->getVelocityVector() + 6, e.dofs), v_start(e.v_start.data(), e.dofs);
-  e.v_theta.noalias() = (1 - e.theta) * v_start + e.theta * v_end;
+  if (e.bdf2) e.v_theta = Eigen::Map<const Eigen::VectorXd>(e.v_move.data(), e.dofs);  // BDF2: positions moved with v_move
+  else e.v_theta.noalias() = (1 - e.theta) * v_start + e.theta * v_end;
   const Eigen::VectorXd& v = e.v_theta;
   PowerFlows pw;
   std::fill(e.motor_torque_N_m.begin(), e.motor_torque_N_m.end(), 0.0);
   for (std::size_t r = 0; r < e.rows.size(); ++r) {
     const MultibodyRow& row = e.rows[r];
-    const double force = e.x[r] / h, rate = e.jac.row(static_cast<Eigen::Index>(r)).dot(v);
+    const double force = e.x[r] / e.h_eff, rate = e.jac.row(static_cast<Eigen::Index>(r)).dot(v);
     switch (row.kind) {
       case MultibodyRow::contact_normal:
         contacts[static_cast<std::size_t>(row.owner)].normal_force_N = force;

@@ -7,7 +7,7 @@ anti-aliased contacts.csv force) beside the amplitudes of the full-rate per-step
 from steps.h5 over the same window (Hann window, the same zero padding rule), and the point
 samples (`_force_point_N`, what the paper's 2 kHz record holds).
 
-    python3 scripts/spectra_convergence.py SCENARIO OUT_DIR [--duration S] [--dt 4e-5 2e-5 1e-5 5e-6]
+    python3 scripts/spectra_convergence.py SCENARIO OUT_DIR [--duration S] [--dt 4e-5 2e-5 1e-5 5e-6] [--set key=value ...]
 
 Needs python3-h5py and numpy; gearsim from build/bin.
 """
@@ -51,6 +51,7 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--duration", default="0.6")
     ap.add_argument("--dt", nargs="+", default=["4e-5", "2e-5", "1e-5", "5e-6"])
+    ap.add_argument("--set", action="append", default=[], help="key=value passed on to gearsim run (repeatable)")
     a = ap.parse_args()
     rows = []
     for dt_s in a.dt:
@@ -59,7 +60,8 @@ def main():
         # Samples at whole steps: the rate nearest 2 kHz from above (2083.3 Hz at 4e-5 s).
         rate = 1 / (int(1 / (2000 * dt) + 1e-9) * dt)
         subprocess.run([GEARSIM, "run", a.scenario, "--out", run, "--duration", a.duration, "--no-analyze",
-                        "--set", "solver.time_step_s=" + dt_s, "--set", f"output.sample_rate_hz={rate!r}"],
+                        "--set", "solver.time_step_s=" + dt_s, "--set", f"output.sample_rate_hz={rate!r}"]
+                       + [x for kv in a.set for x in ("--set", kv)],
                        check=True, stdout=subprocess.DEVNULL)
         subprocess.run([GEARSIM, "analyze", run], check=True, stdout=subprocess.DEVNULL)
         an = json.load(open(os.path.join(run, "analysis.json")))

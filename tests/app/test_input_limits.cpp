@@ -82,6 +82,10 @@ TEST(InputLimits, EngineAndTheta) {
   EXPECT_REFUSED(kWheel + "solver: {theta: 0.4}\n", "9:", "solver.theta: expected a θ-method weight in [0.5, 1], got 0.4");
   EXPECT_REFUSED(kWheel + "solver: {theta: 1.5}\n", "9:", "solver.theta: expected a θ-method weight in [0.5, 1]");
   EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, theta: 0.6}\n", "9:", "solver.theta: only engine multibody has the θ-method");
+  EXPECT_EQ(error_for(kWheel + "solver: {integrator: bdf2}\n"), "");
+  EXPECT_REFUSED(kWheel + "solver: {integrator: rk4}\n", "9:", "solver.integrator");
+  EXPECT_REFUSED(kWheel + "solver: {integrator: bdf2, theta: 0.6}\n", "9:", "solver.theta: integrator bdf2 has no θ");
+  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, integrator: bdf2}\n", "9:", "solver.integrator: only engine multibody");
 }
 
 TEST(InputLimits, SampleRateGivesAtLeastOneRowAndAtMostOnePerStep) {

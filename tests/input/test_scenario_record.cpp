@@ -67,6 +67,19 @@ TEST(ScenarioRecord, TheContactSearchReadsBack) {
   EXPECT_NE(error_of(j).find("contact.coherent_search"), std::string::npos) << error_of(j);
 }
 
+TEST(ScenarioRecord, TheIntegratorReadsBack) {
+  // solver.integrator: theta (the default) and bdf2 read back; a record without it ran the θ-method.
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_EQ(s.solver.integrator, physics::SolverDef::Integrator::theta);
+  s.solver.integrator = physics::SolverDef::Integrator::bdf2;
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.integrator, physics::SolverDef::Integrator::bdf2);
+  j["solver"].erase("integrator");
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.integrator, physics::SolverDef::Integrator::theta);
+  j["solver"]["integrator"] = "euler";
+  EXPECT_NE(error_of(j).find("solver.integrator"), std::string::npos) << error_of(j);
+}
+
 TEST(ScenarioRecord, TheContinuationReadsBack) {
   // contact.continued_search: on by default, off without the coherent search; a record written
   // before the key existed ran without it.
