@@ -92,6 +92,7 @@ void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string
   b.flanks = std::make_shared<const contact::FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
                    ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
   require_faithful(*b.flanks, who, contact);
+  b.flanks_from_spec = true;
   b.face_width_m = spec.face_width_m;
   b.contact_radius_m = g.outline.dims.base_radius_m;
 }

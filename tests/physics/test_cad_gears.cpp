@@ -167,6 +167,25 @@ TEST(CadGears, McadPlanetarySetFromMeshesCarriesTheSunTorqueOverItsPlanets) {
   for (double f : net) EXPECT_NEAR(f / static_cast<double>(n), expected / 3, 0.1 * expected / 3);
 }
 
+TEST(CadGears, ContactsOfMeshFlanksAreSearchedNotContinued) {
+  // contact.continued_search continues contacts only between gears generated from a spec: the
+  // MCAD planetary set gives the same contacts, bit for bit, with it on (the default) and off.
+  const fs::path file = test::mcad_planetary_file(test::fresh_test_dir(), 1.0);
+  World on(input::load_scenario(file, {})), off(input::load_scenario(file, {"contact.continued_search=false"}));
+  long contacts = 0;
+  for (int i = 0; i < 1500; ++i) {
+    on.step();
+    off.step();
+    ASSERT_EQ(on.contacts().size(), off.contacts().size()) << "step " << i;
+    for (std::size_t c = 0; c < on.contacts().size(); ++c) {
+      ASSERT_EQ(on.contacts()[c].geometry.depth_m, off.contacts()[c].geometry.depth_m) << "step " << i;
+      ASSERT_EQ(on.contacts()[c].normal_force_N, off.contacts()[c].normal_force_N) << "step " << i;
+    }
+    contacts += static_cast<long>(on.contacts().size());
+  }
+  EXPECT_GT(contacts, 1500);
+}
+
 TEST(CadGears, AHalfPitchToothLayoutErrorIsRefusedWithTheToothTheMeshShows) {
   // tooth0 15° on the 12-tooth pinion (pitch 30°): the layout's sector boundaries through the teeth.
   const std::string m = refusal(", teeth: 12, tooth0_deg: 15", "", 18e-3);
