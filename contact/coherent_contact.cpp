@@ -246,6 +246,40 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
   return h;
 }
 
+// The stateless search's answer for one flank, from its record where that holds (skipped: no
+// hit; tracked: only the samples that can hold the deepest probed) or by a full search that
+// makes the record afresh. No hit: depth kNone, tooth_y −1.
+Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& centre, double turn, double reach,
+                CoherentToothSearch::FlankRecord& rec, CoherentToothSearch::TrackedFlank* track_of, int& hint,
+                CoherentToothSearch::Counts& counts) {
+  // Any point p of the tooth moves in y's frame by Δc + (R1 − R0)(p − c): at most the tooth
+  // centre's move plus |Δturn| times the tooth's bounding radius (|R1 − R0| = 2|sin(Δturn/2)| ≤
+  // |Δturn|).
+  const double travel =
+      rec.travel_m > 0 || rec.tracked ? (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m
+                                      : 0;
+  if (rec.travel_m > 0 && travel < rec.travel_m) {
+    ++counts.skipped;
+    return {};
+  }
+  FlankSamples s(xy, k, f, hint);
+  bool refine;
+  if (rec.tracked && travel <= track_of->span_m) {  // only the first gear's flanks are tracked
+    ++counts.tracked;
+    refine = probe_tracked(s, *track_of, travel);
+  } else {
+    ++counts.searched;
+    refine = tip_only ? probe_tip(s) : probe_flank(s);
+    rec.tooth_centre_in_y_m = centre;
+    rec.turn_rad = turn;
+    rec.travel_m = refine ? -1 : clear_travel(s, tip_only);
+    // A flank of the first gear that cannot be skipped is tracked (its probing is what costs).
+    rec.tracked = !tip_only && s.best_i >= 0 && !(rec.travel_m > 0);
+    if (rec.tracked) track(s, *track_of, kTrackSpanWindows * s.window);
+  }
+  return refine ? refined_hit(s) : Hit{};
+}
+
 }  // namespace
 
 void CoherentToothSearch::reset() {
@@ -284,7 +318,12 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];
         Solution& sol = solutions_[pass][at];
-        if (continuation_ && sol.solved != 0 && sol.call + 1 == calls_) {
+        auto emit = [&](const Hit& h) {
+          if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
+          else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
+        };
+        Hit continued;  // depth kNone: none
+        if (continuation_ != Continuation::off && sol.solved != 0 && sol.call + 1 == calls_) {
           // Started where last step's motion, repeated, takes the solution (a linear
           // prediction: the start is then off by the motion's change, not by the motion).
           const double r0 = sol.has_prev ? 2 * sol.r_x - sol.r_prev : sol.r_x, s0 = sol.has_prev ? 2 * sol.s_y - sol.s_prev : sol.s_y;
@@ -294,46 +333,25 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
             ++counts_.continued;
             const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y;
             sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_, sol.r_x, sol.s_y, same};
-            rec.travel_m = -1;  // searched in full when the continuation ends
-            rec.tracked = false;
-            if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
-            else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
-            continue;
+            if (continuation_ == Continuation::replace) {
+              rec.travel_m = -1;  // searched in full when the continuation ends
+              rec.tracked = false;
+              emit(h);
+              continue;
+            }
+            continued = h;
           }
         }
-        // Any point p of the tooth moves in y's frame by Δc + (R1 − R0)(p − c): at most the
-        // tooth centre's move plus |Δturn| times the tooth's bounding radius (|R1 − R0| =
-        // 2|sin(Δturn/2)| ≤ |Δturn|).
-        const double travel =
-            rec.travel_m > 0 || rec.tracked
-                ? (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m
-                : 0;
-        if (rec.travel_m > 0 && travel < rec.travel_m) {
-          ++counts_.skipped;
+        const Hit sampled = sampled_hit(xy, k, f, tip_only, centre, turn, reach, rec, pass == 0 ? &tracks_[at] : nullptr, hint, counts_);
+        if (continued.depth > kNone && !(sampled.depth > continued.depth)) {
+          emit(continued);  // deeper: the continued maximum, which goes on being continued
           continue;
         }
-        FlankSamples s(xy, k, f, hint);
-        bool refine;
-        if (rec.tracked && travel <= tracks_[at].span_m) {
-          ++counts_.tracked;
-          refine = probe_tracked(s, tracks_[at], travel);
-        } else {
-          ++counts_.searched;
-          refine = tip_only ? probe_tip(s) : probe_flank(s);
-          rec.tooth_centre_in_y_m = centre;
-          rec.turn_rad = turn;
-          rec.travel_m = refine ? -1 : clear_travel(s, tip_only);
-          // A flank of the first gear that cannot be skipped is tracked (its probing is what costs).
-          rec.tracked = !tip_only && s.best_i >= 0 && !(rec.travel_m > 0);
-          if (rec.tracked) track(s, tracks_[at], kTrackSpanWindows * s.window);
-        }
-        if (!refine) continue;
-        const Hit h = refined_hit(s);
-        if (h.tooth_y < 0) continue;
-        if (continuation_ && h.solved != Hit::kSampled) sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_};
+        if (sampled.tooth_y < 0) continue;
+        if (continuation_ != Continuation::off && sampled.solved != Hit::kSampled)
+          sol = {static_cast<signed char>(sampled.solved), sampled.tooth_y, sampled.flank_y, sampled.r_x, sampled.s_y, calls_};
         else sol = Solution{};
-        if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
-        else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
+        emit(sampled);
       }
     });
   }

@@ -26,14 +26,19 @@ class CoherentToothSearch {
   // Forget every measurement: the next call searches every flank.
   void reset();
 
-  // Continuation (off by default): a flank of the first gear whose deepest point the last call
-  // solved by Newton's method (an interior maximum or a corner, flank_newton_impl.hpp) is solved
-  // again from that solution, on the same flank of the other gear, without probing; where the
-  // solve fails, leaves the flank, faces another flank or falls more than the refinement window
-  // clear, the flank is searched in full as before. The same contacts as the stateless search to
-  // Newton's tolerance (not bit for bit), for a fraction of the probes (docs/tooth-contact.md,
-  // "Continuation").
-  void set_continuation(bool on) { continuation_ = on; }
+  // Continuation (off by default): a flank whose deepest point the last call solved by Newton's
+  // method (an interior maximum or a corner, flank_newton_impl.hpp) is solved again from that
+  // solution, on the same flank of the other gear; where the solve fails, leaves the flank,
+  // faces another flank, curves too sharply or lies outside the refinement window, it is not.
+  //  - replace: the continued solution stands for the flank, which is not probed (smooth flanks
+  //    with one maximum per contact: the stateless search's contacts to ~0.1 nm, not bit for bit);
+  //  - deeper: the flank is also searched as the stateless search does, and the deeper of the two
+  //    answers stands (faceted CAD flanks, whose contacts have several maxima: each way alone
+  //    sometimes lands on a lower one).
+  // docs/tooth-contact.md, "Continuation".
+  enum class Continuation { off, replace, deeper };
+  void set_continuation(Continuation c) { continuation_ = c; }
+  void set_continuation(bool on) { continuation_ = on ? Continuation::replace : Continuation::off; }
 
   // Flanks searched in full, tracked (only the samples that can hold the deepest probed),
   // skipped and continued since construction (both probing passes).
@@ -83,7 +88,7 @@ class CoherentToothSearch {
     bool has_prev = false;
   };
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
-  bool continuation_ = false;
+  Continuation continuation_ = Continuation::off;
   long calls_ = 0;
   Counts counts_;
 };

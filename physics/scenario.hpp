@@ -189,8 +189,8 @@ struct ContactDef {
   // Continuation on top of it (CoherentToothSearch::set_continuation): a flank whose contact was
   // solved by Newton's method last step is solved again from there without probing, where the
   // solution stays smooth and shallow. The stateless search's contacts to ~0.1 nm, not bit for
-  // bit (docs/tooth-contact.md, "Continuation"). Part of coherent_search: off without it. Used
-  // only between gears generated from a spec (CAD meshes' faceted flanks are searched).
+  // bit (docs/tooth-contact.md, "Continuation"). Part of coherent_search: off without it. With a
+  // CAD mesh in the pair, the deeper of the continued and the searched contact.
   bool continued_search = true;
 };
 

@@ -19,7 +19,11 @@ void World::Impl::generate_contacts() {
   for (PairRec& pr : pairs) {
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
     std::vector<contact::ToothContact>& found = pr.found;
-    pr.search.set_continuation(scenario.contact.continued_search && a.flanks_from_spec && b.flanks_from_spec);
+    // Gears from a spec: the continued contact stands; CAD meshes: the deeper of it and the search's.
+    using Continuation = contact::CoherentToothSearch::Continuation;
+    pr.search.set_continuation(!scenario.contact.continued_search                ? Continuation::off
+                               : a.flanks_from_spec && b.flanks_from_spec ? Continuation::replace
+                                                                            : Continuation::deeper);
     if (scenario.contact.coherent_search) pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
     else contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
     // A manifold holds kMaxPointsPerPair points; the multibody engine's rows have no such limit.
