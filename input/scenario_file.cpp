@@ -131,12 +131,14 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     if (s.solver.engine == physics::SolverEngine::rigid_bodies && given(m, "theta"))
       m.fail("theta", "only engine multibody has the θ-method (rigid_bodies integrates its contacts by implicit Euler)");
     if (given(m, "integrator")) {
-      s.solver.integrator = m.choice_or("integrator", {"theta", "bdf2"}, "theta") == "bdf2" ? physics::SolverDef::Integrator::bdf2
-                                                                                         : physics::SolverDef::Integrator::theta;
+      const std::string i = m.choice_or("integrator", {"theta", "bdf2", "trapezoid_closed"}, "theta");
+      s.solver.integrator = i == "bdf2" ? physics::SolverDef::Integrator::bdf2
+                            : i == "trapezoid_closed" ? physics::SolverDef::Integrator::trapezoid_closed
+                                                      : physics::SolverDef::Integrator::theta;
       if (s.solver.engine == physics::SolverEngine::rigid_bodies)
         m.fail("integrator", "only engine multibody has a choice of integrator (rigid_bodies integrates its contacts by implicit Euler)");
-      if (s.solver.integrator == physics::SolverDef::Integrator::bdf2 && given(m, "theta"))
-        m.fail("theta", "integrator bdf2 has no θ: remove theta or set integrator: theta");
+      if (s.solver.integrator != physics::SolverDef::Integrator::theta && given(m, "theta"))
+        m.fail("theta", std::string("integrator ") + physics::integrator_name(s.solver.integrator) + " has no θ: remove theta or set integrator: theta");
     }
     if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
       m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");

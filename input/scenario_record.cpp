@@ -312,8 +312,10 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
   if (solver.has("theta")) s.solver.theta = solver.number_within("theta", limits::kSolverTheta);
   if (solver.has("integrator")) {  // records written before BDF2 have none: the θ-method
     const std::string i = solver.string("integrator");
-    if (i != "theta" && i != "bdf2") solver.fail("integrator", "expected theta or bdf2");
-    s.solver.integrator = i == "bdf2" ? physics::SolverDef::Integrator::bdf2 : physics::SolverDef::Integrator::theta;
+    if (i != "theta" && i != "bdf2" && i != "trapezoid_closed") solver.fail("integrator", "expected theta, bdf2 or trapezoid_closed");
+    s.solver.integrator = i == "bdf2"               ? physics::SolverDef::Integrator::bdf2
+                          : i == "trapezoid_closed" ? physics::SolverDef::Integrator::trapezoid_closed
+                                                    : physics::SolverDef::Integrator::theta;
   }
   s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
   if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");

@@ -215,11 +215,16 @@ struct SolverDef {
   // multibody: `theta` (the θ-method above) or `bdf2`: the two-step backward differentiation
   // formula, second order and, like implicit Euler, damping the modes the step does not resolve
   // (docs/solver.md, "BDF2"); its first step is implicit Euler. θ is then not read.
-  enum class Integrator { theta, bdf2 } integrator = Integrator::theta;
+  // `trapezoid_closed`: θ chosen per step — ½ (the trapezoidal rule: second order, no numerical
+  // damping) where every tooth contact touched in the step before and cannot open within this one,
+  // else 1 (implicit Euler) (docs/solver.md, "θ that follows the contacts").
+  enum class Integrator { theta, bdf2, trapezoid_closed } integrator = Integrator::theta;
 };
 
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }
-inline const char* integrator_name(SolverDef::Integrator i) { return i == SolverDef::Integrator::bdf2 ? "bdf2" : "theta"; }
+inline const char* integrator_name(SolverDef::Integrator i) {
+  return i == SolverDef::Integrator::bdf2 ? "bdf2" : i == SolverDef::Integrator::trapezoid_closed ? "trapezoid_closed" : "theta";
+}
 
 
 struct OutputDef {

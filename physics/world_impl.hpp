@@ -110,6 +110,8 @@ struct MultibodyEngine {
   // v̂ = (4v − v_prev)/3, h_eff = 2h/3, v_move = (v_move_prev + 2v⁺)/3 (so x⁺ = (4x − x_prev)/3 +
   // h_eff·v⁺); implicit Euler (h_eff = h, v_move = v⁺) until there is a step behind.
   bool bdf2 = false, has_history = false;
+  bool trapezoid_closed = false;  // θ per step: ½ while every contact stays closed, else 1
+  std::vector<std::tuple<int, int, int, int>> touching, touching_before;  // (pair, tooth_a, tooth_b, flank_a) this step, the last
   double h_eff = 0;                    // this step's h_eff (h for the θ-method)
   std::vector<double> v_prev, v_move;  // BDF2: v at the last step's start; the last step's v_move
   Eigen::VectorXd row_rate_move;       // BDF2: J·v_move of the last step (the spring's extrapolation)
@@ -173,6 +175,7 @@ struct World::Impl {
   void step_multibody();
   void multibody_rows();
   MultibodyRow spring_row(double k, double c, double force0) const;
+  double trapezoid_closed_theta();
   void solve_multibody_rows();
   void multibody_results();
 };

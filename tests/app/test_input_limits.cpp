@@ -85,6 +85,8 @@ TEST(InputLimits, EngineAndTheta) {
   EXPECT_EQ(error_for(kWheel + "solver: {integrator: bdf2}\n"), "");
   EXPECT_REFUSED(kWheel + "solver: {integrator: rk4}\n", "9:", "solver.integrator");
   EXPECT_REFUSED(kWheel + "solver: {integrator: bdf2, theta: 0.6}\n", "9:", "solver.theta: integrator bdf2 has no θ");
+  EXPECT_EQ(error_for(kWheel + "solver: {integrator: trapezoid_closed}\n"), "");
+  EXPECT_REFUSED(kWheel + "solver: {integrator: trapezoid_closed, theta: 0.5}\n", "9:", "solver.theta: integrator trapezoid_closed has no θ");
   EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, integrator: bdf2}\n", "9:", "solver.integrator: only engine multibody");
 }
 

@@ -74,6 +74,8 @@ TEST(ScenarioRecord, TheIntegratorReadsBack) {
   s.solver.integrator = physics::SolverDef::Integrator::bdf2;
   nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
   EXPECT_EQ(scenario_from_json(j, "rec.json").solver.integrator, physics::SolverDef::Integrator::bdf2);
+  j["solver"]["integrator"] = "trapezoid_closed";
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.integrator, physics::SolverDef::Integrator::trapezoid_closed);
   j["solver"].erase("integrator");
   EXPECT_EQ(scenario_from_json(j, "rec.json").solver.integrator, physics::SolverDef::Integrator::theta);
   j["solver"]["integrator"] = "euler";

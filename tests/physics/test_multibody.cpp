@@ -174,6 +174,9 @@ TEST(Multibody, BDF2IsSecondOrderAndImplicitEulerFirst) {
   EXPECT_NEAR(euler / euler_half, 2.0, 0.3) << euler << " " << euler_half;
   EXPECT_NEAR(bdf2 / bdf2_half, 4.0, 0.6) << bdf2 << " " << bdf2_half;
   EXPECT_LT(bdf2, 0.5 * euler);
+  // trapezoid_closed: no contact here, so θ = ½ every step: the trapezoidal rule, second order.
+  const double trap = oscillator_error("trapezoid_closed", 1e-3), trap_half = oscillator_error("trapezoid_closed", 5e-4);
+  EXPECT_NEAR(trap / trap_half, 4.0, 0.6) << trap << " " << trap_half;
 }
 
 }  // namespace test_multibody
