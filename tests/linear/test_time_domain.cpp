@@ -147,10 +147,14 @@ TEST(TimeDomain, ATorquePulseOnTheRingRingsAtTheRotationalModes) {
   const double ratio = -s.loads[1].constant_torque_N_m / s.loads[0].constant_torque_N_m;
   ASSERT_NEAR(ratio, 1 + 94.0 / 26.0, 1e-9);  // the example's z_s = 26, z_r = 94
   char carrier[64];
-  std::snprintf(carrier, sizeof carrier, "torque_N_m: [0, 0, %.9g]", -20 * ratio);
+  std::snprintf(carrier, sizeof carrier, "torque_N_m: [0, 0, %.9g]", -2 * ratio);
   // Recorded: the central members' angles. The planets' also carry the translational modes, which
   // the three planets' sequential mesh phasing (z_s = 26 is no multiple of 3) couples in.
-  expect_peaks_at_modes({pulse_on("ring", "torque_N_m: [0, 0, 200]") + pulse_on("sun", "torque_N_m: [0, 0, 20]") + pulse_on("carrier", carrier)}, true,
+  // Pulses small enough to stay in the linear range the modes describe: ten times these (200 N·m
+  // on the ring) open the zero-backlash meshes of this ζ = 0.001 set and shift its peaks (the
+  // 1475.7 Hz mode to 1507.7 Hz) unless the step's own damping (implicit Euler, ≈ ω·h/2) keeps the
+  // response small; at this size every integrator finds the modes (docs/solver.md).
+  expect_peaks_at_modes({pulse_on("ring", "torque_N_m: [0, 0, 20]") + pulse_on("sun", "torque_N_m: [0, 0, 2]") + pulse_on("carrier", carrier)}, true,
                         linear::ModeType::Rotational, "lin_parker_1999.yaml", {"sun", "carrier", "ring"});
 }
 
