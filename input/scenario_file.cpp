@@ -130,8 +130,9 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     s.solver.theta = number_within_or(m, "theta", s.solver.theta, limits::kSolverTheta);
     if (s.solver.engine == physics::SolverEngine::rigid_bodies && given(m, "theta"))
       m.fail("theta", "only engine multibody has the θ-method (rigid_bodies integrates its contacts by implicit Euler)");
+    if (given(m, "theta") && !given(m, "integrator")) s.solver.integrator = physics::SolverDef::Integrator::theta;
     if (given(m, "integrator")) {
-      const std::string i = m.choice_or("integrator", {"theta", "bdf2", "trapezoid_closed"}, "theta");
+      const std::string i = m.choice_or("integrator", {"theta", "bdf2", "trapezoid_closed"}, "trapezoid_closed");
       s.solver.integrator = i == "bdf2" ? physics::SolverDef::Integrator::bdf2
                             : i == "trapezoid_closed" ? physics::SolverDef::Integrator::trapezoid_closed
                                                       : physics::SolverDef::Integrator::theta;

@@ -310,7 +310,8 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
     s.solver.engine = e == "multibody" ? physics::SolverEngine::multibody : physics::SolverEngine::rigid_bodies;
   }
   if (solver.has("theta")) s.solver.theta = solver.number_within("theta", limits::kSolverTheta);
-  if (solver.has("integrator")) {  // records written before BDF2 have none: the θ-method
+  s.solver.integrator = physics::SolverDef::Integrator::theta;  // records written before BDF2 have none: the θ-method
+  if (solver.has("integrator")) {
     const std::string i = solver.string("integrator");
     if (i != "theta" && i != "bdf2" && i != "trapezoid_closed") solver.fail("integrator", "expected theta, bdf2 or trapezoid_closed");
     s.solver.integrator = i == "bdf2"               ? physics::SolverDef::Integrator::bdf2

@@ -206,19 +206,20 @@ struct SolverDef {
   double time_step_s = 2e-5;
   int iterations = 50;
   SolverEngine engine = SolverEngine::multibody;
-  // multibody: the θ-method for the spring–damper rows (contacts, bearings): forces at
-  // s + θ·h·ṡ_θ, positions advanced with (1 − θ)·v + θ·v⁺. θ = 1 (the default) is implicit Euler,
-  // as Bullet's own contact ERP/CFM: first order, damps every mode of period ≲ 2π·h heavily.
-  // θ < 1 is closer to second order (½: the trapezoidal rule) but not yet trusted: with contacts
-  // that open and close it gains energy (docs/solver.md, "θ").
+  // multibody, integrator `theta`: the θ-method for the spring–damper rows (contacts, bearings):
+  // forces at s + θ·h·ṡ_θ, positions advanced with (1 − θ)·v + θ·v⁺. θ = 1 is implicit Euler, as
+  // Bullet's own contact ERP/CFM: first order, damps every mode of period ≲ 2π·h heavily. θ < 1 is
+  // closer to second order (½: the trapezoidal rule) but gains energy where contacts open and
+  // close (docs/solver.md, "θ"). Giving `theta` without `integrator` chooses this integrator.
   double theta = 1.0;
-  // multibody: `theta` (the θ-method above) or `bdf2`: the two-step backward differentiation
-  // formula, second order and, like implicit Euler, damping the modes the step does not resolve
-  // (docs/solver.md, "BDF2"); its first step is implicit Euler. θ is then not read.
-  // `trapezoid_closed`: θ chosen per step — ½ (the trapezoidal rule: second order, no numerical
-  // damping) where every tooth contact touched in the step before and cannot open within this one,
-  // else 1 (implicit Euler) (docs/solver.md, "θ that follows the contacts").
-  enum class Integrator { theta, bdf2, trapezoid_closed } integrator = Integrator::theta;
+  // multibody: `trapezoid_closed` (the default): θ chosen per step — ½ (the trapezoidal rule:
+  // second order, no numerical damping) where every tooth contact touched in the step before;
+  // 1 where one may open within the step; where one is new, ½ plus just the damping that takes
+  // out the energy its late detection added (docs/solver.md, "θ that follows the contacts").
+  // `theta`: the θ-method above. `bdf2`: the two-step backward differentiation formula, second
+  // order and, like implicit Euler, damping the modes the step does not resolve (docs/solver.md,
+  // "BDF2"); its first step is implicit Euler.
+  enum class Integrator { theta, bdf2, trapezoid_closed } integrator = Integrator::trapezoid_closed;
 };
 
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }

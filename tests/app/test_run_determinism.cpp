@@ -41,17 +41,21 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 
 // The hash of the 0.004 s paper run (200 steps) on Debian 12 / x86-64 with this build. Update
 // it (the failure message prints the new value) only together with the change that explains it.
-// Last change: contact.continued_search (default true) solves a flank's contact by Newton's
-// method from last step's solution (started from a linear prediction of it) instead of from
-// this step's probe samples, on both gears' flanks (docs/tooth-contact.md, "Continuation"): depths agree with the sampled search's within
-// 0.1 nm, but not bit for bit (were 0x411493f76f300590 rigid_bodies, 0xdbdf84c60154a56f
-// multibody: still the hashes without the continuation, kept below).
+// Last change: solver.integrator trapezoid_closed is the default (docs/solver.md, "θ that
+// follows the contacts"): θ = ½ where every contact persists, 1 where one may open, and where one
+// is new ½ plus the damping that removes the energy its late detection added. The θ-method's
+// (θ = 1, --set solver.integrator=theta) hash is the default's before, kept below.
+// Before: contact.continued_search (default true) solves a flank's contact by Newton's method from
+// last step's solution (docs/tooth-contact.md, "Continuation"): depths agree with the sampled
+// search's within 0.1 nm, but not bit for bit (the sampled search's hashes are kept below).
 // kGoldenHash is the rigid-body engine's (it runs with --set solver.engine=rigid_bodies).
 constexpr std::uint64_t kGoldenHash = 0x95f0645b071ddb45ull;
-// The default engine's (multibody, θ = 1) hash.
-constexpr std::uint64_t kGoldenHashMultibody = 0x52a6317d6e914e8bull;
+// The default engine's (multibody, trapezoid_closed) hash.
+constexpr std::uint64_t kGoldenHashMultibody = 0x484c0593120adebbull;
+// The multibody engine with implicit Euler (θ = 1), the default before trapezoid_closed.
+constexpr std::uint64_t kGoldenHashImplicitEuler = 0x52a6317d6e914e8bull;
 // Without the continuation (--set contact.continued_search=false): the coherent search's and the
-// stateless search's, unchanged since Newton's refinement came in.
+// stateless search's, unchanged since Newton's refinement came in (multibody with θ = 1).
 constexpr std::uint64_t kGoldenHashSampled = 0x411493f76f300590ull;
 constexpr std::uint64_t kGoldenHashSampledMultibody = 0xdbdf84c60154a56full;
 
@@ -71,6 +75,11 @@ TEST(RunDeterminism, ShortPaperRunMatchesTheCommittedHash) {
   EXPECT_EQ(h, kGoldenHashMultibody) << "logs of the short paper run changed; new hash " << hex_of(h);
 }
 
+TEST(RunDeterminism, ImplicitEulerStillGivesItsCommittedHash) {
+  const std::uint64_t h = hash_files(run_paper("golden_theta", " --set solver.integrator=theta"));
+  EXPECT_EQ(h, kGoldenHashImplicitEuler) << "logs of the short paper run (integrator theta) changed; new hash " << hex_of(h);
+}
+
 TEST(RunDeterminism, TheRigidBodyEngineStillGivesItsCommittedHash) {
   const std::uint64_t h = hash_files(run_paper("golden_rigid", " --set solver.engine=rigid_bodies"));
   EXPECT_EQ(h, kGoldenHash) << "logs of the short paper run (rigid_bodies) changed; new hash " << hex_of(h);
@@ -79,10 +88,10 @@ TEST(RunDeterminism, TheRigidBodyEngineStillGivesItsCommittedHash) {
 TEST(RunDeterminism, TheStatelessContactSearchGivesTheSameLogs) {
   // contact.coherent_search (default true) skips and tracks flanks only where that provably
   // changes nothing: without the continuation, it and the stateless search give the same bytes,
-  // with either engine — the ones they gave before the continuation came in.
-  const std::string sampled = " --set contact.continued_search=false";
-  EXPECT_EQ(hash_files(run_paper("coherent", sampled)), kGoldenHashSampledMultibody);
-  EXPECT_EQ(hash_files(run_paper("stateless", " --set contact.coherent_search=false")), kGoldenHashSampledMultibody);
+  // with either engine — the ones they gave before the continuation came in (multibody: θ = 1).
+  const std::string sampled = " --set contact.continued_search=false", theta = " --set solver.integrator=theta";
+  EXPECT_EQ(hash_files(run_paper("coherent", sampled + theta)), kGoldenHashSampledMultibody);
+  EXPECT_EQ(hash_files(run_paper("stateless", " --set contact.coherent_search=false" + theta)), kGoldenHashSampledMultibody);
   EXPECT_EQ(hash_files(run_paper("coherent_rigid", sampled + " --set solver.engine=rigid_bodies")), kGoldenHashSampled);
   EXPECT_EQ(hash_files(run_paper("stateless_rigid", " --set contact.coherent_search=false --set solver.engine=rigid_bodies")), kGoldenHashSampled);
 }

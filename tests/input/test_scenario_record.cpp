@@ -68,9 +68,13 @@ TEST(ScenarioRecord, TheContactSearchReadsBack) {
 }
 
 TEST(ScenarioRecord, TheIntegratorReadsBack) {
-  // solver.integrator: theta (the default) and bdf2 read back; a record without it ran the θ-method.
+  // solver.integrator: trapezoid_closed (the default), theta and bdf2 read back; `theta` given
+  // alone chooses the θ-method; a record without an integrator ran the θ-method.
   physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
-  EXPECT_EQ(s.solver.integrator, physics::SolverDef::Integrator::theta);
+  EXPECT_EQ(s.solver.integrator, physics::SolverDef::Integrator::trapezoid_closed);
+  EXPECT_EQ(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.theta=0.6"}).solver.integrator, physics::SolverDef::Integrator::theta);
+  EXPECT_EQ(scenario_from_json(nlohmann::json::parse(scenario_json(s).dump()), "rec.json").solver.integrator,
+            physics::SolverDef::Integrator::trapezoid_closed);
   s.solver.integrator = physics::SolverDef::Integrator::bdf2;
   nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
   EXPECT_EQ(scenario_from_json(j, "rec.json").solver.integrator, physics::SolverDef::Integrator::bdf2);

@@ -160,8 +160,11 @@ TEST(TimeDomain, ATorquePulseOnTheRingRingsAtTheRotationalModes) {
 
 TEST(TimeDomain, ForcePulsesOnSunAndRingRingAtTheTranslationalModes) {
   // The 2276 Hz pair hardly moves the sun (its peak stays below 1 % of the others in the sun
-  // experiment): a second experiment strikes the ring.
-  expect_peaks_at_modes({pulse_on("sun", "force_N: [300, 200, 0]"), pulse_on("ring", "force_N: [1500, -3000, 0]")}, false,
+  // experiment): a second experiment strikes the ring. Pulses in the linear range, as above: ten
+  // times these (300 N on the sun, 3 kN on the ring) moved the 1102 Hz pair's peak to 1137 Hz once
+  // trapezoid_closed took out only the energy new contacts add (docs/solver.md); at this size
+  // every integrator finds the four pairs within 0.03 %.
+  expect_peaks_at_modes({pulse_on("sun", "force_N: [30, 20, 0]"), pulse_on("ring", "force_N: [150, -300, 0]")}, false,
                         linear::ModeType::Translational);
 }
 
