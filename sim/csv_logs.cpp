@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 #include "core/errors.hpp"
 #include "sim/simulate.hpp"
@@ -31,10 +32,17 @@ CsvLogs::CsvLogs(const std::filesystem::path& dir, const physics::Scenario& scen
   if (every_ >= 2) filter_ = design_decimation_filter(1.0 / dt, 1.0 / (static_cast<double>(every_) * dt));
 }
 
-std::vector<double> CsvLogs::pair_forces(const physics::World& world) const {
+// The filter's channels: every pair's summed normal force, then the transmission error if any.
+std::vector<double> CsvLogs::filtered_channels(const physics::World& world) const {
   std::vector<double> f(pairs_, 0.0);
   for (const physics::ContactSample& c : world.contacts()) f[static_cast<std::size_t>(c.pair)] += c.normal_force_N;
+  if (scenario_.transmission) f.push_back(transmission_error_rad(world));
   return f;
+}
+
+double CsvLogs::transmission_error_rad(const physics::World& world) const {
+  return world.bodies()[static_cast<std::size_t>(te_in_)].angle_rad -
+         scenario_.transmission->ratio * world.bodies()[static_cast<std::size_t>(te_out_)].angle_rad;
 }
 
 void CsvLogs::on_start(const physics::World& world) {
@@ -43,7 +51,7 @@ void CsvLogs::on_start(const physics::World& world) {
   pairs_ = world.gear_pairs().size();
   state_ << "time_s";
   for (const physics::BodyState& b : world.bodies()) state_ << ',' << b.name << "_angle_rad," << b.name << "_speed_rad_s";
-  if (scenario_.transmission) state_ << ",te_rad";
+  if (scenario_.transmission) state_ << ",te_rad,te_point_rad";
   // Bodies on a bearing to the ground: their centre's displacement from its start (what a
   // sensor on the housing at that bearing sees), after every other column.
   moving_.clear();
@@ -82,15 +90,16 @@ void CsvLogs::on_start(const physics::World& world) {
   contacts_ << '\n';
   // The filter's input starts at t = 0 (the world at rest, before the first step), so that its
   // outputs fall on the sample times j/f_out; output 0 (t = 0) is not a row.
-  if (filter_ && pairs_ > 0) {
-    decimator_.emplace(*filter_, pairs_, 0.0);
-    if (decimator_->push(pair_forces(world))) GEARSIM_CHECK(false, "no output before the filter's half-length");
+  const std::size_t channels = pairs_ + (scenario_.transmission ? 1 : 0);
+  if (filter_ && channels > 0) {
+    decimator_.emplace(*filter_, channels, 0.0);
+    if (decimator_->push(filtered_channels(world))) GEARSIM_CHECK(false, "no output before the filter's half-length");
   }
 }
 
 void CsvLogs::on_step(const physics::World& world) {
   if (!decimator_) return;
-  if (const std::optional<DecimatedRow> out = decimator_->push(pair_forces(world))) write_ready(*out);
+  if (const std::optional<DecimatedRow> out = decimator_->push(filtered_channels(world))) write_ready(*out);
 }
 
 CsvLogs::PointRow CsvLogs::point_row(const physics::World& world, long sample) const {
@@ -107,13 +116,17 @@ CsvLogs::PointRow CsvLogs::point_row(const physics::World& world, long sample) c
 }
 
 void CsvLogs::on_sample(const physics::World& world) {
-  state_ << world.time_s();
-  for (const physics::BodyState& b : world.bodies()) state_ << ',' << b.angle_rad << ',' << b.speed_rad_s;
-  if (scenario_.transmission)
-    state_ << ',' << world.bodies()[te_in_].angle_rad - scenario_.transmission->ratio * world.bodies()[te_out_].angle_rad;
+  const long sample = world.steps() % every_ == 0 ? world.steps() / every_ : -1;
+  PointRow row = point_row(world, sample);
+  // The state row's text around its transmission error, which waits for the filter with the forces.
+  std::ostringstream head, tail;
+  head << std::setprecision(17) << world.time_s();
+  tail << std::setprecision(17);
+  for (const physics::BodyState& b : world.bodies()) head << ',' << b.angle_rad << ',' << b.speed_rad_s;
+  if (scenario_.transmission) row.te_rad = transmission_error_rad(world);
   for (const auto& [i, start] : moving_) {
     const Eigen::Vector3d d = world.bodies()[i].position_m - start;
-    state_ << ',' << d.x() << ',' << d.y();
+    tail << ',' << d.x() << ',' << d.y();
   }
   for (const Carried& c : carried_) {
     const physics::BodyState &b = world.bodies()[c.body], &p = world.bodies()[c.parent];
@@ -121,13 +134,19 @@ void CsvLogs::on_sample(const physics::World& world) {
     const Eigen::Vector3d pin = p.position_m + Eigen::AngleAxisd(p.angle_rad - c.parent_angle0, Eigen::Vector3d::UnitZ()) * c.offset0;
     const Eigen::Vector3d er = (pin - p.position_m).normalized(), et = Eigen::Vector3d::UnitZ().cross(er);
     const Eigen::Vector3d d = b.position_m - pin;
-    state_ << ',' << d.dot(er) << ',' << d.dot(et);
+    tail << ',' << d.dot(er) << ',' << d.dot(et);
   }
-  state_ << '\n';
-  const long sample = world.steps() % every_ == 0 ? world.steps() / every_ : -1;
-  PointRow row = point_row(world, sample);
-  if (!decimator_) write_contacts(row, row.force_N);  // every step a sample, or no pairs: nothing to filter
+  row.state_head = head.str();
+  row.state_tail = tail.str();
+  if (!decimator_) write_row(row, filtered_point(row));  // every step a sample, or nothing to filter
   else pending_.push_back(std::move(row));
+}
+
+// A row's point samples in the filter's channel order: what a row without a filtered value carries.
+std::vector<double> CsvLogs::filtered_point(const PointRow& row) const {
+  std::vector<double> v = row.force_N;
+  if (scenario_.transmission) v.push_back(row.te_rad);
+  return v;
 }
 
 void CsvLogs::write_ready(const DecimatedRow& out) {
@@ -135,14 +154,17 @@ void CsvLogs::write_ready(const DecimatedRow& out) {
   if (j == 0) return;  // t = 0: not a row
   GEARSIM_CHECK(!pending_.empty() && pending_.front().sample == j, "filtered output " + std::to_string(j) +
                                                                         " without its sample row");
-  write_contacts(pending_.front(), out.values);
+  write_row(pending_.front(), out.values);
   pending_.pop_front();
 }
 
-void CsvLogs::write_contacts(const PointRow& row, const std::vector<double>& filtered_force_N) {
+void CsvLogs::write_row(const PointRow& row, const std::vector<double>& filtered) {
+  state_ << row.state_head;
+  if (scenario_.transmission) state_ << ',' << filtered[pairs_] << ',' << row.te_rad;
+  state_ << row.state_tail << '\n';
   contacts_ << row.time_s;
   for (std::size_t p = 0; p < pairs_; ++p)
-    contacts_ << ',' << filtered_force_N[p] << ',' << row.force_N[p] << ',' << row.tooth_pairs[p] << ',' << row.depth_um[p];
+    contacts_ << ',' << filtered[p] << ',' << row.force_N[p] << ',' << row.tooth_pairs[p] << ',' << row.depth_um[p];
   contacts_ << '\n';
 }
 
@@ -152,7 +174,7 @@ void CsvLogs::on_stop(const physics::World&) {
     // A stop between samples: its row, point samples throughout.
     for (const PointRow& row : pending_) {
       GEARSIM_CHECK(row.sample < 0, "sample row " + std::to_string(row.sample) + " left without its filtered force");
-      write_contacts(row, row.force_N);
+      write_row(row, filtered_point(row));
     }
     pending_.clear();
   }

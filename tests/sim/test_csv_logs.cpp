@@ -1,7 +1,8 @@
 // The output-rate logs (sim/csv_logs.hpp) on the spur pair: contacts.csv's force column is every
 // step's force through the anti-aliasing decimator — the same numbers as decimating the per-step
-// force of the run as one record — and the point column is the force at the sample's step; a run
-// stopped between samples ends state.csv and contacts.csv at the same time, on the same rows.
+// force of the run as one record — and the point column is the force at the sample's step; so is
+// state.csv's transmission error; a run stopped between samples ends state.csv and contacts.csv at
+// the same time, on the same rows.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -25,8 +26,10 @@ physics::Scenario spur_pair(const std::string& duration_s) {
                               {"duration_s=" + duration_s, "output.per_step_log=false"});
 }
 
-// Every step's summed force of pair 0, from t = 0 (the world before the first step).
+// Every step's summed force of pair 0 and transmission error (θ_pinion − ratio·θ_wheel), from
+// t = 0 (the world before the first step).
 struct ForceRecorder : Observer {
+  explicit ForceRecorder(double r) : ratio(r) {}
   void on_start(const physics::World& w) override { add(w); }
   void on_step(const physics::World& w) override { add(w); }
   void add(const physics::World& w) {
@@ -34,15 +37,20 @@ struct ForceRecorder : Observer {
     for (const physics::ContactSample& c : w.contacts())
       if (c.pair == 0) f += c.normal_force_N;
     force_N.push_back(f);
+    double pinion = 0, wheel = 0;
+    for (const physics::BodyState& b : w.bodies()) (b.name == "pinion" ? pinion : b.name == "wheel" ? wheel : f) = b.angle_rad;
+    te_rad.push_back(pinion - ratio * wheel);
   }
-  std::vector<double> force_N;
+  double ratio;
+  std::vector<double> force_N, te_rad;
 };
 
 TEST(CsvLogs, ForceColumnIsTheDecimatedPerStepForceAndThePointColumnTheSample) {
   const fs::path dir = test::fresh_test_dir();
   const physics::Scenario s = spur_pair("0.12");
   CsvLogs csv(dir, s);
-  ForceRecorder rec;
+  ASSERT_TRUE(s.transmission.has_value());
+  ForceRecorder rec(s.transmission->ratio);
   const RunSummary r = simulate(s, {&csv, &rec});
   ASSERT_EQ(r.status, RunStatus::Completed);
   ASSERT_TRUE(csv.force_filter().has_value());
@@ -59,6 +67,14 @@ TEST(CsvLogs, ForceColumnIsTheDecimatedPerStepForceAndThePointColumnTheSample) {
     EXPECT_NEAR(time[k], static_cast<double>(k + 1) / 2000.0, 1e-12);
     EXPECT_EQ(filtered[k], expected.values[k + 1]) << "row " << k;  // the same kernel: bit for bit
     EXPECT_EQ(point[k], rec.force_N[25 * (k + 1)]) << "row " << k;
+  }
+  // state.csv's transmission error the same way: te_rad through the filter, te_point_rad the sample.
+  const UniformSignal te = decimate(rec.te_rad, filter, 0.0);
+  const input::CsvTable st = input::read_csv(dir / "state.csv");
+  ASSERT_EQ(st.column("time_s"), time);
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    EXPECT_EQ(st.column("te_rad")[k], te.values[k + 1]) << "row " << k;
+    EXPECT_EQ(st.column("te_point_rad")[k], rec.te_rad[25 * (k + 1)]) << "row " << k;
   }
 }
 
@@ -80,6 +96,7 @@ TEST(CsvLogs, AStopBetweenSamplesEndsBothFilesOnTheSameRow) {
   EXPECT_NEAR(ts.back(), 2013 * 2e-5, 1e-12);
   // The stop row carries point samples in every column.
   EXPECT_EQ(contacts.column("pinion__wheel_force_N").back(), contacts.column("pinion__wheel_force_point_N").back());
+  EXPECT_EQ(state.column("te_rad").back(), state.column("te_point_rad").back());
 }
 
 }  // namespace test_csv_logs
