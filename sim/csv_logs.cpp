@@ -104,7 +104,7 @@ void CsvLogs::on_step(const physics::World& world) {
 
 CsvLogs::PointRow CsvLogs::point_row(const physics::World& world, long sample) const {
   PointRow r{sample, world.time_s(), std::vector<double>(pairs_, 0.0), std::vector<double>(pairs_, 0.0),
-             std::vector<int>(pairs_, 0)};
+             std::vector<int>(pairs_, 0), 0.0, {}, {}};
   for (const physics::ContactSample& c : world.contacts()) {
     const std::size_t p = static_cast<std::size_t>(c.pair);
     r.force_N[p] += c.normal_force_N;

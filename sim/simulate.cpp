@@ -20,19 +20,30 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Sums over the steady window's steps: body speeds, the normal forces on each flank side of
-// each pair's first gear, and the power flows.
+// Over the steady window's steps: each body's turn (its angle where the window starts and where it
+// ends: the mean speed is the angle's rate — under a θ < 1 the positions advance with a mean of the
+// step's start and end velocities, so a mean of the end velocities would not be the rate the
+// body turns at), the normal forces on each flank side of each pair's first gear, and the power
+// flows.
 struct SteadyWindow {
   explicit SteadyWindow(const physics::World& w)
-      : speed_sum(w.bodies().size(), 0.0), flank_sum(w.gear_pairs().size(), {0.0, 0.0}) {}
+      : angle_start(w.bodies().size(), 0.0), angle_last(w.bodies().size(), 0.0), flank_sum(w.gear_pairs().size(), {0.0, 0.0}) {
+    track(w);
+  }
+  // Every step before the window: the angles it will start from.
+  void track(const physics::World& w) {
+    for (std::size_t b = 0; b < w.bodies().size(); ++b) angle_last[b] = w.bodies()[b].angle_rad;
+  }
+  double mean_speed_rad_s(std::size_t b, double h) const { return steps ? (angle_last[b] - angle_start[b]) / (static_cast<double>(steps) * h) : 0.0; }
   void add(const physics::World& w) {
-    for (std::size_t b = 0; b < w.bodies().size(); ++b) speed_sum[b] += w.bodies()[b].speed_rad_s;
+    if (steps == 0) angle_start = angle_last;
+    track(w);
     for (const physics::ContactSample& c : w.contacts())
       flank_sum[static_cast<std::size_t>(c.pair)][c.geometry.flank_a == Flank::Cw] += c.normal_force_N;
     power.add(w.power(), w.time_s());
     ++steps;
   }
-  std::vector<double> speed_sum;
+  std::vector<double> angle_start, angle_last;
   std::vector<std::array<double, 2>> flank_sum;
   PowerBalance power;
   long steps = 0;
@@ -48,11 +59,11 @@ void fill_results(const physics::Scenario& s, const physics::World& world, const
   r.power = steady.power;
   r.dropped_contacts = world.dropped_contacts();
   r.stiffness_table_misses = world.stiffness_table_misses();
-  for (std::size_t b = 0; b < world.bodies().size(); ++b)
-    r.bodies.push_back({world.bodies()[b].name, steady.steps ? steady.speed_sum[b] / n : 0.0});
+  const double h = s.solver.time_step_s;
+  for (std::size_t b = 0; b < world.bodies().size(); ++b) r.bodies.push_back({world.bodies()[b].name, steady.mean_speed_rad_s(b, h)});
   if (s.transmission && steady.steps) {
-    const double out = steady.speed_sum[static_cast<std::size_t>(body_of_joint(s, s.transmission->output_joint))] / n;
-    const double in = steady.speed_sum[static_cast<std::size_t>(body_of_joint(s, s.transmission->input_joint))] / n;
+    const double out = steady.mean_speed_rad_s(static_cast<std::size_t>(body_of_joint(s, s.transmission->output_joint)), h);
+    const double in = steady.mean_speed_rad_s(static_cast<std::size_t>(body_of_joint(s, s.transmission->input_joint)), h);
     r.ratio = out != 0 ? in / out : 0.0;
   }
   for (std::size_t p = 0; p < world.gear_pairs().size(); ++p)
@@ -129,6 +140,7 @@ RunSummary simulate(const physics::Scenario& s, const std::vector<Observer*>& ob
       if (i % every != 0) sample();
     }
     if (!r.divergence && world.time_s() >= r.steady_from_s) steady.add(world);
+    else if (steady.steps == 0) steady.track(world);
     if (i % every == 0) sample();
     if (r.divergence) break;
     if (options.progress) options.progress(i, total, world.time_s());

@@ -96,5 +96,21 @@ TEST(Simulate, SteadyMeansFollowTheGearRatio) {
   EXPECT_TRUE(r.warnings.empty());
 }
 
+TEST(Simulate, TheMeanSpeedsAreTheRatesTheBodiesTurnAt) {
+  // The healthy paper set (sun 24, ring 96: 5:1) with the default integrator, whose θ changes from
+  // step to step: the positions advance with a mean of each step's start and end velocities, so a
+  // mean of the end velocities was off the carrier's turn by 1.5e-5 (ratio 5.0000738 at 2e-5 s).
+  // A steady planetary turns its carrier at the sun's speed / 5 up to the change of the
+  // transmission error between the window's ends, less than 1e-4 rad (its per-step peak-to-peak
+  // is 7.0e-5 rad), against the sun's turn over the window (104.7 rad/s · 0.15 s = 15.7 rad).
+  const physics::Scenario s =
+      input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_healthy.yaml", {"duration_s=0.2", "output.per_step_log=false"});
+  ASSERT_EQ(s.solver.integrator, physics::SolverDef::Integrator::trapezoid_closed);
+  const RunSummary r = simulate(s, {});
+  ASSERT_TRUE(r.ratio.has_value());
+  const double sun_turn_rad = 104.7 * (0.2 - r.steady_from_s);
+  EXPECT_NEAR(*r.ratio, 5.0, 5.0 * 1e-4 / sun_turn_rad);
+}
+
 }  // namespace test_simulate
 }  // namespace gearsim::sim
