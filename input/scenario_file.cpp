@@ -141,6 +141,8 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
       if (s.solver.integrator != physics::SolverDef::Integrator::theta && given(m, "theta"))
         m.fail("theta", std::string("integrator ") + physics::integrator_name(s.solver.integrator) + " has no θ: remove theta or set integrator: theta");
     }
+    // rigid_bodies integrates its rows by implicit Euler: the θ-method at θ = 1, as its record says.
+    if (s.solver.engine == physics::SolverEngine::rigid_bodies) s.solver.integrator = physics::SolverDef::Integrator::theta;
     if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
       m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
     m.reject_unknown_keys();

@@ -73,6 +73,10 @@ TEST(ScenarioRecord, TheIntegratorReadsBack) {
   physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
   EXPECT_EQ(s.solver.integrator, physics::SolverDef::Integrator::trapezoid_closed);
   EXPECT_EQ(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.theta=0.6"}).solver.integrator, physics::SolverDef::Integrator::theta);
+  // The rigid-body engine integrates by implicit Euler, and its scenario says so.
+  const physics::Scenario rigid = load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"});
+  EXPECT_EQ(rigid.solver.integrator, physics::SolverDef::Integrator::theta);
+  EXPECT_EQ(rigid.solver.theta, 1.0);
   EXPECT_EQ(scenario_from_json(nlohmann::json::parse(scenario_json(s).dump()), "rec.json").solver.integrator,
             physics::SolverDef::Integrator::trapezoid_closed);
   s.solver.integrator = physics::SolverDef::Integrator::bdf2;
