@@ -141,6 +141,12 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
       if (s.solver.integrator != physics::SolverDef::Integrator::theta && given(m, "theta"))
         m.fail("theta", std::string("integrator ") + physics::integrator_name(s.solver.integrator) + " has no θ: remove theta or set integrator: theta");
     }
+    if (given(m, "row_solver")) {
+      s.solver.row_solver = m.choice_or("row_solver", {"active_set", "dantzig"}, "active_set") == "dantzig" ? physics::SolverDef::RowSolver::dantzig
+                                                                                                     : physics::SolverDef::RowSolver::active_set;
+      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
+        m.fail("row_solver", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
+    }
     // rigid_bodies integrates its rows by implicit Euler: the θ-method at θ = 1, as its record says.
     if (s.solver.engine == physics::SolverEngine::rigid_bodies) s.solver.integrator = physics::SolverDef::Integrator::theta;
     if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))

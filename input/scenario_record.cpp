@@ -318,6 +318,12 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
                           : i == "trapezoid_closed" ? physics::SolverDef::Integrator::trapezoid_closed
                                                     : physics::SolverDef::Integrator::theta;
   }
+  s.solver.row_solver = physics::SolverDef::RowSolver::dantzig;  // records written before the active set have none
+  if (solver.has("row_solver")) {
+    const std::string rs = solver.string("row_solver");
+    if (rs != "active_set" && rs != "dantzig") solver.fail("row_solver", "expected active_set or dantzig");
+    s.solver.row_solver = rs == "dantzig" ? physics::SolverDef::RowSolver::dantzig : physics::SolverDef::RowSolver::active_set;
+  }
   s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
   if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");
   s.contact = contact_of(r.object("contact"));

@@ -220,9 +220,15 @@ struct SolverDef {
   // order and, like implicit Euler, damping the modes the step does not resolve (docs/solver.md,
   // "BDF2"); its first step is implicit Euler.
   enum class Integrator { theta, bdf2, trapezoid_closed } integrator = Integrator::trapezoid_closed;
+  // multibody: how the step's rows are solved. `active_set` (the default): an active-set
+  // iteration warm-started from the last step's row states, exact in the friction coupling,
+  // falling back to Dantzig when it does not settle; `dantzig`: Bullet's Dantzig LCP solver
+  // alone (docs/solver.md, "The row solve").
+  enum class RowSolver { active_set, dantzig } row_solver = RowSolver::active_set;
 };
 
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }
+inline const char* row_solver_name(SolverDef::RowSolver r) { return r == SolverDef::RowSolver::dantzig ? "dantzig" : "active_set"; }
 inline const char* integrator_name(SolverDef::Integrator i) {
   return i == SolverDef::Integrator::bdf2 ? "bdf2" : i == SolverDef::Integrator::trapezoid_closed ? "trapezoid_closed" : "theta";
 }

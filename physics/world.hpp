@@ -115,6 +115,7 @@ class World {
     double tooth_contact_s = 0;
     double row_solve_s = 0;  // multibody: rows, M⁻¹ and the direct solve (part of the rest)
     double step_total_s = 0;
+    long active_set_solves = 0, dantzig_solves = 0;  // multibody: steps whose rows each solved
   };
   const Profile& profile() const;
   const PowerFlows& power() const;

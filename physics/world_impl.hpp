@@ -7,6 +7,10 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/MLCPSolvers/btDantzigLCP.h>
 
+#include <array>
+
+#include "physics/row_lcp.hpp"
+
 #include <Eigen/Dense>
 
 #include <chrono>
@@ -122,6 +126,12 @@ struct MultibodyEngine {
   btAlignedObjectArray<btVector3> local_origin;
   std::vector<btVector3> omega, vel;
   long failed_solves = 0;
+  // solver.row_solver active_set: each row's identity (kind and contact or joint) and bound state,
+  // this step's and the last's (the warm start).
+  bool active_set = false;
+  std::vector<std::array<int, 5>> row_keys, row_keys_before;
+  std::vector<RowBound> row_states, row_states_before;
+  RowLcpScratch lcp;
 };
 
 struct World::Impl {
@@ -177,6 +187,7 @@ struct World::Impl {
   MultibodyRow spring_row(double k, double c, double force0) const;
   double trapezoid_closed_theta();
   void solve_multibody_rows();
+  bool solve_rows_active_set();
   void multibody_results();
 };
 

@@ -131,6 +131,7 @@ void World::Impl::build_multibody() {
   e.trapezoid_closed = scenario.solver.integrator == SolverDef::Integrator::trapezoid_closed;
   e.theta = e.bdf2 ? 1.0 : e.trapezoid_closed ? 0.5 : scenario.solver.theta;
   e.h_eff = scenario.solver.time_step_s;
+  e.active_set = scenario.solver.row_solver == SolverDef::RowSolver::active_set;
   e.planar = true;
   for (const JointRec& jr : joints) e.planar = e.planar && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
   e.out.assign(static_cast<std::size_t>(6 + e.dofs), 0);
@@ -402,8 +403,9 @@ void World::Impl::solve_multibody_rows() {
     e.hi[static_cast<std::size_t>(i)] = r.hi;
     e.findex[static_cast<std::size_t>(i)] = r.friction_of;
   }
-  bool solved = false;
-  {
+  bool solved = e.active_set && solve_rows_active_set();
+  if (!solved) {
+    ++profile.dantzig_solves;
     const std::lock_guard<std::mutex> lock(dantzig_flag);
     solved = btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig);
   }

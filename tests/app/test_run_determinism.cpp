@@ -41,7 +41,11 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 
 // The hash of the 0.004 s paper run (200 steps) on Debian 12 / x86-64 with this build. Update
 // it (the failure message prints the new value) only together with the change that explains it.
-// Last change: state.csv's te_rad is anti-aliased like the forces (te_point_rad, new, holds the
+// Last change: solver.row_solver active_set is the default (physics/row_lcp.hpp): the rows are
+// solved from last step's bound states, exact in the friction coupling, where Dantzig fixed each
+// friction bound from its normal's impulse when it reached the row (docs/solver.md, "The row
+// solve"); the hashes below other than the default's run with --set solver.row_solver=dantzig.
+// Before: state.csv's te_rad is anti-aliased like the forces (te_point_rad, new, holds the
 // point sample): every hash below changed with it, nothing else — checked on 0.3 s runs of each
 // variant: contacts.csv and steps.h5 byte-identical, state.csv's other columns identical and
 // te_point_rad equal to the former te_rad (docs/decimation.md).
@@ -54,9 +58,9 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 // sampled search's hashes are kept below).
 // kGoldenHash is the rigid-body engine's (it runs with --set solver.engine=rigid_bodies).
 constexpr std::uint64_t kGoldenHash = 0x9c4564ed123536aaull;
-// The default engine's (multibody, trapezoid_closed) hash.
-constexpr std::uint64_t kGoldenHashMultibody = 0xd68ac7445aed97a9ull;
-// The multibody engine with implicit Euler (θ = 1), the default before trapezoid_closed.
+// The default engine's (multibody, trapezoid_closed, active_set) hash.
+constexpr std::uint64_t kGoldenHashMultibody = 0x070725fd7d3dc764ull;
+// The multibody engine with implicit Euler (θ = 1) and Dantzig, the defaults before.
 constexpr std::uint64_t kGoldenHashImplicitEuler = 0x4feaf73f482f6ecbull;
 // Without the continuation (--set contact.continued_search=false): the coherent search's and the
 // stateless search's, the same physics since Newton's refinement came in (multibody with θ = 1).
@@ -80,7 +84,7 @@ TEST(RunDeterminism, ShortPaperRunMatchesTheCommittedHash) {
 }
 
 TEST(RunDeterminism, ImplicitEulerStillGivesItsCommittedHash) {
-  const std::uint64_t h = hash_files(run_paper("golden_theta", " --set solver.integrator=theta"));
+  const std::uint64_t h = hash_files(run_paper("golden_theta", " --set solver.integrator=theta --set solver.row_solver=dantzig"));
   EXPECT_EQ(h, kGoldenHashImplicitEuler) << "logs of the short paper run (integrator theta) changed; new hash " << hex_of(h);
 }
 
@@ -93,7 +97,7 @@ TEST(RunDeterminism, TheStatelessContactSearchGivesTheSameLogs) {
   // contact.coherent_search (default true) skips and tracks flanks only where that provably
   // changes nothing: without the continuation, it and the stateless search give the same bytes,
   // with either engine — the ones they gave before the continuation came in (multibody: θ = 1).
-  const std::string sampled = " --set contact.continued_search=false", theta = " --set solver.integrator=theta";
+  const std::string sampled = " --set contact.continued_search=false", theta = " --set solver.integrator=theta --set solver.row_solver=dantzig";
   EXPECT_EQ(hash_files(run_paper("coherent", sampled + theta)), kGoldenHashSampledMultibody);
   EXPECT_EQ(hash_files(run_paper("stateless", " --set contact.coherent_search=false" + theta)), kGoldenHashSampledMultibody);
   EXPECT_EQ(hash_files(run_paper("coherent_rigid", sampled + " --set solver.engine=rigid_bodies")), kGoldenHashSampled);

@@ -103,6 +103,12 @@ TEST(ScenarioErrors, ContinuedSearchNeedsTheCoherentOne) {
   EXPECT_EQ(error_for(kGood + "contact: {continued_search: false}\n"), "");
 }
 
+TEST(ScenarioErrors, TheRowSolverIsOneOfTwoAndTheMultibodyEnginesOnly) {
+  EXPECT_NAMES(error_for(kGood + "solver: {row_solver: lemke}\n"), "bad.yaml:11:", "solver.row_solver", "active_set", "dantzig", "lemke");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, row_solver: dantzig}\n"), "solver.row_solver", "only engine multibody");
+  EXPECT_EQ(error_for(kGood + "solver: {row_solver: dantzig}\n"), "");
+}
+
 TEST(ScenarioErrors, DuplicateBodyName) {
   EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")),
                "bodies[1].name", "a second body named 'wheel'");

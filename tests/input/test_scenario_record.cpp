@@ -90,6 +90,20 @@ TEST(ScenarioRecord, TheIntegratorReadsBack) {
   EXPECT_NE(error_of(j).find("solver.integrator"), std::string::npos) << error_of(j);
 }
 
+TEST(ScenarioRecord, TheRowSolverReadsBack) {
+  // solver.row_solver: active_set (the default) and dantzig read back; a record without it ran Dantzig.
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_EQ(s.solver.row_solver, physics::SolverDef::RowSolver::active_set);
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.row_solver, physics::SolverDef::RowSolver::active_set);
+  j["solver"]["row_solver"] = "dantzig";
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.row_solver, physics::SolverDef::RowSolver::dantzig);
+  j["solver"].erase("row_solver");
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.row_solver, physics::SolverDef::RowSolver::dantzig);
+  j["solver"]["row_solver"] = "lemke";
+  EXPECT_NE(error_of(j).find("solver.row_solver"), std::string::npos) << error_of(j);
+}
+
 TEST(ScenarioRecord, TheContinuationReadsBack) {
   // contact.continued_search: on by default, off without the coherent search; a record written
   // before the key existed ran without it.

@@ -1,0 +1,144 @@
+#include "physics/row_lcp.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace gearsim::physics {
+namespace {
+
+constexpr double kRelativeTolerance = 1e-9;
+
+// Gaussian elimination with partial pivoting of the k×k row-major m, right-hand side r (solution
+// on return). False when a pivot vanishes.
+bool solve_dense(int k, double* m, double* r) {
+  const auto at = [&](int i, int j) -> double& { return m[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
+  for (int c = 0; c < k; ++c) {
+    int p = c;
+    for (int i = c + 1; i < k; ++i)
+      if (std::abs(at(i, c)) > std::abs(at(p, c))) p = i;
+    if (!(std::abs(at(p, c)) > 0)) return false;
+    if (p != c) {
+      for (int j = c; j < k; ++j) std::swap(at(p, j), at(c, j));
+      std::swap(r[p], r[c]);
+    }
+    const double inv = 1 / at(c, c);
+    for (int i = c + 1; i < k; ++i) {
+      const double f = at(i, c) * inv;
+      if (f == 0) continue;
+      for (int j = c + 1; j < k; ++j) at(i, j) -= f * at(c, j);
+      r[i] -= f * r[c];
+    }
+  }
+  for (int i = k - 1; i >= 0; --i) {
+    double s = r[i];
+    for (int j = i + 1; j < k; ++j) s -= at(i, j) * r[j];
+    r[i] = s / at(i, i);
+  }
+  return true;
+}
+
+}  // namespace
+
+int solve_row_lcp(int n, const double* A, const double* b, const double* lo, const double* hi, const int* findex, double* x,
+                  RowBound* state, RowLcpScratch& s, int max_solves) {
+  const std::size_t un = static_cast<std::size_t>(n);
+  s.unknown_of.assign(un, -1);
+  s.w.assign(un, 0.0);
+  const auto a = [&](int i, int j) { return A[static_cast<std::size_t>(i) * un + static_cast<std::size_t>(j)]; };
+  // A friction row whose normal sits on a zero lower bound carries nothing, whatever its state.
+  const auto pinned = [&](int i) { return findex[i] >= 0 && state[findex[i]] == RowBound::lower && lo[findex[i]] == 0; };
+  for (int solves = 1; solves <= max_solves; ++solves) {
+    // Unknowns: the free rows (not pinned). Rows on a bound are constants, or (friction) ±μ times
+    // their normal's unknown.
+    s.rows_of.clear();
+    for (int i = 0; i < n; ++i) {
+      s.unknown_of[static_cast<std::size_t>(i)] = -1;
+      if (state[i] == RowBound::free && !pinned(i)) {
+        s.unknown_of[static_cast<std::size_t>(i)] = static_cast<int>(s.rows_of.size());
+        s.rows_of.push_back(i);
+      }
+    }
+    const int k = static_cast<int>(s.rows_of.size());
+    const std::size_t uk = static_cast<std::size_t>(k);
+    // Constant impulses of the rows on a bound (friction on a bound: its factor on the normal).
+    const auto bound_value = [&](int c) { return state[c] == RowBound::lower ? lo[c] : hi[c]; };
+    for (int c = 0; c < n; ++c) {
+      if (s.unknown_of[static_cast<std::size_t>(c)] >= 0) continue;
+      if (pinned(c)) x[c] = 0;
+      else if (findex[c] < 0) x[c] = bound_value(c);
+    }
+    s.m.assign(uk * uk, 0.0);
+    s.rhs.assign(uk, 0.0);
+    for (int r = 0; r < k; ++r) {
+      const int i = s.rows_of[static_cast<std::size_t>(r)];
+      double rhs = b[i];
+      double* row = s.m.data() + static_cast<std::size_t>(r) * uk;
+      for (int c = 0; c < n; ++c) {
+        const double aic = a(i, c);
+        if (aic == 0) continue;
+        const int u = s.unknown_of[static_cast<std::size_t>(c)];
+        if (u >= 0) {
+          row[u] += aic;
+        } else if (findex[c] >= 0 && !pinned(c)) {  // friction on a bound: bound_value·x_normal
+          const int f = findex[c];
+          const int uf = s.unknown_of[static_cast<std::size_t>(f)];
+          if (uf >= 0) row[uf] += aic * bound_value(c);
+          else rhs -= aic * bound_value(c) * x[f];
+        } else {
+          rhs -= aic * x[c];
+        }
+      }
+      s.rhs[static_cast<std::size_t>(r)] = rhs;
+    }
+    if (k > 0 && !solve_dense(k, s.m.data(), s.rhs.data())) return 0;
+    for (int r = 0; r < k; ++r) x[s.rows_of[static_cast<std::size_t>(r)]] = s.rhs[static_cast<std::size_t>(r)];
+    for (int c = 0; c < n; ++c)
+      if (s.unknown_of[static_cast<std::size_t>(c)] < 0 && findex[c] >= 0 && !pinned(c)) x[c] = bound_value(c) * x[findex[c]];
+    // The conditions, to tolerances relative to the problem's scale.
+    double x_scale = 0, w_scale = 0;
+    for (int i = 0; i < n; ++i) {
+      double ax = 0;
+      for (int c = 0; c < n; ++c) ax += a(i, c) * x[c];
+      s.w[static_cast<std::size_t>(i)] = ax - b[i];
+      x_scale = std::max(x_scale, std::abs(x[i]));
+      w_scale = std::max({w_scale, std::abs(b[i]), std::abs(ax)});
+    }
+    const double tol_x = kRelativeTolerance * x_scale, tol_w = kRelativeTolerance * w_scale;
+    // Every row that breaks its condition changes its state (block pivoting); after three solves,
+    // only the worst one, relative to its tolerance (block pivoting can cycle, single pivots less so).
+    const bool single = solves > 3;
+    int worst = -1;
+    RowBound worst_to = RowBound::free;
+    double worst_by = 1;
+    bool settled = true;
+    for (int i = 0; i < n; ++i) {
+      const double wi = s.w[static_cast<std::size_t>(i)];
+      if (pinned(i)) continue;
+      const double l = findex[i] >= 0 ? lo[i] * x[findex[i]] : lo[i], h = findex[i] >= 0 ? hi[i] * x[findex[i]] : hi[i];
+      RowBound to = state[i];
+      double by = 0;
+      switch (state[i]) {
+        case RowBound::free:
+          if (x[i] < l - tol_x) to = RowBound::lower, by = (l - x[i]) / tol_x;
+          else if (x[i] > h + tol_x) to = RowBound::upper, by = (x[i] - h) / tol_x;
+          break;
+        case RowBound::lower:
+          if (wi < -tol_w) to = RowBound::free, by = -wi / tol_w;
+          break;
+        case RowBound::upper:
+          if (wi > tol_w) to = RowBound::free, by = wi / tol_w;
+          break;
+      }
+      if (to == state[i]) continue;
+      settled = false;
+      if (!single) state[i] = to;
+      else if (by > worst_by) worst = i, worst_to = to, worst_by = by;
+    }
+    if (single && worst >= 0) state[worst] = worst_to;
+    if (settled) return solves;
+  }
+  return 0;
+}
+
+}  // namespace gearsim::physics

@@ -1,0 +1,31 @@
+// The multibody engine's rows as a mixed linear complementarity problem, solved by an active-set
+// iteration warm-started from the last step (docs/solver.md, "The row solve"). Bullet's convention
+// (btSolveDantzigLCP): find x, w with A·x = b + w and, per row i,
+//   x_i = lo_i ⇒ w_i ≥ 0,   x_i = hi_i ⇒ w_i ≤ 0,   lo_i < x_i < hi_i ⇒ w_i = 0;
+// a row with findex[i] ≥ 0 (friction) has the bounds lo_i·x_f … hi_i·x_f of row f = findex[i] (its
+// normal, x_f ≥ 0), lo_i = −hi_i. The rows keep their bound states from step to step (the same
+// tooth contacts slide the same way), so one linear solve usually settles a step where Dantzig's
+// pivoting adds the rows one by one.
+#pragma once
+
+#include <vector>
+
+namespace gearsim::physics {
+
+// Where a row's impulse sits: between its bounds (w = 0), on the lower or on the upper one.
+enum class RowBound : signed char { lower = -1, free = 0, upper = 1 };
+
+struct RowLcpScratch {
+  std::vector<double> m, rhs, w;
+  std::vector<int> unknown_of, rows_of;
+};
+
+// Solves the problem above from `state` (a guess of each row's bound; on return the solution's),
+// pivoting every row that breaks its condition at once, at most max_solves linear solves. Returns
+// the number of solves it took, or 0 when it did not settle (x, state then unspecified: use
+// Dantzig). A: n×n row-major. Conditions hold to tolerances relative to the largest |x| and |b|
+// (1e-9): what Dantzig's own pivoting reaches on these systems.
+int solve_row_lcp(int n, const double* A, const double* b, const double* lo, const double* hi, const int* findex, double* x,
+                  RowBound* state, RowLcpScratch& scratch, int max_solves = 8);
+
+}  // namespace gearsim::physics
