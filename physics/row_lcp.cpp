@@ -101,6 +101,7 @@ int solve_row_lcp(int n, const double* A, const double* b, const double* lo, con
       double ax = 0;
       for (int c = 0; c < n; ++c) ax += a(i, c) * x[c];
       s.w[static_cast<std::size_t>(i)] = ax - b[i];
+      if (!std::isfinite(x[i]) || !std::isfinite(ax)) return 0;  // not a solution: Dantzig's to say
       x_scale = std::max(x_scale, std::abs(x[i]));
       w_scale = std::max({w_scale, std::abs(b[i]), std::abs(ax)});
     }
