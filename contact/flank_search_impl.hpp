@@ -408,6 +408,11 @@ Hit refined_hit(FlankSamples& s) {
       if (std::abs(r_end - r_b) <= s.step) {
         const Hit h = newton_hit(xy, k, f, r_b, high ? r_b - s.step : r_end, high ? r_end : r_b + s.step);
         if (h.depth > kNone) return h;
+      } else {
+        // The neighbour on that side is missing (no material there: the mate's tooth covers it),
+        // not the flank's end: a maximum within a step of the best sample is still Newton's.
+        const Hit h = newton_hit(xy, k, f, r_b, r_b - s.step, r_b + s.step);
+        if (h.depth > kNone) return h;
       }
     }
   }
