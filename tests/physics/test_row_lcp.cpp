@@ -135,5 +135,23 @@ TEST(RowLcp, GivesDantzigsImpulsesOnTheEnginesKindOfSystem) {
               cases, static_cast<double>(cold_solves) / cases, worst_dantzig, worst_diff);
 }
 
+TEST(RowLcp, ARowHeldAtOneValueStaysThereWhateverItsRate) {
+  // A motor row whose torque limit is zero (lo = hi = 0) next to a contact: its impulse is 0 and
+  // its w may have either sign; the solve settles instead of cycling between the two bounds.
+  std::mt19937_64 rng(7);
+  Problem p = make_problem(rng, 3, 5, 0.05);
+  const int motor = p.n - 1;
+  p.lo[static_cast<std::size_t>(motor)] = 0, p.hi[static_cast<std::size_t>(motor)] = 0;
+  for (double sign : {1.0, -1.0}) {
+    p.b[static_cast<std::size_t>(motor)] = sign * 0.5;
+    std::vector<double> x(static_cast<std::size_t>(p.n), 0.0);
+    std::vector<RowBound> state(static_cast<std::size_t>(p.n), RowBound::free);
+    RowLcpScratch scratch;
+    ASSERT_GT(solve_row_lcp(p.n, p.A.data(), p.b.data(), p.lo.data(), p.hi.data(), p.findex.data(), x.data(), state.data(), scratch, 30), 0);
+    EXPECT_EQ(x[static_cast<std::size_t>(motor)], 0.0);
+    EXPECT_LT(breach(p, x), 1e-8);
+  }
+}
+
 }  // namespace test_row_lcp
 }  // namespace gearsim::physics
