@@ -14,6 +14,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "input/csv_table.hpp"
+
 namespace test_analyze {
 
 namespace fs = std::filesystem;
@@ -176,27 +178,12 @@ TEST(AnalyzeConvergence, TheTransmissionErrorPeakToPeakIsTheSameAtHalfTheStep) {
     const nlohmann::json j = analysis(dir);
     p2p[i] = j["transmission_error"]["peak_to_peak_rad"].get<double>();
     const double t0 = j["window_s"][0].get<double>(), t1 = j["window_s"][1].get<double>();
-    std::ifstream state(dir / "state.csv");
-    std::string line, header;
-    std::getline(state, header);
-    std::size_t col = 0;  // te_point_rad's column
-    for (std::size_t at = 0, c = 0;; ++c) {
-      const std::size_t end = header.find(',', at);
-      if (header.substr(at, end - at) == "te_point_rad") { col = c; break; }
-      ASSERT_NE(end, std::string::npos) << "no te_point_rad column";
-      at = end + 1;
-    }
+    const gearsim::input::CsvTable state = gearsim::input::read_csv(dir / "state.csv");
+    const std::vector<double>&time = state.column("time_s"), &te_point = state.column("te_point_rad");
     double lo = 1e300, hi = -1e300;
-    while (std::getline(state, line)) {
-      std::vector<double> v;
-      for (std::size_t at = 0;;) {
-        const std::size_t end = line.find(',', at);
-        v.push_back(std::stod(line.substr(at, end - at)));
-        if (end == std::string::npos) break;
-        at = end + 1;
-      }
-      if (v[0] < t0 - 1e-12 || v[0] > t1 + 1e-12) continue;
-      lo = std::min(lo, v[col]), hi = std::max(hi, v[col]);
+    for (std::size_t k = 0; k < time.size(); ++k) {
+      if (time[k] < t0 - 1e-12 || time[k] > t1 + 1e-12) continue;
+      lo = std::min(lo, te_point[k]), hi = std::max(hi, te_point[k]);
     }
     point[i] = hi - lo;
     std::printf("  dt %s s: TE peak-to-peak %.4e rad (point samples %.4e)\n", dt, p2p[i], point[i]);
