@@ -19,6 +19,15 @@ namespace {
 // back to the sampled refinement then.
 constexpr double kNewtonTolerance_m = 1e-13;
 constexpr int kNewtonIterations = 12;
+// A Newton step shorter than this on both flanks, m, ends the iteration at the point it leads
+// to, taken from the curves' second-order expansions (the jets just evaluated) instead of
+// evaluating the flanks there once more. Newton's method converges quadratically: from a step
+// h the next is about K·h², K of the order of the inverse radii of curvature over the flanks'
+// angle terms, so below 1 nm the point is as converged as kNewtonTolerance_m asks (measured in
+// docs/tooth-contact.md); the expansions' own error is of order |P'''|·h³ (< 1e-20 m). A continued
+// contact's first step, from the linear prediction, is mostly below it at the paper run's
+// step: one evaluation of the two flanks instead of two.
+constexpr double kNewtonTaylor_m = 1e-9;
 
 // A solved contact: x's point P, the foot Q on y's flank (tooth j, flank g) with y's outward
 // normal n there, all in y's frame; the hit in world terms.
@@ -69,22 +78,33 @@ Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double
     const double det = J11 * J22 - J12 * J21;
     if (!(std::abs(det) > 0)) return {};
     const double dr = -(F1 * J22 - F2 * J12) / det, ds = -(J11 * F2 - J21 * F1) / det;
-    if (std::abs(dr) < kNewtonTolerance_m && std::abs(ds) < kNewtonTolerance_m) {
+    // The solution at (r + hr, s + hs) from the curves' second-order expansions at (r, s) (hr =
+    // hs = 0: exactly the evaluated point).
+    auto solution = [&](double hr, double hs) -> Hit {
+      const Vector2d Pt = P + hr * (P1 + (0.5 * hr) * P2), P1t = P1 + hr * P2;
+      const Vector2d Qt = Q + hs * (Q1 + (0.5 * hs) * Q2), Q1t = Q1 + hs * Q2;
       // At the foot: D(r) = (Q(s(r)) − P(r))·n_y, dD/dr = −P'·n_y, and
       // d²D/dr² = −P''·n_y − P'·(dn_y/ds)·(ds/dr) with ds/dr = −J11/J12 (F1 held at 0).
-      const Vector2d n = FlankTable::outward_normal(g, Q1);
-      const double q1 = Q1.norm();
-      Vector2d dn = Vector2d(-Q2.y(), Q2.x()) / q1 - Vector2d(-Q1.y(), Q1.x()) * (Q1.dot(Q2) / (q1 * q1 * q1));
+      const double j11 = P1t.dot(Q1t), j12 = -Q1t.squaredNorm() + (Pt - Qt).dot(Q2);
+      const Vector2d n = FlankTable::outward_normal(g, Q1t);
+      const double q1 = Q1t.norm();
+      Vector2d dn = Vector2d(-Q2.y(), Q2.x()) / q1 - Vector2d(-Q1t.y(), Q1t.x()) * (Q1t.dot(Q2) / (q1 * q1 * q1));
       if (g == Flank::Cw) dn = -dn;
-      const double d2 = -P2.dot(n) - P1.dot(dn) * (-J11 / J12);
-      if (!(d2 < 0) || !(J12 != 0)) return {};
-      Hit h = solved_hit(xy, P, Q, n, j, g);
-      h.rho_x = radius_of_curvature(a.d1, a.d2);
-      h.rho_y = radius_of_curvature(Q1, Q2);
+      const double d2 = -P2.dot(n) - P1t.dot(dn) * (-j11 / j12);
+      if (!(d2 < 0) || !(j12 != 0)) return {};
+      Hit h = solved_hit(xy, Pt, Qt, n, j, g);
+      h.rho_x = radius_of_curvature(a.d1 + hr * a.d2, a.d2);
+      h.rho_y = radius_of_curvature(Q1t, Q2);
       h.solved = Hit::kInterior;
-      h.r_x = r;
-      h.s_y = s;
+      h.r_x = r + hr;
+      h.s_y = s + hs;
       return h;
+    };
+    if (std::abs(dr) < kNewtonTolerance_m && std::abs(ds) < kNewtonTolerance_m) return solution(0, 0);
+    if (std::abs(dr) < kNewtonTaylor_m && std::abs(ds) < kNewtonTaylor_m) {
+      double s_lo, s_hi;
+      yt.flank_extent(j, g, &s_lo, &s_hi);
+      if (r + dr >= r_lo && r + dr <= r_hi && s + ds >= s_lo && s + ds <= s_hi) return solution(dr, ds);
     }
     r += dr;
     s += ds;
@@ -117,17 +137,26 @@ Hit corner_solve(const XY& xy, int k, Flank f, double r_end, bool high_end, int 
     const double F1 = PQ.dot(b.d1), dF = -b.d1.squaredNorm() + PQ.dot(b.d2);
     if (!(dF < 0)) return {};
     const double ds = -F1 / dF;
-    if (std::abs(ds) < kNewtonTolerance_m) {
-      const Vector2d n = FlankTable::outward_normal(g, b.d1);
+    // The foot at s + hs from y's curve's second-order expansion at s (hs = 0: the evaluated
+    // point), as in newton_solve().
+    auto solution = [&](double hs) -> Hit {
+      const Vector2d Qt = b.point + hs * (b.d1 + (0.5 * hs) * b.d2), Q1t = b.d1 + hs * b.d2;
+      const Vector2d n = FlankTable::outward_normal(g, Q1t);
       const double rise = -P1.dot(n);
       if (!(high_end ? rise > 0 : rise < 0)) return {};
-      Hit h = solved_hit(xy, P, b.point, n, j, g);
+      Hit h = solved_hit(xy, P, Qt, n, j, g);
       h.rho_x = radius_of_curvature(a.d1, a.d2);
-      h.rho_y = radius_of_curvature(b.d1, b.d2);
+      h.rho_y = radius_of_curvature(Q1t, b.d2);
       h.solved = high_end ? Hit::kCornerHigh : Hit::kCornerLow;
       h.r_x = r_end;
-      h.s_y = s;
+      h.s_y = s + hs;
       return h;
+    };
+    if (std::abs(ds) < kNewtonTolerance_m) return solution(0);
+    if (std::abs(ds) < kNewtonTaylor_m) {
+      double s_lo, s_hi;
+      yt.flank_extent(j, g, &s_lo, &s_hi);
+      if (s + ds >= s_lo && s + ds <= s_hi) return solution(ds);
     }
     s += ds;
   }

@@ -41,7 +41,13 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 
 // The hash of the 0.004 s paper run (200 steps) on Debian 12 / x86-64 with this build. Update
 // it (the failure message prints the new value) only together with the change that explains it.
-// Last change: solver.row_solver active_set is the default (physics/row_lcp.hpp): the rows are
+// Last change: Newton's method on the flanks (contact/flank_newton_impl.hpp) stops at a step
+// shorter than 1 nm and takes the point it leads to from the flanks' second-order expansions
+// (kNewtonTaylor_m) instead of evaluating them once more: the same contact to ~1e-15 m, not bit
+// for bit. Every hash changed (the sampled search uses Newton too); on 0.3 s faulty paper runs
+// the forces moved by at most 4e-4 N (of 130 N) and the depths by 6e-12 m, the trajectories'
+// rounding drift (docs/tooth-contact.md, "Newton refinement on smooth flanks").
+// Before: solver.row_solver active_set is the default (physics/row_lcp.hpp): the rows are
 // solved from last step's bound states, exact in the friction coupling, where Dantzig fixed each
 // friction bound from its normal's impulse when it reached the row (docs/solver.md, "The row
 // solve"); the hashes below other than the default's run with --set solver.row_solver=dantzig.
@@ -57,15 +63,15 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 // "Continuation"): depths agree with the sampled search's within 0.1 nm, but not bit for bit (the
 // sampled search's hashes are kept below).
 // kGoldenHash is the rigid-body engine's (it runs with --set solver.engine=rigid_bodies).
-constexpr std::uint64_t kGoldenHash = 0x9c4564ed123536aaull;
+constexpr std::uint64_t kGoldenHash = 0xee5be87b5995159dull;
 // The default engine's (multibody, trapezoid_closed, active_set) hash.
-constexpr std::uint64_t kGoldenHashMultibody = 0x070725fd7d3dc764ull;
+constexpr std::uint64_t kGoldenHashMultibody = 0x9bbdde76e5b9acf0ull;
 // The multibody engine with implicit Euler (θ = 1) and Dantzig, the defaults before.
-constexpr std::uint64_t kGoldenHashImplicitEuler = 0x4feaf73f482f6ecbull;
+constexpr std::uint64_t kGoldenHashImplicitEuler = 0xc7691c76e06f8ea5ull;
 // Without the continuation (--set contact.continued_search=false): the coherent search's and the
 // stateless search's, the same physics since Newton's refinement came in (multibody with θ = 1).
-constexpr std::uint64_t kGoldenHashSampled = 0x483626ec7aaa717eull;
-constexpr std::uint64_t kGoldenHashSampledMultibody = 0xc32b16f0910b2b5eull;
+constexpr std::uint64_t kGoldenHashSampled = 0x0ed5c0bce5068e88ull;
+constexpr std::uint64_t kGoldenHashSampledMultibody = 0xa87d1c6ee3d35e66ull;
 
 TEST(RunDeterminism, SameScenarioGivesByteIdenticalLogs) {
   const fs::path a = run_paper("a"), b = run_paper("b");
