@@ -213,9 +213,9 @@ struct SolverDef {
   // close (docs/solver.md, "θ"). Giving `theta` without `integrator` chooses this integrator.
   double theta = 1.0;
   // multibody: `trapezoid_closed` (the default): θ chosen per step — ½ (the trapezoidal rule:
-  // second order, no numerical damping) where every tooth contact touched in the step before;
-  // 1 where one may open within the step; where one is new, ½ plus just the damping that takes
-  // out the energy its late detection added (docs/solver.md, "θ that follows the contacts").
+  // second order, no numerical damping) unless a tooth contact is new; then ½ plus just the
+  // damping that takes out the energy its late detection added (docs/solver.md, "θ that follows
+  // the contacts").
   // `theta`: the θ-method above. `bdf2`: the two-step backward differentiation formula, second
   // order and, like implicit Euler, damping the modes the step does not resolve (docs/solver.md,
   // "BDF2"); its first step is implicit Euler.

@@ -29,21 +29,21 @@ MultibodyRow World::Impl::spring_row(double k, double c, double force0) const {
   return r;
 }
 
-// solver.integrator trapezoid_closed: θ for this step. ½ (the trapezoidal rule) where every tooth
-// contact touched in the step before too; 1 (implicit Euler) where one may open within this step
-// at its present rate of separation (twice it, for margin): a trapezoidal force over a step a
-// contact lasts only part of hands out more impulse than the spring held. A contact found new
-// has penetrated δ₀ without force since it touched: the spring holds ½·k·δ₀² that no work put
-// in. The θ-method dissipates (θ − ½)·k·Δs² in a spring row whose extension changes by Δs over
-// the step, so θ = ½ + E_new / Σ k·Δs² (Δs ≈ h·ṡ at the step's start, over every contact row)
-// takes out of the step exactly the energy the late detection added, at most 1. One θ per step:
-// the positions advance with it too.
+// solver.integrator trapezoid_closed: θ for this step. ½ (the trapezoidal rule) unless a tooth
+// contact is new: found at the first step that starts with the teeth overlapping, it has
+// penetrated δ₀ without force since it touched, so its spring holds ½·k·δ₀² that no work put in.
+// The θ-method dissipates (θ − ½)·k·Δs² in a spring row whose extension changes by Δs over the
+// step, so θ = ½ + E_new / Σ k·Δs² (Δs ≈ h·ṡ at the step's start, over every contact row) takes
+// out of the step the energy the late detection added, at most 1. One θ per step: the positions
+// advance with it too. (Until 2026-11-26 a persisting contact whose depth was below 2·h times
+// its rate also took θ = 1, meant for contacts about to open but with the rate's sign inverted,
+// so it hit shallow contacts still closing; with the sign right, damping opening contacts
+// spread the planet–ring harmonics 3.2 % between dt 2e-5 and 5e-6 s: docs/solver.md.)
 double World::Impl::trapezoid_closed_theta() {
   MultibodyEngine& e = *mb;
   const double h = scenario.solver.time_step_s;
   std::swap(e.touching, e.touching_before);
   e.touching.clear();
-  bool opening = false;
   double added_J = 0, dissipation_weight_J = 0;  // Σ ½kδ₀² of new contacts, Σ k·(h·ṡ)² of all
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const PairRec& pr = pairs[p];
@@ -56,15 +56,12 @@ double World::Impl::trapezoid_closed_theta() {
       e.touching.push_back(key);
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0), at(c.point_m.x(), c.point_m.y(), ra.getCenterOfMassPosition().z());
       const btVector3 va = ra.getVelocityInLocalPoint(at - ra.getCenterOfMassPosition());
-      const double separating = -(va - rb.getVelocityInLocalPoint(at - rb.getCenterOfMassPosition())).dot(n);  // n: from b toward a
-      dissipation_weight_J += k * (h * separating) * (h * separating);
+      const double rate = (va - rb.getVelocityInLocalPoint(at - rb.getCenterOfMassPosition())).dot(n);  // ṡ, the row's rate
+      dissipation_weight_J += k * (h * rate) * (h * rate);
       if (std::find(e.touching_before.begin(), e.touching_before.end(), key) == e.touching_before.end())
         added_J += 0.5 * k * c.depth_m * c.depth_m;
-      else if (!(c.depth_m > 2 * h * std::max(0.0, separating)))
-        opening = true;
     }
   }
-  if (opening) return 1.0;
   if (added_J == 0) return 0.5;
   if (!(added_J < 0.5 * dissipation_weight_J)) return 1.0;
   return 0.5 + added_J / dissipation_weight_J;
