@@ -48,7 +48,7 @@ std::string indicator_table(const json& s, const json* other, const std::string&
   return html_table({"run", "planet", "passes", "RMS m/s²", "crest", "kurtosis", "FM0", "FM4", "M6A", "NA4", "ER"}, rows);
 }
 
-std::string one_sensor(const RunDir& run, const physics::SensorDef& d, const json& a, const std::optional<RunDir>& cmp) {
+std::string one_sensor(const RunDir& run, const physics::SensorDef& d, const json& a) {
   std::string h = "<h3>" + html_escape(d.name) + " on " + html_escape(d.body) + " at " + num(d.angle_rad * 180 / M_PI, 4) + "°</h3>\n";
   const input::CsvTable csv = input::read_csv(run.dir / "sensors.csv");
   const std::vector<double>& t = csv.column("time_s");
@@ -94,7 +94,7 @@ std::string report_sensors_section(const RunDir& run, const std::optional<RunDir
   const json b = compare ? analysis_of(*compare) : json();
   std::string h = "<h2>Housing sensors</h2>\n<p>McFadden &amp; Smith's planet-pass model (docs/condition-monitoring.md).</p>\n";
   for (const physics::SensorDef& d : run.scenario.sensors) {
-    h += one_sensor(run, d, a, compare);
+    h += one_sensor(run, d, a);
     if (const json* s = sensor_in(a, d.name)) {
       h += "<p>Each planet's separated average (McFadden 1991) and its indicators:</p>\n" +
            indicator_table(*s, compare ? sensor_in(b, d.name) : nullptr, run.scenario.name + " (" + run.dir.filename().string() + ")",

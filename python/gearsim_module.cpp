@@ -44,7 +44,7 @@ py::object analyze(const std::filesystem::path& run_dir, double from_s) {
   o.from_s = from_s;
   py::dict analysis = to_python(app::analyze_run(app::open_run_dir(run_dir), o)).cast<py::dict>();
   analysis["spectrum"] = read_csv_columns(run_dir / "spectrum.csv");
-  return std::move(analysis);
+  return analysis;
 }
 
 py::object modes(const PyScenario& s, const std::string& drive, int harmonics, int phases, double max_speed_rad_s) {

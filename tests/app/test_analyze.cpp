@@ -105,8 +105,11 @@ TEST_F(Analyze, DiagnosisNamesPlanetZeroToothZeroAndNoOtherTooth) {
 // every in-phase localisation says why it named what it named.
 TEST_F(Analyze, TheSensorNamesNoPlanetButTheFaultyOne) {
   const nlohmann::json f = analysis(*faulty_), h = analysis(*healthy_);
-  for (const auto& fault : f["diagnosis"]["faults"])
-    if (fault["source"].get<std::string>().rfind("sensor", 0) == 0) EXPECT_EQ(fault["gear"], "planet_0") << fault.dump();
+  for (const auto& fault : f["diagnosis"]["faults"]) {
+    if (fault["source"].get<std::string>().rfind("sensor", 0) == 0) {
+      EXPECT_EQ(fault["gear"], "planet_0") << fault.dump();
+    }
+  }
   for (const auto& fault : h["diagnosis"]["faults"]) EXPECT_NE(fault["source"].get<std::string>().rfind("sensor", 0), 0u) << fault.dump();
   for (const nlohmann::json* j : {&f, &h}) {
     ASSERT_TRUE((*j)["sensors"][0].contains("in_phase"));

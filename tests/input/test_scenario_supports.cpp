@@ -39,8 +39,11 @@ TEST(ScenarioSupports, LinParkerPutsEveryMemberOnABearingAndHoldsTheRingTorsiona
     EXPECT_EQ(j.bearing->torsional_stiffness_N_m_per_rad, std::string(name) == "ring" ? 1.957631e7 : 0.0) << name;
   }
   EXPECT_EQ(joint(s, "planet_1").parent, "carrier");
-  for (const physics::BodyDef& b : s.bodies)
-    if (b.name == "ring") EXPECT_FALSE(b.fixed) << "held by its springs, not welded";
+  for (const physics::BodyDef& b : s.bodies) {
+    if (b.name == "ring") {
+      EXPECT_FALSE(b.fixed) << "held by its springs, not welded";
+    }
+  }
   ASSERT_EQ(s.contact.mesh_stiffnesses.size(), 6u);
   for (const physics::PairMeshStiffnessDef& m : s.contact.mesh_stiffnesses) EXPECT_EQ(m.stiffness_N_per_m, 5e8);
   ASSERT_TRUE(s.transmission);  // the ring is held: sun in, carrier out

@@ -58,10 +58,15 @@ void expect_lin_parker_structure(int planets) {
   EXPECT_EQ((c.count({ModeType::Rigid, 1}) ? c.at({ModeType::Rigid, 1}) : 0), 1);
   EXPECT_EQ(c.at({ModeType::Rotational, 1}), 5);
   EXPECT_EQ(c.at({ModeType::Translational, 2}), 12);
-  if (planets > 3) EXPECT_EQ(c.at({ModeType::Planet, planets - 3}), 3 * (planets - 3));
+  if (planets > 3) {
+    EXPECT_EQ(c.at({ModeType::Planet, planets - 3}), 3 * (planets - 3));
+  }
   EXPECT_EQ(static_cast<int>(c.size()), planets > 3 ? 4 : 3) << "no mode of any other type or multiplicity";
-  for (const linear::ModeGroup& g : a.groups)
-    if (g.type == ModeType::Rotational) EXPECT_TRUE(a.modes[g.modes.front()].planets_alike) << g.frequency_hz << " Hz";
+  for (const linear::ModeGroup& g : a.groups) {
+    if (g.type == ModeType::Rotational) {
+      EXPECT_TRUE(a.modes[g.modes.front()].planets_alike) << g.frequency_hz << " Hz";
+    }
+  }
 }
 
 TEST(LinParker, ThreePlanetsHaveRotationalAndDoubleTranslationalModesOnly) { expect_lin_parker_structure(3); }
