@@ -23,6 +23,11 @@ void print_analysis(const nlohmann::ordered_json& j, std::ostream& out) {
         out << " " << h["peak_hz"].get<double>() << " Hz (+" << h["over_median_floor_0_1000_hz_db"].get<double>() << " dB)";
     out << "\n";
   }
+  if (j.contains("contact_loss")) {
+    out << "  note: in";
+    for (const auto& p : j["contact_loss"]["pairs"]) out << " " << p.get<std::string>();
+    out << ", " << j["contact_loss"]["note"].get<std::string>() << "\n";
+  }
   if (j.contains("transmission_error"))
     out << "  transmission error: peak-to-peak " << std::scientific << std::setprecision(3)
         << j["transmission_error"]["peak_to_peak_rad"].get<double>() << " rad\n" << std::fixed << std::setprecision(2);

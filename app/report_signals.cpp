@@ -145,6 +145,11 @@ std::string report_signals_section(const RunDir& run, const std::optional<RunDir
     rows.push_back(r);
   }
   h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "mean force, N", "zero-force samples, %", "f<sub>m</sub> over floor", "2·f<sub>m</sub>", "3·f<sub>m</sub>"}, rows);
+  if (a.contains("contact_loss")) {
+    std::string pairs;
+    for (const auto& q : a["contact_loss"]["pairs"]) pairs += (pairs.empty() ? "" : ", ") + html_escape(q.get<std::string>());
+    h += "<p class=\"note\"><b>Contact loss</b> in " + pairs + ": " + html_escape(a["contact_loss"]["note"].get<std::string>()) + ".</p>\n";
+  }
   if (p.contains("planet_fault_family")) {
     rows.clear();
     for (std::size_t k = 0; k < p["planet_fault_family"].size(); ++k) {

@@ -72,6 +72,25 @@ TEST_F(Analyze, MeshLineStandsWhereTheKinematicsPutIt) {
   }
 }
 
+// The faulty tooth leaves its mate (43 µm thinner than the mesh deflects): the analysis says the
+// pair's lines need a step check; the healthy set never separates and gets no such note.
+TEST_F(Analyze, ContactLossIsNamedWithItsPairs) {
+  const nlohmann::json f = analysis(*faulty_), h = analysis(*healthy_);
+  EXPECT_FALSE(h.contains("contact_loss")) << h["contact_loss"].dump();
+  ASSERT_TRUE(f.contains("contact_loss"));
+  bool sun_planet_0 = false;
+  for (const auto& p : f["contact_loss"]["pairs"]) {
+    EXPECT_GT(f["pairs"][p.get<std::string>()]["zero_force_share"].get<double>(), 0.0) << p;
+    sun_planet_0 = sun_planet_0 || p == "sun__planet_0";
+  }
+  EXPECT_TRUE(sun_planet_0) << f["contact_loss"].dump();
+  for (const auto& [name, q] : f["pairs"].items()) {
+    bool listed = false;
+    for (const auto& p : f["contact_loss"]["pairs"]) listed = listed || p == name;
+    EXPECT_EQ(listed, q["zero_force_share"].get<double>() > 0) << name;
+  }
+}
+
 TEST_F(Analyze, FaultyPlanetToothCarriesNothingAndStandsOut) {
   const nlohmann::json f = analysis(*faulty_), h = analysis(*healthy_);
   // sun__planet_0 on planet_0: tooth 0 lost 43 µm on the flank the sun loads: it never touches.
