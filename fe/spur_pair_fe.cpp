@@ -23,7 +23,7 @@ double rotation_at(const std::vector<DatBlock>& blocks, int rotation_node, doubl
   for (const DatBlock& b : blocks)
     if (b.quantity == "displacements" && b.set == "NROT" && std::abs(b.time - time) < 1e-6)
       return b.rows.at(rotation_node).at(0);
-  throw std::runtime_error("ccx results lack the rotations at time " + std::to_string(time) + " (" +
+  throw std::runtime_error(std::string("ccx results lack the rotations at time ") + std::to_string(time) + " (" +
                            dat.string() + ")");
 }
 
@@ -86,7 +86,8 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   deck.bodies.push_back({"WHEEL", wheel, place.wheel.centre_m, place.wheel.angle_rad, FeSupport::Fixed});
   // One contact pair per pinion tooth near the path (slave) and the wheel space it sits in.
   for (size_t i = 0; i < place.slots.size(); ++i)
-    deck.contacts.push_back({"C" + std::to_string(i), 0, 1, place.slots[i].pinion_edges, place.slots[i].wheel_edges});
+    // std::string("…") + …, not "…" + a temporary: GCC 12 warns (-Wrestrict) on that form, wrongly.
+    deck.contacts.push_back({std::string("C") + std::to_string(i), 0, 1, place.slots[i].pinion_edges, place.slots[i].wheel_edges});
   deck.young_modulus_Pa = kYoungModulus_Pa;
   deck.poisson_ratio = kPoissonRatio;
   deck.thickness_m = pd.face_width_m;
@@ -119,7 +120,7 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   Eigen::Vector2d low = Eigen::Vector2d::Zero(), full = Eigen::Vector2d::Zero();
   for (size_t i = 0; i < place.slots.size(); ++i) {
     const SpurToothSlot& s = place.slots[i];
-    const std::string slave = "SC" + std::to_string(i);
+    const std::string slave = std::string("SC") + std::to_string(i);
     const Eigen::Vector2d fl = pair_force(totals, slave, 2.0), ff = pair_force(totals, slave, 3.0);
     low += fl;
     full += ff;
@@ -128,7 +129,7 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   out.contact_force_low_N = low.norm();
   out.contact_force_full_N = full.norm();
   if (!(out.contact_force_full_N > 0))
-    throw std::runtime_error("ccx reports no contact force at full load (" + run.dat_path.string() + ")");
+    throw std::runtime_error(std::string("ccx reports no contact force at full load (") + run.dat_path.string() + ")");
   for (const SpurPairFePairLoad& p : out.pairs)
     if (p.force_full_N > kLoadedPairShare * out.contact_force_full_N) ++out.loaded_pairs;
   const double rb1 = path.pinion_base_radius_m;
