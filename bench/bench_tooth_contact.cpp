@@ -18,7 +18,7 @@ namespace {
 
 GearSpec gear(int teeth, bool internal) {
   GearSpec s;
-  s.name = "g" + std::to_string(teeth);
+  s.name = std::string("g") + std::to_string(teeth);  // not "g" + a temporary: GCC 12 -Wrestrict false positive
   s.teeth = teeth;
   s.module_m = 1e-3;
   s.face_width_m = 10e-3;
