@@ -2,7 +2,7 @@
 """Convergence of the reported spectra in the time step (issue 18).
 
 Runs a scenario at several time steps, analyses each run with `gearsim analyze`, and prints per
-gear pair the amplitudes of the first three mesh harmonics as `analyze` reports them (from the
+gear pair (then the spread of each harmonic over the steps, and the worst) the amplitudes of the first three mesh harmonics as `analyze` reports them (from the
 anti-aliased contacts.csv force) beside the amplitudes of the full-rate per-step force rebuilt
 from steps.h5 over the same window (Hann window, the same zero padding rule), and the point
 samples (`_force_point_N`, what the paper's 2 kHz record holds).
@@ -83,6 +83,17 @@ def main():
             print(f"dt {dt_s:>5}  {name:16s}  analyze " + " ".join(f"{v:.4f}" for v in reported) +
                   "   full-rate " + " ".join(f"{v:.4f}" for v in full_rate) +
                   "   point " + " ".join(f"{v:.4f}" for v in point), flush=True)
+    # Spread of each reported harmonic over the time steps run: (max − min) / mean, %.
+    if len(a.dt) > 1:
+        worst = (0.0, "", 0)
+        print("spread of the analyze amplitudes over dt " + " ".join(a.dt) + " (%, harmonics 1 / 2 / 3):")
+        for name in dict.fromkeys(r[1] for r in rows):
+            values = [r[2] for r in rows if r[1] == name]
+            spread = [100 * (max(v[k] for v in values) - min(v[k] for v in values)) / np.mean([v[k] for v in values])
+                      for k in range(3)]
+            worst = max(worst, max((sp, name, k + 1) for k, sp in enumerate(spread)))
+            print(f"  {name:16s} " + " / ".join(f"{sp:.2f}" for sp in spread))
+        print(f"worst {worst[0]:.2f} % ({worst[1]}, harmonic {worst[2]})")
     return 0
 
 
