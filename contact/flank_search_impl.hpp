@@ -332,6 +332,28 @@ bool probe_flank(FlankSamples& s) {
   return depth[s.best_i] >= -window;
 }
 
+// Where x's flank (tooth k, f) crosses y's tip circle (the circle beyond which y's first-order
+// depth measures nothing), between radii r_in and r_out of x's flank: Newton's method on
+// |P(r)|² = R² from their middle. NaN where it leaves that interval or does not converge.
+double tip_circle_crossing(const XY& xy, int k, Flank f, double r_in, double r_out) {
+  const FlankTable& yt = xy.y.table;
+  const double R = yt.internal() ? yt.r_min_m() : yt.r_max_m();
+  const double lo = std::min(r_in, r_out), hi = std::max(r_in, r_out);
+  FlankTable::FlankJet a;
+  double r = 0.5 * (lo + hi);
+  for (int it = 0; it < 8; ++it) {
+    if (!xy.x.table.flank_jet(k, f, r, &a)) break;
+    const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1;
+    const double slope = 2 * P.dot(P1);
+    if (!(slope != 0)) break;
+    const double dr = -(P.squaredNorm() - R * R) / slope;
+    r += dr;
+    if (!(r > lo && r < hi)) break;
+    if (std::abs(dr) < 1e-13) return r;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 // The radius of the deepest point near the best sample: a parabola through it and its neighbours
 // inside the flank, golden section at an end of it.
 double refined_radius(FlankSamples& s) {
@@ -353,6 +375,21 @@ double refined_radius(FlankSamples& s) {
     const double d_end = depth_at(s.xy, s.k, s.f, r_end, s.hint);
     const double d_in = depth_at(s.xy, s.k, s.f, r_end + (at_hi ? -kRisingCheck_m : kRisingCheck_m), s.hint);
     if (d_end > kNone && d_in > kNone && d_end > d_in) return r_end;
+  }
+  // Best next to a sample that measured nothing because it lies beyond y's tips: where the depth
+  // still rises toward the radius at which x's flank crosses y's tip circle, a search with one
+  // maximum in the bracket ends there, found by Newton's method on the circle instead of golden
+  // section's 22 depths.
+  for (int side : {-1, 1}) {
+    const int nb = best_i + side;
+    if (nb < 0 || nb >= n || s.missing(nb) || s.depth[nb] > kNone) continue;
+    const double r_c = tip_circle_crossing(s.xy, s.k, s.f, r_b, table.probe_radius(nb));
+    if (std::isnan(r_c)) break;
+    const double d_out = depth_at(s.xy, s.k, s.f, r_c + side * kRisingCheck_m, s.hint);
+    const double d_end = depth_at(s.xy, s.k, s.f, r_c - side * kRisingCheck_m, s.hint);
+    const double d_in = depth_at(s.xy, s.k, s.f, r_c - 2 * side * kRisingCheck_m, s.hint);
+    if (d_out <= kNone && d_end > kNone && d_in > kNone && d_end > d_in) return r_c - side * kRisingCheck_m;
+    break;
   }
   return golden_refine(s.xy, s.k, s.f, lo, hi, s.hint);
 }
