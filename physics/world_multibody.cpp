@@ -349,11 +349,10 @@ void World::Impl::multibody_rows() {
       }
     }
     if (jr.motor) {
-      const double ramp = jr.motor->ramp_time_s > 0 ? std::min(1.0, time / jr.motor->ramp_time_s) : 1.0;
       MultibodyRow r;
       r.kind = MultibodyRow::motor;
       r.owner = static_cast<int>(j);
-      r.target = jr.motor->target_speed_rad_s * ramp;
+      r.target = motor_target_rad_s(*jr.motor, time + scenario.solver.time_step_s);  // the speed at the step's end
       r.lo = -jr.motor->max_torque_N_m * e.h_eff;  // impulses are force × h_eff
       r.hi = jr.motor->max_torque_N_m * e.h_eff;
       jrows[new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;

@@ -95,8 +95,7 @@ double World::Impl::contact_damping(const PairRec& pr, double k) const {
 void World::Impl::apply_motors_and_loads() {
   for (JointRec& j : joints) {
     if (j.motor) {
-      const double ramp = j.motor->ramp_time_s > 0 ? std::min(1.0, time / j.motor->ramp_time_s) : 1.0;
-      const double target = j.motor->target_speed_rad_s * ramp;
+      const double target = motor_target_rad_s(*j.motor, time + scenario.solver.time_step_s);  // the speed at the step's end
       if (j.hinge) j.hinge->enableAngularMotor(true, target, j.motor->max_torque_N_m * scenario.solver.time_step_s);
       if (j.spring) {
         j.spring->enableMotor(5, true);
