@@ -33,6 +33,11 @@ struct PairForceAnalysis {
   // (the dynamic factor of the window); 0 when the mean is not positive.
   double dynamic_factor = 0;
   double zero_force_share = 0;  // samples with exactly zero force / samples
+  // Steps of the window in which the pair carried no force / steps, from the per-step log
+  // (steps.h5); unset without one. A tooth that leaves its mate for less than a sample
+  // interval (the paper's faulty tooth: ≈ 0.4 ms per planet turn, samples 0.5 ms apart) is
+  // seen here, not always in the samples.
+  std::optional<double> steps_without_force_share;
   double floor_N = 0;           // median amplitude over 0 … kRunFloorBandTop_hz, N
   SidebandAnalysis mesh;        // harmonics of f_m and their sidebands (default options)
   // One per mesh.harmonics: its peak over floor_N, dB; nothing where no peak was found.

@@ -1,6 +1,9 @@
 #include "analysis/run_analysis.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
 #include <string>
 
 #include "analysis/angle_average.hpp"
@@ -97,6 +100,29 @@ std::vector<ToothLoads> all_tooth_loads(const RunSignals& s, const TrainDescript
   return out;
 }
 
+// Per pair, the share of the window's steps (from_s … to_s) in which it carried no force, from
+// the per-step log: every step with a positive summed normal impulse counts as in contact.
+void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
+  const double dt = log.time_step_s;
+  if (!(dt > 0)) return;
+  // Step k ends at k·dt (its time in the log, a sum of steps: within rounding of it).
+  const auto first = static_cast<std::int64_t>(std::ceil(r.from_s / dt - 1e-6)), last = static_cast<std::int64_t>(std::floor(r.to_s / dt + 1e-6));
+  if (last < first) return;
+  const std::size_t steps = static_cast<std::size_t>(last - first + 1);
+  std::vector<std::vector<double>> impulse(log.pairs.size(), std::vector<double>(steps, 0.0));
+  for (std::size_t c = 0; c < log.time_s.size(); ++c) {
+    const auto k = static_cast<std::int64_t>(std::llround(log.time_s[c] / dt));
+    if (k < first || k > last) continue;
+    impulse[static_cast<std::size_t>(log.pair[c])][static_cast<std::size_t>(k - first)] += log.normal_impulse_N_s[c];
+  }
+  for (PairForceAnalysis& p : r.pairs)
+    for (std::size_t q = 0; q < log.pairs.size(); ++q) {
+      if (!(log.pairs[q] == p.pair)) continue;
+      const auto without = std::count_if(impulse[q].begin(), impulse[q].end(), [](double j) { return !(j > 0); });
+      p.steps_without_force_share = static_cast<double>(without) / static_cast<double>(steps);
+    }
+}
+
 }  // namespace
 
 std::size_t samples_from(const std::vector<double>& time_s, double from_s) {
@@ -121,6 +147,7 @@ RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
   if (train.planetary && !train.carrier.empty())
     for (const SensorSignal& sensor : s.sensors) r.sensors.push_back(analyse_sensor(sensor, s, train));
   if (s.tooth_contacts) {
+    steps_without_force(*s.tooth_contacts, r);
     r.tooth_loads = all_tooth_loads(s, train);
     r.diagnosis = diagnose_from_contacts(*r.tooth_loads, [&](const PairId& pair, const std::string& gear) -> std::string {
       for (const TrainDescription::LoadedFlank& l : train.loaded_flanks) {

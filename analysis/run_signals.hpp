@@ -50,6 +50,7 @@ struct ToothContactLog {
   std::vector<double> time_s;                        // the step's time, s
   std::vector<std::int64_t> pair, tooth_a, tooth_b;  // tooth_a: a tooth of pairs[pair[c]].a
   std::vector<double> normal_impulse_N_s;            // normal impulse over the step, N·s
+  double time_step_s = 0;                            // the run's step, s
 };
 
 // A housing sensor's record (sensors.csv) and where it sits.

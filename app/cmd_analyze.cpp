@@ -17,7 +17,9 @@ void print_analysis(const nlohmann::ordered_json& j, std::ostream& out) {
       << j["window_s"][1].get<double>() << " s; mesh frequency " << j["gear_train"]["mesh_hz"].get<double>() << " Hz\n";
   for (const auto& [pair, p] : j["pairs"].items()) {
     out << "  " << pair << ": mean " << p["mean_force_N"].get<double>() << " N, zero-force samples "
-        << 100 * p["zero_force_share"].get<double>() << " %; harmonics";
+        << 100 * p["zero_force_share"].get<double>() << " %";
+    if (p.contains("steps_without_force_share")) out << ", steps without force " << 100 * p["steps_without_force_share"].get<double>() << " %";
+    out << "; harmonics";
     for (const auto& h : p["mesh_harmonics"])
       if (h.contains("peak_hz"))
         out << " " << h["peak_hz"].get<double>() << " Hz (+" << h["over_median_floor_0_1000_hz_db"].get<double>() << " dB)";

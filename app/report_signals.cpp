@@ -139,12 +139,13 @@ std::string report_signals_section(const RunDir& run, const std::optional<RunDir
   h += "<h2>Signals</h2>\n" + force_plots(run, a, pair) + spectrum_plots(run, a, pair, compare) + te_plot(run);
   std::vector<std::vector<std::string>> rows;
   for (const auto& [name, q] : a["pairs"].items()) {
-    std::vector<std::string> r{html_escape(name), num(q["mean_force_N"].get<double>(), 5), num(100 * q["zero_force_share"].get<double>(), 3)};
+    std::vector<std::string> r{html_escape(name), num(q["mean_force_N"].get<double>(), 5), num(100 * q["zero_force_share"].get<double>(), 3),
+                               q.contains("steps_without_force_share") ? num(100 * q["steps_without_force_share"].get<double>(), 3) : "no per-step log"};
     for (const auto& hm : q["mesh_harmonics"])
       r.push_back(hm.contains("peak_hz") ? num(hm["peak_hz"].get<double>(), 6) + " Hz, +" + num(hm["over_median_floor_0_1000_hz_db"].get<double>(), 3) + " dB" : "not found");
     rows.push_back(r);
   }
-  h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "mean force, N", "zero-force samples, %", "f<sub>m</sub> over floor", "2·f<sub>m</sub>", "3·f<sub>m</sub>"}, rows);
+  h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "mean force, N", "zero-force samples, %", "steps without force, %", "f<sub>m</sub> over floor", "2·f<sub>m</sub>", "3·f<sub>m</sub>"}, rows);
   if (a.contains("contact_loss")) {
     std::string pairs;
     for (const auto& q : a["contact_loss"]["pairs"]) pairs += (pairs.empty() ? "" : ", ") + html_escape(q.get<std::string>());

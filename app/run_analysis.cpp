@@ -93,6 +93,7 @@ ToothContactLog tooth_contacts(const std::filesystem::path& path, const std::vec
   t.tooth_a = std::move(log.tooth_a);
   t.tooth_b = std::move(log.tooth_b);
   t.normal_impulse_N_s = std::move(log.normal_impulse_N_s);
+  t.time_step_s = log.time_step_s;
   return t;
 }
 

@@ -80,15 +80,27 @@ TEST_F(Analyze, ContactLossIsNamedWithItsPairs) {
   ASSERT_TRUE(f.contains("contact_loss"));
   bool sun_planet_0 = false;
   for (const auto& p : f["contact_loss"]["pairs"]) {
-    EXPECT_GT(f["pairs"][p.get<std::string>()]["zero_force_share"].get<double>(), 0.0) << p;
+    const nlohmann::json& q = f["pairs"][p.get<std::string>()];
+    EXPECT_TRUE(q["zero_force_share"].get<double>() > 0 || q["steps_without_force_share"].get<double>() > 0) << p;
     sun_planet_0 = sun_planet_0 || p == "sun__planet_0";
   }
   EXPECT_TRUE(sun_planet_0) << f["contact_loss"].dump();
   for (const auto& [name, q] : f["pairs"].items()) {
     bool listed = false;
     for (const auto& p : f["contact_loss"]["pairs"]) listed = listed || p == name;
-    EXPECT_EQ(listed, q["zero_force_share"].get<double>() > 0) << name;
+    EXPECT_EQ(listed, q["zero_force_share"].get<double>() > 0 || q["steps_without_force_share"].get<double>() > 0) << name;
   }
+  // Seen in the per-step log whatever the sample phase (this run's 2 kHz samples miss it: 0
+  // zero-force samples): tooth 0 of planet 0 lost 43 µm and leaves the sun for ≈ 0.3 ms each
+  // time it meets it, once per relative planet turn (0.1125 s at 104.7 rad/s: the sun turns
+  // 83.8 rad/s relative to the carrier, the planet 24/36 of that), ≈ 0.27 % of the steps
+  // (measured); 0.1 % … 1 % bounds that order of magnitude (0.1 ms … 1.1 ms per turn).
+  const double share = f["pairs"]["sun__planet_0"]["steps_without_force_share"].get<double>();
+  EXPECT_GT(share, 0.001);
+  EXPECT_LT(share, 0.01);
+  // Planets 1 and 2 stay in mesh: no step without force.
+  EXPECT_EQ(f["pairs"]["sun__planet_1"]["steps_without_force_share"].get<double>(), 0.0);
+  EXPECT_EQ(h["pairs"]["sun__planet_0"]["steps_without_force_share"].get<double>(), 0.0);
 }
 
 TEST_F(Analyze, FaultyPlanetToothCarriesNothingAndStandsOut) {
