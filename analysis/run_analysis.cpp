@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdint>
 #include <vector>
 #include <string>
 
 #include "analysis/angle_average.hpp"
+#include "analysis/band_limited.hpp"
 #include "analysis/constants.hpp"
 #include "analysis/resample.hpp"
 #include "core/errors.hpp"
@@ -54,12 +56,24 @@ const std::vector<double>& angle_of(const RunSignals& s, const std::string& body
 }
 
 // The TE statistics over the window.
-TransmissionErrorStats windowed_te_stats(const TransmissionError& te, double from_s) {
+// Its extremes are those of the band-limited signal the samples hold, not of the samples
+// (band_limited.hpp): the faulty paper run's TE dips last about a millisecond, and its samples
+// caught 82–90 % of their depth depending on where they fell.
+TransmissionErrorStats windowed_te_stats(const TransmissionError& te, double from_s, double* samples_peak_to_peak_rad) {
   TransmissionError w;
   w.time_s = window(te.time_s, te.time_s, from_s);
   w.te_rad = window(te.te_rad, te.time_s, from_s);
   w.ratio = te.ratio;
-  return te_stats(w);
+  TransmissionErrorStats s = te_stats(w);
+  *samples_peak_to_peak_rad = s.rad.peak_to_peak;
+  const Extremes e = band_limited_extremes(w.te_rad);
+  const auto set = [&](SeriesStats& st, double scale) {
+    st.min = e.min * scale, st.max = e.max * scale, st.peak_to_peak = (e.max - e.min) * scale;
+  };
+  set(s.rad, 1);
+  set(s.urad, 1e6);
+  set(s.deg, 180 / std::numbers::pi);
+  return s;
 }
 
 // The angle-synchronous average of each planet's sun–planet force (planets without a logged
@@ -142,7 +156,11 @@ RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
     r.pairs.push_back(analyse_pair_force(p.pair, window(p.force_N, s.time_s, s.from_s), r.sample_rate_hz, train,
                                          p.point_force_N.empty() ? std::vector<double>{}
                                                                  : window(p.point_force_N, s.time_s, s.from_s)));
-  if (s.te) r.te = windowed_te_stats(*s.te, s.from_s);
+  if (s.te) {
+    double samples_p2p = 0;
+    r.te = windowed_te_stats(*s.te, s.from_s, &samples_p2p);
+    r.te_samples_peak_to_peak_rad = samples_p2p;
+  }
   if (train.planetary) r.synchronous = synchronous_averages(s, train, r.synchronous_note);
   if (train.planetary && !train.carrier.empty())
     for (const SensorSignal& sensor : s.sensors) r.sensors.push_back(analyse_sensor(sensor, s, train));

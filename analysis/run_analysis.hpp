@@ -26,7 +26,10 @@ struct RunAnalysis {
   double from_s = 0, to_s = 0;  // the first and last analysed sample instants, s
   double sample_rate_hz = 0;    // of the output-rate samples in the window, Hz
   std::vector<PairForceAnalysis> pairs;  // every gear pair, in the order of RunSignals::pair_forces
-  std::optional<TransmissionErrorStats> te;  // over the window; nothing without a TE series
+  // Over the window; nothing without a TE series. min, max and peak_to_peak are those of the
+  // band-limited signal the samples hold (band_limited.hpp), mean and rms the samples'.
+  std::optional<TransmissionErrorStats> te;
+  std::optional<double> te_samples_peak_to_peak_rad;  // the samples' own max − min
   // Planetary: one per planet whose sun–planet pair is logged; nothing for a gear pair.
   std::optional<std::vector<SynchronousTeeth>> synchronous;
   std::string synchronous_note;  // why a planet has no synchronous average (a window under one turn), else ""

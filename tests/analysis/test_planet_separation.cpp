@@ -10,6 +10,7 @@
 
 #include "analysis/planet_separation.hpp"
 #include "analysis/sensor_analysis.hpp"
+#include "core/errors.hpp"
 #include "synthetic_signals.hpp"
 
 namespace gearsim {
