@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "analysis/band_limited.hpp"
 #include "analysis/constants.hpp"
 #include "core/errors.hpp"
 
@@ -44,7 +45,9 @@ PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<doubl
   for (double v : f) mean += v;
   for (double v : point) zeros += v == 0;
   r.mean_force_N = mean / static_cast<double>(f.size());
-  r.peak_force_N = f.empty() ? 0.0 : *std::max_element(f.begin(), f.end());
+  // The band-limited force's peak, between samples too (band_limited.hpp), when the force is the
+  // anti-aliased one (a point-sampled record given apart); else the largest sample.
+  r.peak_force_N = f.empty() ? 0.0 : point_force_N.empty() ? *std::max_element(f.begin(), f.end()) : band_limited_extremes(f).max;
   r.dynamic_factor = r.mean_force_N > 0 ? r.peak_force_N / r.mean_force_N : 0.0;
   r.zero_force_share = zeros / static_cast<double>(f.size());
   // The spectrum, its floor, the mesh harmonics with their sidebands.

@@ -28,7 +28,9 @@ struct PairForceAnalysis {
   // Hann, mean removed, zero-padded to the power of two ≥ kRunSpectrumPadding × the record.
   Spectrum spectrum;
   double mean_force_N = 0;
-  double peak_force_N = 0;      // the largest force sample in the window, N
+  // The window's peak force, N: of the band-limited force the anti-aliased samples hold (between
+  // samples too: band_limited.hpp), or the largest sample of a point-sampled record.
+  double peak_force_N = 0;
   // peak_force_N / mean_force_N: how far the meshing dynamics lift the force over its mean
   // (the dynamic factor of the window); 0 when the mean is not positive.
   double dynamic_factor = 0;
