@@ -71,6 +71,11 @@ std::vector<PairForce> pair_forces(const input::CsvTable& contacts, const std::v
                        "pair, as gearsim run writes them");
     const std::string point = pair_name(p) + "_force_point_N";  // runs that filter the force keep it
     forces.push_back({p, contacts.column(column), contacts.has(point) ? contacts.column(point) : std::vector<double>{}});
+    for (const auto& [name, values] : {std::pair{column, &forces.back().force_N}, std::pair{point, &forces.back().point_force_N}})
+      for (std::size_t r = 0; r < values->size(); ++r)
+        if (!std::isfinite((*values)[r]))
+          throw InputError(contacts.path.string() + ": column " + name + ", data row " + std::to_string(r + 1) +
+                           ": expected a finite force in N");
   }
   return forces;
 }
@@ -175,7 +180,11 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
   if (state.has("te_rad")) {
     if (!run.scenario.transmission)
       throw InputError(state.path.string() + ": te_rad logged, but the run's scenario.json names no transmission");
-    s.te = transmission_error_series(state.column("time_s"), state.column("te_rad"), run.scenario.transmission->ratio);
+    try {
+      s.te = transmission_error_series(state.column("time_s"), state.column("te_rad"), run.scenario.transmission->ratio);
+    } catch (const InputError& e) {
+      throw InputError(state.path.string() + ": column te_rad: " + e.what());
+    }
   }
   for (const CountedGear& g : train.counted_gears) s.angles.push_back({g.body, state.column(g.body + "_angle_rad")});
   for (const PlanetGear& p : train.planets)

@@ -66,6 +66,33 @@ TEST(AnalyzeRefusals, ContactsWithoutAForceColumnIsRefused) {
   expect_refused(dir, "contacts.csv", "no <pair>_force_N column");
 }
 
+// A value that is not a number in a log the analysis reads: refused naming the file, the column
+// and the row, not deep inside the spectra.
+void replace_in_row(const fs::path& file, int data_row, const std::string& value, int column) {
+  std::ifstream in(file);
+  std::string line, out;
+  for (int row = 0; std::getline(in, line); ++row) {
+    if (row == data_row) {
+      std::size_t start = 0;
+      for (int c = 0; c < column; ++c) start = line.find(',', start) + 1;
+      const std::size_t end = line.find(',', start);
+      line = line.substr(0, start) + value + (end == std::string::npos ? "" : line.substr(end));
+    }
+    out += line + "\n";
+  }
+  std::ofstream(file) << out;
+}
+
+TEST(AnalyzeRefusals, ANonFiniteForceOrTransmissionErrorIsRefusedWithItsPlace) {
+  const std::string header = "time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um";
+  const fs::path force = hand_made_run(header, 0.3);
+  replace_in_row(force / "contacts.csv", 300, "nan", 1);
+  expect_refused(force, "contacts.csv", "column sun__planet_0_force_N, data row 300: expected a finite force in N");
+  const fs::path te = hand_made_run(header, 0.3);
+  replace_in_row(te / "state.csv", 300, "inf", 1);
+  expect_refused(te, "state.csv", "column te_rad");
+}
+
 TEST(AnalyzeRefusals, ASummaryWithoutGearPairsIsRefused) {
   // The pairs come from the summary, never from the column names.
   const std::string header = "time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um";
