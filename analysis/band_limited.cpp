@@ -63,25 +63,32 @@ Extremes band_limited_extremes(const std::vector<double>& x) {
       const double t = static_cast<double>(m) / up - (static_cast<double>(i) - static_cast<double>(half) + 1);
       weights[static_cast<std::size_t>(m) * taps + i] = kernel(t);
     }
-  // The interpolated points from sample half − 1 to n − half − 1 (every tap within the record).
+  // The interpolated points from sample half − 1 to n − half − 1 (every tap within the record),
+  // in order; each point that is the largest (smallest) so far keeps its two neighbours for the
+  // parabola. Nothing stored per point.
   const std::size_t first = half - 1, last = n - half - 1;
-  std::vector<double> y;
-  y.reserve((last - first) * static_cast<std::size_t>(up) + 1);
+  double before = 0, here = 0;  // the two points before the current one
+  double top[3] = {0, 0, 0}, bottom[3] = {0, 0, 0};
+  bool have_top = false, have_bottom = false;
+  std::size_t count = 0;
   for (std::size_t j = first; j <= last; ++j)
     for (int m = 0; m < (j == last ? 1 : up); ++m) {
-      const double* w = weights.data() + static_cast<std::size_t>(m) * taps;
-      const double* s = x.data() + (j + 1 - half);
-      double v = 0;
-      for (std::size_t i = 0; i < taps; ++i) v += w[i] * s[i];
-      y.push_back(m == 0 ? x[j] : v);  // at a sample the kernel is 1 there and 0 at the others
+      double v = x[j];  // at a sample the kernel is 1 there and 0 at the others
+      if (m != 0) {
+        const double* w = weights.data() + static_cast<std::size_t>(m) * taps;
+        const double* s = x.data() + (j + 1 - half);
+        v = 0;
+        for (std::size_t i = 0; i < taps; ++i) v += w[i] * s[i];
+      }
+      if (count >= 2) {  // `here` has both neighbours now
+        if (!have_top || here > top[1]) top[0] = before, top[1] = here, top[2] = v, have_top = true;
+        if (!have_bottom || here < bottom[1]) bottom[0] = before, bottom[1] = here, bottom[2] = v, have_bottom = true;
+      }
+      before = here, here = v;
+      ++count;
     }
-  std::size_t imax = 1, imin = 1;
-  for (std::size_t i = 1; i + 1 < y.size(); ++i) {
-    if (y[i] > y[imax]) imax = i;
-    if (y[i] < y[imin]) imin = i;
-  }
-  e.max = std::max(e.max, parabola_peak(y[imax - 1], y[imax], y[imax + 1]));
-  e.min = std::min(e.min, parabola_peak(y[imin - 1], y[imin], y[imin + 1]));
+  if (have_top) e.max = std::max(e.max, parabola_peak(top[0], top[1], top[2]));
+  if (have_bottom) e.min = std::min(e.min, parabola_peak(bottom[0], bottom[1], bottom[2]));
   return e;
 }
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <cstdint>
-#include <vector>
+#include <numbers>
 #include <string>
+#include <vector>
 
 #include "analysis/angle_average.hpp"
 #include "analysis/band_limited.hpp"
@@ -115,26 +115,27 @@ std::vector<ToothLoads> all_tooth_loads(const RunSignals& s, const TrainDescript
 }
 
 // Per pair, the share of the window's steps (from_s … to_s) in which it carried no force, from
-// the per-step log: every step with a positive summed normal impulse counts as in contact.
+// the per-step log: a step counts as in contact when any of the pair's contacts in it has a
+// positive normal impulse. The log's rows come in step order (the reader checks it), so each pair
+// keeps only the last step it counted: memory per pair, not per step.
 void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
   const double dt = log.time_step_s;
   if (!(dt > 0)) return;
   // Step k ends at k·dt (its time in the log, a sum of steps: within rounding of it).
   const auto first = static_cast<std::int64_t>(std::ceil(r.from_s / dt - 1e-6)), last = static_cast<std::int64_t>(std::floor(r.to_s / dt + 1e-6));
   if (last < first) return;
-  const std::size_t steps = static_cast<std::size_t>(last - first + 1);
-  std::vector<std::vector<double>> impulse(log.pairs.size(), std::vector<double>(steps, 0.0));
+  std::vector<std::int64_t> with_force(log.pairs.size(), 0), last_counted(log.pairs.size(), first - 1);
   for (std::size_t c = 0; c < log.time_s.size(); ++c) {
     const auto k = static_cast<std::int64_t>(std::llround(log.time_s[c] / dt));
-    if (k < first || k > last) continue;
-    impulse[static_cast<std::size_t>(log.pair[c])][static_cast<std::size_t>(k - first)] += log.normal_impulse_N_s[c];
+    const auto p = static_cast<std::size_t>(log.pair[c]);
+    if (k < first || k > last || !(log.normal_impulse_N_s[c] > 0) || k <= last_counted[p]) continue;
+    last_counted[p] = k;
+    ++with_force[p];
   }
-  for (PairForceAnalysis& p : r.pairs)
-    for (std::size_t q = 0; q < log.pairs.size(); ++q) {
-      if (!(log.pairs[q] == p.pair)) continue;
-      const auto without = std::count_if(impulse[q].begin(), impulse[q].end(), [](double j) { return !(j > 0); });
-      p.steps_without_force_share = static_cast<double>(without) / static_cast<double>(steps);
-    }
+  const double steps = static_cast<double>(last - first + 1);
+  for (PairForceAnalysis& pf : r.pairs)
+    for (std::size_t q = 0; q < log.pairs.size(); ++q)
+      if (log.pairs[q] == pf.pair) pf.steps_without_force_share = 1 - static_cast<double>(with_force[q]) / steps;
 }
 
 }  // namespace
