@@ -202,6 +202,14 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.stiffness_N_per_m_per_m = positive_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, "stiffness in N/m per m");
     c.damping_ratio = non_negative_or(m, "damping_ratio", c.damping_ratio, "a damping ratio");
     c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
+    if (given(m, "friction_model")) {
+      c.friction_model = m.choice_or("friction_model", {"sliding", "stick_slip"}, "sliding") == "stick_slip" ? physics::ContactDef::FrictionModel::stick_slip
+                                                                                                          : physics::ContactDef::FrictionModel::sliding;
+      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
+        m.fail("friction_model", "only engine multibody has a choice of friction model (rigid_bodies uses Bullet's friction: stick_slip)");
+    }
+    // rigid_bodies runs Bullet's friction, a box of ±μ·λ_n: stick_slip, as its record says.
+    if (s.solver.engine == physics::SolverEngine::rigid_bodies) c.friction_model = physics::ContactDef::FrictionModel::stick_slip;
     c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
     c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
     c.coherent_search = m.boolean_or("coherent_search", c.coherent_search);

@@ -122,6 +122,7 @@ json scenario_json(const physics::Scenario& s) {
   j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
                   {"damping_ratio", s.contact.damping_ratio},
                   {"friction", s.contact.friction},
+                  {"friction_model", physics::friction_model_name(s.contact.friction_model)},
                   {"chordal_deviation_m", s.contact.chordal_deviation_m},
                   {"max_flank_departure_m", s.contact.max_flank_departure_m},
                   {"coherent_search", s.contact.coherent_search},

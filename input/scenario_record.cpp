@@ -183,6 +183,13 @@ physics::ContactDef contact_of(const Node& n) {
   c.stiffness_N_per_m_per_m = n.number("stiffness_N_per_m_per_m");
   c.damping_ratio = n.number("damping_ratio");
   c.friction = n.number("friction");
+  // Records written before the key existed ran the stick–slip rows.
+  c.friction_model = physics::ContactDef::FrictionModel::stick_slip;
+  if (n.has("friction_model")) {
+    const std::string fm = n.string("friction_model");
+    if (fm != "sliding" && fm != "stick_slip") n.fail("friction_model", "expected sliding or stick_slip");
+    c.friction_model = fm == "sliding" ? physics::ContactDef::FrictionModel::sliding : physics::ContactDef::FrictionModel::stick_slip;
+  }
   c.chordal_deviation_m = n.number_within("chordal_deviation_m", limits::kChordalDeviation_m);
   c.max_flank_departure_m = n.number("max_flank_departure_m");
   // Records written before the key existed ran the stateless search.

@@ -119,7 +119,7 @@ int solve_row_lcp(int n, const double* A, const double* b, const double* lo, con
       const double l = findex[i] >= 0 ? lo[i] * x[findex[i]] : lo[i], h = findex[i] >= 0 ? hi[i] * x[findex[i]] : hi[i];
       RowBound to = state[i];
       double by = 0;
-      if (findex[i] < 0 && !(hi[i] > lo[i])) {  // a row held at one value (lo = hi): every w is allowed there
+      if (!(hi[i] > lo[i])) {  // a row held at one value (lo = hi; friction: one multiple of its normal): every w is allowed there
         if (state[i] == RowBound::free) state[i] = RowBound::lower, settled = false;
         continue;
       }

@@ -3,7 +3,7 @@
 // (btSolveDantzigLCP): find x, w with A·x = b + w and, per row i,
 //   x_i = lo_i ⇒ w_i ≥ 0,   x_i = hi_i ⇒ w_i ≤ 0,   lo_i < x_i < hi_i ⇒ w_i = 0;
 // a row with findex[i] ≥ 0 (friction) has the bounds lo_i·x_f … hi_i·x_f of row f = findex[i] (its
-// normal, x_f ≥ 0), lo_i = −hi_i. The rows keep their bound states from step to step (the same
+// normal, x_f ≥ 0), lo_i = −hi_i, or lo_i = hi_i for a friction impulse fixed at that multiple. The rows keep their bound states from step to step (the same
 // tooth contacts slide the same way), so one linear solve usually settles a step where Dantzig's
 // pivoting adds the rows one by one.
 #pragma once

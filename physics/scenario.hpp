@@ -174,6 +174,18 @@ struct ContactDef {
   std::vector<PairMeshStiffnessDef> mesh_stiffnesses;  // pairs with a constant mesh stiffness
   double damping_ratio = 0.05;  // of the pair's critical damping along the line of action
   double friction = 0.0;        // Coulomb coefficient on the flanks
+  // How the multibody engine applies it (docs/solver.md, "Friction at the pitch point").
+  // `sliding`: μ·λ_n against the sliding velocity, whose sign over the step is taken from the
+  // contact's slip at the step's start and its change over the last step; in the step where the
+  // slip reverses (the pitch point) the impulse is μ·λ_n times the share of the step on each side
+  // of the reversal. No sticking: gear flanks slide by their kinematics everywhere but at the
+  // pitch point. `stick_slip`: one friction row per contact with the bounds ±μ·λ_n, which sticks
+  // where the step's impulse can stop the slip (a band of steps around the pitch point, the same
+  // number of steps whatever their length) and reverses at the first step that ends sliding the
+  // other way: the reversal's timing is quantised to the step, and the paper's faulty set
+  // converges slowly in the step with it (the default until 2026-11-27). Both tend to the same
+  // answer as the step shrinks. rigid_bodies: Bullet's friction, stick_slip (the parser sets it).
+  enum class FrictionModel { sliding, stick_slip } friction_model = FrictionModel::sliding;
   // Chordal deviation of the outline the flank tables are built from. The tables interpolate
   // the outline's vertices (which lie on the true flanks) with cubics, so the default outline
   // already resolves depths to ~2 nm (tests/physics/test_tooth_contact.cpp).
@@ -229,6 +241,7 @@ struct SolverDef {
 
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }
 inline const char* row_solver_name(SolverDef::RowSolver r) { return r == SolverDef::RowSolver::dantzig ? "dantzig" : "active_set"; }
+inline const char* friction_model_name(ContactDef::FrictionModel f) { return f == ContactDef::FrictionModel::stick_slip ? "stick_slip" : "sliding"; }
 inline const char* integrator_name(SolverDef::Integrator i) {
   return i == SolverDef::Integrator::bdf2 ? "bdf2" : i == SolverDef::Integrator::trapezoid_closed ? "trapezoid_closed" : "theta";
 }

@@ -39,6 +39,12 @@ constexpr int kShapelessGroup = 1 << 8;
 // ratios below 4. Extra pairs (never seen in a healthy mesh) are dropped and counted.
 constexpr int kMaxPointsPerPair = 4;
 
+// contact.friction_model sliding (world_multibody.cpp): the step is solved again while a friction
+// share differs from the one its end slip asks for by more than kSlipShareTolerance (an impulse
+// error of that fraction of μ·λ_n·h), at most kSlipRounds times.
+constexpr int kSlipRounds = 30;
+constexpr double kSlipShareTolerance = 1e-6;
+
 using WorldClock = std::chrono::steady_clock;
 inline double seconds_since(WorldClock::time_point t) {
   return std::chrono::duration<double>(WorldClock::now() - t).count();
@@ -114,6 +120,11 @@ struct MultibodyEngine {
   btDantzigScratchMemory dantzig;
   std::vector<double> buf, out;  // 6 + dofs
   std::vector<double> v_start, v_end, v_mid;  // joint velocities at the step's start, end, mean
+  bool sliding_friction = false;  // contact.friction_model sliding
+  // sliding: per row, its slip's change over the step by the contact's travel (slip_drift()), m/s;
+  // each friction row's tooth pair and slip at the step's end, this step's and the last's.
+  std::vector<double> slip_drift;
+  std::vector<std::pair<std::tuple<int, int, int, int>, double>> slip_end, slip_end_before;
   bool planar = false;            // every joint axis along z: rows from link_jac (world_multibody.cpp)
   std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
@@ -195,6 +206,9 @@ struct World::Impl {
   MultibodyRow spring_row(double k, double c, double force0) const;
   double trapezoid_closed_theta();
   void solve_multibody_rows();
+  bool solve_rows_dantzig_fixed_friction();
+  std::tuple<int, int, int, int> friction_key(int row) const;
+  double slip_drift(int row, double slip_start_m_s) const;
   bool solve_rows_active_set();
   void multibody_results();
 };

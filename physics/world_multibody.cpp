@@ -132,6 +132,7 @@ void World::Impl::build_multibody() {
   e.theta = e.bdf2 ? 1.0 : e.trapezoid_closed ? 0.5 : scenario.solver.theta;
   e.h_eff = scenario.solver.time_step_s;
   e.active_set = scenario.solver.row_solver == SolverDef::RowSolver::active_set;
+  e.sliding_friction = scenario.contact.friction_model == ContactDef::FrictionModel::sliding;
   e.planar = true;
   for (const JointRec& jr : joints) e.planar = e.planar && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
   e.out.assign(static_cast<std::size_t>(6 + e.dofs), 0);
@@ -361,6 +362,39 @@ void World::Impl::multibody_rows() {
   e.jac = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(jrows.data(), static_cast<Eigen::Index>(e.rows.size()), dofs);
 }
 
+// contact.friction_model sliding: the mean over the step of the sign of a slip that runs linearly
+// from s0 at the step's start to s1 at its end (the θ-method's velocities are linear over the
+// step): where it changes sign the step is shared at the crossing, φ = s0 / (s0 − s1) on the first
+// side, φ·sgn(s0) + (1 − φ)·sgn(s1). Continuous in s1 for s0 ≠ 0.
+double sliding_share(double s0, double s1) {
+  const auto sign = [](double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; };
+  if (s0 != 0 && s1 != 0 && (s0 > 0) != (s1 > 0)) {
+    const double phi = s0 / (s0 - s1);
+    return phi * sign(s0) + (1 - phi) * sign(s1);
+  }
+  return s0 != 0 ? sign(s0) : sign(s1);
+}
+
+// The tooth pair of friction row i (pair, tooth_a, tooth_b, flank_a).
+std::tuple<int, int, int, int> World::Impl::friction_key(int i) const {
+  const ContactSample& c = contacts[static_cast<std::size_t>(mb->rows[static_cast<std::size_t>(i)].owner)];
+  return {c.pair, c.geometry.tooth_a, c.geometry.tooth_b, static_cast<int>(c.geometry.flank_a)};
+}
+
+// contact.friction_model sliding: how friction row i's slip changes over a step by the contact
+// point's travel along the flanks, m/s. The rows are linearised at the step's start: within the
+// step the slip they measure changes only with the velocities, while the contact point, and with
+// it the sliding speed (ω_a ± ω_b)·(its distance from the pitch point), moves on; the next step's
+// rows see that move as a jump from this step's end slip to its start slip. The last such jump
+// (this step's start slip less the last step's end slip, same tooth pair) is taken as this
+// step's: geometry changes smoothly. 0 for a contact new this step.
+double World::Impl::slip_drift(int i, double s0) const {
+  const std::tuple<int, int, int, int> key = friction_key(i);
+  for (const auto& [k, s] : mb->slip_end_before)
+    if (k == key) return s0 - s;
+  return 0;
+}
+
 // λ from (J·M⁻¹·Jᵀ + Γ)·λ = target − J·v* + w (Dantzig), then v⁺ = v* + M⁻¹·Jᵀ·λ.
 void World::Impl::solve_multibody_rows() {
   MultibodyEngine& e = *mb;
@@ -389,6 +423,7 @@ void World::Impl::solve_multibody_rows() {
   e.lo.resize(static_cast<std::size_t>(n));
   e.hi.resize(static_cast<std::size_t>(n));
   e.findex.resize(static_cast<std::size_t>(n));
+  e.slip_drift.assign(static_cast<std::size_t>(n), 0.0);
   for (int i = 0; i < n; ++i) {
     const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
     // Rows without a spring (friction sticking, a motor) get a compliance of kStiffRow times their
@@ -401,18 +436,105 @@ void World::Impl::solve_multibody_rows() {
     e.lo[static_cast<std::size_t>(i)] = r.lo;
     e.hi[static_cast<std::size_t>(i)] = r.hi;
     e.findex[static_cast<std::size_t>(i)] = r.friction_of;
+    // sliding: a contact sliding at the step's start is solved with μ·λ_n against that slip
+    // first (a fixed multiple of its normal: lo = hi); one starting without slip keeps the box.
+    if (e.sliding_friction) e.slip_drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i)) : 0.0;
+    if (e.sliding_friction && r.kind == MultibodyRow::contact_friction && j_v_start(i) != 0)
+      e.lo[static_cast<std::size_t>(i)] = e.hi[static_cast<std::size_t>(i)] = -r.hi * sliding_share(j_v_start(i), j_v_start(i));  // r.hi = μ
   }
   bool solved = e.active_set && solve_rows_active_set();
   if (!solved) {
     ++profile.dantzig_solves;
     const std::lock_guard<std::mutex> lock(dantzig_flag);
-    solved = btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig);
+    solved = e.sliding_friction ? solve_rows_dantzig_fixed_friction()
+                                : btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig);
+  }
+  // sliding: where the slip at the step's end, s1 = J·(v* + M⁻¹·Jᵀ·λ), has the other sign, the
+  // friction is shared at the crossing (sliding_share) and the rows solved again, until the shares
+  // agree with the slips they produce. A share moves the slip it is computed from against itself
+  // (friction opposes the slip), with a gain that can pass 1 near the crossing: each round moves
+  // the shares half way (error × ≤ 1/2 for gains up to 2).
+  Eigen::Map<Eigen::VectorXd> dv(e.buf.data() + 6, dofs);
+  for (int round = 0; e.sliding_friction && solved && round < kSlipRounds; ++round) {
+    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
+    bool changed = false;
+    for (int i = 0; i < n; ++i) {
+      const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
+      const std::size_t at = static_cast<std::size_t>(i);
+      if (r.kind != MultibodyRow::contact_friction || j_v_start(i) == 0) continue;
+      const double s1 = j_v(i) + e.jac.row(i).dot(dv) + e.slip_drift[at];
+      const double now = -e.lo[at] / r.hi, want = sliding_share(j_v_start(i), s1);
+      if (std::abs(want - now) <= kSlipShareTolerance) continue;
+      const double share = round == 0 ? want : 0.5 * (now + want);
+      e.lo[at] = e.hi[at] = -r.hi * share;
+      changed = true;
+    }
+    if (!changed) break;
+    ++profile.friction_rounds;
+    if (e.active_set && solve_row_lcp(n, e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(), e.x.data(), e.row_states.data(), e.lcp) > 0)
+      continue;
+    const std::lock_guard<std::mutex> lock(dantzig_flag);
+    solved = solve_rows_dantzig_fixed_friction();
   }
   if (!solved) ++e.failed_solves;
+  if (e.sliding_friction) {  // each contact's slip at the step's end on this step's rows, for the next step's drift
+    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
+    std::swap(e.slip_end_before, e.slip_end);
+    e.slip_end.clear();
+    for (int i = 0; i < n; ++i)
+      if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(friction_key(i), j_v(i) + e.jac.row(i).dot(dv));
+  }
   const Eigen::Map<const Eigen::VectorXd> lambda(e.x.data(), n);
   std::fill(e.buf.begin(), e.buf.end(), 0.0);
   Eigen::Map<Eigen::VectorXd>(e.buf.data() + 6, dofs).noalias() = e.minv_jt * lambda;
   t.applyDeltaVeeMultiDof(e.buf.data(), 1);
+}
+
+// Dantzig for rows some of which are friction fixed at a multiple of their normal's impulse
+// (contact.friction_model sliding: lo = hi on a row with findex ≥ 0). Bullet's solver takes such a
+// row's bounds as ±|hi·x_f|, a box, so the fixed rows leave its problem: their impulses c·x_f,
+// with x_f from the last round, move to the others' right-hand side, and rounds repeat until the
+// impulses settle (each round changes the normals by about μ times the last change: a
+// contraction). The caller holds dantzig_flag. false when a round fails or they do not settle.
+bool World::Impl::solve_rows_dantzig_fixed_friction() {
+  MultibodyEngine& e = *mb;
+  const int n = static_cast<int>(e.rows.size());
+  const auto at = [](int i) { return static_cast<std::size_t>(i); };
+  std::vector<int> kept, fixed, slot(at(n), -1);
+  for (int i = 0; i < n; ++i) {
+    if (e.findex[at(i)] >= 0 && !(e.hi[at(i)] > e.lo[at(i)])) fixed.push_back(i);
+    else slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
+  }
+  const int m = static_cast<int>(kept.size());
+  std::vector<double> a(at(m) * at(m)), b(at(m)), x(at(m)), w(at(m)), lo(at(m)), hi(at(m));
+  std::vector<int> findex(at(m));
+  std::fill(e.x.begin(), e.x.begin() + n, 0.0);
+  constexpr int kRounds = 50;
+  for (int round = 0; round < kRounds; ++round) {
+    for (const int t : fixed) e.x[at(t)] = e.lo[at(t)] * e.x[at(e.findex[at(t)])];
+    for (int r = 0; r < m; ++r) {
+      const int i = kept[at(r)];
+      for (int c = 0; c < m; ++c) a[at(r) * at(m) + at(c)] = e.a[at(i) * at(n) + at(kept[at(c)])];
+      b[at(r)] = e.b[at(i)];
+      for (const int t : fixed) b[at(r)] -= e.a[at(i) * at(n) + at(t)] * e.x[at(t)];
+      lo[at(r)] = e.lo[at(i)], hi[at(r)] = e.hi[at(i)];
+      findex[at(r)] = e.findex[at(i)] >= 0 ? slot[at(e.findex[at(i)])] : -1;
+      x[at(r)] = 0, w[at(r)] = 0;
+    }
+    if (!btSolveDantzigLCP(m, a.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(), findex.data(), e.dantzig)) return false;
+    double change = 0, scale = 0;
+    for (int r = 0; r < m; ++r) {
+      const std::size_t i = at(kept[at(r)]);
+      change = std::max(change, std::abs(x[at(r)] - e.x[i]));
+      scale = std::max(scale, std::abs(x[at(r)]));
+      e.x[i] = x[at(r)];
+    }
+    if (change <= 1e-12 * scale) {
+      for (const int t : fixed) e.x[at(t)] = e.lo[at(t)] * e.x[at(e.findex[at(t)])];
+      return true;
+    }
+  }
+  return false;
 }
 
 // Forces, motor torques and power flows of the step just taken (velocities after it).
