@@ -109,6 +109,14 @@ TEST(ScenarioErrors, TheRowSolverIsOneOfTwoAndTheMultibodyEnginesOnly) {
   EXPECT_EQ(error_for(kGood + "solver: {row_solver: dantzig}\n"), "");
 }
 
+TEST(ScenarioErrors, TheFrictionModelIsOneOfTwoAndTheMultibodyEnginesOnly) {
+  EXPECT_NAMES(error_for(kGood + "contact: {friction_model: viscous}\n"), "bad.yaml:11:", "contact.friction_model", "sliding", "stick_slip",
+               "viscous");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\ncontact: {friction_model: sliding}\n"), "contact.friction_model",
+               "only engine multibody");
+  EXPECT_EQ(error_for(kGood + "contact: {friction_model: stick_slip}\n"), "");
+}
+
 TEST(ScenarioErrors, DuplicateBodyName) {
   EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")),
                "bodies[1].name", "a second body named 'wheel'");

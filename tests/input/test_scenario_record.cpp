@@ -104,6 +104,25 @@ TEST(ScenarioRecord, TheRowSolverReadsBack) {
   EXPECT_NE(error_of(j).find("solver.row_solver"), std::string::npos) << error_of(j);
 }
 
+TEST(ScenarioRecord, TheFrictionModelReadsBack) {
+  // contact.friction_model: sliding (the multibody default) and stick_slip read back; a record
+  // written before the key existed ran the stick–slip rows; rigid_bodies records stick_slip
+  // (Bullet's friction box).
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_EQ(s.contact.friction_model, physics::ContactDef::FrictionModel::sliding);
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_EQ(j["contact"]["friction_model"], "sliding");
+  EXPECT_EQ(scenario_from_json(j, "rec.json").contact.friction_model, physics::ContactDef::FrictionModel::sliding);
+  j["contact"]["friction_model"] = "stick_slip";
+  EXPECT_EQ(scenario_from_json(j, "rec.json").contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
+  j["contact"].erase("friction_model");
+  EXPECT_EQ(scenario_from_json(j, "rec.json").contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
+  j["contact"]["friction_model"] = "viscous";
+  EXPECT_NE(error_of(j).find("contact.friction_model"), std::string::npos) << error_of(j);
+  const physics::Scenario rigid = load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"});
+  EXPECT_EQ(rigid.contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
+}
+
 TEST(ScenarioRecord, TheContinuationReadsBack) {
   // contact.continued_search: on by default, off without the coherent search; a record written
   // before the key existed ran without it.
