@@ -124,6 +124,13 @@ struct MultibodyEngine {
   // sliding: per row, its slip's change over the step by the contact's travel (slip_drift()), m/s;
   // each friction row's tooth pair and slip at the step's end, this step's and the last's.
   std::vector<double> slip_drift;
+  // sliding: per row, the bracket of its friction share's root (world_multibody.cpp): the shares
+  // below and above it tried so far and the g they gave (g_lo > 0 > g_hi once both are known).
+  struct SlipBracket {
+    double lo = -1, g_lo = 0, hi = 1, g_hi = 0;
+    int last = 0;  // which end the last round moved: +1 lo, −1 hi
+  };
+  std::vector<SlipBracket> slip_brackets;
   std::vector<std::pair<std::tuple<int, int, int, int>, double>> slip_end, slip_end_before;
   bool planar = false;            // every joint axis along z: rows from link_jac (world_multibody.cpp)
   std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs
@@ -208,7 +215,7 @@ struct World::Impl {
   void solve_multibody_rows();
   bool solve_rows_dantzig_fixed_friction();
   std::tuple<int, int, int, int> friction_key(int row) const;
-  double slip_drift(int row, double slip_start_m_s) const;
+  double slip_drift(int row, double slip_start_m_s, std::size_t& hint) const;
   bool solve_rows_active_set();
   void multibody_results();
 };

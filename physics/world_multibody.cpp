@@ -388,10 +388,12 @@ std::tuple<int, int, int, int> World::Impl::friction_key(int i) const {
 // rows see that move as a jump from this step's end slip to its start slip. The last such jump
 // (this step's start slip less the last step's end slip, same tooth pair) is taken as this
 // step's: geometry changes smoothly. 0 for a contact new this step.
-double World::Impl::slip_drift(int i, double s0) const {
+double World::Impl::slip_drift(int i, double s0, std::size_t& hint) const {
   const std::tuple<int, int, int, int> key = friction_key(i);
-  for (const auto& [k, s] : mb->slip_end_before)
-    if (k == key) return s0 - s;
+  const auto& before = mb->slip_end_before;
+  if (hint < before.size() && before[hint].first == key) return s0 - before[hint++].second;  // where the last step had it, usually
+  for (std::size_t j = 0; j < before.size(); ++j)
+    if (before[j].first == key) return hint = j + 1, s0 - before[j].second;
   return 0;
 }
 
@@ -424,6 +426,7 @@ void World::Impl::solve_multibody_rows() {
   e.hi.resize(static_cast<std::size_t>(n));
   e.findex.resize(static_cast<std::size_t>(n));
   e.slip_drift.assign(static_cast<std::size_t>(n), 0.0);
+  std::size_t drift_hint = 0;
   for (int i = 0; i < n; ++i) {
     const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
     // Rows without a spring (friction sticking, a motor) get a compliance of kStiffRow times their
@@ -438,7 +441,7 @@ void World::Impl::solve_multibody_rows() {
     e.findex[static_cast<std::size_t>(i)] = r.friction_of;
     // sliding: a contact sliding at the step's start is solved with μ·λ_n against that slip
     // first (a fixed multiple of its normal: lo = hi); one starting without slip keeps the box.
-    if (e.sliding_friction) e.slip_drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i)) : 0.0;
+    if (e.sliding_friction) e.slip_drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i), drift_hint) : 0.0;
     if (e.sliding_friction && r.kind == MultibodyRow::contact_friction && j_v_start(i) != 0)
       e.lo[static_cast<std::size_t>(i)] = e.hi[static_cast<std::size_t>(i)] = -r.hi * sliding_share(j_v_start(i), j_v_start(i));  // r.hi = μ
   }
@@ -449,12 +452,14 @@ void World::Impl::solve_multibody_rows() {
     solved = e.sliding_friction ? solve_rows_dantzig_fixed_friction()
                                 : btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig);
   }
-  // sliding: where the slip at the step's end, s1 = J·(v* + M⁻¹·Jᵀ·λ), has the other sign, the
-  // friction is shared at the crossing (sliding_share) and the rows solved again, until the shares
-  // agree with the slips they produce. A share moves the slip it is computed from against itself
-  // (friction opposes the slip), with a gain that can pass 1 near the crossing: each round moves
-  // the shares half way (error × ≤ 1/2 for gains up to 2).
+  // sliding: where the slip at the step's end, s1 = J·(v* + M⁻¹·Jᵀ·λ) plus its drift, has the other
+  // sign, the friction is shared at the crossing (sliding_share) and the rows solved again, until
+  // each share agrees with the slip it produces. A share moves that slip against itself (friction
+  // opposes the slip), so g(share) = sliding_share(s0, s1(share)) − share falls strictly with the
+  // share and has one root in [−1, 1]: found per row by regula falsi with the Illinois rule on a
+  // bracket each round's g narrows (other rows held: the coupling between contacts is weak).
   Eigen::Map<Eigen::VectorXd> dv(e.buf.data() + 6, dofs);
+  if (e.sliding_friction) e.slip_brackets.assign(static_cast<std::size_t>(n), MultibodyEngine::SlipBracket{});
   for (int round = 0; e.sliding_friction && solved && round < kSlipRounds; ++round) {
     dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
     bool changed = false;
@@ -463,9 +468,19 @@ void World::Impl::solve_multibody_rows() {
       const std::size_t at = static_cast<std::size_t>(i);
       if (r.kind != MultibodyRow::contact_friction || j_v_start(i) == 0) continue;
       const double s1 = j_v(i) + e.jac.row(i).dot(dv) + e.slip_drift[at];
-      const double now = -e.lo[at] / r.hi, want = sliding_share(j_v_start(i), s1);
-      if (std::abs(want - now) <= kSlipShareTolerance) continue;
-      const double share = round == 0 ? want : 0.5 * (now + want);
+      const double now = -e.lo[at] / r.hi, want = sliding_share(j_v_start(i), s1), g = want - now;
+      if (std::abs(g) <= kSlipShareTolerance) continue;
+      MultibodyEngine::SlipBracket& br = e.slip_brackets[at];
+      if (g > 0) {
+        if (br.last > 0) br.g_hi *= 0.5;  // the other end kept twice: Illinois
+        br.lo = now, br.g_lo = g, br.last = 1;
+      } else {
+        if (br.last < 0) br.g_lo *= 0.5;
+        br.hi = now, br.g_hi = g, br.last = -1;
+      }
+      double share = want;
+      if (br.g_lo > 0 && br.g_hi < 0) share = (br.lo * br.g_hi - br.hi * br.g_lo) / (br.g_hi - br.g_lo);
+      if (!(share > br.lo && share < br.hi)) share = 0.5 * (br.lo + br.hi);
       e.lo[at] = e.hi[at] = -r.hi * share;
       changed = true;
     }
