@@ -117,8 +117,8 @@ int main(int argc, char** argv) {
   if (r.profile.row_solve_s > 0) {
     const double rows = r.profile.row_solve_s;
     std::printf("    of it rows + solve  %8.3f s (%.0f %%, %.1f us per step: Jacobians, M⁻¹, the solve)\n", rows, 100 * rows / wall, 1e6 * rows / n);
-    std::printf("    row solves          %ld by the active set, %ld by Dantzig, %ld again at slip reversals\n", r.profile.active_set_solves,
-                r.profile.dantzig_solves, r.profile.friction_rounds);
+    std::printf("    row solves          %ld by the active set, %ld by Dantzig, %ld again at slip reversals; %ld steps split at contact onsets\n",
+                r.profile.active_set_solves, r.profile.dantzig_solves, r.profile.friction_rounds, r.profile.onset_splits);
   }
   std::printf("  bounds, means, logs   %8.3f s (%.0f %%, %.1f us per step)\n", rest, 100 * rest / wall, 1e6 * rest / n);
   if (a.log) std::printf("per-step log            %8.1f MB per simulated second\n", log_bytes / sim_s / 1e6);

@@ -288,7 +288,7 @@ void CoherentToothSearch::reset() {
 }
 
 void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
-                               std::vector<ToothContact>& best) {
+                               std::vector<ToothContact>& best, std::vector<ToothContact>* near) {
   if (tables_[0] != &ta || tables_[1] != &tb) {
     tables_[0] = &ta, tables_[1] = &tb;
     records_[0].assign(static_cast<std::size_t>(ta.teeth()) * 2, FlankRecord{});
@@ -300,6 +300,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
   ++calls_;
   const Frame a{ta, pa}, b{tb, pb};
   best.clear();
+  if (near) near->clear();
   // As find_tooth_contacts(), flank by flank, but a flank whose record still holds is skipped or
   // probed only where it can hold its deepest sample.
   for (int pass = 0; pass < 2; ++pass) {
@@ -319,8 +320,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         FlankRecord& rec = records[at];
         Solution& sol = solutions_[pass][at];
         auto emit = [&](const Hit& h) {
-          if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
-          else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
+          if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true, near);
+          else keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
         };
         Hit continued;  // depth kNone: none
         if (continuation_ != Continuation::off && sol.solved != 0 && sol.call + 1 == calls_) {
@@ -356,6 +357,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     });
   }
   sort_contacts(best);
+  finish_near(best, near);
 }
 
 }  // namespace gearsim::contact

@@ -21,8 +21,9 @@ class CoherentToothSearch {
  public:
   // The contacts find_tooth_contacts(a, pa, b, pb, out) returns, into `out` (cleared first). The
   // tables must outlive the object; other tables than the last call's start it afresh.
+  // With `near`: the near pairs find_tooth_contacts() gives there.
   void find(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb,
-            std::vector<ToothContact>& out);
+            std::vector<ToothContact>& out, std::vector<ToothContact>* near = nullptr);
   // Forget every measurement: the next call searches every flank.
   void reset();
 

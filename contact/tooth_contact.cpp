@@ -14,10 +14,11 @@ std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const Planar
 }
 
 void find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
-                         std::vector<ToothContact>& best) {
+                         std::vector<ToothContact>& best, std::vector<ToothContact>* near) {
   const Frame a{ta, pa}, b{tb, pb};
   // One per (tooth_a, tooth_b, flank of a): the deepest of both probing directions.
   best.clear();
+  if (near) near->clear();
   for (int pass = 0; pass < 2; ++pass) {
     const Frame& x = pass == 0 ? a : b;
     const Frame& y = pass == 0 ? b : a;
@@ -32,12 +33,13 @@ void find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const Flank
         const Hit h = deepest_on_flank(xy, k, f, pass == 1, hint);
         if (h.tooth_y < 0) continue;
         // Name the contact by a's tooth and the flank of a that is touched.
-        if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true);
-        else keep_contact(best, h.tooth_y, k, h.flank_y, h, false);
+        if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true, near);
+        else keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
       }
     });
   }
   sort_contacts(best);
+  finish_near(best, near);
 }
 
 }  // namespace gearsim::contact

@@ -23,15 +23,18 @@ struct ToothContact {
   Flank flank_a = Flank::Ccw;           // which flank of a's tooth is touched
   Eigen::Vector2d point_m;              // mid-point of the overlap, plane coordinates
   Eigen::Vector2d normal_on_b;          // unit, from b toward a (pushes a away from b)
-  double depth_m = 0;                   // penetration, > 0
+  double depth_m = 0;                   // penetration, > 0 (a near pair's gap: ≤ 0)
 };
 
 // All tooth-pair contacts between gear a and gear b, at most one per (tooth_a, tooth_b).
 std::vector<ToothContact> find_tooth_contacts(const FlankTable& a, const PlanarPose& pa,
                                               const FlankTable& b, const PlanarPose& pb);
-// The same into `out` (cleared first), which keeps its storage from call to call.
+// The same into `out` (cleared first), which keeps its storage from call to call. With `near`,
+// also the tooth pairs whose refinement measured a gap (depth ≤ 0, ToothContact::depth_m then
+// the gap's negative, within a few µm of touching: the refinement window of flank_search_impl.hpp)
+// and that do not touch, into `near` (cleared first) in the same order: where contacts may start.
 void find_tooth_contacts(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
-                         const PlanarPose& pb, std::vector<ToothContact>& out);
+                         const PlanarPose& pb, std::vector<ToothContact>& out, std::vector<ToothContact>* near = nullptr);
 
 }  // namespace gearsim::contact
 

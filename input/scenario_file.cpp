@@ -147,8 +147,18 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
       if (s.solver.engine == physics::SolverEngine::rigid_bodies)
         m.fail("row_solver", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
     }
+    if (given(m, "locate_contact_onset")) {
+      s.solver.locate_contact_onset = m.boolean_or("locate_contact_onset", s.solver.locate_contact_onset);
+      if (s.solver.locate_contact_onset && s.solver.engine == physics::SolverEngine::rigid_bodies)
+        m.fail("locate_contact_onset", "only engine multibody splits a step at a contact's onset (rigid_bodies steps Bullet's world whole)");
+      if (s.solver.locate_contact_onset && s.solver.integrator == physics::SolverDef::Integrator::bdf2)
+        m.fail("locate_contact_onset", "integrator bdf2 needs equal steps: set locate_contact_onset: false or another integrator");
+    }
     // rigid_bodies integrates its rows by implicit Euler: the θ-method at θ = 1, as its record says.
     if (s.solver.engine == physics::SolverEngine::rigid_bodies) s.solver.integrator = physics::SolverDef::Integrator::theta;
+    // What runs, as the record says: rigid_bodies and BDF2 never split a step.
+    if (s.solver.engine == physics::SolverEngine::rigid_bodies || s.solver.integrator == physics::SolverDef::Integrator::bdf2)
+      s.solver.locate_contact_onset = false;
     if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
       m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
     m.reject_unknown_keys();

@@ -331,6 +331,9 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
     if (rs != "active_set" && rs != "dantzig") solver.fail("row_solver", "expected active_set or dantzig");
     s.solver.row_solver = rs == "dantzig" ? physics::SolverDef::RowSolver::dantzig : physics::SolverDef::RowSolver::active_set;
   }
+  // Records written before the key existed started contacts at the first step that began with the
+  // teeth overlapping.
+  s.solver.locate_contact_onset = solver.has("locate_contact_onset") && solver.boolean("locate_contact_onset");
   s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
   if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");
   s.contact = contact_of(r.object("contact"));

@@ -116,6 +116,7 @@ class World {
     double row_solve_s = 0;  // multibody: rows, M⁻¹ and the direct solve (part of the rest)
     double step_total_s = 0;
     long active_set_solves = 0, dantzig_solves = 0;  // multibody: steps whose rows each solved
+    long onset_splits = 0;     // multibody, solver.locate_contact_onset: splits of a step at a contact's onset (each adds a search and a solve)
     long friction_rounds = 0;  // multibody, contact.friction_model sliding: solves again to locate slip reversals
   };
   const Profile& profile() const;

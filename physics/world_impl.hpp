@@ -44,6 +44,11 @@ constexpr int kMaxPointsPerPair = 4;
 // error of that fraction of μ·λ_n·h), at most kSlipRounds times.
 constexpr int kSlipRounds = 30;
 constexpr double kSlipShareTolerance = 1e-6;
+// solver.locate_contact_onset (world_multibody.cpp): at most this many splits of one step (a
+// step with more onsets takes the rest late, as without the option), and no piece shorter than
+// this fraction of the step (a pair that close starts with the piece: its onset is late by less).
+constexpr int kMaxOnsetSplits = 4;
+constexpr double kMinOnsetFraction = 0.01;
 
 using WorldClock = std::chrono::steady_clock;
 inline double seconds_since(WorldClock::time_point t) {
@@ -81,6 +86,7 @@ struct PairRec {
   // kMaxPointsPerPair of them, searched in place (no allocation per step).
   std::vector<std::pair<std::tuple<int, int, int>, double>> last_impulse;
   std::vector<contact::ToothContact> found;                            // this step's, kept for its storage
+  std::vector<contact::ToothContact> near;   // this step's near pairs (a gap of a few µm; solver.locate_contact_onset)
   std::vector<double> pair_stiffness;                         // per found contact, N/m (storage kept)
   std::vector<char> active;                                   // per found contact: passed to the solver
   std::vector<contact::ToothContact> current;                          // in manifold point order
@@ -124,6 +130,7 @@ struct MultibodyEngine {
   // sliding: per row, its slip's change over the step by the contact's travel (slip_drift()), m/s;
   // each friction row's tooth pair and slip at the step's end, this step's and the last's.
   std::vector<double> slip_drift;
+  double slip_end_h = 0;
   // sliding: per row, the bracket of its friction share's root (world_multibody.cpp): the shares
   // below and above it tried so far and the g they gave (g_lo > 0 > g_hi once both are known).
   struct SlipBracket {
@@ -143,6 +150,16 @@ struct MultibodyEngine {
   bool trapezoid_closed = false;  // θ per step: ½ while every contact stays closed, else 1
   std::vector<std::tuple<int, int, int, int>> touching, touching_before;  // (pair, tooth_a, tooth_b, flank_a) this step, the last
   double h_eff = 0;                    // this step's h_eff (h for the θ-method)
+  double h_step = 0;                   // this (sub)step's length, s
+  // solver.locate_contact_onset: a step in which a near tooth pair closes is split at the
+  // instant it touches (at most kMaxOnsetSplits times); the sub-steps' impulses summed per
+  // contact (the step's forces: their sum over h), its power flows and motor torques averaged.
+  bool locate_onset = false;
+  struct Accumulated {
+    std::vector<ContactSample> contacts;  // impulse-weighted: normal_force_N · h_sub summed
+    PowerFlows power;
+    std::vector<double> motor_torque;
+  } accumulated;
   std::vector<double> v_prev, v_move;  // BDF2: v at the last step's start; the last step's v_move
   Eigen::VectorXd row_rate_move;       // BDF2: J·v_move of the last step (the spring's extrapolation)
   btAlignedObjectArray<btScalar> scratch_r;
@@ -207,8 +224,12 @@ struct World::Impl {
   void measure_contacts();
   void measure_power();
   double kinetic_energy_J() const;
-  double impulse_power_W() const;
+  double impulse_power_W(double h) const;  // of the pulses in the (sub)step of length h just taken
   void step_multibody();
+  void advance_multibody(double h);  // one (sub)step from the contacts generate_contacts() found
+  double contact_onset_s(double within_s) const;  // when the first near pair touches (≥ within_s: none)
+  void accumulate_substep(double h, bool first);
+  void finish_split_step(double h);
   void multibody_rows();
   MultibodyRow spring_row(double k, double c, double force0) const;
   double trapezoid_closed_theta();

@@ -41,7 +41,7 @@ MultibodyRow World::Impl::spring_row(double k, double c, double force0) const {
 // spread the planet–ring harmonics 3.2 % between dt 2e-5 and 5e-6 s: docs/solver.md.)
 double World::Impl::trapezoid_closed_theta() {
   MultibodyEngine& e = *mb;
-  const double h = scenario.solver.time_step_s;
+  const double h = e.h_step;
   std::swap(e.touching, e.touching_before);
   e.touching.clear();
   double added_J = 0, dissipation_weight_J = 0;  // Σ ½kδ₀² of new contacts, Σ k·(h·ṡ)² of all

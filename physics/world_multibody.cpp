@@ -130,7 +130,8 @@ void World::Impl::build_multibody() {
   e.bdf2 = scenario.solver.integrator == SolverDef::Integrator::bdf2;
   e.trapezoid_closed = scenario.solver.integrator == SolverDef::Integrator::trapezoid_closed;
   e.theta = e.bdf2 ? 1.0 : e.trapezoid_closed ? 0.5 : scenario.solver.theta;
-  e.h_eff = scenario.solver.time_step_s;
+  e.h_eff = e.h_step = scenario.solver.time_step_s;
+  e.locate_onset = scenario.solver.locate_contact_onset && !e.bdf2;  // BDF2's history assumes equal steps
   e.active_set = scenario.solver.row_solver == SolverDef::RowSolver::active_set;
   e.sliding_friction = scenario.contact.friction_model == ContactDef::FrictionModel::sliding;
   e.planar = true;
@@ -151,11 +152,117 @@ void World::Impl::build_multibody() {
 
 void World::Impl::step_multibody() {
   MultibodyEngine& e = *mb;
-  btMultiBody& t = *e.tree;
   const double h = scenario.solver.time_step_s;
-  const bool two_step = e.bdf2 && e.has_history;
-  e.h_eff = two_step ? 2 * h / 3 : h;
   generate_contacts();
+  double onset = e.locate_onset ? contact_onset_s(h) : h;
+  if (!(onset < h)) {
+    advance_multibody(h);
+    ++steps;
+    return;
+  }
+  // Split at each instant a near pair touches, so a contact starts with its spring at rest
+  // instead of found a step late with a depth no work put in (docs/solver.md, "Contact onset").
+  const double start = time;
+  double done = 0;
+  double deepest = max_penetration;
+  for (int split = 0;; ++split) {
+    const bool cut = onset < h - done;
+    const double sub = cut ? onset : h - done;
+    advance_multibody(sub);
+    accumulate_substep(sub, split == 0);
+    done += sub;
+    if (!cut) break;  // the step's last piece
+    ++profile.onset_splits;
+    generate_contacts();
+    deepest = std::max(deepest, max_penetration);
+    onset = split + 1 < kMaxOnsetSplits ? contact_onset_s(h - done) : h;
+  }
+  max_penetration = deepest;
+  time = start + h;
+  finish_split_step(h);
+  ++steps;
+}
+
+// Where to split the rest of a step (within_s long) so that the first near tooth pair to touch,
+// moving at its present rate of approach, touches just before the split: that instant plus
+// kMinOnsetFraction of the step (the pair then overlaps by that much of its approach, which the
+// next search finds, whatever the rate's small change over the piece). within_s when no pair
+// touches before the last such fraction of the rest (it starts late by at most that much).
+double World::Impl::contact_onset_s(double within_s) const {
+  const double margin = kMinOnsetFraction * scenario.solver.time_step_s, hi = within_s - margin;
+  double onset = within_s;
+  for (const PairRec& pr : pairs) {
+    const btRigidBody &ra = *bodies[static_cast<std::size_t>(pr.a)].rigid, &rb = *bodies[static_cast<std::size_t>(pr.b)].rigid;
+    for (const contact::ToothContact& c : pr.near) {
+      const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0), at(c.point_m.x(), c.point_m.y(), ra.getCenterOfMassPosition().z());
+      const btVector3 va = ra.getVelocityInLocalPoint(at - ra.getCenterOfMassPosition());
+      const double closing = -(va - rb.getVelocityInLocalPoint(at - rb.getCenterOfMassPosition())).dot(n);  // d(depth)/dt
+      if (!(closing > 0)) continue;
+      const double t = -c.depth_m / closing + margin;
+      if (t < hi && t < onset) onset = t;
+    }
+  }
+  return onset;
+}
+
+void World::Impl::accumulate_substep(double h, bool first) {
+  MultibodyEngine& e = *mb;
+  MultibodyEngine::Accumulated& acc = e.accumulated;
+  if (first) {
+    acc.contacts.clear();
+    acc.power = PowerFlows{};
+    acc.motor_torque.assign(e.motor_torque_N_m.size(), 0.0);
+  }
+  for (const ContactSample& c : contacts) {
+    auto same = [&](const ContactSample& o) {
+      return o.pair == c.pair && o.geometry.tooth_a == c.geometry.tooth_a && o.geometry.tooth_b == c.geometry.tooth_b &&
+             o.geometry.flank_a == c.geometry.flank_a;
+    };
+    auto it = std::find_if(acc.contacts.begin(), acc.contacts.end(), same);
+    if (it == acc.contacts.end()) {
+      ContactSample z = c;
+      z.normal_force_N = z.friction_force_N = 0;
+      acc.contacts.push_back(z);
+      it = acc.contacts.end() - 1;
+    }
+    it->normal_force_N += c.normal_force_N * h;
+    it->friction_force_N += c.friction_force_N * h;
+    it->geometry = c.geometry;  // the latest sub-step's
+    it->stiffness_N_per_m = c.stiffness_N_per_m;
+  }
+  acc.power.motor_W += power.motor_W * h;
+  acc.power.load_W += power.load_W * h;
+  acc.power.joint_W += power.joint_W * h;
+  acc.power.contact_W += power.contact_W * h;
+  acc.power.impulse_W += power.impulse_W * h;
+  for (std::size_t j = 0; j < acc.motor_torque.size(); ++j) acc.motor_torque[j] += e.motor_torque_N_m[j] * h;
+}
+
+// The step's contacts (every tooth pair that touched in a sub-step, ordered as a step's are),
+// forces, power flows and motor torques from the sub-steps' sums.
+void World::Impl::finish_split_step(double h) {
+  MultibodyEngine& e = *mb;
+  MultibodyEngine::Accumulated& acc = e.accumulated;
+  contacts = acc.contacts;
+  for (ContactSample& c : contacts) c.normal_force_N /= h, c.friction_force_N /= h;
+  std::stable_sort(contacts.begin(), contacts.end(), [](const ContactSample& u, const ContactSample& v) {
+    return std::make_tuple(u.pair, u.geometry.tooth_a, u.geometry.tooth_b, static_cast<int>(u.geometry.flank_a)) <
+           std::make_tuple(v.pair, v.geometry.tooth_a, v.geometry.tooth_b, static_cast<int>(v.geometry.flank_a));
+  });
+  const double kinetic = power.kinetic_J;
+  power = acc.power;
+  power.motor_W /= h, power.load_W /= h, power.joint_W /= h, power.contact_W /= h, power.impulse_W /= h;
+  power.kinetic_J = kinetic;
+  for (std::size_t j = 0; j < acc.motor_torque.size(); ++j) e.motor_torque_N_m[j] = acc.motor_torque[j] / h;
+}
+
+// One step (or sub-step) of length h from the contacts generate_contacts() found at its start.
+void World::Impl::advance_multibody(double h) {
+  MultibodyEngine& e = *mb;
+  btMultiBody& t = *e.tree;
+  const bool two_step = e.bdf2 && e.has_history;
+  e.h_step = h;
+  e.h_eff = two_step ? 2 * h / 3 : h;
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const JointRec& jr = joints[j];
     if (!jr.load) continue;
@@ -222,7 +329,6 @@ void World::Impl::step_multibody() {
     r.setLinearVelocity(tl.getBasis() * e.vel[static_cast<std::size_t>(l) + 1]);
   }
   time += h;
-  ++steps;
   measure_joints();
   multibody_results();
 }
@@ -353,7 +459,7 @@ void World::Impl::multibody_rows() {
       MultibodyRow r;
       r.kind = MultibodyRow::motor;
       r.owner = static_cast<int>(j);
-      r.target = motor_target_rad_s(*jr.motor, time + scenario.solver.time_step_s);  // the speed at the step's end
+      r.target = motor_target_rad_s(*jr.motor, time + e.h_step);  // the speed at the (sub)step's end
       r.lo = -jr.motor->max_torque_N_m * e.h_eff;  // impulses are force × h_eff
       r.hi = jr.motor->max_torque_N_m * e.h_eff;
       jrows[new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;
@@ -441,7 +547,7 @@ void World::Impl::solve_multibody_rows() {
     e.findex[static_cast<std::size_t>(i)] = r.friction_of;
     // sliding: a contact sliding at the step's start is solved with μ·λ_n against that slip
     // first (a fixed multiple of its normal: lo = hi); one starting without slip keeps the box.
-    if (e.sliding_friction) e.slip_drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i), drift_hint) : 0.0;
+    if (e.sliding_friction) e.slip_drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i), drift_hint) * (e.slip_end_h > 0 ? e.h_step / e.slip_end_h : 1.0) : 0.0;
     if (e.sliding_friction && r.kind == MultibodyRow::contact_friction && j_v_start(i) != 0)
       e.lo[static_cast<std::size_t>(i)] = e.hi[static_cast<std::size_t>(i)] = -r.hi * sliding_share(j_v_start(i), j_v_start(i));  // r.hi = μ
   }
@@ -496,6 +602,7 @@ void World::Impl::solve_multibody_rows() {
     dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
     std::swap(e.slip_end_before, e.slip_end);
     e.slip_end.clear();
+    e.slip_end_h = e.h_step;  // the (sub)step these end slips close (the drift is per its length)
     for (int i = 0; i < n; ++i)
       if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(friction_key(i), j_v(i) + e.jac.row(i).dot(dv));
   }
@@ -555,7 +662,7 @@ bool World::Impl::solve_rows_dantzig_fixed_friction() {
 // Forces, motor torques and power flows of the step just taken (velocities after it).
 void World::Impl::multibody_results() {
   MultibodyEngine& e = *mb;
-  const double h = scenario.solver.time_step_s;
+  const double h = e.h_step;
   // Work of a row over the step: its force times its travel, h·J·v_θ (positions moved with v_θ).
   const Eigen::Map<const Eigen::VectorXd> v_end(e.tree->getVelocityVector() + 6, e.dofs), v_start(e.v_start.data(), e.dofs);
   if (e.bdf2) e.v_theta = Eigen::Map<const Eigen::VectorXd>(e.v_move.data(), e.dofs);  // BDF2: positions moved with v_move
@@ -591,7 +698,7 @@ void World::Impl::multibody_results() {
       pw.load_W += load_torque_N_m(*j.load, time - h, speed) * speed;
     }
   pw.kinetic_J = kinetic_energy_J();
-  pw.impulse_W = impulse_power_W();
+  pw.impulse_W = impulse_power_W(h);
   power = pw;
 }
 

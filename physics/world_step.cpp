@@ -24,8 +24,9 @@ void World::Impl::generate_contacts() {
     pr.search.set_continuation(!scenario.contact.continued_search                ? Continuation::off
                                : a.flanks_from_spec && b.flanks_from_spec ? Continuation::replace
                                                                             : Continuation::deeper);
-    if (scenario.contact.coherent_search) pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
-    else contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found);
+    std::vector<contact::ToothContact>* near = mb && mb->locate_onset ? &pr.near : nullptr;
+    if (scenario.contact.coherent_search) pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near);
+    else contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near);
     // A manifold holds kMaxPointsPerPair points; the multibody engine's rows have no such limit.
     if (pr.manifold && static_cast<int>(found.size()) > kMaxPointsPerPair) {
       std::sort(found.begin(), found.end(), [](const contact::ToothContact& x, const contact::ToothContact& y) { return x.depth_m > y.depth_m; });
@@ -208,10 +209,10 @@ long World::failed_solves() const { return impl_->mb ? impl_->mb->failed_solves 
 
 // Power of the force and torque pulses applied in the step just taken (at time − dt), with the
 // bodies' velocities after it, as load_W takes its joint speeds.
-double World::Impl::impulse_power_W() const {
+double World::Impl::impulse_power_W(double h) const {
   double w = 0;
   for (const ImpulseDef& i : scenario.impulses) {
-    const double share = impulse_shape(i, time - scenario.solver.time_step_s);
+    const double share = impulse_shape(i, time - h);
     if (share == 0) continue;
     const btRigidBody& r = *bodies[static_cast<std::size_t>(body_index.at(i.body))].rigid;
     if (r.getInvMass() == 0) continue;
@@ -236,7 +237,7 @@ void World::Impl::measure_power() {
   const double dt = scenario.solver.time_step_s;
   PowerFlows pw;
   pw.kinetic_J = kinetic_energy_J();
-  pw.impulse_W = impulse_power_W();
+  pw.impulse_W = impulse_power_W(scenario.solver.time_step_s);
   for (const JointRec& j : joints) {
     const btRigidBody& a = j.constraint->getRigidBodyA();
     const btRigidBody& b = j.constraint->getRigidBodyB();

@@ -117,6 +117,15 @@ TEST(ScenarioErrors, TheFrictionModelIsOneOfTwoAndTheMultibodyEnginesOnly) {
   EXPECT_EQ(error_for(kGood + "contact: {friction_model: stick_slip}\n"), "");
 }
 
+TEST(ScenarioErrors, LocatingContactOnsetsIsTheMultibodyEnginesWithEqualStepIntegratorsOnly) {
+  EXPECT_NAMES(error_for(kGood + "solver: {locate_contact_onset: 1}\n"), "solver.locate_contact_onset", "expected true or false");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, locate_contact_onset: true}\n"), "solver.locate_contact_onset",
+               "only engine multibody");
+  EXPECT_NAMES(error_for(kGood + "solver: {integrator: bdf2, locate_contact_onset: true}\n"), "solver.locate_contact_onset", "bdf2");
+  EXPECT_EQ(error_for(kGood + "solver: {integrator: bdf2, locate_contact_onset: false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "solver: {integrator: theta, locate_contact_onset: true}\n"), "");
+}
+
 TEST(ScenarioErrors, DuplicateBodyName) {
   EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")),
                "bodies[1].name", "a second body named 'wheel'");

@@ -123,6 +123,23 @@ TEST(ScenarioRecord, TheFrictionModelReadsBack) {
   EXPECT_EQ(rigid.contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
 }
 
+TEST(ScenarioRecord, LocatingContactOnsetsReadsBack) {
+  // solver.locate_contact_onset: true by default for multibody with trapezoid_closed or theta,
+  // recorded false where the run cannot split a step (rigid_bodies, bdf2); a record written
+  // before the key existed ran without it.
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_TRUE(s.solver.locate_contact_onset);
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_EQ(j["solver"]["locate_contact_onset"], true);
+  EXPECT_TRUE(scenario_from_json(j, "rec.json").solver.locate_contact_onset);
+  j["solver"].erase("locate_contact_onset");
+  EXPECT_FALSE(scenario_from_json(j, "rec.json").solver.locate_contact_onset);
+  j["solver"]["locate_contact_onset"] = "yes";
+  EXPECT_NE(error_of(j).find("solver.locate_contact_onset"), std::string::npos) << error_of(j);
+  EXPECT_FALSE(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"}).solver.locate_contact_onset);
+  EXPECT_FALSE(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.integrator=bdf2"}).solver.locate_contact_onset);
+}
+
 TEST(ScenarioRecord, TheContinuationReadsBack) {
   // contact.continued_search: on by default, off without the coherent search; a record written
   // before the key existed ran without it.
