@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 
 #include <chrono>
+#include <mutex>
 #include <map>
 #include <string>
 #include <tuple>
@@ -49,6 +50,9 @@ constexpr double kSlipShareTolerance = 1e-6;
 // this fraction of the step (a pair that close starts with the piece: its onset is late by less).
 constexpr int kMaxOnsetSplits = 4;
 constexpr double kMinOnsetFraction = 0.01;
+
+// Bullet's Dantzig solver's global failure flag: held around every call (world_multibody.cpp).
+std::mutex& dantzig_flag();
 
 using WorldClock = std::chrono::steady_clock;
 inline double seconds_since(WorldClock::time_point t) {
@@ -235,6 +239,7 @@ struct World::Impl {
   double trapezoid_closed_theta();
   void solve_multibody_rows();
   bool solve_rows_dantzig_fixed_friction();
+  bool locate_slip_reversals(bool solved);
   std::tuple<int, int, int, int> friction_key(int row) const;
   double slip_drift(int row, double slip_start_m_s, std::size_t& hint) const;
   bool solve_rows_active_set();

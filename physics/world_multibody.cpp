@@ -17,7 +17,9 @@
 // inverse mass matrix M⁻¹ from the btMultiBody:
 //   tooth contact, normal    unilateral implicit spring–damper (k, c): impulse λ ≥ 0 with
 //                            λ/h = k·δ⁺ + c·δ̇⁺ at the end of the step (δ⁺ = δ − h·J·v⁺)
-//   tooth contact, friction  in-plane tangent, sticking unless |λ_t| would exceed μ·λ_n
+//   tooth contact, friction  in-plane tangent: μ·λ_n against the slip, shared at its reversal
+//                            (contact.friction_model sliding, world_friction.cpp), or sticking
+//                            unless |λ_t| would exceed μ·λ_n (stick_slip)
 //   bearing, radial          two bilateral implicit springs (k_r, c_r) on the bearing centre's
 //                            displacement from its housing
 //   bearing, torsional       one on the spin coordinate, about its start angle
@@ -33,7 +35,6 @@ constexpr double kStiffRow = 1e-8;
 
 // Bullet's Dantzig solver reports failure through one global flag (btDantzigLCP.cpp, s_error):
 // worlds stepped in parallel threads (the Python module releases the GIL) take turns.
-std::mutex dantzig_flag;
 
 void set_joint_velocities(btMultiBody& t, const std::vector<double>& v) {
   for (int l = 0; l < t.getNumLinks(); ++l) t.setJointVelMultiDof(l, v.data() + t.getLink(l).m_dofOffset);
@@ -45,6 +46,13 @@ btVector3 unit_perpendicular(const btVector3& a) {
 }
 
 }  // namespace
+
+// Bullet's Dantzig solver reports failure through one global flag (btDantzigLCP.cpp, s_error):
+// worlds stepped in parallel threads (the Python module releases the GIL) take turns.
+std::mutex& dantzig_flag() {
+  static std::mutex m;
+  return m;
+}
 
 void World::Impl::build_multibody() {
   mb = std::make_unique<MultibodyEngine>();
@@ -148,112 +156,6 @@ void World::Impl::build_multibody() {
     GEARSIM_CHECK((tl.getOrigin() - tb.getOrigin()).length() < 1e-12 && (tl.getBasis().getColumn(0) - tb.getBasis().getColumn(0)).length() < 1e-12,
                   "a multibody link must start at its body's pose");
   }
-}
-
-void World::Impl::step_multibody() {
-  MultibodyEngine& e = *mb;
-  const double h = scenario.solver.time_step_s;
-  generate_contacts();
-  double onset = e.locate_onset ? contact_onset_s(h) : h;
-  if (!(onset < h)) {
-    advance_multibody(h);
-    ++steps;
-    return;
-  }
-  // Split at each instant a near pair touches, so a contact starts with its spring at rest
-  // instead of found a step late with a depth no work put in (docs/solver.md, "Contact onset").
-  const double start = time;
-  double done = 0;
-  double deepest = max_penetration;
-  for (int split = 0;; ++split) {
-    const bool cut = onset < h - done;
-    const double sub = cut ? onset : h - done;
-    advance_multibody(sub);
-    accumulate_substep(sub, split == 0);
-    done += sub;
-    if (!cut) break;  // the step's last piece
-    ++profile.onset_splits;
-    generate_contacts();
-    deepest = std::max(deepest, max_penetration);
-    onset = split + 1 < kMaxOnsetSplits ? contact_onset_s(h - done) : h;
-  }
-  max_penetration = deepest;
-  time = start + h;
-  finish_split_step(h);
-  ++steps;
-}
-
-// Where to split the rest of a step (within_s long) so that the first near tooth pair to touch,
-// moving at its present rate of approach, touches just before the split: that instant plus
-// kMinOnsetFraction of the step (the pair then overlaps by that much of its approach, which the
-// next search finds, whatever the rate's small change over the piece). within_s when no pair
-// touches before the last such fraction of the rest (it starts late by at most that much).
-double World::Impl::contact_onset_s(double within_s) const {
-  const double margin = kMinOnsetFraction * scenario.solver.time_step_s, hi = within_s - margin;
-  double onset = within_s;
-  for (const PairRec& pr : pairs) {
-    const btRigidBody &ra = *bodies[static_cast<std::size_t>(pr.a)].rigid, &rb = *bodies[static_cast<std::size_t>(pr.b)].rigid;
-    for (const contact::ToothContact& c : pr.near) {
-      const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0), at(c.point_m.x(), c.point_m.y(), ra.getCenterOfMassPosition().z());
-      const btVector3 va = ra.getVelocityInLocalPoint(at - ra.getCenterOfMassPosition());
-      const double closing = -(va - rb.getVelocityInLocalPoint(at - rb.getCenterOfMassPosition())).dot(n);  // d(depth)/dt
-      if (!(closing > 0)) continue;
-      const double t = -c.depth_m / closing + margin;
-      if (t < hi && t < onset) onset = t;
-    }
-  }
-  return onset;
-}
-
-void World::Impl::accumulate_substep(double h, bool first) {
-  MultibodyEngine& e = *mb;
-  MultibodyEngine::Accumulated& acc = e.accumulated;
-  if (first) {
-    acc.contacts.clear();
-    acc.power = PowerFlows{};
-    acc.motor_torque.assign(e.motor_torque_N_m.size(), 0.0);
-  }
-  for (const ContactSample& c : contacts) {
-    auto same = [&](const ContactSample& o) {
-      return o.pair == c.pair && o.geometry.tooth_a == c.geometry.tooth_a && o.geometry.tooth_b == c.geometry.tooth_b &&
-             o.geometry.flank_a == c.geometry.flank_a;
-    };
-    auto it = std::find_if(acc.contacts.begin(), acc.contacts.end(), same);
-    if (it == acc.contacts.end()) {
-      ContactSample z = c;
-      z.normal_force_N = z.friction_force_N = 0;
-      acc.contacts.push_back(z);
-      it = acc.contacts.end() - 1;
-    }
-    it->normal_force_N += c.normal_force_N * h;
-    it->friction_force_N += c.friction_force_N * h;
-    it->geometry = c.geometry;  // the latest sub-step's
-    it->stiffness_N_per_m = c.stiffness_N_per_m;
-  }
-  acc.power.motor_W += power.motor_W * h;
-  acc.power.load_W += power.load_W * h;
-  acc.power.joint_W += power.joint_W * h;
-  acc.power.contact_W += power.contact_W * h;
-  acc.power.impulse_W += power.impulse_W * h;
-  for (std::size_t j = 0; j < acc.motor_torque.size(); ++j) acc.motor_torque[j] += e.motor_torque_N_m[j] * h;
-}
-
-// The step's contacts (every tooth pair that touched in a sub-step, ordered as a step's are),
-// forces, power flows and motor torques from the sub-steps' sums.
-void World::Impl::finish_split_step(double h) {
-  MultibodyEngine& e = *mb;
-  MultibodyEngine::Accumulated& acc = e.accumulated;
-  contacts = acc.contacts;
-  for (ContactSample& c : contacts) c.normal_force_N /= h, c.friction_force_N /= h;
-  std::stable_sort(contacts.begin(), contacts.end(), [](const ContactSample& u, const ContactSample& v) {
-    return std::make_tuple(u.pair, u.geometry.tooth_a, u.geometry.tooth_b, static_cast<int>(u.geometry.flank_a)) <
-           std::make_tuple(v.pair, v.geometry.tooth_a, v.geometry.tooth_b, static_cast<int>(v.geometry.flank_a));
-  });
-  const double kinetic = power.kinetic_J;
-  power = acc.power;
-  power.motor_W /= h, power.load_W /= h, power.joint_W /= h, power.contact_W /= h, power.impulse_W /= h;
-  power.kinetic_J = kinetic;
-  for (std::size_t j = 0; j < acc.motor_torque.size(); ++j) e.motor_torque_N_m[j] = acc.motor_torque[j] / h;
 }
 
 // One step (or sub-step) of length h from the contacts generate_contacts() found at its start.
@@ -468,41 +370,6 @@ void World::Impl::multibody_rows() {
   e.jac = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(jrows.data(), static_cast<Eigen::Index>(e.rows.size()), dofs);
 }
 
-// contact.friction_model sliding: the mean over the step of the sign of a slip that runs linearly
-// from s0 at the step's start to s1 at its end (the θ-method's velocities are linear over the
-// step): where it changes sign the step is shared at the crossing, φ = s0 / (s0 − s1) on the first
-// side, φ·sgn(s0) + (1 − φ)·sgn(s1). Continuous in s1 for s0 ≠ 0.
-double sliding_share(double s0, double s1) {
-  const auto sign = [](double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; };
-  if (s0 != 0 && s1 != 0 && (s0 > 0) != (s1 > 0)) {
-    const double phi = s0 / (s0 - s1);
-    return phi * sign(s0) + (1 - phi) * sign(s1);
-  }
-  return s0 != 0 ? sign(s0) : sign(s1);
-}
-
-// The tooth pair of friction row i (pair, tooth_a, tooth_b, flank_a).
-std::tuple<int, int, int, int> World::Impl::friction_key(int i) const {
-  const ContactSample& c = contacts[static_cast<std::size_t>(mb->rows[static_cast<std::size_t>(i)].owner)];
-  return {c.pair, c.geometry.tooth_a, c.geometry.tooth_b, static_cast<int>(c.geometry.flank_a)};
-}
-
-// contact.friction_model sliding: how friction row i's slip changes over a step by the contact
-// point's travel along the flanks, m/s. The rows are linearised at the step's start: within the
-// step the slip they measure changes only with the velocities, while the contact point, and with
-// it the sliding speed (ω_a ± ω_b)·(its distance from the pitch point), moves on; the next step's
-// rows see that move as a jump from this step's end slip to its start slip. The last such jump
-// (this step's start slip less the last step's end slip, same tooth pair) is taken as this
-// step's: geometry changes smoothly. 0 for a contact new this step.
-double World::Impl::slip_drift(int i, double s0, std::size_t& hint) const {
-  const std::tuple<int, int, int, int> key = friction_key(i);
-  const auto& before = mb->slip_end_before;
-  if (hint < before.size() && before[hint].first == key) return s0 - before[hint++].second;  // where the last step had it, usually
-  for (std::size_t j = 0; j < before.size(); ++j)
-    if (before[j].first == key) return hint = j + 1, s0 - before[j].second;
-  return 0;
-}
-
 // λ from (J·M⁻¹·Jᵀ + Γ)·λ = target − J·v* + w (Dantzig), then v⁺ = v* + M⁻¹·Jᵀ·λ.
 void World::Impl::solve_multibody_rows() {
   MultibodyEngine& e = *mb;
@@ -549,114 +416,21 @@ void World::Impl::solve_multibody_rows() {
     // first (a fixed multiple of its normal: lo = hi); one starting without slip keeps the box.
     if (e.sliding_friction) e.slip_drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i), drift_hint) * (e.slip_end_h > 0 ? e.h_step / e.slip_end_h : 1.0) : 0.0;
     if (e.sliding_friction && r.kind == MultibodyRow::contact_friction && j_v_start(i) != 0)
-      e.lo[static_cast<std::size_t>(i)] = e.hi[static_cast<std::size_t>(i)] = -r.hi * sliding_share(j_v_start(i), j_v_start(i));  // r.hi = μ
+      e.lo[static_cast<std::size_t>(i)] = e.hi[static_cast<std::size_t>(i)] = j_v_start(i) > 0 ? -r.hi : r.hi;  // r.hi = μ
   }
   bool solved = e.active_set && solve_rows_active_set();
   if (!solved) {
     ++profile.dantzig_solves;
-    const std::lock_guard<std::mutex> lock(dantzig_flag);
+    const std::lock_guard<std::mutex> lock(dantzig_flag());
     solved = e.sliding_friction ? solve_rows_dantzig_fixed_friction()
                                 : btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig);
   }
-  // sliding: where the slip at the step's end, s1 = J·(v* + M⁻¹·Jᵀ·λ) plus its drift, has the other
-  // sign, the friction is shared at the crossing (sliding_share) and the rows solved again, until
-  // each share agrees with the slip it produces. A share moves that slip against itself (friction
-  // opposes the slip), so g(share) = sliding_share(s0, s1(share)) − share falls strictly with the
-  // share and has one root in [−1, 1]: found per row by regula falsi with the Illinois rule on a
-  // bracket each round's g narrows (other rows held: the coupling between contacts is weak).
-  Eigen::Map<Eigen::VectorXd> dv(e.buf.data() + 6, dofs);
-  if (e.sliding_friction) e.slip_brackets.assign(static_cast<std::size_t>(n), MultibodyEngine::SlipBracket{});
-  for (int round = 0; e.sliding_friction && solved && round < kSlipRounds; ++round) {
-    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
-    bool changed = false;
-    for (int i = 0; i < n; ++i) {
-      const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
-      const std::size_t at = static_cast<std::size_t>(i);
-      if (r.kind != MultibodyRow::contact_friction || j_v_start(i) == 0) continue;
-      const double s1 = j_v(i) + e.jac.row(i).dot(dv) + e.slip_drift[at];
-      const double now = -e.lo[at] / r.hi, want = sliding_share(j_v_start(i), s1), g = want - now;
-      if (std::abs(g) <= kSlipShareTolerance) continue;
-      MultibodyEngine::SlipBracket& br = e.slip_brackets[at];
-      if (g > 0) {
-        if (br.last > 0) br.g_hi *= 0.5;  // the other end kept twice: Illinois
-        br.lo = now, br.g_lo = g, br.last = 1;
-      } else {
-        if (br.last < 0) br.g_lo *= 0.5;
-        br.hi = now, br.g_hi = g, br.last = -1;
-      }
-      double share = want;
-      if (br.g_lo > 0 && br.g_hi < 0) share = (br.lo * br.g_hi - br.hi * br.g_lo) / (br.g_hi - br.g_lo);
-      if (!(share > br.lo && share < br.hi)) share = 0.5 * (br.lo + br.hi);
-      e.lo[at] = e.hi[at] = -r.hi * share;
-      changed = true;
-    }
-    if (!changed) break;
-    ++profile.friction_rounds;
-    if (e.active_set && solve_row_lcp(n, e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(), e.x.data(), e.row_states.data(), e.lcp) > 0)
-      continue;
-    const std::lock_guard<std::mutex> lock(dantzig_flag);
-    solved = solve_rows_dantzig_fixed_friction();
-  }
+  if (e.sliding_friction) solved = locate_slip_reversals(solved);
   if (!solved) ++e.failed_solves;
-  if (e.sliding_friction) {  // each contact's slip at the step's end on this step's rows, for the next step's drift
-    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
-    std::swap(e.slip_end_before, e.slip_end);
-    e.slip_end.clear();
-    e.slip_end_h = e.h_step;  // the (sub)step these end slips close (the drift is per its length)
-    for (int i = 0; i < n; ++i)
-      if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(friction_key(i), j_v(i) + e.jac.row(i).dot(dv));
-  }
   const Eigen::Map<const Eigen::VectorXd> lambda(e.x.data(), n);
   std::fill(e.buf.begin(), e.buf.end(), 0.0);
   Eigen::Map<Eigen::VectorXd>(e.buf.data() + 6, dofs).noalias() = e.minv_jt * lambda;
   t.applyDeltaVeeMultiDof(e.buf.data(), 1);
-}
-
-// Dantzig for rows some of which are friction fixed at a multiple of their normal's impulse
-// (contact.friction_model sliding: lo = hi on a row with findex ≥ 0). Bullet's solver takes such a
-// row's bounds as ±|hi·x_f|, a box, so the fixed rows leave its problem: their impulses c·x_f,
-// with x_f from the last round, move to the others' right-hand side, and rounds repeat until the
-// impulses settle (each round changes the normals by about μ times the last change: a
-// contraction). The caller holds dantzig_flag. false when a round fails or they do not settle.
-bool World::Impl::solve_rows_dantzig_fixed_friction() {
-  MultibodyEngine& e = *mb;
-  const int n = static_cast<int>(e.rows.size());
-  const auto at = [](int i) { return static_cast<std::size_t>(i); };
-  std::vector<int> kept, fixed, slot(at(n), -1);
-  for (int i = 0; i < n; ++i) {
-    if (e.findex[at(i)] >= 0 && !(e.hi[at(i)] > e.lo[at(i)])) fixed.push_back(i);
-    else slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
-  }
-  const int m = static_cast<int>(kept.size());
-  std::vector<double> a(at(m) * at(m)), b(at(m)), x(at(m)), w(at(m)), lo(at(m)), hi(at(m));
-  std::vector<int> findex(at(m));
-  std::fill(e.x.begin(), e.x.begin() + n, 0.0);
-  constexpr int kRounds = 50;
-  for (int round = 0; round < kRounds; ++round) {
-    for (const int t : fixed) e.x[at(t)] = e.lo[at(t)] * e.x[at(e.findex[at(t)])];
-    for (int r = 0; r < m; ++r) {
-      const int i = kept[at(r)];
-      for (int c = 0; c < m; ++c) a[at(r) * at(m) + at(c)] = e.a[at(i) * at(n) + at(kept[at(c)])];
-      b[at(r)] = e.b[at(i)];
-      for (const int t : fixed) b[at(r)] -= e.a[at(i) * at(n) + at(t)] * e.x[at(t)];
-      lo[at(r)] = e.lo[at(i)], hi[at(r)] = e.hi[at(i)];
-      findex[at(r)] = e.findex[at(i)] >= 0 ? slot[at(e.findex[at(i)])] : -1;
-      x[at(r)] = 0, w[at(r)] = 0;
-    }
-    if (!btSolveDantzigLCP(m, a.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(), findex.data(), e.dantzig)) return false;
-    double change = 0, scale = 0;
-    for (int r = 0; r < m; ++r) {
-      const std::size_t i = at(kept[at(r)]);
-      change = std::max(change, std::abs(x[at(r)] - e.x[i]));
-      scale = std::max(scale, std::abs(x[at(r)]));
-      e.x[i] = x[at(r)];
-    }
-    if (change <= 1e-12 * scale) {
-      for (const int t : fixed) e.x[at(t)] = e.lo[at(t)] * e.x[at(e.findex[at(t)])];
-      return true;
-    }
-  }
-  return false;
 }
 
 // Forces, motor torques and power flows of the step just taken (velocities after it).

@@ -1,0 +1,157 @@
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+#include "physics/row_lcp.hpp"
+#include "physics/world_impl.hpp"
+
+// Tooth friction in the multibody engine, contact.friction_model sliding (docs/solver.md,
+// "Friction at the pitch point"): each friction row is a fixed multiple of its normal's impulse,
+// −μ·λ_n times the mean sign of the slip over the step, the reversal at the pitch point shared
+// within the step where it falls.
+
+namespace gearsim::physics {
+namespace {
+
+// contact.friction_model sliding: the mean over the step of the sign of a slip that runs linearly
+// from s0 at the step's start to s1 at its end (the θ-method's velocities are linear over the
+// step): where it changes sign the step is shared at the crossing, φ = s0 / (s0 − s1) on the first
+// side, φ·sgn(s0) + (1 − φ)·sgn(s1). Continuous in s1 for s0 ≠ 0.
+double sliding_share(double s0, double s1) {
+  const auto sign = [](double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; };
+  if (s0 != 0 && s1 != 0 && (s0 > 0) != (s1 > 0)) {
+    const double phi = s0 / (s0 - s1);
+    return phi * sign(s0) + (1 - phi) * sign(s1);
+  }
+  return s0 != 0 ? sign(s0) : sign(s1);
+}
+
+}  // namespace
+
+// The tooth pair of friction row i (pair, tooth_a, tooth_b, flank_a).
+std::tuple<int, int, int, int> World::Impl::friction_key(int i) const {
+  const ContactSample& c = contacts[static_cast<std::size_t>(mb->rows[static_cast<std::size_t>(i)].owner)];
+  return {c.pair, c.geometry.tooth_a, c.geometry.tooth_b, static_cast<int>(c.geometry.flank_a)};
+}
+
+// contact.friction_model sliding: how friction row i's slip changes over a step by the contact
+// point's travel along the flanks, m/s. The rows are linearised at the step's start: within the
+// step the slip they measure changes only with the velocities, while the contact point, and with
+// it the sliding speed (ω_a ± ω_b)·(its distance from the pitch point), moves on; the next step's
+// rows see that move as a jump from this step's end slip to its start slip. The last such jump
+// (this step's start slip less the last step's end slip, same tooth pair) is taken as this
+// step's: geometry changes smoothly. 0 for a contact new this step.
+double World::Impl::slip_drift(int i, double s0, std::size_t& hint) const {
+  const std::tuple<int, int, int, int> key = friction_key(i);
+  const auto& before = mb->slip_end_before;
+  if (hint < before.size() && before[hint].first == key) return s0 - before[hint++].second;  // where the last step had it, usually
+  for (std::size_t j = 0; j < before.size(); ++j)
+    if (before[j].first == key) return hint = j + 1, s0 - before[j].second;
+  return 0;
+}
+
+// After the first solve (`solved`: it found a solution), where a contact's slip at the step's end
+// disagrees with the share its friction was solved with: solved again. Returns whether the last
+// solve found a solution. Records each contact's end slip for the next step's drift.
+bool World::Impl::locate_slip_reversals(bool solved) {
+  MultibodyEngine& e = *mb;
+  const int n = static_cast<int>(e.rows.size()), dofs = e.dofs;
+  const Eigen::VectorXd &j_v = e.row_rate, &j_v_start = e.row_rate_start;
+  // Where the slip at the step's end, s1 = J·(v* + M⁻¹·Jᵀ·λ) plus its drift, has the other
+  // sign, the friction is shared at the crossing (sliding_share) and the rows solved again, until
+  // each share agrees with the slip it produces. A share moves that slip against itself (friction
+  // opposes the slip), so g(share) = sliding_share(s0, s1(share)) − share falls strictly with the
+  // share and has one root in [−1, 1]: found per row by regula falsi with the Illinois rule on a
+  // bracket each round's g narrows (other rows held: the coupling between contacts is weak).
+  Eigen::Map<Eigen::VectorXd> dv(e.buf.data() + 6, dofs);
+  e.slip_brackets.assign(static_cast<std::size_t>(n), MultibodyEngine::SlipBracket{});
+  for (int round = 0; solved && round < kSlipRounds; ++round) {
+    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
+    bool changed = false;
+    for (int i = 0; i < n; ++i) {
+      const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
+      const std::size_t at = static_cast<std::size_t>(i);
+      if (r.kind != MultibodyRow::contact_friction || j_v_start(i) == 0) continue;
+      const double s1 = j_v(i) + e.jac.row(i).dot(dv) + e.slip_drift[at];
+      const double now = -e.lo[at] / r.hi, want = sliding_share(j_v_start(i), s1), g = want - now;
+      if (std::abs(g) <= kSlipShareTolerance) continue;
+      MultibodyEngine::SlipBracket& br = e.slip_brackets[at];
+      if (g > 0) {
+        if (br.last > 0) br.g_hi *= 0.5;  // the other end kept twice: Illinois
+        br.lo = now, br.g_lo = g, br.last = 1;
+      } else {
+        if (br.last < 0) br.g_lo *= 0.5;
+        br.hi = now, br.g_hi = g, br.last = -1;
+      }
+      double share = want;
+      if (br.g_lo > 0 && br.g_hi < 0) share = (br.lo * br.g_hi - br.hi * br.g_lo) / (br.g_hi - br.g_lo);
+      if (!(share > br.lo && share < br.hi)) share = 0.5 * (br.lo + br.hi);
+      e.lo[at] = e.hi[at] = -r.hi * share;
+      changed = true;
+    }
+    if (!changed) break;
+    ++profile.friction_rounds;
+    if (e.active_set && solve_row_lcp(n, e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(), e.x.data(), e.row_states.data(), e.lcp) > 0)
+      continue;
+    const std::lock_guard<std::mutex> lock(dantzig_flag());
+    solved = solve_rows_dantzig_fixed_friction();
+  }
+  {  // each contact's slip at the step's end on this step's rows, for the next step's drift
+    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
+    std::swap(e.slip_end_before, e.slip_end);
+    e.slip_end.clear();
+    e.slip_end_h = e.h_step;  // the (sub)step these end slips close (the drift is per its length)
+    for (int i = 0; i < n; ++i)
+      if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(friction_key(i), j_v(i) + e.jac.row(i).dot(dv));
+  }
+  return solved;
+}
+
+// Dantzig for rows some of which are friction fixed at a multiple of their normal's impulse
+// (contact.friction_model sliding: lo = hi on a row with findex ≥ 0). Bullet's solver takes such a
+// row's bounds as ±|hi·x_f|, a box, so the fixed rows leave its problem: their impulses c·x_f,
+// with x_f from the last round, move to the others' right-hand side, and rounds repeat until the
+// impulses settle (each round changes the normals by about μ times the last change: a
+// contraction). The caller holds dantzig_flag(). false when a round fails or they do not settle.
+bool World::Impl::solve_rows_dantzig_fixed_friction() {
+  MultibodyEngine& e = *mb;
+  const int n = static_cast<int>(e.rows.size());
+  const auto at = [](int i) { return static_cast<std::size_t>(i); };
+  std::vector<int> kept, fixed, slot(at(n), -1);
+  for (int i = 0; i < n; ++i) {
+    if (e.findex[at(i)] >= 0 && !(e.hi[at(i)] > e.lo[at(i)])) fixed.push_back(i);
+    else slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
+  }
+  const int m = static_cast<int>(kept.size());
+  std::vector<double> a(at(m) * at(m)), b(at(m)), x(at(m)), w(at(m)), lo(at(m)), hi(at(m));
+  std::vector<int> findex(at(m));
+  std::fill(e.x.begin(), e.x.begin() + n, 0.0);
+  constexpr int kRounds = 50;
+  for (int round = 0; round < kRounds; ++round) {
+    for (const int t : fixed) e.x[at(t)] = e.lo[at(t)] * e.x[at(e.findex[at(t)])];
+    for (int r = 0; r < m; ++r) {
+      const int i = kept[at(r)];
+      for (int c = 0; c < m; ++c) a[at(r) * at(m) + at(c)] = e.a[at(i) * at(n) + at(kept[at(c)])];
+      b[at(r)] = e.b[at(i)];
+      for (const int t : fixed) b[at(r)] -= e.a[at(i) * at(n) + at(t)] * e.x[at(t)];
+      lo[at(r)] = e.lo[at(i)], hi[at(r)] = e.hi[at(i)];
+      findex[at(r)] = e.findex[at(i)] >= 0 ? slot[at(e.findex[at(i)])] : -1;
+      x[at(r)] = 0, w[at(r)] = 0;
+    }
+    if (!btSolveDantzigLCP(m, a.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(), findex.data(), e.dantzig)) return false;
+    double change = 0, scale = 0;
+    for (int r = 0; r < m; ++r) {
+      const std::size_t i = at(kept[at(r)]);
+      change = std::max(change, std::abs(x[at(r)] - e.x[i]));
+      scale = std::max(scale, std::abs(x[at(r)]));
+      e.x[i] = x[at(r)];
+    }
+    if (change <= 1e-12 * scale) {
+      for (const int t : fixed) e.x[at(t)] = e.lo[at(t)] * e.x[at(e.findex[at(t)])];
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace gearsim::physics
