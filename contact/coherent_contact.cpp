@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "contact/contact_list_impl.hpp"
 #include "contact/flank_search_impl.hpp"
 
 namespace gearsim::contact {

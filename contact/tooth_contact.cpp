@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "contact/contact_list_impl.hpp"
 #include "contact/flank_search_impl.hpp"
 
 namespace gearsim::contact {
