@@ -40,12 +40,12 @@ constexpr int kShapelessGroup = 1 << 8;
 // ratios below 4. Extra pairs (never seen in a healthy mesh) are dropped and counted.
 constexpr int kMaxPointsPerPair = 4;
 
-// contact.friction_model sliding (world_multibody.cpp): the step is solved again while a friction
+// contact.friction_model sliding (world_friction.cpp): the step is solved again while a friction
 // share differs from the one its end slip asks for by more than kSlipShareTolerance (an impulse
 // error of that fraction of μ·λ_n·h), at most kSlipRounds times.
 constexpr int kSlipRounds = 30;
 constexpr double kSlipShareTolerance = 1e-6;
-// solver.locate_contact_onset (world_multibody.cpp): at most this many splits of one step (a
+// solver.locate_contact_onset (world_onset.cpp): at most this many splits of one step (a
 // step with more onsets takes the rest late, as without the option), and no piece shorter than
 // this fraction of the step (a pair that close starts with the piece: its onset is late by less).
 constexpr int kMaxOnsetSplits = 4;
@@ -135,7 +135,7 @@ struct MultibodyEngine {
   // each friction row's tooth pair and slip at the step's end, this step's and the last's.
   std::vector<double> slip_drift;
   double slip_end_h = 0;
-  // sliding: per row, the bracket of its friction share's root (world_multibody.cpp): the shares
+  // sliding: per row, the bracket of its friction share's root (world_friction.cpp): the shares
   // below and above it tried so far and the g they gave (g_lo > 0 > g_hi once both are known).
   struct SlipBracket {
     double lo = -1, g_lo = 0, hi = 1, g_hi = 0;
