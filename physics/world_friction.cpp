@@ -28,12 +28,6 @@ double sliding_share(double s0, double s1) {
 
 }  // namespace
 
-// The tooth pair of friction row i (pair, tooth_a, tooth_b, flank_a).
-std::tuple<int, int, int, int> World::Impl::friction_key(int i) const {
-  const ContactSample& c = contacts[static_cast<std::size_t>(mb->rows[static_cast<std::size_t>(i)].owner)];
-  return {c.pair, c.geometry.tooth_a, c.geometry.tooth_b, static_cast<int>(c.geometry.flank_a)};
-}
-
 // contact.friction_model sliding: how friction row i's slip changes over a step by the contact
 // point's travel along the flanks, m/s. The rows are linearised at the step's start: within the
 // step the slip they measure changes only with the velocities, while the contact point, and with
@@ -42,7 +36,7 @@ std::tuple<int, int, int, int> World::Impl::friction_key(int i) const {
 // (this step's start slip less the last step's end slip, same tooth pair) is taken as this
 // step's: geometry changes smoothly. 0 for a contact new this step.
 double World::Impl::slip_drift(int i, double s0, std::size_t& hint) const {
-  const std::tuple<int, int, int, int> key = friction_key(i);
+  const ContactKey key = contact_key(contacts[static_cast<std::size_t>(mb->rows[static_cast<std::size_t>(i)].owner)]);
   const auto& before = mb->slip_end_before;
   if (hint < before.size() && before[hint].first == key) return s0 - before[hint++].second;  // where the last step had it, usually
   for (std::size_t j = 0; j < before.size(); ++j)
@@ -102,7 +96,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     e.slip_end.clear();
     e.slip_end_h = e.h_step;  // the (sub)step these end slips close (the drift is per its length)
     for (int i = 0; i < n; ++i)
-      if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(friction_key(i), j_v(i) + e.jac.row(i).dot(dv));
+      if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(contact_key(contacts[static_cast<std::size_t>(e.rows[static_cast<std::size_t>(i)].owner)]), j_v(i) + e.jac.row(i).dot(dv));
   }
   return solved;
 }

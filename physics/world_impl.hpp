@@ -82,6 +82,11 @@ struct JointRec {
   const LoadDef* load = nullptr;
 };
 
+// A tooth contact's identity from step to step: (pair, tooth_a, tooth_b, flank_a).
+using ContactKey = std::tuple<int, int, int, int>;
+inline ContactKey contact_key(int pair, const contact::ToothContact& c) { return {pair, c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a)}; }
+inline ContactKey contact_key(const ContactSample& c) { return contact_key(c.pair, c.geometry); }
+
 struct PairRec {
   int a = -1, b = -1;
   btPersistentManifold* manifold = nullptr;
@@ -142,7 +147,7 @@ struct MultibodyEngine {
     int last = 0;  // which end the last round moved: +1 lo, −1 hi
   };
   std::vector<SlipBracket> slip_brackets;
-  std::vector<std::pair<std::tuple<int, int, int, int>, double>> slip_end, slip_end_before;
+  std::vector<std::pair<ContactKey, double>> slip_end, slip_end_before;
   bool planar = false;            // every joint axis along z: rows from link_jac (world_multibody.cpp)
   std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
@@ -152,7 +157,7 @@ struct MultibodyEngine {
   // h_eff·v⁺); implicit Euler (h_eff = h, v_move = v⁺) until there is a step behind.
   bool bdf2 = false, has_history = false;
   bool trapezoid_closed = false;  // θ per step: ½ while every contact stays closed, else 1
-  std::vector<std::tuple<int, int, int, int>> touching, touching_before;  // (pair, tooth_a, tooth_b, flank_a) this step, the last
+  std::vector<ContactKey> touching, touching_before;  // (pair, tooth_a, tooth_b, flank_a) this step, the last
   double h_eff = 0;                    // this step's h_eff (h for the θ-method)
   double h_step = 0;                   // this (sub)step's length, s
   // solver.locate_contact_onset: a step in which a near tooth pair closes is split at the
@@ -240,7 +245,6 @@ struct World::Impl {
   void solve_multibody_rows();
   bool solve_rows_dantzig_fixed_friction();
   bool locate_slip_reversals(bool solved);
-  std::tuple<int, int, int, int> friction_key(int row) const;
   double slip_drift(int row, double slip_start_m_s, std::size_t& hint) const;
   bool solve_rows_active_set();
   void multibody_results();

@@ -52,7 +52,7 @@ double World::Impl::trapezoid_closed_theta() {
       if (!pr.active[i]) continue;
       const contact::ToothContact& c = pr.found[i];
       const double k = pr.pair_stiffness[i];
-      const std::tuple<int, int, int, int> key{static_cast<int>(p), c.tooth_a, c.tooth_b, static_cast<int>(c.flank_a)};
+      const ContactKey key = contact_key(static_cast<int>(p), c);
       e.touching.push_back(key);
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0), at(c.point_m.x(), c.point_m.y(), ra.getCenterOfMassPosition().z());
       const btVector3 va = ra.getVelocityInLocalPoint(at - ra.getCenterOfMassPosition());

@@ -72,11 +72,7 @@ void World::Impl::accumulate_substep(double h, bool first) {
     acc.motor_torque.assign(e.motor_torque_N_m.size(), 0.0);
   }
   for (const ContactSample& c : contacts) {
-    auto same = [&](const ContactSample& o) {
-      return o.pair == c.pair && o.geometry.tooth_a == c.geometry.tooth_a && o.geometry.tooth_b == c.geometry.tooth_b &&
-             o.geometry.flank_a == c.geometry.flank_a;
-    };
-    auto it = std::find_if(acc.contacts.begin(), acc.contacts.end(), same);
+    auto it = std::find_if(acc.contacts.begin(), acc.contacts.end(), [&](const ContactSample& o) { return contact_key(o) == contact_key(c); });
     if (it == acc.contacts.end()) {
       ContactSample z = c;
       z.normal_force_N = z.friction_force_N = 0;
@@ -103,10 +99,7 @@ void World::Impl::finish_split_step(double h) {
   MultibodyEngine::Accumulated& acc = e.accumulated;
   contacts = acc.contacts;
   for (ContactSample& c : contacts) c.normal_force_N /= h, c.friction_force_N /= h;
-  std::stable_sort(contacts.begin(), contacts.end(), [](const ContactSample& u, const ContactSample& v) {
-    return std::make_tuple(u.pair, u.geometry.tooth_a, u.geometry.tooth_b, static_cast<int>(u.geometry.flank_a)) <
-           std::make_tuple(v.pair, v.geometry.tooth_a, v.geometry.tooth_b, static_cast<int>(v.geometry.flank_a));
-  });
+  std::stable_sort(contacts.begin(), contacts.end(), [](const ContactSample& u, const ContactSample& v) { return contact_key(u) < contact_key(v); });
   const double kinetic = power.kinetic_J;
   power = acc.power;
   power.motor_W /= h, power.load_W /= h, power.joint_W /= h, power.contact_W /= h, power.impulse_W /= h;
