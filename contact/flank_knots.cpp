@@ -146,10 +146,15 @@ void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double
   const std::vector<double>&x = k.r_m, &y = k.theta_rad;
   std::size_t interval = static_cast<std::size_t>(-1);
   bool shape_preserving = false;
+  // The Lagrange values the overshoot check computed, for samples [checked_from, checked_to) of
+  // the current interval: the same call the sample would make, kept instead of made twice.
+  int checked_from = 0, checked_to = 0;
   for (int i = 0; i < samples; ++i) {
     const double r = r0 + i * dr;
-    out[i] = kNaN;
-    if (r < x.front() || r > x.back()) continue;  // no material of this flank here
+    if (r < x.front() || r > x.back()) {  // no material of this flank here
+      out[i] = kNaN;
+      continue;
+    }
     // The knot interval [x[j], x[j+1]] holding r, and the stencil of four knots around it.
     const std::size_t j = std::min<std::size_t>(
         static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), r) - x.begin()), x.size() - 1) - 1;
@@ -159,15 +164,19 @@ void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double
       interval = j;
       shape_preserving = false;
       const double lo = std::min(y[j], y[j + 1]) - kOvershoot_rad, hi = std::max(y[j], y[j + 1]) + kOvershoot_rad;
+      checked_from = checked_to = i;
       for (int m = i; m < samples && r0 + m * dr <= x[j + 1]; ++m) {
         const double v = lagrange(x, y, s, r0 + m * dr);
         if (v < lo || v > hi) {
           shape_preserving = true;
           break;
         }
+        out[m] = v;
+        checked_to = m + 1;
       }
     }
-    out[i] = shape_preserving ? hermite(x, y, j, pchip_slope(x, y, j), pchip_slope(x, y, j + 1), r) : lagrange(x, y, s, r);
+    if (shape_preserving) out[i] = hermite(x, y, j, pchip_slope(x, y, j), pchip_slope(x, y, j + 1), r);
+    else if (!(i >= checked_from && i < checked_to)) out[i] = lagrange(x, y, s, r);
   }
 }
 
