@@ -85,8 +85,9 @@ class CoherentToothSearch {
     Flank flank_y = Flank::Ccw;
     double r_x = 0, s_y = 0;
     long call = 0;  // the call that found it
-    double r_prev = 0, s_prev = 0;  // the call before's, where it was continued into this one
-    bool has_prev = false;
+    // The calls before's, where it was continued into this one: `history` of them (up to 2).
+    double r_prev = 0, s_prev = 0, r_prev2 = 0, s_prev2 = 0;
+    int history = 0;
   };
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
   Continuation continuation_ = Continuation::off;

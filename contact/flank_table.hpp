@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -143,6 +144,12 @@ class FlankTable {
     Eigen::Vector2d point, d1, d2;  // m, 1, 1/m
   };
   bool flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const;
+  // True when radii r0 and r1 lie in one interval of the samples (one cubic of the interpolant
+  // flank_jet() evaluates): a jet at r0 expands the flank to r1 without a jump of its second
+  // derivative between them.
+  bool same_interval(double r0, double r1) const {
+    return std::floor((r0 - r_min_) * inv_dr_) == std::floor((r1 - r_min_) * inv_dr_);
+  }
   // The radii of a flank's first and last sample with material (its root and tip ends), m.
   void flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const {
     const std::pair<double, double>& e = extents_[static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)];

@@ -41,7 +41,13 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 
 // The hash of the 0.004 s paper run (200 steps) on Debian 12 / x86-64 with this build. Update
 // it (the failure message prints the new value) only together with the change that explains it.
-// Last change: contact.friction_model sliding is the multibody engine's default: friction is
+// Last change: Newton's method on the smooth flanks ends from the expansions only where the
+// step after the last, predicted on them, is below its 1e-13 m tolerance (and within one cubic
+// of each flank); continued contacts on smooth flanks start from the parabola through their
+// last three solutions and may end so from steps up to 0.1 µm (contact/flank_newton_impl.hpp).
+// Every hash changed: the stateless search's contacts moved by at most 1.4e-17 m in depth and
+// 1.3e-10 m in point over the 974 618 of the paper sweep (bench_contact_sweep --compare).
+// Before: contact.friction_model sliding is the multibody engine's default: friction is
 // μ·λ_n against the slip, shared at the slip's reversal within the step, where the box ±μ·λ_n
 // gave the whole reversal step the end slip's direction (physics/world_multibody.cpp,
 // docs/solver.md "Friction at the pitch point"). The three multibody hashes changed, the rigid
@@ -77,15 +83,15 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 // "Continuation"): depths agree with the sampled search's within 0.1 nm, but not bit for bit (the
 // sampled search's hashes are kept below).
 // kGoldenHash is the rigid-body engine's (it runs with --set solver.engine=rigid_bodies).
-constexpr std::uint64_t kGoldenHash = 0xbe17dd10f915d846ull;
+constexpr std::uint64_t kGoldenHash = 0x7ffcfb9625302578ull;
 // The default engine's (multibody, trapezoid_closed, active_set) hash.
-constexpr std::uint64_t kGoldenHashMultibody = 0x71aadd97f8c2eeabull;
+constexpr std::uint64_t kGoldenHashMultibody = 0x2760ffa22991bb3bull;
 // The multibody engine with implicit Euler (θ = 1) and Dantzig, the defaults before.
-constexpr std::uint64_t kGoldenHashImplicitEuler = 0x32e22f4e1d5b9120ull;
+constexpr std::uint64_t kGoldenHashImplicitEuler = 0xddd2462e6a8af123ull;
 // Without the continuation (--set contact.continued_search=false): the coherent search's and the
 // stateless search's, the same physics since Newton's refinement came in (multibody with θ = 1).
-constexpr std::uint64_t kGoldenHashSampled = 0xfa43c452adc00ad8ull;
-constexpr std::uint64_t kGoldenHashSampledMultibody = 0xf49d5e8bd6d81db7ull;
+constexpr std::uint64_t kGoldenHashSampled = 0x9bfa267c6f7374e5ull;
+constexpr std::uint64_t kGoldenHashSampledMultibody = 0x5a2defd8668597bdull;
 
 TEST(RunDeterminism, SameScenarioGivesByteIdenticalLogs) {
   const fs::path a = run_paper("a"), b = run_paper("b");
