@@ -10,6 +10,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -40,11 +41,15 @@ class FlankTable {
   // (knot_resolution_m in flank_knots.hpp): coarse facets or coordinate noise.
   double knot_resolution_m() const { return knot_resolution_m_; }
   bool internal() const { return internal_; }
-  // True when both tables describe the same flanks (same layout, radii and samples, bit for bit).
+  // True when both tables describe the same flanks (same layout, radii and samples, bit for bit:
+  // the samples without material, NaN, compare equal to each other).
   bool same_as(const FlankTable& o) const {
+    auto same_bits = [](const std::vector<double>& u, const std::vector<double>& v) {
+      return u.size() == v.size() && (u.empty() || std::memcmp(u.data(), v.data(), u.size() * sizeof(double)) == 0);
+    };
     return layout_.teeth == o.layout_.teeth && layout_.tooth0_angle_rad == o.layout_.tooth0_angle_rad &&
            internal_ == o.internal_ && r_min_ == o.r_min_ && r_max_ == o.r_max_ && samples_ == o.samples_ &&
-           row_of_ == o.row_of_ && ccw_ == o.ccw_ && cw_ == o.cw_;
+           row_of_ == o.row_of_ && same_bits(ccw_, o.ccw_) && same_bits(cw_, o.cw_);
   }
   // Distinct tooth shapes the table holds (identical teeth share one), for memory accounting.
   int distinct_teeth() const { return static_cast<int>(ccw_.size()) / samples_; }

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "contact/flank_table_store.hpp"
 #include "core/errors.hpp"
 #include "geometry/gear_body.hpp"
 #include "geometry/mass_properties.hpp"
@@ -89,8 +90,8 @@ void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string
   mass = g.mass;
   pieces = std::move(g.pieces);
   const bool internal = spec.kind == GearKind::Internal;
-  b.flanks = std::make_shared<const contact::FlankTable>(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
-                   ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
+  b.flanks = contact::shared_flank_table(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
+                                        ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
   require_faithful(*b.flanks, who, contact);
   b.flanks_from_spec = true;
   b.face_width_m = spec.face_width_m;
@@ -118,7 +119,7 @@ void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string
     const double half = 0.5 * mg.face_width_m;
     pieces = extrude_pieces(decompose(mg.outline, opt), PrismFrame{}, -half, half);  // gear frame
     const Polygon2& loop = rg.loop < 0 ? mg.outline.outer : mg.outline.holes[static_cast<std::size_t>(rg.loop)];
-    b.flanks = std::make_shared<const contact::FlankTable>(loop, layout, rg.internal, kFlankSamples);
+    b.flanks = contact::shared_flank_table(loop, layout, rg.internal, kFlankSamples);
     require_faithful(*b.flanks, who + " (" + file + ")", contact);
     b.face_width_m = mg.face_width_m;
     b.contact_radius_m = 0.5 * (b.flanks->r_min_m() + b.flanks->r_max_m());

@@ -11,6 +11,7 @@
 #include "geometry/prism.hpp"
 #include "contact/flank_knots.hpp"
 #include "contact/flank_table.hpp"
+#include "contact/flank_table_store.hpp"
 #include "tests/support/asymmetric_gear.hpp"
 
 namespace gearsim::contact {
@@ -112,6 +113,32 @@ TEST(FlankTable, FollowsAsymmetricTeethSideBySide) {
     EXPECT_NEAR(r * t.flank_angle(3, Flank::Ccw, r), r * a.side_angle(a.rb_ccw_m, r), 0.1e-6) << r;
     EXPECT_NEAR(r * t.flank_angle(3, Flank::Cw, r), -r * a.side_angle(a.rb_cw_m, r), 0.1e-6) << r;
   }
+}
+
+TEST(FlankTableStore, GivesTheTableAFreshBuildGivesOnceForTheSameInputs) {
+  // MCAD's z = 24 outline: the store's table describes the same flanks as one built afresh
+  // (same_as: layout, radii and every sample bit for bit), the same inputs bit for bit give the
+  // same object without a build, and a loop moved by one ulp, another layout or another side
+  // give tables of their own.
+  const Polygon2 loop = mcad_loop(24);
+  const FlankTableStoreStats before = flank_table_store_stats();
+  const std::shared_ptr<const FlankTable> a = shared_flank_table(loop, ToothLayout{24, 0.0}, false, 4096);
+  const FlankTable fresh(loop, ToothLayout{24, 0.0}, false, 4096);
+  EXPECT_TRUE(a->same_as(fresh));
+  EXPECT_EQ(a->departure().departure_m, fresh.departure().departure_m);
+  const std::shared_ptr<const FlankTable> again = shared_flank_table(loop, ToothLayout{24, 0.0}, false, 4096);
+  EXPECT_EQ(again.get(), a.get());
+  const FlankTableStoreStats after = flank_table_store_stats();
+  EXPECT_EQ(after.builds - before.builds, 1);
+  EXPECT_EQ(after.hits - before.hits, 1);
+  Polygon2 moved = loop;
+  moved.points[7].x() = std::nextafter(moved.points[7].x(), 1.0);
+  EXPECT_NE(shared_flank_table(moved, ToothLayout{24, 0.0}, false, 4096).get(), a.get());
+  const std::shared_ptr<const FlankTable> turned = shared_flank_table(loop, ToothLayout{24, 1e-3}, false, 4096);
+  EXPECT_NE(turned.get(), a.get());
+  EXPECT_FALSE(turned->same_as(*a));
+  EXPECT_NE(shared_flank_table(loop, ToothLayout{24, 0.0}, false, 2048).get(), a.get());
+  EXPECT_LE(flank_table_store_stats().bytes, kFlankTableStoreBytes);
 }
 
 }  // namespace test_flank_knots
