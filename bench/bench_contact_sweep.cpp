@@ -20,10 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "input/scenario_file.hpp"
 #include "contact/coherent_contact.hpp"
 #include "contact/tooth_contact.hpp"
-#include "physics/world_bodies.hpp"
+#include "bench/mesh_sweep.hpp"
 
 using namespace gearsim;
 using namespace gearsim::physics;
@@ -32,12 +31,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-// One dumped contact: the call it belongs to and its geometry.
-struct Record {
-  std::int64_t call;
-  std::int32_t tooth_a, tooth_b, flank_a, pad;
-  double point_x, point_y, normal_x, normal_y, depth;
-};
+using bench::Record;
 
 int compare(const char* fa, const char* fb) {
   auto load = [](const char* f) {
@@ -84,11 +78,6 @@ int compare(const char* fa, const char* fb) {
   return 0;
 }
 
-double angle_of(const Eigen::Quaterniond& q) {
-  const Eigen::Vector3d x = q * Eigen::Vector3d::UnitX();
-  return std::atan2(x.y(), x.x());
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,74 +92,29 @@ int main(int argc, char** argv) {
     else if (std::string(argv[i]) == "--press-offset-um" && i + 1 < argc) press_offset_m = 1e-6 * std::stod(argv[++i]);
     else file = argv[i];
   }
-  const Scenario s = input::load_scenario(file);
-  struct Gear {
-    std::string name;
-    std::shared_ptr<const FlankTable> table;
-    PlanarPose pose;
-    double ratio;  // spin in the carrier frame per unit sun spin
-  };
-  std::vector<Gear> gears;
-  // Every body with flank tables: generated gears and recognised CAD meshes alike.
-  int sun_teeth = 0;
-  for (const BodyDef& d : s.bodies) {
-    const BuiltBody b = build_body(d, s.contact);
-    if (!b.flanks) continue;
-    if (d.name == "sun") sun_teeth = b.flanks->teeth();
-    gears.push_back({d.name, b.flanks, {d.pose.position_m.head<2>(), angle_of(d.pose.orientation)}, 0});
-  }
-  if (sun_teeth == 0) {
-    std::fprintf(stderr, "%s: no gear body named 'sun'\n", file.c_str());
-    return 1;
-  }
-  // Carrier-frame kinematics: the sun turns by φ, a planet by −φ·Zs/Zp, the ring by −φ·Zs/Zr.
-  for (Gear& g : gears) g.ratio = g.name == "sun" ? 1.0 : -static_cast<double>(sun_teeth) / g.table->teeth();
-  // Pairs that mesh: the sun with each planet, each planet with the ring (the external gear first).
-  std::vector<std::pair<int, int>> pairs;
-  for (std::size_t i = 0; i < gears.size(); ++i)
-    for (std::size_t j = 0; j < gears.size(); ++j) {
-      if (i == j || gears[i].table->internal()) continue;
-      const double d = (gears[i].pose.centre_m - gears[j].pose.centre_m).norm();
-      const bool meshes = gears[j].table->internal() ? d + gears[i].table->r_max_m() > gears[j].table->r_min_m()
-                                                      : i < j && d < gears[i].table->r_max_m() + gears[j].table->r_max_m();
-      if (meshes) pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
-    }
-  // One relative planet turn in sun steps of ω·dt (104.7 rad/s in the paper's run).
-  const double step_rad = 104.7 * s.solver.time_step_s * 0.8;  // sun relative to the carrier
-  int planet_teeth = 0;
-  for (const Gear& g : gears)
-    if (g.name != "sun" && !g.table->internal()) planet_teeth = g.table->teeth();
-  const long steps = std::lround(2 * 3.141592653589793 * planet_teeth / sun_teeth / step_rad);
-  const double presses_m[] = {-0.5e-6, 0.0, 0.5e-6, 1e-6, 2e-6};
-  const double shifts_m[] = {0.0, 1e-6, -1e-6};
+  bench::MeshSweep sw;
+  if (!sw.load(file)) return 1;
   std::ofstream out;
   if (!dump.empty()) out.open(dump, std::ios::binary);
   long calls = 0, contacts = 0;
   std::vector<ToothContact> found;
   CoherentToothSearch::Counts flanks;
   double seconds = 0;
-  for (const auto& [ia, ib] : pairs) {
-    const Gear &ga = gears[ia], &gb = gears[ib];
-    // Press: the external gear a turned forward by press/r (its tip radius, a bound on r_b).
-    const double r_press = ga.table->r_max_m();
-    for (double press : presses_m)
-      for (double shift : shifts_m) {
+  for (const auto& [ia, ib] : sw.pairs) {
+    const bench::SweepGear &ga = sw.gears[static_cast<std::size_t>(ia)], &gb = sw.gears[static_cast<std::size_t>(ib)];
+    for (double press : bench::MeshSweep::presses_m)
+      for (double shift : bench::MeshSweep::shifts_m) {
         CoherentToothSearch search;
         search.set_continuation(continued);
-        for (long i = 0; i < steps; ++i) {
-          const double phi = static_cast<double>(i) * step_rad;
-          PlanarPose pa = ga.pose, pb = gb.pose;
-          pa.angle_rad += phi * ga.ratio + (press + press_offset_m) / r_press;
-          pb.angle_rad += phi * gb.ratio;
-          if (ga.name == "sun") pa.centre_m.x() += shift, pa.centre_m.y() += 0.5 * shift;
-          if (gb.name == "sun") pb.centre_m.x() += shift, pb.centre_m.y() += 0.5 * shift;
+        for (long i = 0; i < sw.steps; ++i) {
+          PlanarPose pa, pb;
+          sw.poses(ga, gb, i, press + press_offset_m, shift, &pa, &pb);
           const auto t0 = Clock::now();
           if (coherent) search.find(*ga.table, pa, *gb.table, pb, found);
           else find_tooth_contacts(*ga.table, pa, *gb.table, pb, found);
           seconds += std::chrono::duration<double>(Clock::now() - t0).count();
           for (const ToothContact& c : found) {
-            const Record r{calls, c.tooth_a, c.tooth_b, c.flank_a == Flank::Ccw ? 0 : 1, 0, c.point_m.x(), c.point_m.y(),
-                           c.normal_on_b.x(), c.normal_on_b.y(), c.depth_m};
+            const Record r = bench::record_of(calls, c);
             if (out) out.write(reinterpret_cast<const char*>(&r), sizeof r);
           }
           contacts += static_cast<long>(found.size());
@@ -181,7 +125,7 @@ int main(int argc, char** argv) {
       }
   }
   std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",
-              s.name.c_str(), pairs.size(), calls, steps, step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
+              sw.name.c_str(), sw.pairs.size(), calls, sw.steps, sw.step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
               1e6 * seconds / static_cast<double>(calls));
   if (coherent)
     std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%), %ld continued\n",

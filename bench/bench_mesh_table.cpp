@@ -8,8 +8,9 @@
 // ΔD, the centre distance's change (finite differences of the search's own answers). A pose
 // pair is then reduced to (ψ, ε, ΔD) by its line of centres and the contacts read from the two
 // samples around ψ (linear in ψ). It sweeps the pairs as bench_contact_sweep does (presses, sun
-// shifts) and dumps the table's contacts in its format: `bench_contact_sweep --compare` against
-// the stateless dump says how far they are. Prints build time, memory and ns per call.
+// shifts; bench/mesh_sweep.hpp), prints per press and shift how far the table's contacts lie from
+// the stateless search's, and dumps them in bench_contact_sweep's format (`--compare`). Prints
+// build time, memory and ns per call (with the stateless search run between the calls).
 // Usage: bench_mesh_table [scenario.yaml] [--samples-per-pitch N] [--dump FILE]
 #include <algorithm>
 #include <chrono>
@@ -21,9 +22,8 @@
 #include <tuple>
 #include <vector>
 
+#include "bench/mesh_sweep.hpp"
 #include "contact/tooth_contact.hpp"
-#include "input/scenario_file.hpp"
-#include "physics/world_bodies.hpp"
 
 using namespace gearsim;
 using namespace gearsim::physics;
@@ -34,17 +34,6 @@ using Eigen::Vector2d;
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
-
-struct Record {
-  std::int64_t call;
-  std::int32_t tooth_a, tooth_b, flank_a, pad;
-  double point_x, point_y, normal_x, normal_y, depth;
-};
-
-double angle_of(const Eigen::Quaterniond& q) {
-  const Eigen::Vector3d x = q * Eigen::Vector3d::UnitX();
-  return std::atan2(x.y(), x.x());
-}
 
 double wrap_angle(double a) { return a - kTwoPi * std::floor(a / kTwoPi); }
 
@@ -203,39 +192,8 @@ int main(int argc, char** argv) {
     else if (std::string(argv[i]) == "--samples-per-pitch" && i + 1 < argc) per_pitch = std::stoi(argv[++i]);
     else file = argv[i];
   }
-  const Scenario s = input::load_scenario(file);
-  struct Gear {
-    std::string name;
-    std::shared_ptr<const FlankTable> table;
-    PlanarPose pose;
-    double ratio;
-  };
-  std::vector<Gear> gears;
-  int sun_teeth = 0;
-  for (const BodyDef& d : s.bodies) {
-    const BuiltBody b = build_body(d, s.contact);
-    if (!b.flanks) continue;
-    if (d.name == "sun") sun_teeth = b.flanks->teeth();
-    gears.push_back({d.name, b.flanks, {d.pose.position_m.head<2>(), angle_of(d.pose.orientation)}, 0});
-  }
-  if (sun_teeth == 0) return 1;
-  for (Gear& g : gears) g.ratio = g.name == "sun" ? 1.0 : -static_cast<double>(sun_teeth) / g.table->teeth();
-  std::vector<std::pair<int, int>> pairs;
-  for (std::size_t i = 0; i < gears.size(); ++i)
-    for (std::size_t j = 0; j < gears.size(); ++j) {
-      if (i == j || gears[i].table->internal()) continue;
-      const double d = (gears[i].pose.centre_m - gears[j].pose.centre_m).norm();
-      const bool meshes = gears[j].table->internal() ? d + gears[i].table->r_max_m() > gears[j].table->r_min_m()
-                                                      : i < j && d < gears[i].table->r_max_m() + gears[j].table->r_max_m();
-      if (meshes) pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
-    }
-  const double step_rad = 104.7 * s.solver.time_step_s * 0.8;
-  int planet_teeth = 0;
-  for (const Gear& g : gears)
-    if (g.name != "sun" && !g.table->internal()) planet_teeth = g.table->teeth();
-  const long steps = std::lround(2 * 3.141592653589793 * planet_teeth / sun_teeth / step_rad);
-  const double presses_m[] = {-0.5e-6, 0.0, 0.5e-6, 1e-6, 2e-6};
-  const double shifts_m[] = {0.0, 1e-6, -1e-6};
+  bench::MeshSweep sw;
+  if (!sw.load(file)) return 1;
   std::ofstream out;
   if (!dump.empty()) out.open(dump, std::ios::binary);
   long calls = 0, contacts = 0, one_sided = 0, uncovered = 0;
@@ -247,29 +205,23 @@ int main(int argc, char** argv) {
     double worst = 0, missing = 0;
   };
   std::map<std::pair<double, double>, Err> errs;
-  for (const auto& [ia, ib] : pairs) {
-    const Gear &ga = gears[ia], &gb = gears[ib];
+  for (const auto& [ia, ib] : sw.pairs) {
+    const bench::SweepGear &ga = sw.gears[static_cast<std::size_t>(ia)], &gb = sw.gears[static_cast<std::size_t>(ib)];
     const auto t0 = Clock::now();
     const PairTable table = build(*ga.table, ga.pose, *gb.table, gb.pose, per_pitch);
     build_s += std::chrono::duration<double>(Clock::now() - t0).count();
     uncovered += table.uncovered;
     for (const auto& v : table.at) entries += v.size();
-    const double r_press = ga.table->r_max_m();
-    for (double press : presses_m)
-      for (double shift : shifts_m)
-        for (long i = 0; i < steps; ++i) {
-          const double phi = static_cast<double>(i) * step_rad;
-          PlanarPose pa = ga.pose, pb = gb.pose;
-          pa.angle_rad += phi * ga.ratio + press / r_press;
-          pb.angle_rad += phi * gb.ratio;
-          if (ga.name == "sun") pa.centre_m.x() += shift, pa.centre_m.y() += 0.5 * shift;
-          if (gb.name == "sun") pb.centre_m.x() += shift, pb.centre_m.y() += 0.5 * shift;
+    for (double press : bench::MeshSweep::presses_m)
+      for (double shift : bench::MeshSweep::shifts_m)
+        for (long i = 0; i < sw.steps; ++i) {
+          PlanarPose pa, pb;
+          sw.poses(ga, gb, i, press, shift, &pa, &pb);
           const auto t1 = Clock::now();
           read(table, pa, pb, found, one_sided);
           read_s += std::chrono::duration<double>(Clock::now() - t1).count();
           for (const ToothContact& c : found) {
-            const Record r{calls, c.tooth_a, c.tooth_b, c.flank_a == Flank::Ccw ? 0 : 1, 0, c.point_m.x(), c.point_m.y(),
-                           c.normal_on_b.x(), c.normal_on_b.y(), c.depth_m};
+            const bench::Record r = bench::record_of(calls, c);
             if (out) out.write(reinterpret_cast<const char*>(&r), sizeof r);
           }
           contacts += static_cast<long>(found.size());
@@ -295,8 +247,8 @@ int main(int argc, char** argv) {
   for (const auto& [k, er] : errs)
     std::printf("press %+.1f um shift %+.1f um: %ld contacts, %ld over 1 nm, worst %.3g m, deepest missing %.3g m\n", 1e6 * k.first,
                 1e6 * k.second, er.n, er.over_nm, er.worst, er.missing);
-  std::printf("%s: %zu pairs, %d samples per pitch of the tabulated gear; build %.2f s, %zu entries (%.1f MiB)\n", s.name.c_str(),
-              pairs.size(), per_pitch, build_s, entries, static_cast<double>(entries * sizeof(Entry)) / (1 << 20));
+  std::printf("%s: %zu pairs, %d samples per pitch of the tabulated gear; build %.2f s, %zu entries (%.1f MiB)\n", sw.name.c_str(),
+              sw.pairs.size(), per_pitch, build_s, entries, static_cast<double>(entries * sizeof(Entry)) / (1 << 20));
   std::printf("%ld calls, %.2f contacts/call, %.0f ns/call; %ld contacts read from one sample only, %ld keys not in all six evaluations\n",
               calls, static_cast<double>(contacts) / static_cast<double>(calls), 1e9 * read_s / static_cast<double>(calls), one_sided,
               uncovered);
