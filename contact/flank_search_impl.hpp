@@ -66,20 +66,20 @@ struct Frame {
   Vector2d dir_to_world(const Vector2d& d) const { return to_world_m * d; }
 };
 
-// A probing pass: points of x tested against y, with x's frame expressed in y's once.
 // A Newton step on the smooth flanks shorter than this, m, may end the iteration from the
-// flanks' expansions (flank_newton_impl.hpp, newton_solve()): 1 nm as a rule; 0.1 µm where a
-// continued contact is solved on smooth flanks (CoherentToothSearch, Continuation::replace),
-// where the predicted next step decides. Faceted CAD flanks have several maxima near one
+// flanks' expansions (flank_newton_impl.hpp, newton_solve()): 1 nm as a rule; 0.1 µm in a
+// search that continues its contacts on smooth flanks (CoherentToothSearch,
+// Continuation::replace), where the predicted next step decides. Faceted CAD flanks have several maxima near one
 // another, and there the continuation keeps the 1 nm rule: the maximum it lands on depends on
 // every step's point (tests/contact/test_coherent_contact.cpp, "OnFacetedFlanks").
 constexpr double kNewtonTaylor_m = 1e-9;
 constexpr double kNewtonTaylorSmooth_m = 1e-7;
 
+// A probing pass: points of x tested against y, with x's frame expressed in y's once.
 struct XY {
   const Frame& x;
   const Frame& y;
-  double taylor_step_m = kNewtonTaylor_m;
+  double taylor_step_m = kNewtonTaylor_m;  // kNewtonTaylor_m or kNewtonTaylorSmooth_m
   Eigen::Matrix2d rot = y.to_local_m * x.to_world_m;
   Vector2d shift = y.to_local(x.pose.centre_m);
   Vector2d in_y(const Vector2d& p_x) const { return shift + rot * p_x; }
