@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -38,6 +39,7 @@ struct SweepGear {
 };
 
 struct MeshSweep {
+  std::string name;  // the scenario's
   std::vector<SweepGear> gears;
   std::vector<std::pair<int, int>> pairs;  // (external gear, its mate)
   double step_rad = 0;                     // sun relative to the carrier, per step
@@ -80,7 +82,6 @@ struct MeshSweep {
     name = s.name;
     return true;
   }
-  std::string name;
 
   // The poses of pair (ga, gb) at step i, pressed (a turned forward by press over its tip radius)
   // and with the sun shifted.
