@@ -10,6 +10,12 @@ endif()
 function(gearsim_target_defaults target)
   target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
                                            -Wno-sign-conversion)
+  # No fused multiply-adds the source does not write: a contracted a·b − c·d is no longer the
+  # negation of c·d − a·b, which geometry/triangulate.cpp's orientation test relies on (built
+  # with -march=native, the paper's ring failed to triangulate: "no visible bridge vertex"), and
+  # results would differ between machines that have FMA and those without (GCC contracts by
+  # default where the target has FMA: aarch64, -march=native on x86-64).
+  target_compile_options(${target} PRIVATE -ffp-contract=off)
   if(GEARSIM_UNITY AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     # A unity batch #includes the sources, so GCC no longer sees an Impl's anonymous-namespace
     # members as belonging to the main file and warns; the warning is only about that inclusion.
