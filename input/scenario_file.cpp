@@ -147,6 +147,12 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
       if (s.solver.engine == physics::SolverEngine::rigid_bodies)
         m.fail("row_solver", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
     }
+    if (given(m, "mass_matrix")) {
+      s.solver.mass_matrix = m.choice_or("mass_matrix", {"planar", "articulated"}, "planar") == "articulated" ? physics::SolverDef::MassMatrix::articulated
+                                                                                                 : physics::SolverDef::MassMatrix::planar;
+      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
+        m.fail("mass_matrix", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
+    }
     if (given(m, "locate_contact_onset")) {
       s.solver.locate_contact_onset = m.boolean_or("locate_contact_onset", s.solver.locate_contact_onset);
       if (s.solver.locate_contact_onset && s.solver.engine == physics::SolverEngine::rigid_bodies)

@@ -117,7 +117,7 @@ json pair_table_json(const physics::PairTableDef& t) {
 
 json scenario_json(const physics::Scenario& s) {
   json j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
-  j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}, {"engine", physics::engine_name(s.solver.engine)}, {"theta", s.solver.theta}, {"integrator", physics::integrator_name(s.solver.integrator)}, {"row_solver", physics::row_solver_name(s.solver.row_solver)}, {"locate_contact_onset", s.solver.locate_contact_onset}};
+  j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}, {"engine", physics::engine_name(s.solver.engine)}, {"theta", s.solver.theta}, {"integrator", physics::integrator_name(s.solver.integrator)}, {"row_solver", physics::row_solver_name(s.solver.row_solver)}, {"mass_matrix", physics::mass_matrix_name(s.solver.mass_matrix)}, {"locate_contact_onset", s.solver.locate_contact_onset}};
   j["output"] = {{"sample_rate_hz", s.output.sample_rate_hz}, {"per_step_log", s.output.per_step_log}};
   j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
                   {"damping_ratio", s.contact.damping_ratio},

@@ -331,6 +331,12 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
     if (rs != "active_set" && rs != "dantzig") solver.fail("row_solver", "expected active_set or dantzig");
     s.solver.row_solver = rs == "dantzig" ? physics::SolverDef::RowSolver::dantzig : physics::SolverDef::RowSolver::active_set;
   }
+  s.solver.mass_matrix = physics::SolverDef::MassMatrix::articulated;  // records written before the planar mass matrix have none
+  if (solver.has("mass_matrix")) {
+    const std::string mm = solver.string("mass_matrix");
+    if (mm != "planar" && mm != "articulated") solver.fail("mass_matrix", "expected planar or articulated");
+    s.solver.mass_matrix = mm == "planar" ? physics::SolverDef::MassMatrix::planar : physics::SolverDef::MassMatrix::articulated;
+  }
   // Records written before the key existed started contacts at the first step that began with the
   // teeth overlapping.
   s.solver.locate_contact_onset = solver.has("locate_contact_onset") && solver.boolean("locate_contact_onset");

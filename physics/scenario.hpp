@@ -237,6 +237,13 @@ struct SolverDef {
   // falling back to Dantzig when it does not settle; `dantzig`: Bullet's Dantzig LCP solver
   // alone (docs/solver.md, "The row solve").
   enum class RowSolver { active_set, dantzig } row_solver = RowSolver::active_set;
+  // multibody: how the rows' Jacobians and the inverse mass they need are found. `planar` (the
+  // default; used where every joint turns about z, otherwise `articulated`): each link's
+  // Jacobian from its joints' axes, the mass matrix from them and its Cholesky factor;
+  // `articulated`: Bullet's Jacobian tree walks and one articulated-body solve per coordinate
+  // for M⁻¹ (docs/solver.md, "The planar mass matrix"). The same equations; results differ by
+  // rounding.
+  enum class MassMatrix { planar, articulated } mass_matrix = MassMatrix::planar;
   // multibody with the θ-method or trapezoid_closed: a step in which a tooth pair a few µm apart
   // (the search's near pairs) closes at its present rate of approach is split at the instant it
   // touches (plus 1 % of the step, at most 4 splits), so the contact starts with its spring at
@@ -248,6 +255,7 @@ struct SolverDef {
 
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }
 inline const char* row_solver_name(SolverDef::RowSolver r) { return r == SolverDef::RowSolver::dantzig ? "dantzig" : "active_set"; }
+inline const char* mass_matrix_name(SolverDef::MassMatrix m) { return m == SolverDef::MassMatrix::articulated ? "articulated" : "planar"; }
 inline const char* friction_model_name(ContactDef::FrictionModel f) { return f == ContactDef::FrictionModel::stick_slip ? "stick_slip" : "sliding"; }
 inline const char* integrator_name(SolverDef::Integrator i) {
   return i == SolverDef::Integrator::bdf2 ? "bdf2" : i == SolverDef::Integrator::trapezoid_closed ? "trapezoid_closed" : "theta";

@@ -60,7 +60,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
   Eigen::Map<Eigen::VectorXd> dv(e.buf.data() + 6, dofs);
   e.slip_brackets.assign(static_cast<std::size_t>(n), MultibodyEngine::SlipBracket{});
   for (int round = 0; solved && round < kSlipRounds; ++round) {
-    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
+    velocity_change(e.x.data(), dv.data());
     bool changed = false;
     for (int i = 0; i < n; ++i) {
       const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
@@ -91,7 +91,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     solved = solve_rows_dantzig_fixed_friction();
   }
   {  // each contact's slip at the step's end on this step's rows, for the next step's drift
-    dv.noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(e.x.data(), n);
+    velocity_change(e.x.data(), dv.data());
     std::swap(e.slip_end_before, e.slip_end);
     e.slip_end.clear();
     e.slip_end_h = e.h_step;  // the (sub)step these end slips close (the drift is per its length)

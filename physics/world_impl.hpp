@@ -150,6 +150,18 @@ struct MultibodyEngine {
   std::vector<std::pair<ContactKey, double>> slip_end, slip_end_before;
   bool planar = false;            // every joint axis along z: rows from link_jac (world_multibody.cpp)
   std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs
+  // solver.mass_matrix planar on a planar tree (docs/solver.md, "The planar mass matrix"): the
+  // links' Jacobians from their joints' axes (no tree walks); M = Σ m·(J_xᵀ·J_x + J_yᵀ·J_y) +
+  // I_zz·J_ωᵀ·J_ω over the links, factored M = L·Lᵀ (Cholesky); per row g_i = L⁻¹·J_iᵀ, so that
+  // A = Gᵀ·G and M⁻¹·Jᵀ·λ = L⁻ᵀ·(G·λ), without M⁻¹. Otherwise (articulated) M⁻¹ by articulated-
+  // body solves, one per coordinate, and M⁻¹·Jᵀ (minv_jt).
+  bool planar_mass = false;
+  std::vector<double> link_mass_kg, link_izz_kg_m2;  // per link: mass, moment about z
+  std::vector<std::vector<int>> link_chain;          // per link: it and its ancestors
+  std::vector<std::vector<int>> link_dofs;           // per link: the coordinates that move it
+  std::vector<double> chol;                          // dofs × dofs, row-major: L (lower triangle)
+  std::vector<double> g;                             // rows × dofs: g_i = L⁻¹·J_iᵀ
+  std::vector<double> g_lambda;                      // dofs: G·λ
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
   double theta = 1;  // spring rows at s + θ·h·ṡ_θ, positions with (1 − θ)·v + θ·v⁺; 1: implicit Euler
   // BDF2 (solver.integrator bdf2): v⁺ = v̂ + h_eff·M⁻¹·F(x⁺, v⁺), x⁺ = x + h·v_move with
@@ -243,7 +255,10 @@ struct World::Impl {
   MultibodyRow spring_row(double k, double c, double force0) const;
   double trapezoid_closed_theta();
   void solve_multibody_rows();
+  void planar_mass_rows();
   bool solve_rows_dantzig_fixed_friction();
+  // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).
+  void velocity_change(const double* lambda, double* dv);
   bool locate_slip_reversals(bool solved);
   double slip_drift(int row, double slip_start_m_s, std::size_t& hint) const;
   bool solve_rows_active_set();

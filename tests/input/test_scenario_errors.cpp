@@ -103,10 +103,13 @@ TEST(ScenarioErrors, ContinuedSearchNeedsTheCoherentOne) {
   EXPECT_EQ(error_for(kGood + "contact: {continued_search: false}\n"), "");
 }
 
-TEST(ScenarioErrors, TheRowSolverIsOneOfTwoAndTheMultibodyEnginesOnly) {
+TEST(ScenarioErrors, TheRowSolverAndTheMassMatrixAreOneOfTwoAndTheMultibodyEnginesOnly) {
   EXPECT_NAMES(error_for(kGood + "solver: {row_solver: lemke}\n"), "bad.yaml:11:", "solver.row_solver", "active_set", "dantzig", "lemke");
   EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, row_solver: dantzig}\n"), "solver.row_solver", "only engine multibody");
   EXPECT_EQ(error_for(kGood + "solver: {row_solver: dantzig}\n"), "");
+  EXPECT_NAMES(error_for(kGood + "solver: {mass_matrix: dense}\n"), "bad.yaml:11:", "solver.mass_matrix", "planar", "articulated", "dense");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, mass_matrix: planar}\n"), "solver.mass_matrix", "only engine multibody");
+  EXPECT_EQ(error_for(kGood + "solver: {mass_matrix: articulated}\n"), "");
 }
 
 TEST(ScenarioErrors, TheFrictionModelIsOneOfTwoAndTheMultibodyEnginesOnly) {

@@ -90,6 +90,21 @@ TEST(ScenarioRecord, TheIntegratorReadsBack) {
   EXPECT_NE(error_of(j).find("solver.integrator"), std::string::npos) << error_of(j);
 }
 
+TEST(ScenarioRecord, TheMassMatrixReadsBack) {
+  // solver.mass_matrix: planar (the default) and articulated read back; a record without it ran
+  // the articulated-body solves.
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_EQ(s.solver.mass_matrix, physics::SolverDef::MassMatrix::planar);
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.mass_matrix, physics::SolverDef::MassMatrix::planar);
+  j["solver"]["mass_matrix"] = "articulated";
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.mass_matrix, physics::SolverDef::MassMatrix::articulated);
+  j["solver"].erase("mass_matrix");
+  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.mass_matrix, physics::SolverDef::MassMatrix::articulated);
+  j["solver"]["mass_matrix"] = "dense";
+  EXPECT_NE(error_of(j).find("solver.mass_matrix"), std::string::npos) << error_of(j);
+}
+
 TEST(ScenarioRecord, TheRowSolverReadsBack) {
   // solver.row_solver: active_set (the default) and dantzig read back; a record without it ran Dantzig.
   physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
