@@ -160,7 +160,8 @@ struct MultibodyEngine {
   std::vector<std::vector<int>> link_chain;          // per link: it and its ancestors
   std::vector<std::vector<int>> link_dofs;           // per link: the coordinates that move it
   std::vector<double> chol;                          // dofs × dofs, row-major: L (lower triangle)
-  std::vector<double> g;                             // rows × dofs: g_i = L⁻¹·J_iᵀ
+  std::vector<double> chol_inv_diag;                 // dofs: 1 / L's diagonal
+  std::vector<double> g;                             // dofs × rows: G = L⁻¹·Jᵀ
   std::vector<double> g_lambda;                      // dofs: G·λ
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
   double theta = 1;  // spring rows at s + θ·h·ṡ_θ, positions with (1 − θ)·v + θ·v⁺; 1: implicit Euler

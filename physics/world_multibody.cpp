@@ -485,7 +485,9 @@ void World::Impl::solve_multibody_rows() {
 
 // solver.mass_matrix planar: M of this step from the links' Jacobians, its Cholesky factor L, the
 // rows' g_i = L⁻¹·J_iᵀ and A = Gᵀ·G (symmetric: each entry once). M is positive definite for
-// links with positive masses and moments (build_multibody requires them).
+// links with positive masses and moments (build_multibody requires them). G is kept by
+// coordinate (dofs × rows): the substitutions then run over all rows at once, one coordinate
+// after the other, instead of one row's chain of dependent divisions after the other's.
 void World::Impl::planar_mass_rows() {
   MultibodyEngine& e = *mb;
   const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
@@ -502,39 +504,50 @@ void World::Impl::planar_mass_rows() {
         m[ua * ud + ub] += mass * (jx[ua] * jx[ub] + jy[ua] * jy[ub]) + izz * jw[ua] * jw[ub];
       }
   }
+  e.chol_inv_diag.resize(ud);
   for (std::size_t j = 0; j < ud; ++j) {
     double s = m[j * ud + j];
     for (std::size_t k = 0; k < j; ++k) s -= m[j * ud + k] * m[j * ud + k];
     GEARSIM_CHECK(s > 0, "the planar mass matrix must be positive definite");
-    const double d = std::sqrt(s);
+    const double d = std::sqrt(s), inv = 1 / d;
     m[j * ud + j] = d;
+    e.chol_inv_diag[j] = inv;
     for (std::size_t i = j + 1; i < ud; ++i) {
       double v = m[i * ud + j];
       for (std::size_t k = 0; k < j; ++k) v -= m[i * ud + k] * m[j * ud + k];
-      m[i * ud + j] = v / d;
+      m[i * ud + j] = v * inv;
     }
   }
-  e.g.resize(n * ud);
+  // G = L⁻¹·Jᵀ, coordinate by coordinate over all rows.
+  e.g.resize(ud * n);
+  double* g = e.g.data();
   const double* jrows = e.jrows.data();
-  for (std::size_t r = 0; r < n; ++r) {
-    double* g = e.g.data() + r * ud;
-    const double* j = jrows + r * ud;
-    for (std::size_t i = 0; i < ud; ++i) {
-      double v = j[i];
-      for (std::size_t k = 0; k < i; ++k) v -= m[i * ud + k] * g[k];
-      g[i] = v / m[i * ud + i];
+  for (std::size_t i = 0; i < ud; ++i) {
+    double* gi = g + i * n;
+    for (std::size_t r = 0; r < n; ++r) gi[r] = jrows[r * ud + i];
+    for (std::size_t k = 0; k < i; ++k) {
+      const double lik = m[i * ud + k];
+      if (lik == 0) continue;
+      const double* gk = g + k * n;
+      for (std::size_t r = 0; r < n; ++r) gi[r] -= lik * gk[r];
     }
+    const double inv = e.chol_inv_diag[i];
+    for (std::size_t r = 0; r < n; ++r) gi[r] *= inv;
   }
+  // A = Gᵀ·G: the upper triangle summed coordinate by coordinate, then mirrored.
   double* a = e.a.data();
-  for (std::size_t r = 0; r < n; ++r) {
-    const double* gr = e.g.data() + r * ud;
-    for (std::size_t c = r; c < n; ++c) {
-      const double* gc = e.g.data() + c * ud;
-      double v = 0;
-      for (std::size_t k = 0; k < ud; ++k) v += gr[k] * gc[k];
-      a[r * n + c] = a[c * n + r] = v;
+  for (std::size_t r = 0; r < n; ++r) std::fill(a + r * n + r, a + r * n + n, 0.0);
+  for (std::size_t k = 0; k < ud; ++k) {
+    const double* gk = g + k * n;
+    for (std::size_t r = 0; r < n; ++r) {
+      const double gkr = gk[r];
+      if (gkr == 0) continue;
+      double* ar = a + r * n;
+      for (std::size_t c = r; c < n; ++c) ar[c] += gkr * gk[c];
     }
   }
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = r + 1; c < n; ++c) a[c * n + r] = a[r * n + c];
 }
 
 void World::Impl::velocity_change(const double* lambda, double* dv) {
@@ -545,19 +558,17 @@ void World::Impl::velocity_change(const double* lambda, double* dv) {
     return;
   }
   // dv = L⁻ᵀ·(G·λ)
-  double* y = e.g_lambda.data();
-  std::fill(y, y + ud, 0.0);
-  for (std::size_t r = 0; r < n; ++r) {
-    const double l = lambda[r];
-    if (l == 0) continue;
-    const double* g = e.g.data() + r * ud;
-    for (std::size_t k = 0; k < ud; ++k) y[k] += l * g[k];
-  }
   const double* m = e.chol.data();
+  for (std::size_t i = 0; i < ud; ++i) {
+    const double* gi = e.g.data() + i * n;
+    double y = 0;
+    for (std::size_t r = 0; r < n; ++r) y += gi[r] * lambda[r];
+    e.g_lambda[i] = y;
+  }
   for (std::size_t i = ud; i-- > 0;) {
-    double v = y[i];
+    double v = e.g_lambda[i];
     for (std::size_t k = i + 1; k < ud; ++k) v -= m[k * ud + i] * dv[k];
-    dv[i] = v / m[i * ud + i];
+    dv[i] = v * e.chol_inv_diag[i];
   }
 }
 
