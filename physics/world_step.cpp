@@ -131,6 +131,22 @@ void World::Impl::measure() {
   measure_contacts();
 }
 
+namespace {
+
+// std::remainder(d, 2π) without the libm call where |d| < 9 rad (below 3π: a joint turns less
+// than 1.4 turns per step): d − 2π·n with n the integer nearest to d/2π (ties to even: n = 0 at
+// |d| = π) is then d or d ∓ 2π, exact by Sterbenz's lemma (π < |d| < 9 < 4π), as remainder's
+// result is exact. Bit for bit std::remainder's answer.
+double wrapped_turn(double d) {
+  constexpr double kTwoPi = 2 * constants::kPi;
+  if (!(std::abs(d) < 9.0)) return std::remainder(d, kTwoPi);
+  if (d > 0.5 * kTwoPi) return d - kTwoPi;
+  if (d < -0.5 * kTwoPi) return d + kTwoPi;
+  return d;
+}
+
+}  // namespace
+
 void World::Impl::measure_joints() {
   // Joint angles: the body's gear-frame x axis against the parent's, about the joint axis.
   for (JointRec& j : joints) {
@@ -149,7 +165,7 @@ void World::Impl::measure_joints() {
     ref = (ref - ref.dot(ax) * ax).normalized();
     ref2 = ax.cross(ref);
     const double raw = std::atan2(xb.dot(ref2), xb.dot(ref));
-    j.unwrapped += std::remainder(raw - j.last_raw, 2 * constants::kPi);
+    j.unwrapped += wrapped_turn(raw - j.last_raw);
     j.last_raw = raw;
     BodyState& s = states[j.body];
     s.angle_rad = j.unwrapped;
