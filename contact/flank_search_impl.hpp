@@ -59,12 +59,8 @@ constexpr double kRisingCheck_m = 1e-10;
 struct Frame {
   const FlankTable& table;
   PlanarPose pose;
-  // As Eigen::Rotation2Dd(angle).toRotationMatrix(), from the pose's cos and sin where it has them.
-  Eigen::Matrix2d to_world_m = rotation(pose), to_local_m = to_world_m.transpose();
-  static Eigen::Matrix2d rotation(const PlanarPose& p) {
-    const double c = std::isnan(p.cos_angle) ? std::cos(p.angle_rad) : p.cos_angle, s = std::isnan(p.sin_angle) ? std::sin(p.angle_rad) : p.sin_angle;
-    return (Eigen::Matrix2d() << c, -s, s, c).finished();
-  }
+  Eigen::Rotation2Dd rot{pose.angle_rad};
+  Eigen::Matrix2d to_world_m = rot.toRotationMatrix(), to_local_m = to_world_m.transpose();
   Vector2d to_world(const Vector2d& p) const { return pose.centre_m + to_world_m * p; }
   Vector2d to_local(const Vector2d& w) const { return to_local_m * (w - pose.centre_m); }
   Vector2d dir_to_world(const Vector2d& d) const { return to_world_m * d; }

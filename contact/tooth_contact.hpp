@@ -6,8 +6,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <cmath>
-#include <limits>
 #include <vector>
 
 #include "contact/flank_table.hpp"
@@ -18,12 +16,6 @@ namespace gearsim::contact {
 struct PlanarPose {
   Eigen::Vector2d centre_m = Eigen::Vector2d::Zero();
   double angle_rad = 0;
-  // cos and sin of angle_rad where the caller has them (a gear meshing in several pairs: once per
-  // step, not per pair); NaN: the search takes them itself. Must be std::cos/std::sin of angle_rad.
-  double cos_angle = std::numeric_limits<double>::quiet_NaN(), sin_angle = std::numeric_limits<double>::quiet_NaN();
-  static PlanarPose with_trig(const Eigen::Vector2d& centre, double angle) {
-    return {centre, angle, std::cos(angle), std::sin(angle)};
-  }
 };
 
 struct ToothContact {

@@ -270,7 +270,7 @@ struct World::Impl {
 inline contact::PlanarPose planar_pose(const BuiltBody& b) {
   const btTransform t = b.rigid->getWorldTransform() * b.com_from_gear;
   const btVector3 x = t.getBasis().getColumn(0);
-  return contact::PlanarPose::with_trig({t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x()));
+  return {{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())};
 }
 
 }  // namespace gearsim::physics
