@@ -90,52 +90,49 @@ TEST(ScenarioRecord, TheIntegratorReadsBack) {
   EXPECT_NE(error_of(j).find("solver.integrator"), std::string::npos) << error_of(j);
 }
 
+// A choice key of the record (section.key): the paper scenario's value `dflt` reads back, so
+// does `other`; a record written before the key existed reads as `legacy`; an unknown name is
+// refused naming the key. `of`: the key's value in a scenario.
+template <typename Value, typename Of>
+void expect_choice_reads_back(const std::string& section, const std::string& key, Of of, Value dflt, const std::string& other_name,
+                              Value other, Value legacy, const std::string& bad) {
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  EXPECT_EQ(of(s), dflt) << key;
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  EXPECT_EQ(of(scenario_from_json(j, "rec.json")), dflt) << key;
+  j[section][key] = other_name;
+  EXPECT_EQ(of(scenario_from_json(j, "rec.json")), other) << key;
+  j[section].erase(key);
+  EXPECT_EQ(of(scenario_from_json(j, "rec.json")), legacy) << key;
+  j[section][key] = bad;
+  EXPECT_NE(error_of(j).find(section + "." + key), std::string::npos) << error_of(j);
+}
+
 TEST(ScenarioRecord, TheMassMatrixReadsBack) {
   // solver.mass_matrix: planar (the default) and articulated read back; a record without it ran
   // the articulated-body solves.
-  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
-  EXPECT_EQ(s.solver.mass_matrix, physics::SolverDef::MassMatrix::planar);
-  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
-  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.mass_matrix, physics::SolverDef::MassMatrix::planar);
-  j["solver"]["mass_matrix"] = "articulated";
-  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.mass_matrix, physics::SolverDef::MassMatrix::articulated);
-  j["solver"].erase("mass_matrix");
-  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.mass_matrix, physics::SolverDef::MassMatrix::articulated);
-  j["solver"]["mass_matrix"] = "dense";
-  EXPECT_NE(error_of(j).find("solver.mass_matrix"), std::string::npos) << error_of(j);
+  using M = physics::SolverDef::MassMatrix;
+  expect_choice_reads_back("solver", "mass_matrix", [](const physics::Scenario& s) { return s.solver.mass_matrix; }, M::planar,
+                           "articulated", M::articulated, M::articulated, "dense");
 }
 
 TEST(ScenarioRecord, TheRowSolverReadsBack) {
   // solver.row_solver: active_set (the default) and dantzig read back; a record without it ran Dantzig.
-  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
-  EXPECT_EQ(s.solver.row_solver, physics::SolverDef::RowSolver::active_set);
-  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
-  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.row_solver, physics::SolverDef::RowSolver::active_set);
-  j["solver"]["row_solver"] = "dantzig";
-  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.row_solver, physics::SolverDef::RowSolver::dantzig);
-  j["solver"].erase("row_solver");
-  EXPECT_EQ(scenario_from_json(j, "rec.json").solver.row_solver, physics::SolverDef::RowSolver::dantzig);
-  j["solver"]["row_solver"] = "lemke";
-  EXPECT_NE(error_of(j).find("solver.row_solver"), std::string::npos) << error_of(j);
+  using R = physics::SolverDef::RowSolver;
+  expect_choice_reads_back("solver", "row_solver", [](const physics::Scenario& s) { return s.solver.row_solver; }, R::active_set,
+                           "dantzig", R::dantzig, R::dantzig, "lemke");
 }
 
 TEST(ScenarioRecord, TheFrictionModelReadsBack) {
   // contact.friction_model: sliding (the multibody default) and stick_slip read back; a record
   // written before the key existed ran the stick–slip rows; rigid_bodies records stick_slip
   // (Bullet's friction box).
-  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
-  EXPECT_EQ(s.contact.friction_model, physics::ContactDef::FrictionModel::sliding);
-  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
-  EXPECT_EQ(j["contact"]["friction_model"], "sliding");
-  EXPECT_EQ(scenario_from_json(j, "rec.json").contact.friction_model, physics::ContactDef::FrictionModel::sliding);
-  j["contact"]["friction_model"] = "stick_slip";
-  EXPECT_EQ(scenario_from_json(j, "rec.json").contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
-  j["contact"].erase("friction_model");
-  EXPECT_EQ(scenario_from_json(j, "rec.json").contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
-  j["contact"]["friction_model"] = "viscous";
-  EXPECT_NE(error_of(j).find("contact.friction_model"), std::string::npos) << error_of(j);
+  using F = physics::ContactDef::FrictionModel;
+  expect_choice_reads_back("contact", "friction_model", [](const physics::Scenario& s) { return s.contact.friction_model; },
+                           F::sliding, "stick_slip", F::stick_slip, F::stick_slip, "viscous");
+  EXPECT_EQ(scenario_json(load_scenario(asset("paper_dynamics_healthy.yaml")))["contact"]["friction_model"], "sliding");
   const physics::Scenario rigid = load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"});
-  EXPECT_EQ(rigid.contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
+  EXPECT_EQ(rigid.contact.friction_model, F::stick_slip);
 }
 
 TEST(ScenarioRecord, LocatingContactOnsetsReadsBack) {
