@@ -256,6 +256,8 @@ struct World::Impl {
   MultibodyRow spring_row(double k, double c, double force0) const;
   double trapezoid_closed_theta();
   void solve_multibody_rows();
+  void build_planar_mass();
+  void planar_link_jacobians();
   void planar_mass_rows();
   bool solve_rows_dantzig_fixed_friction();
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).

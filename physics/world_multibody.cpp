@@ -157,28 +157,7 @@ void World::Impl::build_multibody() {
                   "a multibody link must start at its body's pose");
   }
   e.planar_mass = e.planar && scenario.solver.mass_matrix == SolverDef::MassMatrix::planar;
-  if (e.planar_mass) {
-    const std::size_t links = order.size();
-    e.link_mass_kg.assign(links, 0);
-    e.link_izz_kg_m2.assign(links, 0);
-    e.link_chain.assign(links, {});
-    e.link_dofs.assign(links, {});
-    for (std::size_t l = 0; l < links; ++l) {
-      const btMultibodyLink& link = t.getLink(static_cast<int>(l));
-      // The moment about world z of the principal moments: the link turns about z only, so the
-      // local axis that points along z, and this moment, stay as they are at the start.
-      const btMatrix3x3& basis = link.m_cachedWorldTransform.getBasis();
-      const btVector3 inertia = t.getLinkInertia(static_cast<int>(l));
-      e.link_mass_kg[l] = t.getLinkMass(static_cast<int>(l));
-      e.link_izz_kg_m2[l] = basis[2][0] * basis[2][0] * inertia.x() + basis[2][1] * basis[2][1] * inertia.y() + basis[2][2] * basis[2][2] * inertia.z();
-      for (int i = static_cast<int>(l); i >= 0; i = t.getParent(i)) {
-        e.link_chain[l].push_back(i);
-        for (int d = 0; d < t.getLink(i).m_dofCount; ++d) e.link_dofs[l].push_back(t.getLink(i).m_dofOffset + d);
-      }
-    }
-    e.chol.assign(static_cast<std::size_t>(e.dofs) * static_cast<std::size_t>(e.dofs), 0);
-    e.g_lambda.assign(static_cast<std::size_t>(e.dofs), 0);
-  }
+  if (e.planar_mass) build_planar_mass();
 }
 
 // One step (or sub-step) of length h from the contacts generate_contacts() found at its start.
@@ -273,29 +252,7 @@ void World::Impl::multibody_rows() {
   // a combination of the three (v_p = v_c + ω × r), without walking the tree per row.
   const std::size_t links = static_cast<std::size_t>(t.getNumLinks()), ud = static_cast<std::size_t>(dofs);
   if (e.planar_mass) {
-    // Each coordinate d of a link i on the chain from the ground to link l turns l's centre c_l
-    // about i's centre c_i with rate s_d (its axis' z component, world) and moves it by b_d (its
-    // axis' linear part, world): ω_l = Σ s_d·q̇_d, v_l = Σ (s_d·ẑ × (c_l − c_i) + b_d)·q̇_d —
-    // Bullet's own joint axes (btMultibodyLink::getAxisTop/Bottom, in i's frame) and convention
-    // (fillConstraintJacobianMultiDof, compTreeLinkVelocities), without walking the tree per row.
-    e.link_jac.assign(links * 3 * ud, 0.0);
-    for (std::size_t l = 0; l < links; ++l) {
-      double* jl = e.link_jac.data() + l * 3 * ud;
-      const btVector3 c_l = t.getLink(static_cast<int>(l)).m_cachedWorldTransform.getOrigin();
-      for (const int i : e.link_chain[l]) {
-        const btMultibodyLink& li = t.getLink(i);
-        const btMatrix3x3& basis = li.m_cachedWorldTransform.getBasis();
-        const btVector3 d = c_l - li.m_cachedWorldTransform.getOrigin();
-        for (int k = 0; k < li.m_dofCount; ++k) {
-          const std::size_t dof = static_cast<std::size_t>(li.m_dofOffset + k);
-          const double s_d = basis.getRow(2).dot(li.getAxisTop(k));
-          const btVector3 b_d = basis * li.getAxisBottom(k);
-          jl[dof] = s_d;
-          jl[ud + dof] = b_d.x() - s_d * d.y();
-          jl[2 * ud + dof] = b_d.y() + s_d * d.x();
-        }
-      }
-    }
+    planar_link_jacobians();
   } else if (e.planar) {
     e.link_jac.assign(links * 3 * ud, 0.0);
     // ω_z as the y velocity of a point 1 m along x from the centre less the centre's (Bullet's
@@ -481,95 +438,6 @@ void World::Impl::solve_multibody_rows() {
   std::fill(e.buf.begin(), e.buf.end(), 0.0);
   velocity_change(e.x.data(), e.buf.data() + 6);
   t.applyDeltaVeeMultiDof(e.buf.data(), 1);
-}
-
-// solver.mass_matrix planar: M of this step from the links' Jacobians, its Cholesky factor L, the
-// rows' g_i = L⁻¹·J_iᵀ and A = Gᵀ·G (symmetric: each entry once). M is positive definite for
-// links with positive masses and moments (build_multibody requires them). G is kept by
-// coordinate (dofs × rows): the substitutions then run over all rows at once, one coordinate
-// after the other, instead of one row's chain of dependent divisions after the other's.
-void World::Impl::planar_mass_rows() {
-  MultibodyEngine& e = *mb;
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
-  double* m = e.chol.data();
-  std::fill(e.chol.begin(), e.chol.end(), 0.0);
-  for (std::size_t l = 0; l < e.link_dofs.size(); ++l) {
-    const double* jw = e.link_jac.data() + l * 3 * ud;
-    const double *jx = jw + ud, *jy = jw + 2 * ud;
-    const double mass = e.link_mass_kg[l], izz = e.link_izz_kg_m2[l];
-    for (const int a : e.link_dofs[l])
-      for (const int b : e.link_dofs[l]) {
-        if (b > a) continue;
-        const std::size_t ua = static_cast<std::size_t>(a), ub = static_cast<std::size_t>(b);
-        m[ua * ud + ub] += mass * (jx[ua] * jx[ub] + jy[ua] * jy[ub]) + izz * jw[ua] * jw[ub];
-      }
-  }
-  e.chol_inv_diag.resize(ud);
-  for (std::size_t j = 0; j < ud; ++j) {
-    double s = m[j * ud + j];
-    for (std::size_t k = 0; k < j; ++k) s -= m[j * ud + k] * m[j * ud + k];
-    GEARSIM_CHECK(s > 0, "the planar mass matrix must be positive definite");
-    const double d = std::sqrt(s), inv = 1 / d;
-    m[j * ud + j] = d;
-    e.chol_inv_diag[j] = inv;
-    for (std::size_t i = j + 1; i < ud; ++i) {
-      double v = m[i * ud + j];
-      for (std::size_t k = 0; k < j; ++k) v -= m[i * ud + k] * m[j * ud + k];
-      m[i * ud + j] = v * inv;
-    }
-  }
-  // G = L⁻¹·Jᵀ, coordinate by coordinate over all rows.
-  e.g.resize(ud * n);
-  double* g = e.g.data();
-  const double* jrows = e.jrows.data();
-  for (std::size_t i = 0; i < ud; ++i) {
-    double* gi = g + i * n;
-    for (std::size_t r = 0; r < n; ++r) gi[r] = jrows[r * ud + i];
-    for (std::size_t k = 0; k < i; ++k) {
-      const double lik = m[i * ud + k];
-      if (lik == 0) continue;
-      const double* gk = g + k * n;
-      for (std::size_t r = 0; r < n; ++r) gi[r] -= lik * gk[r];
-    }
-    const double inv = e.chol_inv_diag[i];
-    for (std::size_t r = 0; r < n; ++r) gi[r] *= inv;
-  }
-  // A = Gᵀ·G: the upper triangle summed coordinate by coordinate, then mirrored.
-  double* a = e.a.data();
-  for (std::size_t r = 0; r < n; ++r) std::fill(a + r * n + r, a + r * n + n, 0.0);
-  for (std::size_t k = 0; k < ud; ++k) {
-    const double* gk = g + k * n;
-    for (std::size_t r = 0; r < n; ++r) {
-      const double gkr = gk[r];
-      if (gkr == 0) continue;
-      double* ar = a + r * n;
-      for (std::size_t c = r; c < n; ++c) ar[c] += gkr * gk[c];
-    }
-  }
-  for (std::size_t r = 0; r < n; ++r)
-    for (std::size_t c = r + 1; c < n; ++c) a[c * n + r] = a[r * n + c];
-}
-
-void World::Impl::velocity_change(const double* lambda, double* dv) {
-  MultibodyEngine& e = *mb;
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
-  if (!e.planar_mass) {
-    Eigen::Map<Eigen::VectorXd>(dv, e.dofs).noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(lambda, static_cast<Eigen::Index>(n));
-    return;
-  }
-  // dv = L⁻ᵀ·(G·λ)
-  const double* m = e.chol.data();
-  for (std::size_t i = 0; i < ud; ++i) {
-    const double* gi = e.g.data() + i * n;
-    double y = 0;
-    for (std::size_t r = 0; r < n; ++r) y += gi[r] * lambda[r];
-    e.g_lambda[i] = y;
-  }
-  for (std::size_t i = ud; i-- > 0;) {
-    double v = e.g_lambda[i];
-    for (std::size_t k = i + 1; k < ud; ++k) v -= m[k * ud + i] * dv[k];
-    dv[i] = v * e.chol_inv_diag[i];
-  }
 }
 
 // Forces, motor torques and power flows of the step just taken (velocities after it).
