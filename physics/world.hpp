@@ -131,6 +131,19 @@ class World {
   // always 0 for rigid_bodies. A run stops at the first (sim/run_bounds.hpp).
   long failed_solves() const;
 
+  // solver.mass_matrix planar (multibody, a tree turning about z): with the check on, every
+  // step also takes Bullet's articulated-body solves for M⁻¹ and its Jacobian tree walks for the
+  // links, and records the largest |M·M⁻¹ − I| (M the planar mass matrix) and the largest
+  // difference of a link Jacobian's entries (1 or m) seen: that both paths state the same
+  // equations, to rounding (docs/solver.md, "The planar mass matrix"). Costs the articulated
+  // path's time; off by default. steps stays 0 where the planar path is not used.
+  struct MassMatrixCheck {
+    long steps = 0;
+    double identity_residual = 0, jacobian_difference = 0;
+  };
+  void set_mass_matrix_check(bool on);
+  const MassMatrixCheck& mass_matrix_check() const;
+
   // Bodies, joints and meshing pairs as built (call before the first step for t = 0).
   WorldStructure structure() const;
 

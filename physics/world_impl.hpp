@@ -163,6 +163,8 @@ struct MultibodyEngine {
   std::vector<double> chol_inv_diag;                 // dofs: 1 / L's diagonal
   std::vector<double> g;                             // dofs × rows: G = L⁻¹·Jᵀ
   std::vector<double> g_lambda;                      // dofs: G·λ
+  bool check_mass = false;                           // World::set_mass_matrix_check
+  World::MassMatrixCheck mass_check;
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
   double theta = 1;  // spring rows at s + θ·h·ṡ_θ, positions with (1 − θ)·v + θ·v⁺; 1: implicit Euler
   // BDF2 (solver.integrator bdf2): v⁺ = v̂ + h_eff·M⁻¹·F(x⁺, v⁺), x⁺ = x + h·v_move with
@@ -259,6 +261,7 @@ struct World::Impl {
   void build_planar_mass();
   void planar_link_jacobians();
   void planar_mass_rows();
+  void check_planar_mass(const double* m_lower);
   bool solve_rows_dantzig_fixed_friction();
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).
   void velocity_change(const double* lambda, double* dv);

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "physics/world_impl.hpp"
@@ -87,6 +88,7 @@ void World::Impl::planar_mass_rows() {
         m[ua * ud + ub] += mass * (jx[ua] * jx[ub] + jy[ua] * jy[ub]) + izz * jw[ua] * jw[ub];
       }
   }
+  if (e.check_mass) check_planar_mass(m);
   e.chol_inv_diag.resize(ud);
   for (std::size_t j = 0; j < ud; ++j) {
     double s = m[j * ud + j];
@@ -153,6 +155,55 @@ void World::Impl::velocity_change(const double* lambda, double* dv) {
     for (std::size_t k = i + 1; k < ud; ++k) v -= m[k * ud + i] * dv[k];
     dv[i] = v * e.chol_inv_diag[i];
   }
+}
+
+// World::set_mass_matrix_check: this step's M (lower triangle, before its factorisation) against
+// the articulated-body solves' M⁻¹, and e.link_jac against Bullet's tree walks, at the same pose.
+void World::Impl::check_planar_mass(const double* m_lower) {
+  MultibodyEngine& e = *mb;
+  btMultiBody& t = *e.tree;
+  const std::size_t ud = static_cast<std::size_t>(e.dofs), links = static_cast<std::size_t>(t.getNumLinks());
+  std::vector<double> minv(ud * ud), buf(6 + ud), out(6 + ud);
+  for (std::size_t k = 0; k < ud; ++k) {
+    std::fill(buf.begin(), buf.end(), 0.0);
+    buf[6 + k] = 1;
+    t.calcAccelerationDeltasMultiDof(buf.data(), out.data(), e.scratch_r, e.scratch_v);
+    for (std::size_t r = 0; r < ud; ++r) minv[r * ud + k] = out[6 + r];
+  }
+  double residual = 0;
+  for (std::size_t i = 0; i < ud; ++i)
+    for (std::size_t j = 0; j < ud; ++j) {
+      double v = 0;
+      for (std::size_t k = 0; k < ud; ++k) v += (k <= i ? m_lower[i * ud + k] : m_lower[k * ud + i]) * minv[k * ud + j];
+      residual = std::max(residual, std::abs(v - (i == j ? 1.0 : 0.0)));
+    }
+  // ω_z as the y velocity of a point 1 m along x from the centre less the centre's (Bullet's
+  // angular Jacobian of a planar joint leaves out the spin), v_x and v_y of the centre.
+  double difference = 0;
+  const btVector3 ex(1, 0, 0), ey(0, 1, 0);
+  std::vector<double> rows(3 * ud);
+  for (std::size_t l = 0; l < links; ++l) {
+    const btVector3 centre = t.getLink(static_cast<int>(l)).m_cachedWorldTransform.getOrigin();
+    const btVector3 points[3] = {centre + ex, centre, centre}, dirs[3] = {ey, ex, ey};
+    for (std::size_t c = 0; c < 3; ++c) {
+      t.fillContactJacobianMultiDof(static_cast<int>(l), points[c], dirs[c], buf.data(), e.scratch_r, e.scratch_v, e.scratch_m);
+      std::copy(buf.begin() + 6, buf.end(), rows.begin() + static_cast<std::ptrdiff_t>(c * ud));
+    }
+    for (std::size_t k = 0; k < ud; ++k) rows[k] -= rows[2 * ud + k];
+    for (std::size_t i = 0; i < 3 * ud; ++i) difference = std::max(difference, std::abs(rows[i] - e.link_jac[l * 3 * ud + i]));
+  }
+  ++e.mass_check.steps;
+  e.mass_check.identity_residual = std::max(e.mass_check.identity_residual, residual);
+  e.mass_check.jacobian_difference = std::max(e.mass_check.jacobian_difference, difference);
+}
+
+void World::set_mass_matrix_check(bool on) {
+  if (impl_->mb) impl_->mb->check_mass = on;
+}
+
+const World::MassMatrixCheck& World::mass_matrix_check() const {
+  static const MassMatrixCheck kNone;
+  return impl_->mb ? impl_->mb->mass_check : kNone;
 }
 
 }  // namespace gearsim::physics
