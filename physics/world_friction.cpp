@@ -85,8 +85,11 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     }
     if (!changed) break;
     ++profile.friction_rounds;
-    if (e.active_set && solve_row_lcp(n, e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(), e.x.data(), e.row_states.data(), e.lcp) > 0)
+    if (e.active_set && (e.planar_mass ? solve_rows_folded()
+                                       : solve_row_lcp(n, e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(), e.x.data(),
+                                                       e.row_states.data(), e.lcp)) > 0)
       continue;
+    if (e.planar_mass) planar_full_a();
     const std::lock_guard<std::mutex> lock(dantzig_flag());
     solved = solve_rows_dantzig_fixed_friction();
   }

@@ -163,6 +163,13 @@ struct MultibodyEngine {
   std::vector<double> chol_inv_diag;                 // dofs: 1 / L's diagonal
   std::vector<double> g;                             // dofs × rows: G = L⁻¹·Jᵀ
   std::vector<double> g_lambda;                      // dofs: G·λ
+  std::vector<double> diag_a, compliance;            // per row: (G·Gᵀ)_ii, the compliance added to it
+  bool a_formed = false;                             // e.a holds this step's dense A (planar_full_a)
+  // solve_rows_folded(): the rows kept (not friction held at a multiple of its normal), each row's
+  // index among them (−1: held), their g and column vectors h, and the folded problem.
+  std::vector<int> fold_kept, fold_index, fold_findex;
+  std::vector<double> fold_g, fold_h, fold_a, fold_b, fold_lo, fold_hi, fold_x;
+  std::vector<RowBound> fold_states;
   bool check_mass = false;                           // World::set_mass_matrix_check
   World::MassMatrixCheck mass_check;
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
@@ -261,6 +268,8 @@ struct World::Impl {
   void build_planar_mass();
   void planar_link_jacobians();
   void planar_mass_rows();
+  void planar_full_a();
+  int solve_rows_folded();
   void check_planar_mass(const double* m_lower);
   bool solve_rows_dantzig_fixed_friction();
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).

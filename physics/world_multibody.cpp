@@ -381,8 +381,8 @@ void World::Impl::solve_multibody_rows() {
   const int n = static_cast<int>(e.rows.size()), dofs = e.dofs;
   e.x.assign(static_cast<std::size_t>(n), 0);
   if (n == 0) return;
-  e.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(e.a.data(), n, n);
+  if (!e.planar_mass) e.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(e.a.data(), e.planar_mass ? 0 : n, e.planar_mass ? 0 : n);
   if (e.planar_mass) {
     planar_mass_rows();
   } else {
@@ -407,6 +407,7 @@ void World::Impl::solve_multibody_rows() {
   e.hi.resize(static_cast<std::size_t>(n));
   e.findex.resize(static_cast<std::size_t>(n));
   e.slip_drift.assign(static_cast<std::size_t>(n), 0.0);
+  if (e.planar_mass) e.compliance.resize(static_cast<std::size_t>(n));
   std::size_t drift_hint = 0;
   for (int i = 0; i < n; ++i) {
     const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
@@ -414,7 +415,8 @@ void World::Impl::solve_multibody_rows() {
     // own diagonal: the matrix is then positive definite, so the solve exists and is unique even
     // for dependent rows (several sticking contacts on two one-coordinate gears), while a
     // sticking contact creeps by 1e-8 of the velocity change its impulse makes.
-    a(i, i) += r.cfm > 0 ? r.cfm : kStiffRow * a(i, i);
+    if (e.planar_mass) e.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : kStiffRow * e.diag_a[static_cast<std::size_t>(i)];
+    else a(i, i) += r.cfm > 0 ? r.cfm : kStiffRow * a(i, i);
     e.b[static_cast<std::size_t>(i)] = r.target - r.start_rate_weight * j_v_start(i) - j_v(i);
     if (r.move_rate_weight != 0) e.b[static_cast<std::size_t>(i)] -= r.move_rate_weight * e.row_rate_move(i);
     e.lo[static_cast<std::size_t>(i)] = r.lo;
@@ -429,6 +431,7 @@ void World::Impl::solve_multibody_rows() {
   bool solved = e.active_set && solve_rows_active_set();
   if (!solved) {
     ++profile.dantzig_solves;
+    if (e.planar_mass) planar_full_a();
     const std::lock_guard<std::mutex> lock(dantzig_flag());
     solved = e.sliding_friction ? solve_rows_dantzig_fixed_friction()
                                 : btSolveDantzigLCP(n, e.a.data(), e.x.data(), e.b.data(), e.w.data(), 0, e.lo.data(), e.hi.data(), e.findex.data(), e.dantzig);

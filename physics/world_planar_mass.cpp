@@ -119,8 +119,25 @@ void World::Impl::planar_mass_rows() {
     const double inv = e.chol_inv_diag[i];
     for (std::size_t r = 0; r < n; ++r) gi[r] *= inv;
   }
-  // A = Gᵀ·G: the upper triangle summed coordinate by coordinate, then mirrored.
+  // A's diagonal (each row's compliance is taken relative to it); A itself only where a Dantzig
+  // fallback needs it (planar_full_a): the active set solves the folded rows (solve_rows_folded).
+  e.diag_a.assign(n, 0.0);
+  for (std::size_t k = 0; k < ud; ++k) {
+    const double* gk = g + k * n;
+    for (std::size_t r = 0; r < n; ++r) e.diag_a[r] += gk[r] * gk[r];
+  }
+  e.a_formed = false;
+}
+
+// The dense A = Gᵀ·G + diag(compliance), n × n, for Bullet's Dantzig solver (the active set's
+// fallback): the upper triangle summed coordinate by coordinate, then mirrored.
+void World::Impl::planar_full_a() {
+  MultibodyEngine& e = *mb;
+  if (e.a_formed) return;
+  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
+  e.a.resize(n * n);
   double* a = e.a.data();
+  const double* g = e.g.data();
   for (std::size_t r = 0; r < n; ++r) std::fill(a + r * n + r, a + r * n + n, 0.0);
   for (std::size_t k = 0; k < ud; ++k) {
     const double* gk = g + k * n;
@@ -131,8 +148,77 @@ void World::Impl::planar_mass_rows() {
       for (std::size_t c = r; c < n; ++c) ar[c] += gkr * gk[c];
     }
   }
-  for (std::size_t r = 0; r < n; ++r)
+  for (std::size_t r = 0; r < n; ++r) {
+    a[r * n + r] += e.compliance[r];
     for (std::size_t c = r + 1; c < n; ++c) a[c * n + r] = a[r * n + c];
+  }
+  e.a_formed = true;
+}
+
+// The active set on the folded rows (docs/solver.md, "The planar mass matrix"): a friction row
+// held at a fixed multiple c of its normal's impulse (lo = hi: sliding friction) is no unknown and
+// has no condition, so it leaves the problem, its impulse folded into its normal's column —
+// A'_iu = g_i·(g_u + Σ c_t·g_t) over the held rows t of normal u — and restored after the solve
+// (c·λ_u; 0 where the normal carries nothing). The same solution as the full rows' (the active set
+// there does the same folding, row by row); n² dot products of the full A become (n − held)².
+// Returns the linear solves it took, 0 where it did not settle.
+int World::Impl::solve_rows_folded() {
+  MultibodyEngine& e = *mb;
+  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
+  const double* g = e.g.data();
+  e.fold_index.assign(n, -1);
+  e.fold_kept.clear();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(e.findex[i] >= 0 && !(e.hi[i] > e.lo[i]))) e.fold_index[i] = static_cast<int>(e.fold_kept.size()), e.fold_kept.push_back(static_cast<int>(i));
+  const std::size_t m = e.fold_kept.size();
+  // Per kept row its g and its column's h = g plus its held friction rows' c·g, by row.
+  e.fold_g.resize(m * ud);
+  e.fold_h.resize(m * ud);
+  for (std::size_t r = 0; r < m; ++r)
+    for (std::size_t k = 0; k < ud; ++k) e.fold_h[r * ud + k] = e.fold_g[r * ud + k] = g[k * n + static_cast<std::size_t>(e.fold_kept[r])];
+  for (std::size_t t = 0; t < n; ++t) {
+    if (e.fold_index[t] >= 0) continue;
+    double* h = e.fold_h.data() + static_cast<std::size_t>(e.fold_index[static_cast<std::size_t>(e.findex[t])]) * ud;
+    for (std::size_t k = 0; k < ud; ++k) h[k] += e.lo[t] * g[k * n + t];
+  }
+  e.fold_a.resize(m * m);
+  e.fold_b.resize(m);
+  e.fold_lo.resize(m);
+  e.fold_hi.resize(m);
+  e.fold_x.resize(m);
+  e.fold_findex.resize(m);
+  e.fold_states.resize(m);
+  for (std::size_t r = 0; r < m; ++r) {
+    const std::size_t i = static_cast<std::size_t>(e.fold_kept[r]);
+    const double* gr = e.fold_g.data() + r * ud;
+    for (std::size_t c = 0; c < m; ++c) {
+      const double* hc = e.fold_h.data() + c * ud;
+      double v = 0;
+      for (std::size_t k = 0; k < ud; ++k) v += gr[k] * hc[k];
+      e.fold_a[r * m + c] = v;
+    }
+    e.fold_a[r * m + r] += e.compliance[i];
+    e.fold_b[r] = e.b[i];
+    e.fold_lo[r] = e.lo[i];
+    e.fold_hi[r] = e.hi[i];
+    e.fold_findex[r] = e.findex[i] >= 0 ? e.fold_index[static_cast<std::size_t>(e.findex[i])] : -1;
+    e.fold_states[r] = e.row_states[i];
+  }
+  const int solves = solve_row_lcp(static_cast<int>(m), e.fold_a.data(), e.fold_b.data(), e.fold_lo.data(), e.fold_hi.data(),
+                                   e.fold_findex.data(), e.fold_x.data(), e.fold_states.data(), e.lcp);
+  if (solves == 0) return 0;
+  for (std::size_t r = 0; r < m; ++r) {
+    const std::size_t i = static_cast<std::size_t>(e.fold_kept[r]);
+    e.x[i] = e.fold_x[r];
+    e.row_states[i] = e.fold_states[r];
+  }
+  for (std::size_t t = 0; t < n; ++t) {
+    if (e.fold_index[t] >= 0) continue;
+    const double normal = e.x[static_cast<std::size_t>(e.findex[t])];
+    e.x[t] = normal == 0 ? 0.0 : e.lo[t] * normal;
+    e.row_states[t] = RowBound::lower;
+  }
+  return solves;
 }
 
 void World::Impl::velocity_change(const double* lambda, double* dv) {
