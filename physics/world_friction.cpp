@@ -59,8 +59,10 @@ bool World::Impl::locate_slip_reversals(bool solved) {
   // bracket each round's g narrows (other rows held: the coupling between contacts is weak).
   Eigen::Map<Eigen::VectorXd> dv(e.buf.data() + 6, dofs);
   e.slip_brackets.assign(static_cast<std::size_t>(n), MultibodyEngine::SlipBracket{});
+  bool dv_of_x = false;  // dv is M⁻¹·Jᵀ·x of the present x
   for (int round = 0; solved && round < kSlipRounds; ++round) {
     velocity_change(e.x.data(), dv.data());
+    dv_of_x = true;
     bool changed = false;
     for (int i = 0; i < n; ++i) {
       const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
@@ -85,6 +87,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     }
     if (!changed) break;
     ++profile.friction_rounds;
+    dv_of_x = false;
     if (e.active_set && (e.planar_mass ? solve_rows_folded()
                                        : solve_row_lcp(n, e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(), e.x.data(),
                                                        e.row_states.data(), e.lcp)) > 0)
@@ -94,7 +97,8 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     solved = solve_rows_dantzig_fixed_friction();
   }
   {  // each contact's slip at the step's end on this step's rows, for the next step's drift
-    velocity_change(e.x.data(), dv.data());
+    if (!dv_of_x) velocity_change(e.x.data(), dv.data());
+    e.dv_of_x = true;  // solve_multibody_rows applies it
     std::swap(e.slip_end_before, e.slip_end);
     e.slip_end.clear();
     e.slip_end_h = e.h_step;  // the (sub)step these end slips close (the drift is per its length)

@@ -147,6 +147,7 @@ struct MultibodyEngine {
     int last = 0;  // which end the last round moved: +1 lo, −1 hi
   };
   std::vector<SlipBracket> slip_brackets;
+  bool dv_of_x = false;  // buf[6…] holds M⁻¹·Jᵀ·x of this step's x (locate_slip_reversals left it)
   std::vector<std::pair<ContactKey, double>> slip_end, slip_end_before;
   bool planar = false;            // every joint axis along z: rows from link_jac (world_multibody.cpp)
   std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs

@@ -428,6 +428,7 @@ void World::Impl::solve_multibody_rows() {
     if (e.sliding_friction && r.kind == MultibodyRow::contact_friction && j_v_start(i) != 0)
       e.lo[static_cast<std::size_t>(i)] = e.hi[static_cast<std::size_t>(i)] = j_v_start(i) > 0 ? -r.hi : r.hi;  // r.hi = μ
   }
+  e.dv_of_x = false;
   bool solved = e.active_set && solve_rows_active_set();
   if (!solved) {
     ++profile.dantzig_solves;
@@ -438,8 +439,12 @@ void World::Impl::solve_multibody_rows() {
   }
   if (e.sliding_friction) solved = locate_slip_reversals(solved);
   if (!solved) ++e.failed_solves;
-  std::fill(e.buf.begin(), e.buf.end(), 0.0);
-  velocity_change(e.x.data(), e.buf.data() + 6);
+  if (e.dv_of_x) {
+    std::fill(e.buf.begin(), e.buf.begin() + 6, 0.0);
+  } else {
+    std::fill(e.buf.begin(), e.buf.end(), 0.0);
+    velocity_change(e.x.data(), e.buf.data() + 6);
+  }
   t.applyDeltaVeeMultiDof(e.buf.data(), 1);
 }
 
