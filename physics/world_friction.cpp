@@ -120,7 +120,7 @@ bool World::Impl::solve_rows_dantzig_fixed_friction() {
   const auto at = [](int i) { return static_cast<std::size_t>(i); };
   std::vector<int> kept, fixed, slot(at(n), -1);
   for (int i = 0; i < n; ++i) {
-    if (e.findex[at(i)] >= 0 && !(e.hi[at(i)] > e.lo[at(i)])) fixed.push_back(i);
+    if (e.held_friction(at(i))) fixed.push_back(i);
     else slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
   }
   const int m = static_cast<int>(kept.size());

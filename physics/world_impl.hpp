@@ -148,6 +148,8 @@ struct MultibodyEngine {
   };
   std::vector<SlipBracket> slip_brackets;
   bool dv_of_x = false;  // buf[6…] holds M⁻¹·Jᵀ·x of this step's x (locate_slip_reversals left it)
+  // Row i is friction held at a fixed multiple of its normal's impulse (lo = hi): no unknown of the solve.
+  bool held_friction(std::size_t i) const { return findex[i] >= 0 && !(hi[i] > lo[i]); }
   std::vector<std::pair<ContactKey, double>> slip_end, slip_end_before;
   bool planar = false;            // every joint axis along z: rows from link_jac (world_multibody.cpp)
   std::vector<double> link_jac;   // per link: rows ω_z, v_x, v_y of its centre over the dofs

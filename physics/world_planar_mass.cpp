@@ -169,7 +169,7 @@ int World::Impl::solve_rows_folded() {
   e.fold_index.assign(n, -1);
   e.fold_kept.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (!(e.findex[i] >= 0 && !(e.hi[i] > e.lo[i]))) e.fold_index[i] = static_cast<int>(e.fold_kept.size()), e.fold_kept.push_back(static_cast<int>(i));
+    if (!e.held_friction(i)) e.fold_index[i] = static_cast<int>(e.fold_kept.size()), e.fold_kept.push_back(static_cast<int>(i));
   const std::size_t m = e.fold_kept.size();
   // Per kept row its g and its column's h = g plus its held friction rows' c·g, by row.
   e.fold_g.resize(m * ud);
