@@ -256,13 +256,16 @@ Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& cen
   // Any point p of the tooth moves in y's frame by Δc + (R1 − R0)(p − c): at most the tooth
   // centre's move plus |Δturn| times the tooth's bounding radius (|R1 − R0| = 2|sin(Δturn/2)| ≤
   // |Δturn|).
-  const double travel =
-      rec.travel_m > 0 || rec.tracked ? (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m
-                                      : 0;
-  if (rec.travel_m > 0 && travel < rec.travel_m) {
-    ++counts.skipped;
-    return {};
+  // The skip test first, without a square root: |Δc| + |Δturn|·reach + rounding < travel_m.
+  if (rec.travel_m > 0) {
+    const double left = rec.travel_m - std::abs(turn - rec.turn_rad) * reach - kTravelRounding_m;
+    if (left > 0 && (centre - rec.tooth_centre_in_y_m).squaredNorm() < left * left) {
+      ++counts.skipped;
+      return {};
+    }
   }
+  const double travel =
+      rec.tracked ? (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m : 0;
   FlankSamples s(xy, k, f, hint);
   bool refine;
   if (rec.tracked && travel <= track_of->span_m) {  // only the first gear's flanks are tracked
@@ -312,10 +315,13 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     const bool tip_only = pass == 1;
     const double turn = x.pose.angle_rad - y.pose.angle_rad, reach = x.table.tooth_bound_radius_m();
     std::vector<FlankRecord>& records = records_[pass];
+    const double outer = y.table.r_max_m() + reach, outer2 = outer * outer, inner = y.table.r_min_m() - reach;
     int hint = -1;
     for_each_tooth(window, x.table.teeth(), [&](int k) {
-      if (!tooth_near(x, k, y)) return;
+      // tooth_near(x, k, y), from the tooth's centre in y's frame (y's centre at the origin).
       const Vector2d centre = xy.in_y(x.table.tooth_centre(k));
+      const double d2 = centre.squaredNorm();
+      if (!(d2 < outer2 && (inner < 0 || d2 > inner * inner))) return;
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];

@@ -95,32 +95,33 @@ bool tooth_near(const Frame& x, int k, const Frame& y) {
 }
 
 // The teeth of x that tooth_near() can accept lie within an angular window about the direction
-// from x's centre to y's (tooth centres all sit on one circle about x's centre): a tooth outside
-// it is skipped without the test. `centre_k` is the tooth facing y, `half` the window's half
-// width in teeth (a tooth more for rounding); half < 0: every tooth is tested.
+// from x's centre to y's (tooth centres all sit on one circle about x's centre, at the tooth
+// angles): a tooth outside it is skipped without the test. The window holds `count` teeth from
+// `first` on (modulo the teeth); count < 0: every tooth is tested.
 struct ToothWindow {
-  int centre_k = 0, half = -1;
+  int first = 0, count = -1;
 };
 
 // Calls visit(k) for every tooth k of `teeth` the window holds, in increasing k (the order the
 // probing's tooth hints follow), without testing the others.
 template <class Visit>
 void for_each_tooth(const ToothWindow& w, int teeth, Visit&& visit) {
-  if (w.half < 0) {
+  if (w.count < 0) {
     for (int k = 0; k < teeth; ++k) visit(k);
     return;
   }
-  const int lo = w.centre_k - w.half, hi = w.centre_k + w.half;  // 2·half + 1 < teeth
-  if (lo < 0) {
-    for (int k = 0; k <= hi; ++k) visit(k);
-    for (int k = lo + teeth; k < teeth; ++k) visit(k);
-  } else if (hi >= teeth) {
-    for (int k = 0; k <= hi - teeth; ++k) visit(k);
-    for (int k = lo; k < teeth; ++k) visit(k);
+  const int last = w.first + w.count - 1;  // count < teeth, 0 ≤ first < teeth
+  if (last >= teeth) {
+    for (int k = 0; k <= last - teeth; ++k) visit(k);
+    for (int k = w.first; k < teeth; ++k) visit(k);
   } else {
-    for (int k = lo; k <= hi; ++k) visit(k);
+    for (int k = w.first; k <= last; ++k) visit(k);
   }
 }
+
+// Angle added to the window's half width, rad: rough_atan2's error (≤ 1e-5 rad) and the rounding
+// of the tooth angles (far below), with a wide margin; acos_above() is never below acos.
+constexpr double kToothWindowMargin_rad = 1e-4;
 
 ToothWindow tooth_window(const Frame& x, const Frame& y) {
   ToothWindow w;
@@ -128,19 +129,22 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
   const double dist = to_y.norm(), r_c = x.table.tooth_centre(0).norm();
   const double outer = y.table.r_max_m() + x.table.tooth_bound_radius_m();
   if (!(dist > 0 && r_c > 0)) return w;
-  // |c_k − c_y|² = r_c² + dist² − 2·r_c·dist·cos Δ < outer² ⇔ cos Δ > cos_limit.
+  // |c_k − c_y|² = r_c² + dist² − 2·r_c·dist·cos Δ < outer² ⇔ cos Δ > cos_limit, Δ the angle
+  // between tooth k's centre and the direction to y's centre.
   const double cos_limit = (r_c * r_c + dist * dist - outer * outer) / (2 * r_c * dist);
   if (cos_limit <= -1) return w;
   const double pitch = x.table.pitch_angle_rad();
-  // The window's centre and width from angles without libm (rough_atan2: 1e-5 rad; acos_above:
-  // never below acos): the tooth of margin covers both, so the teeth it holds are the same.
+  // Tooth k lies at k·pitch from tooth 0; y's centre at `facing`. The window: every k with
+  // |k·pitch − facing| ≤ half (mod 2π), half from angles without libm plus the margin.
   const double facing = rough_atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0);
   const int teeth = x.table.teeth();
-  w.centre_k = static_cast<int>(std::lround(facing / pitch)) % teeth;
-  if (w.centre_k < 0) w.centre_k += teeth;
-  const double half_rad = cos_limit >= 1 ? 0.0 : acos_above(cos_limit);
-  w.half = static_cast<int>(std::ceil(half_rad / pitch)) + 1;
-  if (2 * w.half + 1 >= teeth) w.half = -1;
+  const double half = (cos_limit >= 1 ? 0.0 : acos_above(cos_limit)) + kToothWindowMargin_rad;
+  const double lo = std::ceil((facing - half) / pitch), hi = std::floor((facing + half) / pitch);
+  if (!(hi - lo + 1 < teeth)) return w;
+  w.count = hi < lo ? 0 : static_cast<int>(hi - lo) + 1;
+  const double first = std::fmod(lo, static_cast<double>(teeth));
+  w.first = static_cast<int>(first < 0 ? first + teeth : first);
+  if (w.first >= teeth) w.first -= teeth;
   return w;
 }
 
