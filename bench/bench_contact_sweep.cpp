@@ -122,14 +122,16 @@ int main(int argc, char** argv) {
         }
         flanks.searched += search.counts().searched, flanks.skipped += search.counts().skipped;
         flanks.tracked += search.counts().tracked, flanks.continued += search.counts().continued;
+        flanks.renewed += search.counts().renewed;
       }
   }
   std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",
               sw.name.c_str(), sw.pairs.size(), calls, sw.steps, sw.step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
               1e6 * seconds / static_cast<double>(calls));
   if (coherent)
-    std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%), %ld continued\n",
+    std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%), %ld renewed, %ld continued\n",
                 flanks.searched, flanks.tracked, flanks.skipped,
-                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped), flanks.continued);
+                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped + flanks.renewed),
+                flanks.renewed, flanks.continued);
   return 0;
 }

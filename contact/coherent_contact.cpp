@@ -77,9 +77,12 @@ double sample_travel(const XY& xy, const Vector2d& p_x, double d, double window,
   return best;
 }
 
+using SampleTravels = CoherentToothSearch::SampleTravels;
+
 // How far the flank's tooth may move before the stateless search could find anything on the
-// flank, m (0: search it next time). `s`: the flank as the search left it (no contact).
-double clear_travel(const FlankSamples& s, bool tip_only) {
+// flank, m (0: search it next time). `s`: the flank as the search left it (no contact). `t`: each
+// sample's own travel (+∞ for those the search does not look at), where the result is > 0.
+double clear_travel(const FlankSamples& s, bool tip_only, SampleTravels& t) {
   constexpr int n = FlankSamples::n;
   for (int i = 0; i < n; ++i)
     if (s.depth[i] > -kRecordBeyondWindows * s.window) return 0;
@@ -96,12 +99,45 @@ double clear_travel(const FlankSamples& s, bool tip_only) {
   }
   int hint = s.hint;  // a copy: the search's own hint sequence stays as the stateless one
   double travel = std::numeric_limits<double>::infinity();
+  t.fill(std::numeric_limits<double>::infinity());
   for (std::uint32_t todo = relevant; todo != 0; todo &= todo - 1) {
     const int i = std::countr_zero(todo);
-    travel = std::min(travel, sample_travel(s.xy, s.xy.x.table.probe_point(s.k, s.f, i), s.depth[i], s.window, hint));
+    t[static_cast<std::size_t>(i)] = sample_travel(s.xy, s.xy.x.table.probe_point(s.k, s.f, i), s.depth[i], s.window, hint);
+    travel = std::min(travel, t[static_cast<std::size_t>(i)]);
     if (!(travel > 0)) return 0;
   }
   return std::isfinite(travel) ? travel : 0;
+}
+
+// A clear flank's record whose travel has run out, `moved` (a bound on how far every point of its
+// tooth has moved since the record's pose): each sample's own bound (sample_travel()) concerns
+// its own point only, so a sample whose travel exceeds `moved` is still clear, for what is left
+// of its travel from the pose now (the moves from the record's pose and from now add up to at
+// most the move from the record's). The others are measured again and bounded afresh as
+// clear_travel() does. True: the flank is clear, `t` holds the samples' travels from now and
+// `travel` their least — the stateless search finds nothing on it, as after a full search that
+// makes a record. False: search it in full (a sample within kRecordBeyondWindows windows, or
+// one without a bound); `t` is then stale.
+bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, double& travel, int hint) {
+  const FlankTable& xt = xy.x.table;
+  const double window = refine_window_m(xt.probe_radius(1) - xt.probe_radius(0));
+  double least = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (!(t[i] < std::numeric_limits<double>::infinity())) continue;  // a sample the search does not look at
+    double left = t[i] - moved;
+    if (!(left > 0)) {
+      const Vector2d p = xt.probe_point(k, f, static_cast<int>(i));
+      const double d = depth_of(xy, p, hint);
+      if (d > -kRecordBeyondWindows * window) return false;
+      left = sample_travel(xy, p, d, window, hint);
+      if (!(left > 0)) return false;
+    }
+    t[i] = left;
+    least = std::min(least, left);
+  }
+  if (!(least > 0 && std::isfinite(least))) return false;
+  travel = least;
+  return true;
 }
 
 // Travel up to which a tracked flank's bounds hold, in refinement windows: beyond it the flank is
@@ -251,8 +287,8 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
 // hit; tracked: only the samples that can hold the deepest probed) or by a full search that
 // makes the record afresh. No hit: depth kNone, tooth_y −1.
 Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& centre, double turn, double reach,
-                CoherentToothSearch::FlankRecord& rec, CoherentToothSearch::TrackedFlank* track_of, int& hint,
-                CoherentToothSearch::Counts& counts) {
+                CoherentToothSearch::FlankRecord& rec, SampleTravels& travels, CoherentToothSearch::TrackedFlank* track_of,
+                int& hint, CoherentToothSearch::Counts& counts) {
   // Any point p of the tooth moves in y's frame by Δc + (R1 − R0)(p − c): at most the tooth
   // centre's move plus |Δturn| times the tooth's bounding radius (|R1 − R0| = 2|sin(Δturn/2)| ≤
   // |Δturn|).
@@ -261,6 +297,15 @@ Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& cen
     const double left = rec.travel_m - std::abs(turn - rec.turn_rad) * reach - kTravelRounding_m;
     if (left > 0 && (centre - rec.tooth_centre_in_y_m).squaredNorm() < left * left) {
       ++counts.skipped;
+      return {};
+    }
+    const double moved = (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m;
+    double renewed = 0;
+    if (renew_clear(xy, k, f, moved, travels, renewed, hint)) {
+      rec.tooth_centre_in_y_m = centre;
+      rec.turn_rad = turn;
+      rec.travel_m = renewed;
+      ++counts.renewed;
       return {};
     }
   }
@@ -276,7 +321,7 @@ Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& cen
     refine = tip_only ? probe_tip(s) : probe_flank(s);
     rec.tooth_centre_in_y_m = centre;
     rec.turn_rad = turn;
-    rec.travel_m = refine ? -1 : clear_travel(s, tip_only);
+    rec.travel_m = refine ? -1 : clear_travel(s, tip_only, travels);
     // A flank of the first gear that cannot be skipped is tracked (its probing is what costs).
     rec.tracked = !tip_only && s.best_i >= 0 && !(rec.travel_m > 0);
     if (rec.tracked) track(s, *track_of, kTrackSpanWindows * s.window);
@@ -300,6 +345,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     tracks_.assign(records_[0].size(), TrackedFlank{});
     solutions_[0].assign(records_[0].size(), Solution{});
     solutions_[1].assign(records_[1].size(), Solution{});
+    travels_[0].resize(records_[0].size());
+    travels_[1].resize(records_[1].size());
   }
   ++calls_;
   const Frame a{ta, pa}, b{tb, pb};
@@ -359,7 +406,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
             continued = h;
           }
         }
-        const Hit sampled = sampled_hit(xy, k, f, tip_only, centre, turn, reach, rec, pass == 0 ? &tracks_[at] : nullptr, hint, counts_);
+        const Hit sampled =
+            sampled_hit(xy, k, f, tip_only, centre, turn, reach, rec, travels_[pass][at], pass == 0 ? &tracks_[at] : nullptr, hint, counts_);
         if (continued.depth > kNone && !(sampled.depth > continued.depth)) {
           emit(continued);  // deeper: the continued maximum, which goes on being continued
           continue;

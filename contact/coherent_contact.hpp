@@ -43,8 +43,10 @@ class CoherentToothSearch {
 
   // Flanks searched in full, tracked (only the samples that can hold the deepest probed),
   // skipped and continued since construction (both probing passes).
+  // Renewed: a clear flank whose record ran out, found clear again by measuring only the samples
+  // whose own travel had run out (coherent_contact.cpp, renew_clear()).
   struct Counts {
-    long searched = 0, tracked = 0, skipped = 0, continued = 0;
+    long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0;
   };
   const Counts& counts() const { return counts_; }
 
@@ -58,6 +60,10 @@ class CoherentToothSearch {
     double travel_m = -1;  // > 0: no contact within this travel
     bool tracked = false;  // the flank's TrackedFlank holds
   };
+  // Per probe sample of a flank whose record holds a travel (`travel_m` > 0): the sample's own
+  // travel from the record's pose (+∞: a sample the search does not look at); travel_m is their
+  // least.
+  using SampleTravels = std::array<double, FlankTable::kProbeRadii>;
   // Per probe sample of a tracked flank (coherent_contact.cpp, sample_bound()): how its depth D
   // can have risen since the full search, up to a travel of span_m.
   struct TrackedFlank {
@@ -76,6 +82,7 @@ class CoherentToothSearch {
   const FlankTable* tables_[2] = {nullptr, nullptr};
   std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
   std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
+  std::vector<SampleTravels> travels_[2];  // per pass, indexed as records_
   // Per pass, indexed as records_: a call's solution (flank_search_impl.hpp's
   // Hit::solved, r_x, s_y, tooth_y, flank_y), kept when continuation is on; continued only by
   // the next call.

@@ -126,6 +126,7 @@ Sweep sweep_pair(const Gear& a, const Gear& b, double step_rad, long steps, cons
     sw.counts.tracked += search.counts().tracked;
     sw.counts.skipped += search.counts().skipped;
     sw.counts.continued += search.counts().continued;
+    sw.counts.renewed += search.counts().renewed;
   }
   return sw;
 }
@@ -170,8 +171,11 @@ TEST(CoherentToothSearch, SearchesMostFlanksOnlyInPart) {
   // What makes it faster: over the sun–planet turn, most flank visits are skipped or tracked.
   const std::vector<Gear>& g = paper_gears();
   const Sweep sw = sweep_pair(named(g, "sun"), named(g, "planet_1"), kStepRad, kPlanetTurnSteps, {1e-6});
-  const double visits = static_cast<double>(sw.counts.searched + sw.counts.tracked + sw.counts.skipped);
-  EXPECT_GT(static_cast<double>(sw.counts.skipped + sw.counts.tracked) / visits, 0.5);
+  const double visits = static_cast<double>(sw.counts.searched + sw.counts.tracked + sw.counts.skipped + sw.counts.renewed);
+  EXPECT_GT(static_cast<double>(sw.counts.skipped + sw.counts.tracked + sw.counts.renewed) / visits, 0.5);
+  // A clear flank whose record runs out is mostly found clear again from the few samples whose
+  // own travel ran out (renewed), not searched in full (the answers: the tests above).
+  EXPECT_GT(sw.counts.renewed, sw.counts.searched);
 }
 
 // The sun–faulty planet mesh stepped 600 times; 300 steps in, the planet jumps by half a pitch
@@ -202,7 +206,9 @@ Sweep sweep_with_jump(CoherentToothSearch& search, AtJump&& at_jump) {
 }
 
 TEST(CoherentToothSearch, APoseJumpMakesItSearchEveryFlank) {
-  // No record holds for such a travel, so every flank is searched in full, and the answers match.
+  // No record holds for such a travel, so no flank is skipped or tracked across it: each is
+  // searched in full or renewed (every sample it looks at measured again, their travels having
+  // run out), and the answers match.
   CoherentToothSearch search;
   const Sweep sw = sweep_with_jump(search, [](const CoherentToothSearch::Counts& before, const CoherentToothSearch::Counts& after) {
     EXPECT_EQ(after.skipped, before.skipped) << "flanks skipped across the jump";
@@ -365,6 +371,7 @@ Sweep cad_pair_sweep(const CadPair& cad, double closure_m, CoherentToothSearch::
           if (std::abs(stateless[q].depth_m - coherent[q].depth_m) > 1e-9) differ(pa, pb, stateless[q], coherent[q]);
     }
     sw.counts.continued += search.counts().continued;
+    sw.counts.renewed += search.counts().renewed;
   }
   return sw;
 }
