@@ -278,7 +278,7 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
   // down than its third sample is the first gear's to find): a solution there must stay within
   // 1.5 sample spacings of the tip.
   if (tip_only && !(std::abs(h.r_x - (xy.x.table.internal() ? lo : hi)) <= 1.5 * spacing)) return {};
-  const FlankTable::Probe p = xy.y.table.probe_depth(xy.y.to_local(h.point));
+  const FlankTable::Probe p = xy.y.table.probe_depth(xy.y.to_local(h.point), j);
   if (!p.has_flank || p.tooth != j || p.flank != g) return {};
   return h;
 }

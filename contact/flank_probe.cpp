@@ -107,13 +107,14 @@ int FlankTable::nearest_tooth_from(const Eigen::Vector2d& p, int k, Eigen::Vecto
   return k;
 }
 
-FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
+FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p, int tooth_hint) const {
   Probe out;
   const double r2 = p.squaredNorm();
   // Beyond the teeth: free, or solid body (below an external root, outside an internal root).
   if (internal_ ? r2 < r_min_ * r_min_ : r2 > r_max_ * r_max_) return out;
   const double r = std::sqrt(r2);
-  const int k = nearest_tooth(p);
+  Eigen::Vector2d q;
+  const int k = tooth_hint < 0 ? nearest_tooth(p) : nearest_tooth_from(p, tooth_hint, &q);
   out.tooth = k;
   if (internal_ ? r > r_max_ : r < r_min_) {
     out.inside = true;
@@ -121,7 +122,7 @@ FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p) const {
     out.normal = (internal_ ? -1.0 : 1.0) * p / r;
     return out;
   }
-  const FirstOrder fo = first_order(in_tooth_frame(p, k), r, k);
+  const FirstOrder fo = first_order(tooth_hint < 0 ? in_tooth_frame(p, k) : q, r, k);
   if (!fo.has_flank) return out;
   out.inside = fo.inside;
   out.has_flank = true;

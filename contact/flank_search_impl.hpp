@@ -140,11 +140,10 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
   const int teeth = x.table.teeth();
   const double half = (cos_limit >= 1 ? 0.0 : acos_above(cos_limit)) + kToothWindowMargin_rad;
   const double lo = std::ceil((facing - half) / pitch), hi = std::floor((facing + half) / pitch);
-  if (!(hi - lo + 1 < teeth)) return w;
+  if (!(hi - lo + 1 < teeth && std::abs(lo) < 1e15)) return w;
   w.count = hi < lo ? 0 : static_cast<int>(hi - lo) + 1;
-  const double first = std::fmod(lo, static_cast<double>(teeth));
+  const long long first = static_cast<long long>(lo) % teeth;
   w.first = static_cast<int>(first < 0 ? first + teeth : first);
-  if (w.first >= teeth) w.first -= teeth;
   return w;
 }
 

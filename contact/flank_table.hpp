@@ -79,7 +79,9 @@ class FlankTable {
   // from the flank at the point's own radius times r·cos ψ (ψ: the flank's angle to the radial).
   // Its error is about depth²·curvature (1e-9 m at 1 µm, 5 µm at a 100 µm gap): for searching
   // the deepest point, three times cheaper than probe() (no trigonometry after one atan2).
-  Probe probe_depth(const Eigen::Vector2d& p) const;
+  // `tooth_hint` ≥ 0: a tooth near the point, from which the tooth it lies on (or one bounding
+  // its tooth space) is found by stepping instead of from its angle (as first_order_depth()).
+  Probe probe_depth(const Eigen::Vector2d& p, int tooth_hint = -1) const;
   // probe_depth()'s depth alone, kNoDepth where it measures nothing (free space, no material).
   // `tooth_hint`, a tooth near the point or −1, replaces the angle search and is set to the tooth
   // found: for points probed in sequence along one flank. Both choose the tooth the point lies
