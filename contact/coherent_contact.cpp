@@ -117,7 +117,13 @@ double clear_travel(const FlankSamples& s, bool tip_only, SampleTravels& t) {
 // clear_travel() does. True: the flank is clear, `t` holds the samples' travels from now and
 // `travel` their least — the stateless search finds nothing on it, as after a full search that
 // makes a record. False: search it in full (a sample within kRecordBeyondWindows windows, or
-// one without a bound); `t` is then stale.
+// one without a bound); `t` is then stale. Samples whose travel left is short are measured again
+// too (kRenewAhead).
+// A renewal measures again, besides the samples whose travel ran out, those whose travel left
+// would run out within as long a move again: fewer renewals for a few more measurements. Normally
+// 1 (instructions per step, paper run: dt 1e-5 s −0.5 %, 2e-5 s −0.9 %; bench_contact_sweep 1.82
+// → 1.72 µs per call, renewals 2.32 → 1.19 M; 2 gives no more).
+constexpr double kRenewAhead = 1;
 bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, double& travel, int hint) {
   const FlankTable& xt = xy.x.table;
   const double window = refine_window_m(xt.probe_radius(1) - xt.probe_radius(0));
@@ -125,7 +131,7 @@ bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, d
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!(t[i] < std::numeric_limits<double>::infinity())) continue;  // a sample the search does not look at
     double left = t[i] - moved;
-    if (!(left > 0)) {
+    if (!(left > kRenewAhead * moved)) {
       const Vector2d p = xt.probe_point(k, f, static_cast<int>(i));
       const double d = depth_of(xy, p, hint);
       if (d > -kRecordBeyondWindows * window) return false;
