@@ -95,8 +95,9 @@ bool tooth_near(const Frame& x, int k, const Frame& y) {
 }
 
 // The teeth of x that tooth_near() can accept lie within an angular window about the direction
-// from x's centre to y's (tooth centres all sit on one circle about x's centre, at the tooth
-// angles): a tooth outside it is skipped without the test. The window holds `count` teeth from
+// from x's centre to y's, or about the opposite one for x inside an internal y (tooth centres all
+// sit on one circle about x's centre, at the tooth angles): a tooth outside it is skipped
+// without the test. The window holds `count` teeth from
 // `first` on (modulo the teeth); count < 0: every tooth is tested.
 struct ToothWindow {
   int first = 0, count = -1;
@@ -127,19 +128,31 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
   ToothWindow w;
   const Vector2d to_y = y.pose.centre_m - x.pose.centre_m;
   const double dist = to_y.norm(), r_c = x.table.tooth_centre(0).norm();
-  const double outer = y.table.r_max_m() + x.table.tooth_bound_radius_m();
+  const double outer = y.table.r_max_m() + x.table.tooth_bound_radius_m(), inner = y.table.r_min_m() - x.table.tooth_bound_radius_m();
   if (!(dist > 0 && r_c > 0)) return w;
-  // |c_k − c_y|² = r_c² + dist² − 2·r_c·dist·cos Δ < outer² ⇔ cos Δ > cos_limit, Δ the angle
-  // between tooth k's centre and the direction to y's centre.
-  const double cos_limit = (r_c * r_c + dist * dist - outer * outer) / (2 * r_c * dist);
-  if (cos_limit <= -1) return w;
+  // |c_k − c_y|² = r_c² + dist² − 2·r_c·dist·cos Δ, Δ the angle between tooth k's centre and the
+  // direction to y's centre: tooth_near() asks for it below outer² (cos Δ > cos_outer) and, where
+  // inner > 0, above inner² (cos Δ < cos_inner).
+  const double cos_outer = (r_c * r_c + dist * dist - outer * outer) / (2 * r_c * dist);
+  const double cos_inner = (r_c * r_c + dist * dist - inner * inner) / (2 * r_c * dist);
   const double pitch = x.table.pitch_angle_rad();
   // Tooth k lies at k·pitch from tooth 0; y's centre at `facing`. The window: every k with
-  // |k·pitch − facing| ≤ half (mod 2π), half from angles without libm plus the margin.
-  const double facing = rough_atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0);
+  // |k·pitch − centre| ≤ half (mod 2π), from angles without libm plus the margin. About the
+  // direction to y where the outer circle bounds the teeth (y external: a tooth beyond it is
+  // clear); else, where the inner one does (x inside an internal y: only the teeth facing away
+  // from y's centre reach its teeth), about the opposite direction, Δ ≥ acos(cos_inner) — the
+  // bound from acos_above() less its error (≤ 1.34e-4 rad above acos).
+  double centre = rough_atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0), half;
+  if (cos_outer > -1) {
+    half = (cos_outer >= 1 ? 0.0 : acos_above(cos_outer)) + kToothWindowMargin_rad;
+  } else if (inner > 0 && cos_inner < 1) {
+    centre += 3.141592653589793;
+    half = 3.141592653589793 - (cos_inner <= -1 ? 3.141592653589793 : acos_above(cos_inner) - 1.34e-4) + kToothWindowMargin_rad;
+  } else {
+    return w;
+  }
   const int teeth = x.table.teeth();
-  const double half = (cos_limit >= 1 ? 0.0 : acos_above(cos_limit)) + kToothWindowMargin_rad;
-  const double lo = std::ceil((facing - half) / pitch), hi = std::floor((facing + half) / pitch);
+  const double lo = std::ceil((centre - half) / pitch), hi = std::floor((centre + half) / pitch);
   if (!(hi - lo + 1 < teeth && std::abs(lo) < 1e15)) return w;
   w.count = hi < lo ? 0 : static_cast<int>(hi - lo) + 1;
   const long long first = static_cast<long long>(lo) % teeth;

@@ -61,12 +61,18 @@ TEST(ToothWindow, HoldsEveryToothThatReachesTheOtherGear) {
 }
 
 TEST(ToothWindow, HoldsNoMoreTeethThanReachTheOtherGearNearTheMesh) {
-  // Within 0.5 mm of the meshing distance no tooth centre comes inside the other gear's root
-  // circle, so tooth_near() is the window's own test: only the 1e-4 rad margin (of a 0.26 rad
-  // pitch) can add a tooth, in ≈ 0.1 % of the poses.
+  // Within 0.5 mm of the meshing distance tooth_near() is the window's own test (one circle of
+  // the two binds): only the margin (1e-4 rad; 2.3e-4 rad about the opposite direction, of
+  // pitches of 0.065–0.26 rad) can add a tooth, in well under 1 % of the poses.
   const FlankTable sun = window_table(test::external_gear(24)), planet = window_table(test::external_gear(36, 0.010));
   EXPECT_LE(check_window(sun, planet, 29.5e-3, 30.5e-3, 4000), 40);
   EXPECT_LE(check_window(planet, sun, 29.5e-3, 30.5e-3, 4000), 40);
+  // A planet inside the ring: every planet tooth lies within the ring's tip circle plus its
+  // reach, so the window is the one about the direction away from the ring's centre (the teeth
+  // beyond the ring's root circle less the reach), about a quarter of the planet's 36 teeth.
+  const FlankTable ring = window_table(test::internal_gear(96));
+  EXPECT_LE(check_window(planet, ring, 29.5e-3, 30.5e-3, 4000), 40);
+  EXPECT_LE(check_window(ring, planet, 29.5e-3, 30.5e-3, 4000), 40);
 }
 
 }  // namespace
