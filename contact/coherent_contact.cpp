@@ -256,8 +256,33 @@ bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
 // or the point found faces another flank of y than the one solved on (the stateless search's
 // foot is on the flank the point faces): the caller searches the flank in full then.
 // (r0, s0): where to start, last step's radii (r_x, s_y) or a prediction from them.
+// Added to the facing margin's use, m: the rounding of the offsets (~1e-17 m at gear scale), with
+// a wide margin.
+constexpr double kFaceRounding_m = 1e-12;
+
+// Does y's point P (y's frame) still face flank (j, g), as FlankTable::face() last found at
+// `face_point` with `face_margin` to spare? Every candidate flank's offset moves by at most
+// L·|P − face_point| (L: first_order_rise().side over the radii the segment between them can
+// reach), so the choice stands while twice that stays below the margin. Else P is measured and
+// the reference moves to it. False: P faces another flank or none.
+bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, Vector2d& face_point, double& face_margin) {
+  if (face_margin > 0) {
+    const double delta = (P - face_point).norm(), r0 = face_point.norm(), r1 = P.norm();
+    const double lo = std::min(r0, r1) - delta, hi = std::max(r0, r1) + delta;
+    if (lo > yt.r_min_m() && hi < yt.r_max_m()) {
+      const double side = yt.first_order_rise(lo, hi).side;
+      if (side < FlankTable::kInfinity && 2 * side * delta + kFaceRounding_m < face_margin) return true;
+    }
+  }
+  const FlankTable::Facing now = yt.face(P, j);
+  if (!now.has_flank || now.tooth != j || now.flank != g) return false;
+  face_point = P;
+  face_margin = now.margin_m;
+  return true;
+}
+
 Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, double r0,
-                  double s0, bool tip_only) {
+                  double s0, bool tip_only, Vector2d& face_point, double& face_margin) {
   double lo, hi;
   xy.x.table.flank_extent(k, f, &lo, &hi);
   Hit h;
@@ -284,8 +309,7 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
   // down than its third sample is the first gear's to find): a solution there must stay within
   // 1.5 sample spacings of the tip.
   if (tip_only && !(std::abs(h.r_x - (xy.x.table.internal() ? lo : hi)) <= 1.5 * spacing)) return {};
-  const FlankTable::Probe p = xy.y.table.probe_depth(xy.y.to_local(h.point), j);
-  if (!p.has_flank || p.tooth != j || p.flank != g) return {};
+  if (!still_faces(xy.y.table, xy.y.to_local(h.point), j, g, face_point, face_margin)) return {};
   return h;
 }
 
@@ -396,13 +420,16 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           const double s0 = sol.history >= 2   ? 3 * (sol.s_y - sol.s_prev) + sol.s_prev2
                             : sol.history == 1 ? 2 * sol.s_y - sol.s_prev
                                                : sol.s_y;
+          Vector2d face_point = sol.face_point;
+          double face_margin = sol.face_margin_m;
           const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y,
-                                      r0, s0, tip_only);
+                                      r0, s0, tip_only, face_point, face_margin);
           if (h.depth >= -refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0))) {
             ++counts_.continued;
             const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y;
             sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_, sol.r_x, sol.s_y,
-                   sol.r_prev, sol.s_prev, same ? std::min(sol.history + 1, continuation_ == Continuation::replace ? 2 : 1) : 0};
+                   sol.r_prev, sol.s_prev, same ? std::min(sol.history + 1, continuation_ == Continuation::replace ? 2 : 1) : 0,
+                   face_point, face_margin};
             if (continuation_ == Continuation::replace) {
               rec.travel_m = -1;  // searched in full when the continuation ends
               rec.tracked = false;

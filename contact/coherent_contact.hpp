@@ -95,6 +95,11 @@ class CoherentToothSearch {
     // The calls before's, where it was continued into this one: `history` of them (up to 2).
     double r_prev = 0, s_prev = 0, r_prev2 = 0, s_prev2 = 0;
     int history = 0;
+    // Where the continued point last had its facing flank measured (FlankTable::face(), y's
+    // frame) and the margin found there (−1: none): later points within the margin's reach skip
+    // the measurement (coherent_contact.cpp, continued_hit()).
+    Eigen::Vector2d face_point = Eigen::Vector2d::Zero();
+    double face_margin_m = -1;
   };
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
   Continuation continuation_ = Continuation::off;

@@ -47,7 +47,7 @@ void FlankTable::build_probe_knots() {
 void FlankTable::build_rise_bands() {
   const int n = samples_;
   const int intervals = n - 1, bands = (intervals + kRiseBand - 1) / kRiseBand;
-  std::vector<FirstOrderRise> bands_max(static_cast<std::size_t>(bands), FirstOrderRise{0, 0, 0});
+  std::vector<FirstOrderRise> bands_max(static_cast<std::size_t>(bands), FirstOrderRise{0, 0, 0, 0});
   const std::size_t rows = tooth_of_row_.size();
   auto worst = [](double& into, double v) { into = std::isnan(v) || !(v < kInfinity) ? kInfinity : std::max(into, v); };
   for (int i = 0; i < intervals; ++i) {
@@ -63,6 +63,7 @@ void FlankTable::build_rise_bands() {
         const double dv = std::hypot(k1.cos_a - k0.cos_a, k1.sin_a - k0.sin_a) / dr_;
         // NaN knots (no material) and c → 0 make the band unbounded.
         worst(band.slope, c_up * (v_up + r_hi * dv));
+        worst(band.side, v_up + r_hi * dv);
         worst(band.growth, c_lo > 0 ? std::abs(k1.cos_psi - k0.cos_psi) / (dr_ * c_lo) : kInfinity);
         c_min = std::isnan(c_lo) ? 0 : std::min(c_min, c_lo);
         c_max = std::isnan(c_up) ? kInfinity : std::max(c_max, c_up);
@@ -75,7 +76,7 @@ void FlankTable::build_rise_bands() {
     std::vector<FirstOrderRise> level(static_cast<std::size_t>(bands - run + 1));
     for (std::size_t b = 0; b < level.size(); ++b) {
       const FirstOrderRise &u = half[b], &v = half[b + static_cast<std::size_t>(run / 2)];
-      level[b] = {std::max(u.slope, v.slope), std::max(u.growth, v.growth), std::max(u.jump, v.jump)};
+      level[b] = {std::max(u.slope, v.slope), std::max(u.growth, v.growth), std::max(u.jump, v.jump), std::max(u.side, v.side)};
     }
     rise_runs_.push_back(std::move(level));
   }
@@ -132,6 +133,24 @@ FlankTable::Probe FlankTable::probe_depth(const Eigen::Vector2d& p, int tooth_hi
   return out;
 }
 
+FlankTable::Facing FlankTable::face(const Eigen::Vector2d& p, int tooth_hint) const {
+  Facing out;
+  const double r2 = p.squaredNorm();
+  if (internal_ ? r2 < r_min_ * r_min_ : r2 > r_max_ * r_max_) return out;
+  const double r = std::sqrt(r2);
+  if (internal_ ? r > r_max_ : r < r_min_) return out;
+  Eigen::Vector2d q;
+  const int k = nearest_tooth_from(p, tooth_hint, &q);
+  double margin = -1;
+  const FirstOrder fo = first_order(q, r, k, &margin);
+  if (!fo.has_flank) return out;
+  out.has_flank = true;
+  out.tooth = fo.tooth;
+  out.flank = fo.flank;
+  out.margin_m = margin;
+  return out;
+}
+
 double FlankTable::first_order_depth(const Eigen::Vector2d& p, int& tooth_hint) const {
   const double r2 = p.squaredNorm();
   if (internal_ ? r2 < r_min_ * r_min_ : r2 > r_max_ * r_max_) return kNoDepth;
@@ -151,7 +170,7 @@ double FlankTable::first_order_depth(const Eigen::Vector2d& p, int& tooth_hint) 
   return fo.depth_m;
 }
 
-FlankTable::FirstOrder FlankTable::first_order(const Eigen::Vector2d& q, double r, int k) const {
+FlankTable::FirstOrder FlankTable::first_order(const Eigen::Vector2d& q, double r, int k, double* margin) const {
   FirstOrder out;
   // q: the point in tooth k's frame (its centre line on +x); the flanks' knots around r.
   const double x = (r - r_min_) * inv_dr_;
@@ -176,14 +195,21 @@ FlankTable::FirstOrder FlankTable::first_order(const Eigen::Vector2d& q, double 
   bool to_ccw = out.inside ? -ccw < cw : ccw >= 0;
   double chosen = to_ccw ? ccw : cw;
   const KnotPair* chosen_knots = own;
-  if (!out.inside) {
+  if (!out.inside || margin) {
+    // The neighbour across the tooth space on the chosen side, and its flank facing it.
     const int next = wrap_tooth(k + (to_ccw ? 1 : -1));
     const double sp = to_ccw ? pitch_axis_.y() : -pitch_axis_.y();
     const Eigen::Vector2d qn(pitch_axis_.x() * q.x() + sp * q.y(), pitch_axis_.x() * q.y() - sp * q.x());
     const KnotPair* next_knots = knots(next) + i;
     const double facing = side(next_knots, to_ccw ? 1 : 0, qn);
     const double own_gap = to_ccw ? ccw : -cw, next_gap = to_ccw ? -facing : facing;
-    if (!std::isnan(facing) && next_gap < own_gap) {
+    // face(): the least offset of the candidates not chosen, less the chosen one's.
+    if (margin) {
+      const double c = std::abs(ccw), w = std::abs(cw), n = std::abs(facing);
+      const bool to_next = !out.inside && !std::isnan(facing) && next_gap < own_gap;
+      *margin = std::isnan(facing) ? -1.0 : to_next ? std::min(c, w) - n : to_ccw ? std::min(w, n) - c : std::min(c, n) - w;
+    }
+    if (!out.inside && !std::isnan(facing) && next_gap < own_gap) {
       out.tooth = next;
       to_ccw = !to_ccw;
       chosen = facing;

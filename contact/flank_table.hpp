@@ -82,6 +82,19 @@ class FlankTable {
   // `tooth_hint` ≥ 0: a tooth near the point, from which the tooth it lies on (or one bounding
   // its tooth space) is found by stepping instead of from its angle (as first_order_depth()).
   Probe probe_depth(const Eigen::Vector2d& p, int tooth_hint = -1) const;
+  // The flank probe_depth(p, tooth_hint) chooses (tooth, flank; none: has_flank false) and by how
+  // much: the least unscaled offset |q × v| of the other candidate flanks (the tooth's other
+  // flank, the neighbour's facing one) less the chosen flank's, m (−1 where one is not measured).
+  // A point moved by δ, along a path over radii where first_order_rise().side ≤ L, still
+  // faces the same flank while 2·L·δ stays below that margin: each offset moves by at most L·δ,
+  // and the choice is the candidate nearest by offset (crossing a flank makes it the nearest).
+  struct Facing {
+    bool has_flank = false;
+    int tooth = -1;
+    Flank flank = Flank::Ccw;
+    double margin_m = -1;
+  };
+  Facing face(const Eigen::Vector2d& p, int tooth_hint) const;
   // probe_depth()'s depth alone, kNoDepth where it measures nothing (free space, no material).
   // `tooth_hint`, a tooth near the point or −1, replaces the angle search and is set to the tooth
   // found: for points probed in sequence along one flank. Both choose the tooth the point lies
@@ -98,8 +111,10 @@ class FlankTable {
   // (D = −c_sel·g_sel); the larger of the two flanks' own depths, D̃ = max(−c·g) ≥ D, is
   // continuous there and at most jump·|D| above D (jump = (max c − min c)/min c at the
   // radius). Infinite where a flank has no material (D is not measured there).
+  // `side`: the same bound on the unscaled offset q × v alone (|v| + r·|dv/dr|), by which a
+  // point's flank is chosen (face(), probe_depth()).
   struct FirstOrderRise {
-    double slope = kInfinity, growth = kInfinity, jump = kInfinity;  // 1, 1/m, 1
+    double slope = kInfinity, growth = kInfinity, jump = kInfinity, side = kInfinity;  // 1, 1/m, 1, 1
   };
   static constexpr double kInfinity = 1e300;
   FirstOrderRise first_order_rise(double r_lo_m, double r_hi_m) const {
@@ -111,7 +126,7 @@ class FlankTable {
     const std::vector<FirstOrderRise>& runs = rise_runs_[static_cast<std::size_t>(level)];
     const FirstOrderRise &u = runs[static_cast<std::size_t>(b_lo)], &v = runs[static_cast<std::size_t>(b_hi - (1 << level) + 1)];
     return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth,
-            u.jump > v.jump ? u.jump : v.jump};
+            u.jump > v.jump ? u.jump : v.jump, u.side > v.side ? u.side : v.side};
   }
 
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
@@ -211,7 +226,8 @@ class FlankTable {
     Flank flank = Flank::Ccw;
     double depth_m = 0;
   };
-  FirstOrder first_order(const Eigen::Vector2d& q, double r, int k) const;
+  // `margin`: where given, face()'s margin (m, −1 where a candidate is not measured).
+  FirstOrder first_order(const Eigen::Vector2d& q, double r, int k, double* margin = nullptr) const;
   // A tooth number taken modulo the tooth count (k within a few turns of the range).
   int wrap_tooth(int k) const {
     while (k < 0) k += layout_.teeth;

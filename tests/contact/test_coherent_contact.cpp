@@ -303,6 +303,47 @@ TEST(FirstOrderRise, BoundsHowFarTheFirstOrderDepthMovesWithThePoint) {
   }
 }
 
+// The facing margin (FlankTable::face()) a continued contact's flank check rests on: for points
+// anywhere in the teeth moved by up to 300 µm, a move within the margin's reach (twice the
+// offsets' slope bound times the move, below the margin) leaves the point facing the same flank;
+// and face() chooses what probe_depth() chooses. `moves` random moves per table.
+void expect_facing_margin_holds(const FlankTable& t, const std::string& name, int moves) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  long within = 0, kept = 0, moved_away = 0;
+  for (int i = 0; i < moves; ++i) {
+    const double r = t.r_min_m() + unit(rng) * (t.r_max_m() - t.r_min_m()), at = 2 * M_PI * unit(rng);
+    const Eigen::Vector2d q0 = r * Eigen::Vector2d(std::cos(at), std::sin(at));
+    const FlankTable::Probe p0 = t.probe_depth(q0);
+    if (!p0.has_flank) continue;
+    const FlankTable::Facing f0 = t.face(q0, p0.tooth);
+    const FlankTable::Probe p0h = t.probe_depth(q0, p0.tooth);
+    ASSERT_TRUE(f0.has_flank) << name;
+    EXPECT_TRUE(f0.tooth == p0h.tooth && f0.flank == p0h.flank) << name << ": face() and probe_depth() differ at " << q0.transpose();
+    const double dir = 2 * M_PI * unit(rng), delta = 300e-6 * unit(rng) * unit(rng);
+    const Eigen::Vector2d q1 = q0 + delta * Eigen::Vector2d(std::cos(dir), std::sin(dir));
+    const double lo = std::min(q0.norm(), q1.norm()) - delta, hi = std::max(q0.norm(), q1.norm()) + delta;
+    if (!(lo > t.r_min_m() && hi < t.r_max_m())) continue;
+    const double side = t.first_order_rise(lo, hi).side;
+    const FlankTable::Probe p1 = t.probe_depth(q1, f0.tooth);
+    const bool same = p1.has_flank && p1.tooth == f0.tooth && p1.flank == f0.flank;
+    if (side < FlankTable::kInfinity && 2 * side * delta < f0.margin_m) {
+      ++within;
+      kept += same;
+    } else {
+      moved_away += !same;
+    }
+  }
+  EXPECT_GT(within, moves / 4) << name;
+  EXPECT_EQ(kept, within) << name << ": moves within the margin's reach that changed the facing flank";
+  EXPECT_GT(moved_away, 0) << name << ": the sample should hold moves that change the flank";
+}
+
+TEST(FlankTable, AMoveWithinTheFacingMarginFacesTheSameFlank) {
+  const std::vector<Gear>& g = paper_gears();
+  for (const char* name : {"sun", "ring", "planet_0"}) expect_facing_margin_holds(*named(g, name).table, name, 100000);
+}
+
 // OpenSCAD MCAD meshes (tests/data/mcad: z 12 drives z 24, module 1, 0.05 mm backlash each),
 // recognised and tabled as a run builds them, turned at the ideal ratio through 1.2 turns of the
 // pinion, its backlash closed by `closure_m` along the pitch circle and pressed by 0–2 µm; the
@@ -379,6 +420,13 @@ Sweep cad_pair_sweep(const CadPair& cad, double closure_m, CoherentToothSearch::
 TEST(CoherentToothSearch, CadPairMatchesTheStatelessSearch) {
   // Closed by 0.1 mm: overlapping by ≈ 70 µm, deep contacts on the faceted flanks.
   expect_identical(cad_pair_sweep(CadPair(), 0.1e-3, CoherentToothSearch::Continuation::off, [](auto&&...) {}), "MCAD z12–z24");
+}
+
+TEST(FlankTable, AMoveWithinTheFacingMarginFacesTheSameFlankOnMcadMeshes) {
+  // The same on tables of faceted STL flanks (OpenSCAD's MCAD, not made here).
+  const CadPair cad;
+  expect_facing_margin_holds(*cad.gears[0].table, "MCAD z12", 50000);
+  expect_facing_margin_holds(*cad.gears[1].table, "MCAD z24", 50000);
 }
 
 // The MCAD pair closed just to its first touch (the least, over a tooth period, of the deepest
