@@ -8,6 +8,7 @@
 #include "app/commands.hpp"
 #include "input/input_limits.hpp"
 #include "app/render_run.hpp"
+#include "app/stop_signals.hpp"
 
 namespace gearsim::app {
 
@@ -41,7 +42,10 @@ void register_render(CLI::App& app) {
     physics::RenderDef def = o->def;
     if (o->from_s >= 0) def.from_s = o->from_s;
     if (o->to_s >= 0) def.to_s = o->to_s;
-    const RenderResult r = render_run(open_run_dir(o->dir), def);
+    // SIGINT or SIGTERM stops the render between two frames: no video is left half written.
+    const StopSignals stop_signals;
+    const RenderResult r = render_run(open_run_dir(o->dir), def, stop_signal);
+    throw_if_render_stopped(r, o->dir);
     std::cout << "rendered " << r.frames << " frames of " << r.from_s << "–" << r.to_s << " s: " << r.video.string() << "\n";
   });
 }

@@ -18,6 +18,7 @@
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
 #include "app/run_scenario.hpp"
+#include "app/stop_signals.hpp"
 #include "input/scenario_file.hpp"
 #include "core/errors.hpp"
 #include "geometry/gear_spec.hpp"
@@ -26,10 +27,6 @@
 
 namespace gearsim::app {
 namespace {
-
-// The signal (SIGINT or SIGTERM) that asked the run to stop, 0 while none did.
-volatile std::sig_atomic_t g_interrupted = 0;
-void on_stop_signal(int sig) { g_interrupted = sig; }
 
 struct RunOptions {
   std::string scenario;
@@ -62,26 +59,17 @@ void run(const RunOptions& o) {
   const bool tty = isatty(STDERR_FILENO);
   int last_percent = -1;
   sim::SimOptions options;
-  options.stop_requested = [] { return static_cast<int>(g_interrupted); };
+  options.stop_requested = stop_signal;
   options.progress = [&](long i, long total, double t) {
     const int percent = static_cast<int>(100 * i / total);
     if (!tty || percent == last_percent) return;
     std::cerr << "\r  " << s.name << ": " << percent << "% (t = " << std::fixed << std::setprecision(4) << t << " s)" << std::flush;
     last_percent = percent;
   };
-  g_interrupted = 0;
-  auto old_int = std::signal(SIGINT, on_stop_signal);
-  auto old_term = std::signal(SIGTERM, on_stop_signal);
-  DirRun run;
-  try {
-    run = run_into_dir(s, RunSource{o.scenario, o.sets}, dir, options);
-  } catch (...) {
-    std::signal(SIGINT, old_int);
-    std::signal(SIGTERM, old_term);
-    throw;
-  }
-  std::signal(SIGINT, old_int);
-  std::signal(SIGTERM, old_term);
+  // SIGINT and SIGTERM stop the run between two steps, and its render between two frames, until
+  // the command ends.
+  const StopSignals stop_signals;
+  const DirRun run = run_into_dir(s, RunSource{o.scenario, o.sets}, dir, options);
   if (tty) std::cerr << "\n";
   const sim::RunSummary& r = run.result;
   std::cout << s.name << ": " << sim::status_name(r.status) << ", " << r.sim_seconds << " s simulated in "
@@ -95,13 +83,19 @@ void run(const RunOptions& o) {
     } catch (const InputError& e) {
       std::cout << "not analysed: " << e.what() << "\n";
     }
-  if (s.render) try {
-      const RenderResult rendered = render_run(open_run_dir(dir), *s.render);
-      std::cout << "rendered " << rendered.frames << " frames of " << rendered.from_s << "–" << rendered.to_s
-                << " s: " << rendered.video.string() << "\n";
-    } catch (const InputError& e) {
-      std::cout << "not rendered: " << e.what() << "\n";
-    }
+  if (!s.render) return;
+  if (const int sig = stop_signal())
+    throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint, std::string("interrupted by ") + signal_name(sig) +
+                                                                      " after the run and its analysis: not rendered (the run is complete in " +
+                                                                      dir.string() + ")");
+  try {
+    const RenderResult rendered = render_run(open_run_dir(dir), *s.render, stop_signal);
+    throw_if_render_stopped(rendered, dir);
+    std::cout << "rendered " << rendered.frames << " frames of " << rendered.from_s << "–" << rendered.to_s
+              << " s: " << rendered.video.string() << "\n";
+  } catch (const InputError& e) {
+    std::cout << "not rendered: " << e.what() << "\n";
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "app/pose_replay.hpp"
 #include "app/run_scene.hpp"
@@ -62,7 +63,7 @@ render::Image render_run_frame(const RunDir& run, const physics::RenderDef& o, d
   return draw_frame(renderer, meshes, replay, run, o, t_s);
 }
 
-RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
+RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const std::function<int()>& stop_requested) {
   const PoseReplay replay(run.scenario, input::read_csv(run.dir / "state.csv"));
   RenderResult r;
   r.from_s = o.from_s.value_or(replay.start_s());
@@ -77,14 +78,35 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
   const RunMeshes meshes = run_meshes(run.scenario);
   render::Renderer renderer(frame_settings(o));
   r.video = run.dir / (o.camera == "overview" ? std::string("video.mp4") : "video_" + o.camera + ".mp4");
-  render::VideoWriter writer(r.video, {o.width_px, o.height_px, o.fps});
+  // Written under another name until complete; removed on the way out otherwise (an earlier
+  // video of the same name goes first: it would no longer match the frames).
+  const std::filesystem::path part = r.video.string() + ".part";
+  std::error_code ec;
+  std::filesystem::remove(r.video, ec);
+  struct PartGuard {
+    const std::filesystem::path& path;
+    bool keep = false;
+    ~PartGuard() {
+      std::error_code e;
+      if (!keep) std::filesystem::remove(path, e);
+    }
+  } guard{part};
+  auto writer = std::make_unique<render::VideoWriter>(part, render::VideoSettings{o.width_px, o.height_px, o.fps});
   if (o.png_every > 0) std::filesystem::create_directories(run.dir / "frames");
   std::vector<render::Image> sheet;
   std::vector<std::string> labels;
   for (long k = 0; k < r.frames; ++k) {
+    if (stop_requested) {
+      if (const int sig = stop_requested(); sig != 0) {
+        r.stopped_by = sig;
+        r.frames_drawn = k;
+        writer.reset();  // closes the partial file, which the guard then removes
+        return r;
+      }
+    }
     const double t = std::min(r.from_s + static_cast<double>(k) * dt, r.to_s);  // rounding of the last frame
     const render::Image image = draw_frame(renderer, meshes, replay, run, o, t);
-    writer.add_frame(image);
+    writer->add_frame(image);
     if (o.png_every > 0 && k % o.png_every == 0) {
       char name[64];
       std::snprintf(name, sizeof name, "%s_%05ld.png", o.camera.c_str(), k);
@@ -97,7 +119,11 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o) {
       }
     }
   }
-  writer.finish();
+  writer->finish();
+  writer.reset();
+  std::filesystem::rename(part, r.video);
+  guard.keep = true;
+  r.frames_drawn = r.frames;
   if (!sheet.empty())
     render::write_png(render::contact_sheet(sheet, {4, 4, 4, {255, 255, 255}, 1}, labels),
                       run.dir / "frames" / (o.camera + "_sheet.png"));

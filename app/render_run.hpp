@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 
 #include "app/run_dir.hpp"
 #include "render/image.hpp"
@@ -16,11 +17,18 @@ struct RenderResult {
   std::filesystem::path video;
   long frames = 0;
   double from_s = 0, to_s = 0;
+  // Set when `stop_requested` stopped the render (the signal it returned): `frames_drawn` of
+  // `frames` were drawn, no video was written (the partial one removed), the PNG frames written so
+  // far stay (each complete), no contact sheet.
+  int stopped_by = 0;
+  long frames_drawn = 0;
 };
 
 // InputError naming --from/--to (or render.from_s/to_s) when the span is empty or outside the
-// logged one; RenderError when no OpenGL context can be created.
-RenderResult render_run(const RunDir& run, const physics::RenderDef& settings);
+// logged one; RenderError when no OpenGL context can be created. The video is written as
+// <video>.part and renamed when complete, so an interrupted or failed render leaves no video that
+// looks finished. `stop_requested` (optional) is asked between frames; non-zero stops the render.
+RenderResult render_run(const RunDir& run, const physics::RenderDef& settings, const std::function<int()>& stop_requested = {});
 
 // One frame of the run at simulated time t_s, drawn as render_run draws its frames (the same
 // camera, size, anti-aliasing and overlay line): render_run's frame at t_s, pixel for pixel.

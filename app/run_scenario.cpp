@@ -29,7 +29,8 @@ int clear_previous_outputs(const std::filesystem::path& dir) {
     if (fs::is_regular_file(fs::symlink_status(dir / f))) removed += fs::remove(dir / f, ec) ? 1 : 0;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     const std::string n = e.path().filename().string();
-    if (e.is_regular_file() && n.starts_with("video") && n.ends_with(".mp4")) removed += fs::remove(e.path(), ec) ? 1 : 0;
+    if (e.is_regular_file() && n.starts_with("video") && (n.ends_with(".mp4") || n.ends_with(".mp4.part")))
+      removed += fs::remove(e.path(), ec) ? 1 : 0;
   }
   if (fs::is_directory(fs::symlink_status(dir / "frames"))) removed += fs::remove_all(dir / "frames", ec) > 0 ? 1 : 0;
   return removed;

@@ -109,6 +109,12 @@ double clear_travel(const FlankSamples& s, bool tip_only, SampleTravels& t) {
   return std::isfinite(travel) ? travel : 0;
 }
 
+// A renewal measures again, besides the samples whose travel ran out, those whose travel left
+// would run out within as long a move again: fewer renewals for a few more measurements. Normally
+// 1 (instructions per step, paper run: dt 1e-5 s −0.5 %, 2e-5 s −0.9 %; bench_contact_sweep 1.82
+// → 1.72 µs per call, renewals 2.32 → 1.19 M; 2 gives no more).
+constexpr double kRenewAhead = 1;
+
 // A clear flank's record whose travel has run out, `moved` (a bound on how far every point of its
 // tooth has moved since the record's pose): each sample's own bound (sample_travel()) concerns
 // its own point only, so a sample whose travel exceeds `moved` is still clear, for what is left
@@ -119,11 +125,6 @@ double clear_travel(const FlankSamples& s, bool tip_only, SampleTravels& t) {
 // makes a record. False: search it in full (a sample within kRecordBeyondWindows windows, or
 // one without a bound); `t` is then stale. Samples whose travel left is short are measured again
 // too (kRenewAhead).
-// A renewal measures again, besides the samples whose travel ran out, those whose travel left
-// would run out within as long a move again: fewer renewals for a few more measurements. Normally
-// 1 (instructions per step, paper run: dt 1e-5 s −0.5 %, 2e-5 s −0.9 %; bench_contact_sweep 1.82
-// → 1.72 µs per call, renewals 2.32 → 1.19 M; 2 gives no more).
-constexpr double kRenewAhead = 1;
 bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, double& travel, int hint) {
   const FlankTable& xt = xy.x.table;
   const double window = refine_window_m(xt.probe_radius(1) - xt.probe_radius(0));
@@ -247,15 +248,6 @@ bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
   return true;
 }
 
-// The deepest point of x's flank (tooth k, f) solved from the last call's solution (`solved`:
-// its kind; on y's tooth j, flank g; at radii r_x on x's flank, s_y on y's) on the same flank of
-// y: an interior maximum by Newton's method, or the corner
-// at the flank's end while the depth still rises toward it; an interior maximum that leaves the
-// flank becomes the corner at the end it left by, a corner whose depth no longer rises toward the
-// end becomes an interior maximum started next to it. No hit (depth kNone) where the solves fail
-// or the point found faces another flank of y than the one solved on (the stateless search's
-// foot is on the flank the point faces): the caller searches the flank in full then.
-// (r0, s0): where to start, last step's radii (r_x, s_y) or a prediction from them.
 // Added to the facing margin's use, m: the rounding of the offsets (~1e-17 m at gear scale), with
 // a wide margin.
 constexpr double kFaceRounding_m = 1e-12;
@@ -281,6 +273,16 @@ bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, Vector
   return true;
 }
 
+// The deepest point of x's flank (tooth k, f) solved from the last call's solution (`solved`:
+// its kind; on y's tooth j, flank g; at radii r_x on x's flank, s_y on y's) on the same flank of
+// y: an interior maximum by Newton's method, or the corner
+// at the flank's end while the depth still rises toward it; an interior maximum that leaves the
+// flank becomes the corner at the end it left by, a corner whose depth no longer rises toward the
+// end becomes an interior maximum started next to it. No hit (depth kNone) where the solves fail
+// or the point found faces another flank of y than the one solved on (the stateless search's
+// foot is on the flank the point faces): the caller searches the flank in full then.
+// (r0, s0): where to start, last step's radii (r_x, s_y) or a prediction from them.
+// (face_point, face_margin): the facing check's reference (still_faces()), updated.
 Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, double r0,
                   double s0, bool tip_only, Vector2d& face_point, double& face_margin) {
   double lo, hi;

@@ -1,10 +1,13 @@
 // Rendering a run: poses replayed from state.csv put the planets on their carrier circle at the
 // logged carrier angle; `gearsim render` writes the expected number of video frames and PNGs,
-// the same bytes twice, and refuses bad options by name.
+// the same bytes twice, and refuses bad options by name; a signal stops it between two frames
+// without leaving a half-written video.
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +16,7 @@
 #include <iterator>
 #include <numbers>
 #include <string>
+#include <thread>
 
 #include "app/pose_replay.hpp"
 #include "app/run_dir.hpp"
@@ -95,6 +99,56 @@ TEST(RenderRun, WritesTheFramesItPromisesAndTheSameBytesTwice) {
   EXPECT_TRUE(fs::exists(dir / "frames" / "overview_sheet.png"));  // the contact sheet for reports
   ASSERT_EQ(sh(cmd).first, 0);
   EXPECT_EQ(bytes(dir / "video.mp4"), first);
+}
+
+// Whether a file ends with a PNG's IEND chunk (written to its end).
+bool png_complete(const fs::path& p) {
+  const std::string b = bytes(p);
+  static const std::string iend("IEND\xae\x42\x60\x82", 8);
+  return b.size() > iend.size() && b.compare(b.size() - iend.size(), iend.size(), iend) == 0;
+}
+
+TEST(RenderRun, ASignalStopsTheRenderWithoutAHalfWrittenVideo) {
+  const fs::path dir = short_run();
+  fs::remove_all(dir / "frames");
+  // 1 200 frames (0.02 s at 60 fps, 1 000× slower), every one a PNG: stopped after a few.
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execl(bin().c_str(), bin().c_str(), "render", dir.c_str(), "--fps", "60", "--slowmo", "1000", "--width", "320", "--height",
+          "180", "--png-every", "1", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  auto pngs = [&] {
+    int n = 0;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir / "frames", ec)) n += e.path().extension() == ".png";
+    return n;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  int status = 0;
+  bool ended = false;  // before the signal (it should not)
+  while (std::chrono::steady_clock::now() < deadline && pngs() < 3 && !ended) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ended = waitpid(pid, &status, WNOHANG) == pid;
+  }
+  ASSERT_FALSE(ended) << "the render ended before the signal, exit status " << status;
+  kill(pid, SIGTERM);
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  // No video, finished or partial; the frames drawn are whole PNGs, fewer than all.
+  EXPECT_FALSE(fs::exists(dir / "video.mp4"));
+  EXPECT_FALSE(fs::exists(dir / "video.mp4.part"));
+  const int drawn = pngs();
+  EXPECT_GE(drawn, 3);
+  EXPECT_LT(drawn, 1200);
+  for (const auto& e : fs::directory_iterator(dir / "frames")) EXPECT_TRUE(png_complete(e.path())) << e.path();
+  // A render run to its end afterwards leaves the video and no partial file.
+  ASSERT_EQ(sh(bin() + " render " + dir.string() + " --fps 10 --slowmo 50 --width 320 --height 180").first, 0);
+  EXPECT_TRUE(fs::exists(dir / "video.mp4"));
+  EXPECT_FALSE(fs::exists(dir / "video.mp4.part"));
 }
 
 TEST(RenderRun, BadOptionsAreRefusedByName) {

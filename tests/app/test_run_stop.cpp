@@ -123,15 +123,15 @@ TEST(RunStop, ARunIntoAUsedFolderRemovesTheEarlierRunsOutputsOnly) {
   const fs::path dir = fs::temp_directory_path() / "gearsim_stop_reused";
   fs::remove_all(dir);
   fs::create_directories(dir / "frames");
-  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "frames/f_000001.png"})
+  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "video_sun_mesh.mp4.part", "frames/f_000001.png"})
     std::ofstream(dir / f) << "from an earlier run\n";
   std::ofstream(dir / "notes.txt") << "the user's own file\n";
   const gearsim::test::CliRun r = gearsim::test::gearsim(
       std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
       " --duration 0.002 --no-analyze");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("removed 5 outputs of a previous run"), std::string::npos) << r.output;
-  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "frames"})
+  EXPECT_NE(r.output.find("removed 6 outputs of a previous run"), std::string::npos) << r.output;
+  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "video_sun_mesh.mp4.part", "frames"})
     EXPECT_FALSE(fs::exists(dir / f)) << f;
   EXPECT_TRUE(fs::exists(dir / "notes.txt"));
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
