@@ -43,9 +43,8 @@ void throw_if_stopped(const sim::RunSummary& r, const std::filesystem::path& dir
                                         std::to_string(d->step) + "): " + d->message +
                                         ". Logs up to that step are in " + dir.string());
   if (r.status == sim::RunStatus::Interrupted) {
-    const bool term = r.stop_signal == SIGTERM;
-    throw RunStopped(term ? kExitSigterm : kExitSigint,
-                     std::string("interrupted by ") + (term ? "SIGTERM" : "SIGINT") + ": the logs hold the run up to t = " +
+    throw RunStopped(r.stop_signal == SIGTERM ? kExitSigterm : kExitSigint,
+                     "interrupted by " + signal_name(r.stop_signal) + ": the logs hold the run up to t = " +
                          std::to_string(r.sim_seconds) + " s in " + dir.string() + " (not analysed)");
   }
 }
