@@ -79,10 +79,12 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
   render::Renderer renderer(frame_settings(o));
   r.video = run.dir / (o.camera == "overview" ? std::string("video.mp4") : "video_" + o.camera + ".mp4");
   // Written under another name until complete; removed on the way out otherwise (an earlier
-  // video of the same name goes first: it would no longer match the frames).
+  // video of the same name goes first: it would no longer match the frames; so does a stale
+  // partial file, which as a link could lead the writer out of the folder).
   const std::filesystem::path part = r.video.string() + ".part";
   std::error_code ec;
   std::filesystem::remove(r.video, ec);
+  std::filesystem::remove(part, ec);
   struct PartGuard {
     const std::filesystem::path& path;
     bool keep = false;

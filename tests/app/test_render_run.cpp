@@ -151,6 +151,23 @@ TEST(RenderRun, ASignalStopsTheRenderWithoutAHalfWrittenVideo) {
   EXPECT_FALSE(fs::exists(dir / "video.mp4.part"));
 }
 
+TEST(RenderRun, LinksNamedLikeItsVideoAreReplacedNotFollowed) {
+  // Outputs stay in the folder: a link planted as video.mp4 or video.mp4.part is removed, and the
+  // file it points to outside is left as it was.
+  const fs::path dir = short_run();
+  const fs::path outside = fs::temp_directory_path() / ("gearsim_render_outside_" + std::to_string(getpid()));
+  std::ofstream(outside) << "not the renderer's\n";
+  for (const char* name : {"video.mp4", "video.mp4.part"}) {
+    fs::remove(dir / name);
+    fs::create_symlink(outside, dir / name);
+  }
+  ASSERT_EQ(sh(bin() + " render " + dir.string() + " --fps 10 --slowmo 50 --width 320 --height 180").first, 0);
+  EXPECT_EQ(bytes(outside), "not the renderer's\n");
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / "video.mp4")));
+  EXPECT_FALSE(fs::exists(fs::symlink_status(dir / "video.mp4.part")));
+  fs::remove(outside);
+}
+
 TEST(RenderRun, BadOptionsAreRefusedByName) {
   const fs::path dir = short_run();
   const auto [c1, o1] = sh(bin() + " render " + dir.string() + " --camera sideways");
