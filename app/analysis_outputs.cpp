@@ -6,6 +6,7 @@
 
 #include "app/analysis_json.hpp"
 #include "core/errors.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -13,7 +14,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 std::ofstream open_csv(const std::filesystem::path& path) {
-  std::ofstream f(path);
+  std::ofstream f = open_output_file(path);
   if (!f) throw InputError(path.string() + ": cannot write");
   f << std::setprecision(10);
   return f;

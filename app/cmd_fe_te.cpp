@@ -26,6 +26,7 @@
 #include "geometry/gear_mesh.hpp"
 #include "fe/planetary_fe.hpp"
 #include "fe/process.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -253,7 +254,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   table("fe_stiffness_sun_planet.csv", "sun", "planet", def.spec.sun, def.spec.planet, k_sp, n_sp, "FE: teeth carrying > 2 % of the mesh force");
   table("fe_stiffness_planet_ring.csv", "planet", "ring", def.spec.planet, def.spec.ring, k_pr, {}, "softer/stiffer half of the sampled range");
   if (plots && te_loaded.size() >= 2) {
-    std::ofstream(dir / "te_loaded.svg")
+    open_output_file(dir / "te_loaded.svg")
         << gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
                        "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'TE, µrad'; set grid\n"
                        "set y2label 'elastic part, µrad'; set y2tics; set ytics nomirror\n"
@@ -263,7 +264,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
       const fe::TrackedTooth t = fe::tracked_tooth(def);
       const int z = def.planet_gears.empty() ? def.spec.planet.teeth : def.planet_gears[0].teeth;
       const int before = (t.tooth + z - 1) % z, after = (t.tooth + 1) % z;
-      std::ofstream(dir / "root_stress.svg")
+      open_output_file(dir / "root_stress.svg")
           << gnuplot_svg(data_block("d", {phase_col, root_by_tooth[before], root_by_tooth[t.tooth], root_by_tooth[after],
                                           tracked_force}) +
                          "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'largest root σ1, MPa'; set grid\n"
@@ -274,7 +275,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                          std::to_string(after) + "', $d using 1:5 axes x1y2 with linespoints title 'force on tooth " +
                          std::to_string(t.tooth) + "'\n");
     }
-    std::ofstream(dir / "mesh_stiffness.svg")
+    open_output_file(dir / "mesh_stiffness.svg")
         << gnuplot_svg(data_block("d", {phase_col, kcol}) +
                        "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"
                        "plot $d using 1:2 with linespoints title 'sun–planet 0 secant mesh stiffness'\n");
@@ -363,7 +364,7 @@ void fe_te(const FeTeOptions& o) {
   summary["mesh_wall_seconds"] = mesh_wall;
   summary["ccx_seconds_total"] = ccx_total;
   write_outputs(dir, def, done, rbs, summary, !o.no_plots && status == "completed");
-  std::ofstream(dir / "summary.json") << summary.dump(2) << '\n';
+  open_output_file(dir / "summary.json") << summary.dump(2) << '\n';
   if (status != "completed")
     throw std::runtime_error("fe-te stopped after " + std::to_string(finished) + " of " + std::to_string(turns.size()) +
                              " positions (kept in " + dir.string() + "/te_loaded.csv): " + error);

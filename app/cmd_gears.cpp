@@ -11,6 +11,7 @@
 #include "input/safe_name.hpp"
 #include "core/errors.hpp"
 #include "geometry/mesh_io.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -41,7 +42,7 @@ void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
   }
   json doc = a.doc;
   doc["mesh_files"] = {{"folder", dir.string()}, {"unit", "mm"}, {"formats", o.formats}};
-  std::ofstream js(dir / "gearset.json");
+  std::ofstream js = open_output_file(dir / "gearset.json");
   if (!js) throw InputError((dir / "gearset.json").string() + ": cannot write");
   js << doc.dump(2) << "\n";
 }

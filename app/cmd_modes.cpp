@@ -15,6 +15,7 @@
 #include "linear/lumped_model.hpp"
 #include "linear/modes.hpp"
 #include "physics/world.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -71,7 +72,7 @@ void modes(const ModesOptions& o) {
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
   {
-    std::ofstream out(dir / "modes.json");
+    std::ofstream out = open_output_file(dir / "modes.json");
     if (!out) throw InputError((dir / "modes.json").string() + ": cannot write");
     out << j.dump(2) << "\n";
   }

@@ -10,6 +10,7 @@
 #include "app/run_analysis.hpp"
 #include "core/errors.hpp"
 #include "sweep/sweep_dir.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -22,7 +23,7 @@ RunDir analysed(const std::string& dir) {
 }
 
 void write_report_html(const std::filesystem::path& out, const std::string& html) {
-  std::ofstream f(out);
+  std::ofstream f = open_output_file(out);
   if (!f) throw InputError(out.string() + ": cannot write");
   f << html;
   std::cout << "written: " << out.string() << "\n";

@@ -7,6 +7,7 @@
 
 #include "app/html.hpp"
 #include "core/errors.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 using Json = nlohmann::json;
 
 std::ofstream open_out(const std::filesystem::path& file) {
-  std::ofstream out(file);
+  std::ofstream out = open_output_file(file);
   if (!out) throw InputError(file.string() + ": cannot write");
   out << std::setprecision(10);
   return out;

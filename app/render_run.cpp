@@ -13,6 +13,7 @@
 #include "render/png_io.hpp"
 #include "render/renderer.hpp"
 #include "render/video_writer.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -94,7 +95,10 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
     }
   } guard{part};
   auto writer = std::make_unique<render::VideoWriter>(part, render::VideoSettings{o.width_px, o.height_px, o.fps});
-  if (o.png_every > 0) std::filesystem::create_directories(run.dir / "frames");
+  if (o.png_every > 0) {
+    make_output_dir(run.dir / "frames", ec);
+    if (ec) throw InputError((run.dir / "frames").string() + ": cannot create: " + ec.message());
+  }
   std::vector<render::Image> sheet;
   std::vector<std::string> labels;
   for (long k = 0; k < r.frames; ++k) {

@@ -13,6 +13,7 @@
 #include "input/csv_table.hpp"
 #include "input/gear_train.hpp"
 #include "sim/step_log_reader.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -247,7 +248,7 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
   const input::GearTrain train = input::gear_train_of(s);
   const RunAnalysis a = analyse_run_dir(run, o);
   const json j = analysis_json(a, train, s.name);
-  std::ofstream(run.dir / "analysis.json") << j.dump(2) << "\n";
+  open_output_file(run.dir / "analysis.json") << j.dump(2) << "\n";
   write_spectrum_csv(run.dir / "spectrum.csv", a, analysis_constants::kRunFloorBandTop_hz);
   write_sidebands_csv(run.dir / "sidebands.csv", a);
   write_teeth_csv(run.dir / "teeth.csv", a);

@@ -5,6 +5,7 @@
 
 #include "input/scenario_record.hpp"
 #include "core/errors.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 
@@ -27,13 +28,13 @@ RunDir open_run_dir(const std::filesystem::path& dir) {
 
 void save_summary(const RunDir& run) {
   const std::filesystem::path p = run.dir / "summary.json";
-  std::ofstream out(p);
+  std::ofstream out = open_output_file(p);
   if (!out) throw InputError(p.string() + ": cannot write");
   out << run.summary.dump(2) << "\n";
 }
 
 std::ofstream open_output(const std::filesystem::path& p, int precision) {
-  std::ofstream f(p);
+  std::ofstream f = open_output_file(p);
   if (!f) throw InputError(p.string() + ": cannot write");
   f << std::setprecision(precision);
   return f;

@@ -9,6 +9,7 @@
 #include "sim/csv_logs.hpp"
 #include "sim/sensor_log.hpp"
 #include "sim/step_log.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -25,14 +26,18 @@ int clear_previous_outputs(const std::filesystem::path& dir) {
                                        "sidebands.csv", "teeth.csv",     "report.html",   "sensors.csv"};
   int removed = 0;
   std::error_code ec;
+  // A file, or a link under an output's name (removed itself, never what it points to).
+  auto stale = [](const fs::file_status& st) { return fs::is_regular_file(st) || fs::is_symlink(st); };
   for (const char* f : kFiles)
-    if (fs::is_regular_file(fs::symlink_status(dir / f))) removed += fs::remove(dir / f, ec) ? 1 : 0;
+    if (stale(fs::symlink_status(dir / f))) removed += fs::remove(dir / f, ec) ? 1 : 0;
   for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
     const std::string n = e.path().filename().string();
-    if (e.is_regular_file() && n.starts_with("video") && (n.ends_with(".mp4") || n.ends_with(".mp4.part")))
+    if (stale(e.symlink_status(ec)) && n.starts_with("video") && (n.ends_with(".mp4") || n.ends_with(".mp4.part")))
       removed += fs::remove(e.path(), ec) ? 1 : 0;
   }
-  if (fs::is_directory(fs::symlink_status(dir / "frames"))) removed += fs::remove_all(dir / "frames", ec) > 0 ? 1 : 0;
+  const fs::file_status frames = fs::symlink_status(dir / "frames");
+  if (fs::is_symlink(frames)) removed += fs::remove(dir / "frames", ec) ? 1 : 0;
+  else if (fs::is_directory(frames)) removed += fs::remove_all(dir / "frames", ec) > 0 ? 1 : 0;
   return removed;
 }
 
@@ -162,7 +167,7 @@ DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, const s
   }
   summary["outputs"] = outputs;
   if (const auto& f = csv.force_filter()) summary["force_filter"] = force_filter_json(*f);
-  std::ofstream(dir / "summary.json") << summary.dump(2) << "\n";
+  open_output_file(dir / "summary.json") << summary.dump(2) << "\n";
   return run;
 }
 

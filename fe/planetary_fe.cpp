@@ -15,6 +15,7 @@
 #include "core/errors.hpp"
 #include "fe/planetary_fe_detail.hpp"
 #include "fe/process.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::fe {
 namespace planetary_detail {
@@ -53,9 +54,9 @@ CcxRunResult solved_or_reused(const PlanetaryFeDef& def, const Deck& d, const st
   }
   if (!reused) {
     std::filesystem::remove(work_dir / "position.done");
-    std::ofstream(work_dir / "position.inp") << d.text;
+    open_output_file(work_dir / "position.inp") << d.text;
     run = run_ccx({def.ccx, work_dir, "position"});
-    std::ofstream(work_dir / "position.done") << std::setprecision(17) << run.wall_time_s << '\n';
+    open_output_file(work_dir / "position.done") << std::setprecision(17) << run.wall_time_s << '\n';
   }
   return run;
 }

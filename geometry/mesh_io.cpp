@@ -13,6 +13,7 @@
 #include <unordered_map>
 
 #include "core/errors.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim {
 namespace {
@@ -280,7 +281,7 @@ void export_mesh(const TriMesh& mesh, const std::filesystem::path& path, MeshFor
   const std::string bytes = format == MeshFormat::StlBinary  ? stl_binary(mesh, unit)
                             : format == MeshFormat::StlAscii ? stl_ascii(mesh, unit)
                                                              : obj(mesh, unit);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  std::ofstream out = open_output_file(path, std::ios::binary | std::ios::trunc);
   if (!out) {
     throw InputError(where(path) +
                      "cannot open for writing (does the directory exist and is it writable?)");

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "geometry/mesh_gear.hpp"
 #include "input/input_limits.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::input {
 namespace {
@@ -353,11 +354,12 @@ void write_scenario_record(const physics::Scenario& s, const fs::path& dir) {
   physics::Scenario recorded = s;
   if (!s.gearset_spec.empty()) {
     std::error_code ec;
+    unlink_output(dir / "gearset.yaml");
     fs::copy_file(s.gearset_spec, dir / "gearset.yaml", fs::copy_options::overwrite_existing, ec);
     if (ec) throw InputError((dir / "gearset.yaml").string() + ": cannot copy " + s.gearset_spec.string() + ": " + ec.message());
     recorded.gearset_spec = "gearset.yaml";  // relative to the run folder
   }
-  std::ofstream out(dir / "scenario.json");
+  std::ofstream out = open_output_file(dir / "scenario.json");
   if (!out) throw InputError((dir / "scenario.json").string() + ": cannot write");
   nlohmann::ordered_json j = scenario_json(recorded);
   if (!s.gearset_spec.empty()) j["gearset_spec_original"] = s.gearset_spec.string();

@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "render/constants.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::render {
 namespace {
@@ -131,6 +132,7 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
 }
 
 void write_file(const std::vector<std::uint8_t>& bytes, const std::filesystem::path& path) {
+  unlink_output(path);  // never written through a link (core/output_file.hpp)
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) throw InputError("cannot write '" + path.string() + "': " + std::strerror(errno));
   const std::size_t written = std::fwrite(bytes.data(), 1, bytes.size(), f);

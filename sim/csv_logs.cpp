@@ -8,12 +8,13 @@
 
 #include "core/errors.hpp"
 #include "sim/simulate.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::sim {
 namespace {
 
 std::ofstream open_log(const std::filesystem::path& p) {
-  std::ofstream f(p);
+  std::ofstream f = open_output_file(p);
   if (!f) throw InputError(p.string() + ": cannot write");
   f << std::setprecision(17);
   return f;

@@ -7,6 +7,7 @@
 #include "analysis/decimation_filter.hpp"
 #include "analysis/planet_separation.hpp"
 #include "core/errors.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::sim {
 namespace {
@@ -36,6 +37,7 @@ SensorLog::SensorLog(const std::filesystem::path& dir, const physics::Scenario& 
 }
 
 void SensorLog::on_start(const physics::World& world) {
+  unlink_output(file_);  // never written through a link (core/output_file.hpp)
   out_.open(file_);
   if (!out_) throw InputError(file_.string() + ": cannot write");
   out_ << std::setprecision(17) << "time_s";

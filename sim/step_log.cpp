@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::sim {
 namespace {
@@ -161,6 +162,7 @@ StepLog::StepLog(const std::filesystem::path& path, const physics::World& world,
   m.path = path;
   m.dt = dt;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through our exceptions
+  unlink_output(path);  // never written through a link (core/output_file.hpp)
   m.file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (m.file < 0) throw InputError(path.string() + ": cannot create the HDF5 step log");
   string_attribute(m.file, "scenario", scenario_name);

@@ -3,6 +3,7 @@
 #include <fstream>
 
 #include "core/errors.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::sweep {
 
@@ -68,7 +69,7 @@ CaseRecord case_record_from_json(const json& j, const std::string& where) {
 void write_case_record(const std::filesystem::path& case_dir, const CaseRecord& r) {
   const std::filesystem::path tmp = case_dir / "case.json.tmp", final_path = case_dir / "case.json";
   {
-    std::ofstream out(tmp);
+    std::ofstream out = open_output_file(tmp);
     if (!out) throw InputError(tmp.string() + ": cannot write");
     out << case_record_json(r).dump(2) << "\n";
     if (!out) throw InputError(tmp.string() + ": cannot write");

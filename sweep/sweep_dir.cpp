@@ -4,6 +4,7 @@
 
 #include "core/errors.hpp"
 #include "sweep/case_list.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::sweep {
 
@@ -78,7 +79,7 @@ int prepare_sweep_dir(const fs::path& dir, const input::SweepFile& f, bool fresh
   }
   fs::create_directories(dir / "cases", ec);
   if (ec) throw InputError((dir / "cases").string() + ": cannot create: " + ec.message());
-  std::ofstream out(dir / "sweep.json");
+  std::ofstream out = open_output_file(dir / "sweep.json");
   if (!out) throw InputError((dir / "sweep.json").string() + ": cannot write");
   out << sweep_json(f).dump(2) << "\n";
   return removed;

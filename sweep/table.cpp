@@ -6,6 +6,7 @@
 #include "core/errors.hpp"
 #include "sweep/case_record.hpp"
 #include "sweep/sweep_dir.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::sweep {
 namespace {
@@ -76,7 +77,7 @@ std::string metric_text(const std::optional<double>& v) {
 }
 
 void write_table_csv(const SweepTable& t, const std::filesystem::path& file) {
-  std::ofstream out(file);
+  std::ofstream out = open_output_file(file);
   if (!out) throw InputError(file.string() + ": cannot write");
   out << "index";
   for (const std::string& c : t.parameter_columns) out << "," << csv_cell(c);

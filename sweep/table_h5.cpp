@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "sweep/table.hpp"
+#include "core/output_file.hpp"
 
 namespace gearsim::sweep {
 namespace {
@@ -64,6 +65,7 @@ void write_parameter(hid_t group, const SweepTable& t, std::size_t k, const std:
 void write_table_h5(const SweepTable& t, const std::filesystem::path& file) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through our exceptions
   const hid_t props = H5Pcreate(H5P_FILE_CREATE);
+  unlink_output(file);  // never written through a link (core/output_file.hpp)
   const hid_t h5 = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, props, H5P_DEFAULT);
   H5Pclose(props);
   if (h5 < 0) throw InputError(file.string() + ": cannot create the HDF5 file");

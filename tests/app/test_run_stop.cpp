@@ -138,4 +138,45 @@ TEST(RunStop, ARunIntoAUsedFolderRemovesTheEarlierRunsOutputsOnly) {
   EXPECT_TRUE(fs::exists(dir / "state.csv"));
 }
 
+TEST(RunStop, LinksNamedLikeOutputsAreReplacedNotFollowed) {
+  // Outputs go only inside the chosen folder: a symbolic link planted under an output's name is
+  // removed (as an earlier run's output is) and a regular file written in its place where the run
+  // writes one; the file it pointed to is left as it was.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_stop_links";
+  const fs::path outside = fs::temp_directory_path() / "gearsim_stop_links_outside.txt";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(outside) << "not the run's\n";
+  const std::vector<std::string> names = {"state.csv", "contacts.csv", "steps.h5", "summary.json", "scenario.json",
+                                          "gearset.yaml", "sensors.csv", "analysis.json", "spectrum.csv"};
+  for (const std::string& n : names) fs::create_symlink(outside, dir / n);
+  const gearsim::test::CliRun r = gearsim::test::gearsim(std::string("run ") + GEARSIM_SOURCE_DIR +
+                                                         "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
+                                                         " --duration 0.2");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream f(outside);
+  std::stringstream text;
+  text << f.rdbuf();
+  EXPECT_EQ(text.str(), "not the run's\n");
+  for (const std::string& n : names) {
+    const fs::file_status st = fs::symlink_status(dir / n);
+    EXPECT_FALSE(fs::is_symlink(st)) << n;
+  }
+  for (const char* n : {"state.csv", "contacts.csv", "steps.h5", "summary.json", "scenario.json", "gearset.yaml", "analysis.json"})
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / n))) << n;
+  // The commands that write into a finished run's folder (analyze, report) replace such links too.
+  for (const char* n : {"analysis.json", "spectrum.csv", "report.html"}) {
+    fs::remove(dir / n);
+    fs::create_symlink(outside, dir / n);
+  }
+  EXPECT_EQ(gearsim::test::gearsim("analyze " + dir.string()).exit_code, 0);
+  EXPECT_EQ(gearsim::test::gearsim("report " + dir.string()).exit_code, 0);
+  std::ifstream g(outside);
+  std::stringstream after;
+  after << g.rdbuf();
+  EXPECT_EQ(after.str(), "not the run's\n");
+  for (const char* n : {"analysis.json", "spectrum.csv", "report.html"}) EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(dir / n))) << n;
+  fs::remove(outside);
+}
+
 }  // namespace test_run_stop
