@@ -140,6 +140,9 @@ class World {
   struct MassMatrixCheck {
     long steps = 0;
     double identity_residual = 0, jacobian_difference = 0;
+    // |v* − v*_Bullet| / max(|v*_Bullet − v|, ε): the velocities after the applied forces alone
+    // (planar_free_velocities) against Bullet's articulated-body pass, relative to the change.
+    double free_velocity_difference = 0;
   };
   void set_mass_matrix_check(bool on);
   const MassMatrixCheck& mass_matrix_check() const;

@@ -162,6 +162,13 @@ struct MultibodyEngine {
   std::vector<double> link_mass_kg, link_izz_kg_m2;  // per link: mass, moment about z
   std::vector<std::vector<int>> link_chain;          // per link: it and its ancestors
   std::vector<std::vector<int>> link_dofs;           // per link: the coordinates that move it
+  // Per coordinate: the z component of its joint's angular axis s_d, its linear axis b_d (world)
+  // and the link it belongs to; per link, this step's spin rate and centre velocity (world).
+  std::vector<double> dof_s, dof_bx, dof_by;
+  std::vector<int> dof_link;
+  std::vector<double> link_w, link_vx, link_vy;
+  std::vector<double> gen_force;                     // dofs: Q − c of planar_free_velocities()
+  std::vector<double> bullet_qdd;                    // dofs: Bullet's q̈ at the same state (check_mass)
   std::vector<double> chol;                          // dofs × dofs, row-major: L (lower triangle)
   std::vector<double> chol_inv_diag;                 // dofs: 1 / L's diagonal
   std::vector<double> g;                             // dofs × rows: G = L⁻¹·Jᵀ
@@ -270,6 +277,8 @@ struct World::Impl {
   void solve_multibody_rows();
   void build_planar_mass();
   void planar_link_jacobians();
+  void planar_mass_factor();
+  void planar_free_velocities(double h);
   void planar_mass_rows();
   void planar_full_a();
   int solve_rows_folded();

@@ -186,8 +186,10 @@ void World::Impl::advance_multibody(double h) {
       e.v_mid[static_cast<std::size_t>(k)] = (4 * e.v_start[static_cast<std::size_t>(k)] - e.v_prev[static_cast<std::size_t>(k)]) / 3;
     set_joint_velocities(t, e.v_mid);
   }
-  // Velocities after the external and gyroscopic forces alone.
-  t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(e.h_eff, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
+  // Velocities after the external and gyroscopic forces alone: for a planar tree with the planar
+  // mass matrix from it (which the rows then use), else by Bullet's articulated-body pass.
+  if (e.planar_mass) planar_free_velocities(e.h_eff);
+  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(e.h_eff, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
   const auto solve_start = WorldClock::now();
   multibody_rows();
   solve_multibody_rows();
@@ -252,7 +254,7 @@ void World::Impl::multibody_rows() {
   // a combination of the three (v_p = v_c + ω × r), without walking the tree per row.
   const std::size_t links = static_cast<std::size_t>(t.getNumLinks()), ud = static_cast<std::size_t>(dofs);
   if (e.planar_mass) {
-    planar_link_jacobians();
+    // e.link_jac of this pose: planar_free_velocities() built it.
   } else if (e.planar) {
     e.link_jac.assign(links * 3 * ud, 0.0);
     // ω_z as the y velocity of a point 1 m along x from the centre less the centre's (Bullet's

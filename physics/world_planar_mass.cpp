@@ -43,38 +43,51 @@ void World::Impl::build_planar_mass() {
 // linear part, world): ω_l = Σ s_d·q̇_d, v_l = Σ (s_d·ẑ × (c_l − c_i) + b_d)·q̇_d — Bullet's own
 // joint axes (btMultibodyLink::getAxisTop/Bottom, in i's frame) and convention
 // (fillConstraintJacobianMultiDof, compTreeLinkVelocities), without walking the tree per row.
+// s_d and b_d are kept per coordinate (planar_free_velocities() differentiates them).
 void World::Impl::planar_link_jacobians() {
   MultibodyEngine& e = *mb;
   const btMultiBody& t = *e.tree;
   const std::size_t links = static_cast<std::size_t>(t.getNumLinks()), ud = static_cast<std::size_t>(e.dofs);
+  e.dof_s.resize(ud);
+  e.dof_bx.resize(ud);
+  e.dof_by.resize(ud);
+  e.dof_link.resize(ud);
+  for (std::size_t i = 0; i < links; ++i) {
+    const btMultibodyLink& li = t.getLink(static_cast<int>(i));
+    const btMatrix3x3& basis = li.m_cachedWorldTransform.getBasis();
+    for (int k = 0; k < li.m_dofCount; ++k) {
+      const std::size_t dof = static_cast<std::size_t>(li.m_dofOffset + k);
+      const btVector3 b_d = basis * li.getAxisBottom(k);
+      e.dof_s[dof] = basis.getRow(2).dot(li.getAxisTop(k));
+      e.dof_bx[dof] = b_d.x();
+      e.dof_by[dof] = b_d.y();
+      e.dof_link[dof] = static_cast<int>(i);
+    }
+  }
   e.link_jac.assign(links * 3 * ud, 0.0);
   for (std::size_t l = 0; l < links; ++l) {
     double* jl = e.link_jac.data() + l * 3 * ud;
     const btVector3 c_l = t.getLink(static_cast<int>(l)).m_cachedWorldTransform.getOrigin();
     for (const int i : e.link_chain[l]) {
       const btMultibodyLink& li = t.getLink(i);
-      const btMatrix3x3& basis = li.m_cachedWorldTransform.getBasis();
       const btVector3 d = c_l - li.m_cachedWorldTransform.getOrigin();
       for (int k = 0; k < li.m_dofCount; ++k) {
         const std::size_t dof = static_cast<std::size_t>(li.m_dofOffset + k);
-        const double s_d = basis.getRow(2).dot(li.getAxisTop(k));
-        const btVector3 b_d = basis * li.getAxisBottom(k);
+        const double s_d = e.dof_s[dof];
         jl[dof] = s_d;
-        jl[ud + dof] = b_d.x() - s_d * d.y();
-        jl[2 * ud + dof] = b_d.y() + s_d * d.x();
+        jl[ud + dof] = e.dof_bx[dof] - s_d * d.y();
+        jl[2 * ud + dof] = e.dof_by[dof] + s_d * d.x();
       }
     }
   }
 }
 
-// solver.mass_matrix planar: M of this step from the links' Jacobians, its Cholesky factor L, the
-// rows' g_i = L⁻¹·J_iᵀ and A = Gᵀ·G (symmetric: each entry once). M is positive definite for
-// links with positive masses and moments (build_multibody requires them). G is kept by
-// coordinate (dofs × rows): the substitutions then run over all rows at once, one coordinate
-// after the other, instead of one row's chain of dependent divisions after the other's.
-void World::Impl::planar_mass_rows() {
+// M of this step from the links' Jacobians and its Cholesky factor L (e.chol, lower triangle;
+// e.chol_inv_diag). M is positive definite for links with positive masses and moments
+// (build_multibody requires them).
+void World::Impl::planar_mass_factor() {
   MultibodyEngine& e = *mb;
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
+  const std::size_t ud = static_cast<std::size_t>(e.dofs);
   double* m = e.chol.data();
   std::fill(e.chol.begin(), e.chol.end(), 0.0);
   for (std::size_t l = 0; l < e.link_dofs.size(); ++l) {
@@ -103,6 +116,98 @@ void World::Impl::planar_mass_rows() {
       m[i * ud + j] = v * inv;
     }
   }
+}
+
+// The velocities the applied forces alone would reach, v* = v + h·q̈ with M·q̈ = Q − c (Kane's
+// equations of the planar tree), in place of Bullet's articulated-body pass over the same tree:
+// Q the joint torques (addJointTorqueMultiDof) and the links' applied forces and torques
+// (addLinkForce/Torque, at their centres) through the links' Jacobians; c = Σ_l m_l·J_lᵀ·a_l
+// with a_l the acceleration of l's centre at q̈ = 0: differentiating v_l above with q̇ fixed,
+// a_l = Σ_d q̇_d·(ω_i·ẑ × b_d + s_d·ẑ × (v_l − v_i)) over the coordinates d of the links i on l's
+// chain (b_d turns with its link i). Spins need no term: s_d is constant, and a link turning
+// about z has no gyroscopic torque about z. Bullet's pass is the reference
+// (World::set_mass_matrix_check: Multibody.ThePlanarFreeMotionIsBulletsArticulatedBodyPass).
+void World::Impl::planar_free_velocities(double h) {
+  MultibodyEngine& e = *mb;
+  btMultiBody& t = *e.tree;
+  if (e.check_mass) {
+    // Bullet's pass at the same state without a step (dt 0): its q̈ in scratch_r[dofs + 6…]
+    // (and the articulated inertias that check_planar_mass() solves with).
+    t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
+    e.bullet_qdd.assign(&e.scratch_r[e.dofs] + 6, &e.scratch_r[e.dofs] + 6 + e.dofs);
+  }
+  planar_link_jacobians();
+  planar_mass_factor();
+  const std::size_t links = static_cast<std::size_t>(t.getNumLinks()), ud = static_cast<std::size_t>(e.dofs);
+  const double* u = t.getVelocityVector() + 6;
+  e.link_w.resize(links);
+  e.link_vx.resize(links);
+  e.link_vy.resize(links);
+  for (std::size_t l = 0; l < links; ++l) {
+    const double* jw = e.link_jac.data() + l * 3 * ud;
+    const double *jx = jw + ud, *jy = jw + 2 * ud;
+    double w = 0, vx = 0, vy = 0;
+    for (const int d : e.link_dofs[l]) {
+      const std::size_t k = static_cast<std::size_t>(d);
+      w += jw[k] * u[k], vx += jx[k] * u[k], vy += jy[k] * u[k];
+    }
+    e.link_w[l] = w, e.link_vx[l] = vx, e.link_vy[l] = vy;
+  }
+  e.gen_force.assign(ud, 0.0);
+  double* q = e.gen_force.data();
+  for (std::size_t l = 0; l < links; ++l) {
+    const btMultibodyLink& link = t.getLink(static_cast<int>(l));
+    const btScalar* tau = t.getJointTorqueMultiDof(static_cast<int>(l));
+    for (int k = 0; k < link.m_dofCount; ++k) q[link.m_dofOffset + k] += tau[k];
+    double ax = 0, ay = 0;
+    for (const int d : e.link_dofs[l]) {
+      const std::size_t k = static_cast<std::size_t>(d);
+      const std::size_t i = static_cast<std::size_t>(e.dof_link[k]);
+      const double w_i = e.link_w[i], s_d = e.dof_s[k];
+      ax += u[k] * (-w_i * e.dof_by[k] - s_d * (e.link_vy[l] - e.link_vy[i]));
+      ay += u[k] * (w_i * e.dof_bx[k] + s_d * (e.link_vx[l] - e.link_vx[i]));
+    }
+    const btVector3 f = t.getLinkForce(static_cast<int>(l)), torque = t.getLinkTorque(static_cast<int>(l));
+    const double mass = e.link_mass_kg[l];
+    const double fx = f.x() - mass * ax, fy = f.y() - mass * ay, tz = torque.z();
+    const double* jw = e.link_jac.data() + l * 3 * ud;
+    const double *jx = jw + ud, *jy = jw + 2 * ud;
+    for (const int d : e.link_dofs[l]) {
+      const std::size_t k = static_cast<std::size_t>(d);
+      q[k] += jx[k] * fx + jy[k] * fy + jw[k] * tz;
+    }
+  }
+  // q̈ = L⁻ᵀ·L⁻¹·(Q − c), into e.buf[6…] (the base, fixed, stays at rest).
+  const double* m = e.chol.data();
+  for (std::size_t i = 0; i < ud; ++i) {
+    double v = q[i];
+    for (std::size_t k = 0; k < i; ++k) v -= m[i * ud + k] * q[k];
+    q[i] = v * e.chol_inv_diag[i];
+  }
+  std::fill(e.buf.begin(), e.buf.end(), 0.0);
+  double* qdd = e.buf.data() + 6;
+  for (std::size_t i = ud; i-- > 0;) {
+    double v = q[i];
+    for (std::size_t k = i + 1; k < ud; ++k) v -= m[k * ud + i] * qdd[k];
+    qdd[i] = v * e.chol_inv_diag[i];
+  }
+  if (e.check_mass) {
+    const double* bullet = e.bullet_qdd.data();
+    double scale = 0, difference = 0;
+    for (std::size_t k = 0; k < ud; ++k) scale = std::max(scale, std::abs(bullet[k])), difference = std::max(difference, std::abs(qdd[k] - bullet[k]));
+    if (scale > 0) e.mass_check.free_velocity_difference = std::max(e.mass_check.free_velocity_difference, difference / scale);
+  }
+  t.applyDeltaVeeMultiDof(e.buf.data(), h);
+}
+
+// solver.mass_matrix planar: the rows' g_i = L⁻¹·J_iᵀ (L of planar_free_velocities(), this
+// step's pose) and A's diagonal (A = Gᵀ·G). G is kept by coordinate (dofs × rows): the
+// substitutions then run over all rows at once, one coordinate after the other, instead of one
+// row's chain of dependent divisions after the other's.
+void World::Impl::planar_mass_rows() {
+  MultibodyEngine& e = *mb;
+  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
+  const double* m = e.chol.data();
   // G = L⁻¹·Jᵀ, coordinate by coordinate over all rows.
   e.g.resize(ud * n);
   double* g = e.g.data();
