@@ -63,6 +63,46 @@ int solve_row_lcp(int n, const double* A, const double* b, const double* lo, con
     }
     const int k = static_cast<int>(s.rows_of.size());
     const std::size_t uk = static_cast<std::size_t>(k);
+    if (k == n) {
+      // Every row free (the common step: every contact pressed, sliding friction folded out by
+      // the caller): the equations are A·x = b itself, and only the bounds on x are conditions
+      // (w = 0 on every row). The same numbers the general path below forms (its factors are 1
+      // and it adds each nonzero entry to a zero), zeros stored as +0 as it leaves them.
+      s.m.resize(uk * uk);
+      for (std::size_t e = 0; e < uk * uk; ++e) s.m[e] = A[e] == 0 ? 0.0 : A[e];
+      s.rhs.assign(b, b + n);
+      if (!solve_dense(k, s.m.data(), s.rhs.data())) return 0;
+      double x_scale = 0;
+      for (int i = 0; i < n; ++i) {
+        x[i] = s.rhs[static_cast<std::size_t>(i)];
+        if (!std::isfinite(x[i])) return 0;  // not a solution: Dantzig's to say
+        x_scale = std::max(x_scale, std::abs(x[i]));
+      }
+      const double tol_x = kRelativeTolerance * x_scale;
+      const bool single = solves > 3;
+      int worst = -1;
+      RowBound worst_to = RowBound::free;
+      double worst_by = 1;
+      bool settled = true;
+      for (int i = 0; i < n; ++i) {
+        if (!(hi[i] > lo[i])) {
+          state[i] = RowBound::lower, settled = false;
+          continue;
+        }
+        const double l = findex[i] >= 0 ? lo[i] * x[findex[i]] : lo[i], h = findex[i] >= 0 ? hi[i] * x[findex[i]] : hi[i];
+        RowBound to = RowBound::free;
+        double by = 0;
+        if (x[i] < l - tol_x) to = RowBound::lower, by = (l - x[i]) / tol_x;
+        else if (x[i] > h + tol_x) to = RowBound::upper, by = (x[i] - h) / tol_x;
+        if (to == RowBound::free) continue;
+        settled = false;
+        if (!single) state[i] = to;
+        else if (by > worst_by) worst = i, worst_to = to, worst_by = by;
+      }
+      if (single && worst >= 0) state[worst] = worst_to;
+      if (settled) return solves;
+      continue;
+    }
     // Constant impulses of the rows on a bound (friction on a bound: its factor on the normal).
     const auto bound_value = [&](int c) { return state[c] == RowBound::lower ? lo[c] : hi[c]; };
     for (int c = 0; c < n; ++c) {
