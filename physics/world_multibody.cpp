@@ -295,8 +295,10 @@ void World::Impl::multibody_rows() {
     const PairRec& pr = pairs[p];
     const BuiltBody &a = bodies[static_cast<std::size_t>(pr.a)], &b = bodies[static_cast<std::size_t>(pr.b)];
     const int la = mb->link_of_body[static_cast<std::size_t>(pr.a)], lb = mb->link_of_body[static_cast<std::size_t>(pr.b)];
-    const double z = 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
-                            (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
+    // The contact plane's height: a planar tree's rows use the points' x and y only.
+    const double z = e.planar ? 0.0
+                              : 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
+                                       (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     for (std::size_t i = 0; i < pr.found.size(); ++i) {
       if (!pr.active[i]) continue;
       const contact::ToothContact& c = pr.found[i];

@@ -151,14 +151,15 @@ void World::Impl::measure_joints() {
   // Joint angles: the body's gear-frame x axis against the parent's, about the joint axis.
   for (JointRec& j : joints) {
     const BuiltBody& b = bodies[j.body];
-    const btTransform tb = b.rigid->getWorldTransform() * b.com_from_gear;
+    // The gear frame's x axis: the first column of (body basis · com_from_gear basis).
+    auto gear_x = [](const BuiltBody& g) { return eig(g.rigid->getWorldTransform().getBasis() * g.com_from_gear.getBasis().getColumn(0)); };
     const Eigen::Vector3d ax = j.axis_world;
-    const Eigen::Vector3d xb = eig(tb.getBasis().getColumn(0));
+    const Eigen::Vector3d xb = gear_x(b);
     Eigen::Vector3d ref = Eigen::Vector3d::UnitX(), ref2;
     Eigen::Vector3d omega_parent = Eigen::Vector3d::Zero();
     if (j.parent >= 0) {
       const BuiltBody& p = bodies[j.parent];
-      ref = eig((p.rigid->getWorldTransform() * p.com_from_gear).getBasis().getColumn(0));
+      ref = gear_x(p);
       omega_parent = eig(p.rigid->getAngularVelocity());
     }
     if (std::abs(ref.dot(ax)) > 0.9) ref = Eigen::Vector3d::UnitY();
@@ -172,7 +173,7 @@ void World::Impl::measure_joints() {
     s.speed_rad_s = (eig(b.rigid->getAngularVelocity()) - omega_parent).dot(ax);
   }
   for (std::size_t i = 0; i < bodies.size(); ++i)
-    states[i].position_m = eig((bodies[i].rigid->getWorldTransform() * bodies[i].com_from_gear).getOrigin());
+    states[i].position_m = eig(bodies[i].rigid->getWorldTransform() * bodies[i].com_from_gear.getOrigin());
 }
 
 void World::Impl::measure_contacts() {
