@@ -78,29 +78,7 @@ int solve_row_lcp(int n, const double* A, const double* b, const double* lo, con
         if (!std::isfinite(x[i])) return 0;  // not a solution: Dantzig's to say
         x_scale = std::max(x_scale, std::abs(x[i]));
       }
-      const double tol_x = kRelativeTolerance * x_scale;
-      const bool single = solves > 3;
-      int worst = -1;
-      RowBound worst_to = RowBound::free;
-      double worst_by = 1;
-      bool settled = true;
-      for (int i = 0; i < n; ++i) {
-        if (!(hi[i] > lo[i])) {
-          state[i] = RowBound::lower, settled = false;
-          continue;
-        }
-        const double l = findex[i] >= 0 ? lo[i] * x[findex[i]] : lo[i], h = findex[i] >= 0 ? hi[i] * x[findex[i]] : hi[i];
-        RowBound to = RowBound::free;
-        double by = 0;
-        if (x[i] < l - tol_x) to = RowBound::lower, by = (l - x[i]) / tol_x;
-        else if (x[i] > h + tol_x) to = RowBound::upper, by = (x[i] - h) / tol_x;
-        if (to == RowBound::free) continue;
-        settled = false;
-        if (!single) state[i] = to;
-        else if (by > worst_by) worst = i, worst_to = to, worst_by = by;
-      }
-      if (single && worst >= 0) state[worst] = worst_to;
-      if (settled) return solves;
+      if (settle_row_states(n, x, nullptr, lo, hi, findex, state, solves, kRelativeTolerance * x_scale, 0)) return solves;
       continue;
     }
     // Constant impulses of the rows on a bound (friction on a bound: its factor on the normal).
@@ -183,45 +161,51 @@ int solve_row_lcp(int n, const double* A, const double* b, const double* lo, con
       x_scale = std::max(x_scale, std::abs(x[i]));
       w_scale = std::max({w_scale, std::abs(b[i]), std::abs(ax)});
     }
-    const double tol_x = kRelativeTolerance * x_scale, tol_w = kRelativeTolerance * w_scale;
-    // Every row that breaks its condition changes its state (block pivoting); after three solves,
-    // only the worst one, relative to its tolerance (block pivoting can cycle, single pivots less so).
-    const bool single = solves > 3;
-    int worst = -1;
-    RowBound worst_to = RowBound::free;
-    double worst_by = 1;
-    bool settled = true;
-    for (int i = 0; i < n; ++i) {
-      const double wi = s.w[static_cast<std::size_t>(i)];
-      if (pinned(i)) continue;
-      const double l = findex[i] >= 0 ? lo[i] * x[findex[i]] : lo[i], h = findex[i] >= 0 ? hi[i] * x[findex[i]] : hi[i];
-      RowBound to = state[i];
-      double by = 0;
-      if (!(hi[i] > lo[i])) {  // a row held at one value (lo = hi; friction: one multiple of its normal): every w is allowed there
-        if (state[i] == RowBound::free) state[i] = RowBound::lower, settled = false;
-        continue;
-      }
-      switch (state[i]) {
-        case RowBound::free:
-          if (x[i] < l - tol_x) to = RowBound::lower, by = (l - x[i]) / tol_x;
-          else if (x[i] > h + tol_x) to = RowBound::upper, by = (x[i] - h) / tol_x;
-          break;
-        case RowBound::lower:
-          if (wi < -tol_w) to = RowBound::free, by = -wi / tol_w;
-          break;
-        case RowBound::upper:
-          if (wi > tol_w) to = RowBound::free, by = wi / tol_w;
-          break;
-      }
-      if (to == state[i]) continue;
-      settled = false;
-      if (!single) state[i] = to;
-      else if (by > worst_by) worst = i, worst_to = to, worst_by = by;
-    }
-    if (single && worst >= 0) state[worst] = worst_to;
-    if (settled) return solves;
+    if (settle_row_states(n, x, s.w.data(), lo, hi, findex, state, solves, kRelativeTolerance * x_scale, kRelativeTolerance * w_scale))
+      return solves;
   }
   return 0;
+}
+
+bool settle_row_states(int n, const double* x, const double* w, const double* lo, const double* hi, const int* findex, RowBound* state,
+                       int solves, double tol_x, double tol_w) {
+  // A friction row whose normal sits on a zero lower bound carries nothing, whatever its state.
+  const auto pinned = [&](int i) { return findex[i] >= 0 && state[findex[i]] == RowBound::lower && lo[findex[i]] == 0; };
+  // Every row that breaks its condition changes its state (block pivoting); after three solves,
+  // only the worst one, relative to its tolerance (block pivoting can cycle, single pivots less so).
+  const bool single = solves > 3;
+  int worst = -1;
+  RowBound worst_to = RowBound::free;
+  double worst_by = 1;
+  bool settled = true;
+  for (int i = 0; i < n; ++i) {
+    if (pinned(i)) continue;
+    const double l = findex[i] >= 0 ? lo[i] * x[findex[i]] : lo[i], h = findex[i] >= 0 ? hi[i] * x[findex[i]] : hi[i];
+    RowBound to = state[i];
+    double by = 0;
+    if (!(hi[i] > lo[i])) {  // a row held at one value (lo = hi; friction: one multiple of its normal): every w is allowed there
+      if (state[i] == RowBound::free) state[i] = RowBound::lower, settled = false;
+      continue;
+    }
+    switch (state[i]) {
+      case RowBound::free:
+        if (x[i] < l - tol_x) to = RowBound::lower, by = (l - x[i]) / tol_x;
+        else if (x[i] > h + tol_x) to = RowBound::upper, by = (x[i] - h) / tol_x;
+        break;
+      case RowBound::lower:
+        if (w[i] < -tol_w) to = RowBound::free, by = -w[i] / tol_w;
+        break;
+      case RowBound::upper:
+        if (w[i] > tol_w) to = RowBound::free, by = w[i] / tol_w;
+        break;
+    }
+    if (to == state[i]) continue;
+    settled = false;
+    if (!single) state[i] = to;
+    else if (by > worst_by) worst = i, worst_to = to, worst_by = by;
+  }
+  if (single && worst >= 0) state[worst] = worst_to;
+  return settled;
 }
 
 }  // namespace gearsim::physics

@@ -32,4 +32,12 @@ struct RowLcpScratch {
 int solve_row_lcp(int n, const double* A, const double* b, const double* lo, const double* hi, const int* findex, double* x,
                   RowBound* state, RowLcpScratch& scratch, int max_solves = 8);
 
+// The conditions above for a solution x of the present states (w = A·x − b; nullptr where every
+// row is free, which needs none): every row that breaks its condition by more than its tolerance
+// (tol_x on x against its bounds, tol_w on w) changes its state — all at once up to the third
+// solve, then only the worst (block pivoting can cycle, single pivots less so); a row held at one
+// value (lo = hi) goes to lower. True when no row changed: x is the solution.
+bool settle_row_states(int n, const double* x, const double* w, const double* lo, const double* hi, const int* findex, RowBound* state,
+                       int solves, double tol_x, double tol_w);
+
 }  // namespace gearsim::physics
