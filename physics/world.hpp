@@ -143,6 +143,11 @@ class World {
     // |v* − v*_Bullet| / max(|v*_Bullet − v|, ε): the velocities after the applied forces alone
     // (planar_free_velocities) against Bullet's articulated-body pass, relative to the change.
     double free_velocity_difference = 0;
+    // The rows' impulses of the dof-space solve (solve_rows_primal) against the folded row-space
+    // solve's from the same bound states: max |Δλ| / max |λ| over the solves compared.
+    // Fallbacks: the dof-space solve did not settle; of them, settled by the row-space solve.
+    long row_solves_compared = 0, row_solve_fallbacks = 0, row_solve_fallbacks_settled = 0;
+    double row_solve_difference = 0;
   };
   void set_mass_matrix_check(bool on);
   const MassMatrixCheck& mass_matrix_check() const;

@@ -88,7 +88,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     if (!changed) break;
     ++profile.friction_rounds;
     dv_of_x = false;
-    if (e.active_set && (e.planar_mass ? solve_rows_folded()
+    if (e.active_set && (e.planar_mass ? solve_rows_planar()
                                        : solve_row_lcp(n, e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(), e.x.data(),
                                                        e.row_states.data(), e.lcp)) > 0)
       continue;

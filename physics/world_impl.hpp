@@ -171,15 +171,26 @@ struct MultibodyEngine {
   std::vector<double> bullet_qdd;                    // dofs: Bullet's q̈ at the same state (check_mass)
   std::vector<double> chol;                          // dofs × dofs, row-major: L (lower triangle)
   std::vector<double> chol_inv_diag;                 // dofs: 1 / L's diagonal
-  std::vector<double> g;                             // dofs × rows: G = L⁻¹·Jᵀ
+  std::vector<double> mass;                          // dofs × dofs, row-major: M (lower triangle)
+  std::vector<double> g;                             // dofs × rows: G = L⁻¹·Jᵀ (planar_g(), when needed)
+  bool g_formed = false;                             // e.g holds this step's G
   std::vector<double> g_lambda;                      // dofs: G·λ
-  std::vector<double> diag_a, compliance;            // per row: (G·Gᵀ)_ii, the compliance added to it
+  std::vector<double> compliance;                    // per row: the compliance added to A's diagonal
   bool a_formed = false;                             // e.a holds this step's dense A (planar_full_a)
   // solve_rows_folded(): the rows kept (not friction held at a multiple of its normal), each row's
   // index among them (−1: held), their g and column vectors h, and the folded problem.
   std::vector<int> fold_kept, fold_index, fold_findex;
   std::vector<double> fold_g, fold_h, fold_a, fold_b, fold_lo, fold_hi, fold_x;
   std::vector<RowBound> fold_states;
+  // solve_rows_primal() (world_primal_solve.cpp): per row its unknown's index (−1: a constant or
+  // a folded friction row), the unknowns' rows, whether each is stiff (no spring: solved by its
+  // Schur complement), their folded columns by unknown (unknowns × dofs), the constant rows'
+  // impulses on the coordinates, K and its LU pivots, and the solutions.
+  std::vector<int> primal_unknown, primal_rows, primal_pivots, primal_stiff, primal_stiff_pivots;
+  std::vector<double> primal_cols, primal_const, primal_k, primal_rhs, primal_y, primal_s, primal_t, primal_dv, primal_w;
+  std::vector<RowBound> primal_states_before;
+  std::vector<double> primal_x_check;
+  std::vector<RowBound> primal_states_check;
   bool check_mass = false;                           // World::set_mass_matrix_check
   World::MassMatrixCheck mass_check;
   std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
@@ -279,9 +290,12 @@ struct World::Impl {
   void planar_link_jacobians();
   void planar_mass_factor();
   void planar_free_velocities(double h);
-  void planar_mass_rows();
+  double planar_diag_a(std::size_t row);
   void planar_full_a();
   int solve_rows_folded();
+  int solve_rows_primal();
+  int solve_rows_planar();  // solve_rows_primal(), solve_rows_folded() where it does not settle
+  void planar_g();
   void check_planar_mass(const double* m_lower);
   bool solve_rows_dantzig_fixed_friction();
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).

@@ -388,7 +388,7 @@ void World::Impl::solve_multibody_rows() {
   if (!e.planar_mass) e.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(e.a.data(), e.planar_mass ? 0 : n, e.planar_mass ? 0 : n);
   if (e.planar_mass) {
-    planar_mass_rows();
+    e.g_formed = e.a_formed = false;  // G and A of this step's rows, where a fallback needs them
   } else {
     // M⁻¹, column by column, from the articulated-body inertias of this step.
     for (int k = 0; k < dofs; ++k) {
@@ -419,8 +419,7 @@ void World::Impl::solve_multibody_rows() {
     // own diagonal: the matrix is then positive definite, so the solve exists and is unique even
     // for dependent rows (several sticking contacts on two one-coordinate gears), while a
     // sticking contact creeps by 1e-8 of the velocity change its impulse makes.
-    if (e.planar_mass) e.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : kStiffRow * e.diag_a[static_cast<std::size_t>(i)];
-    else a(i, i) += r.cfm > 0 ? r.cfm : kStiffRow * a(i, i);
+    if (!e.planar_mass) a(i, i) += r.cfm > 0 ? r.cfm : kStiffRow * a(i, i);
     e.b[static_cast<std::size_t>(i)] = r.target - r.start_rate_weight * j_v_start(i) - j_v(i);
     if (r.move_rate_weight != 0) e.b[static_cast<std::size_t>(i)] -= r.move_rate_weight * e.row_rate_move(i);
     e.lo[static_cast<std::size_t>(i)] = r.lo;
@@ -431,6 +430,10 @@ void World::Impl::solve_multibody_rows() {
     if (e.sliding_friction) e.slip_drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i), drift_hint) * (e.slip_end_h > 0 ? e.h_step / e.slip_end_h : 1.0) : 0.0;
     if (e.sliding_friction && r.kind == MultibodyRow::contact_friction && j_v_start(i) != 0)
       e.lo[static_cast<std::size_t>(i)] = e.hi[static_cast<std::size_t>(i)] = j_v_start(i) > 0 ? -r.hi : r.hi;  // r.hi = μ
+    // Friction held at a multiple of its normal's impulse is no unknown of the solve: its
+    // compliance is never used (0).
+    if (e.planar_mass)
+      e.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : e.held_friction(static_cast<std::size_t>(i)) ? 0.0 : kStiffRow * planar_diag_a(static_cast<std::size_t>(i));
   }
   e.dv_of_x = false;
   bool solved = e.active_set && solve_rows_active_set();

@@ -102,6 +102,7 @@ void World::Impl::planar_mass_factor() {
       }
   }
   if (e.check_mass) check_planar_mass(m);
+  e.mass.assign(m, m + ud * ud);  // M itself, for the dof-space solve (solve_rows_primal)
   e.chol_inv_diag.resize(ud);
   for (std::size_t j = 0; j < ud; ++j) {
     double s = m[j * ud + j];
@@ -200,15 +201,35 @@ void World::Impl::planar_free_velocities(double h) {
   t.applyDeltaVeeMultiDof(e.buf.data(), h);
 }
 
-// solver.mass_matrix planar: the rows' g_i = L⁻¹·J_iᵀ (L of planar_free_velocities(), this
-// step's pose) and A's diagonal (A = Gᵀ·G). G is kept by coordinate (dofs × rows): the
-// substitutions then run over all rows at once, one coordinate after the other, instead of one
-// row's chain of dependent divisions after the other's.
-void World::Impl::planar_mass_rows() {
+// solver.mass_matrix planar: row r's diagonal of A = J·M⁻¹·Jᵀ, |L⁻¹·J_rᵀ|² (L of
+// planar_free_velocities(), this step's pose), where its compliance is taken relative to it (a
+// row without a spring: a motor, sticking friction). The rows themselves are solved in the
+// coordinates' space (solve_rows_primal), without G = L⁻¹·Jᵀ; planar_g() forms G for the
+// row-space solves (the fallbacks).
+double World::Impl::planar_diag_a(std::size_t r) {
   MultibodyEngine& e = *mb;
+  const std::size_t ud = static_cast<std::size_t>(e.dofs);
+  const double* m = e.chol.data();
+  const double* jr = e.jrows.data() + r * ud;
+  double* g = e.g_lambda.data();
+  double sum = 0;
+  for (std::size_t i = 0; i < ud; ++i) {
+    double v = jr[i];
+    for (std::size_t k = 0; k < i; ++k) v -= m[i * ud + k] * g[k];
+    g[i] = v * e.chol_inv_diag[i];
+    sum += g[i] * g[i];
+  }
+  return sum;
+}
+
+// G = L⁻¹·Jᵀ of this step's rows, for the row-space solves (solve_rows_folded, planar_full_a).
+// Kept by coordinate (dofs × rows): the substitutions run over all rows at once, one coordinate
+// after the other, instead of one row's chain of dependent divisions after the other's.
+void World::Impl::planar_g() {
+  MultibodyEngine& e = *mb;
+  if (e.g_formed) return;
   const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
   const double* m = e.chol.data();
-  // G = L⁻¹·Jᵀ, coordinate by coordinate over all rows.
   e.g.resize(ud * n);
   double* g = e.g.data();
   const double* jrows = e.jrows.data();
@@ -224,14 +245,7 @@ void World::Impl::planar_mass_rows() {
     const double inv = e.chol_inv_diag[i];
     for (std::size_t r = 0; r < n; ++r) gi[r] *= inv;
   }
-  // A's diagonal (each row's compliance is taken relative to it); A itself only where a Dantzig
-  // fallback needs it (planar_full_a): the active set solves the folded rows (solve_rows_folded).
-  e.diag_a.assign(n, 0.0);
-  for (std::size_t k = 0; k < ud; ++k) {
-    const double* gk = g + k * n;
-    for (std::size_t r = 0; r < n; ++r) e.diag_a[r] += gk[r] * gk[r];
-  }
-  e.a_formed = false;
+  e.g_formed = true;
 }
 
 // The dense A = Gᵀ·G + diag(compliance), n × n, for Bullet's Dantzig solver (the active set's
@@ -239,6 +253,7 @@ void World::Impl::planar_mass_rows() {
 void World::Impl::planar_full_a() {
   MultibodyEngine& e = *mb;
   if (e.a_formed) return;
+  planar_g();
   const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
   e.a.resize(n * n);
   double* a = e.a.data();
@@ -269,6 +284,7 @@ void World::Impl::planar_full_a() {
 // Returns the linear solves it took, 0 where it did not settle.
 int World::Impl::solve_rows_folded() {
   MultibodyEngine& e = *mb;
+  planar_g();
   const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
   const double* g = e.g.data();
   e.fold_index.assign(n, -1);
@@ -333,13 +349,20 @@ void World::Impl::velocity_change(const double* lambda, double* dv) {
     Eigen::Map<Eigen::VectorXd>(dv, e.dofs).noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(lambda, static_cast<Eigen::Index>(n));
     return;
   }
-  // dv = L⁻ᵀ·(G·λ)
+  // dv = L⁻ᵀ·L⁻¹·(Jᵀ·λ)
   const double* m = e.chol.data();
+  const double* jrows = e.jrows.data();
+  double* y = e.g_lambda.data();
+  std::fill(e.g_lambda.begin(), e.g_lambda.end(), 0.0);
+  for (std::size_t r = 0; r < n; ++r) {
+    const double l = lambda[r];
+    if (l == 0) continue;
+    for (std::size_t i = 0; i < ud; ++i) y[i] += jrows[r * ud + i] * l;
+  }
   for (std::size_t i = 0; i < ud; ++i) {
-    const double* gi = e.g.data() + i * n;
-    double y = 0;
-    for (std::size_t r = 0; r < n; ++r) y += gi[r] * lambda[r];
-    e.g_lambda[i] = y;
+    double v = y[i];
+    for (std::size_t k = 0; k < i; ++k) v -= m[i * ud + k] * y[k];
+    y[i] = v * e.chol_inv_diag[i];
   }
   for (std::size_t i = ud; i-- > 0;) {
     double v = e.g_lambda[i];

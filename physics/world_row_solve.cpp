@@ -34,7 +34,7 @@ bool World::Impl::solve_rows_active_set() {
       if (it != e.row_keys_before.end()) e.row_states[i] = e.row_states_before[static_cast<std::size_t>(it - e.row_keys_before.begin())];
     }
   }
-  const int solves = e.planar_mass ? solve_rows_folded()
+  const int solves = e.planar_mass ? solve_rows_planar()
                                    : solve_row_lcp(static_cast<int>(n), e.a.data(), e.b.data(), e.lo.data(), e.hi.data(), e.findex.data(),
                                                    e.x.data(), e.row_states.data(), e.lcp);
   if (solves > 0) {

@@ -1,0 +1,265 @@
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "physics/row_lcp.hpp"
+#include "physics/world_impl.hpp"
+
+// The rows of a planar tree solved in the space of its coordinates (docs/solver.md, "The row
+// solve in the coordinates' space"): the same mixed LCP as solve_row_lcp() on the folded rows,
+// from the same bound states and to the same conditions, with one factorisation of a dofs × dofs
+// matrix per solve instead of one of the rows' (n × n, n ≈ 2 × the coordinates on a gear set).
+namespace gearsim::physics {
+namespace {
+
+constexpr double kRelativeTolerance = 1e-9;  // as solve_row_lcp()
+constexpr int kMaxSolves = 8;                // as solve_row_lcp()'s default
+
+// LU factorisation with partial pivoting of the k×k row-major a, in place; false when a pivot
+// vanishes.
+bool lu_factor(int k, double* a, int* pivots) {
+  const auto at = [&](int i, int j) -> double& { return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
+  for (int c = 0; c < k; ++c) {
+    int p = c;
+    for (int i = c + 1; i < k; ++i)
+      if (std::abs(at(i, c)) > std::abs(at(p, c))) p = i;
+    pivots[c] = p;
+    if (!(std::abs(at(p, c)) > 0)) return false;
+    if (p != c)
+      for (int j = 0; j < k; ++j) std::swap(at(p, j), at(c, j));
+    const double inv = 1 / at(c, c);
+    for (int i = c + 1; i < k; ++i) {
+      const double f = at(i, c) * inv;
+      at(i, c) = f;
+      if (f == 0) continue;
+      for (int j = c + 1; j < k; ++j) at(i, j) -= f * at(c, j);
+    }
+  }
+  return true;
+}
+
+// x ← A⁻¹·x from lu_factor()'s factors (P·A = L·U: the row interchanges first, as they were
+// made, then the two substitutions).
+void lu_solve(int k, const double* a, const int* pivots, double* x) {
+  const auto at = [&](int i, int j) { return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
+  for (int c = 0; c < k; ++c)
+    if (pivots[c] != c) std::swap(x[c], x[pivots[c]]);
+  for (int c = 0; c < k; ++c)
+    for (int i = c + 1; i < k; ++i) x[i] -= at(i, c) * x[c];
+  for (int i = k - 1; i >= 0; --i) {
+    double s = x[i];
+    for (int j = i + 1; j < k; ++j) s -= at(i, j) * x[j];
+    x[i] = s / at(i, i);
+  }
+}
+
+double dot(const double* a, const double* b, std::size_t n) {
+  double s = 0;
+  for (std::size_t i = 0; i < n; ++i) s += a[i] * b[i];
+  return s;
+}
+
+}  // namespace
+
+// The problem of solve_rows_folded() — A·λ = b + w with A = J·M⁻¹·J_fᵀ + D (J_f: each unknown
+// row's column with the friction held at a multiple of its impulse folded in, D the rows'
+// compliances), every row's bound conditions — for given bound states, solved through the
+// velocity change dv = M⁻¹·(Σ_u J_f,u·λ_u + f₀) it makes (f₀: the impulses of the rows held at a
+// bound). A spring row u (compliance D_u, a tooth contact, a bearing) is λ_u = (b_u − J_u·dv)/D_u,
+// so that
+//   K·dv = f₀ + Σ_springs J_f,u·b_u/D_u + Σ_stiff J_f,r·λ_r,   K = M + Σ_springs J_f,u·J_uᵀ/D_u,
+// and a stiff row r (no spring: a motor, sticking friction; D_r = 1e-8 of its diagonal) keeps its
+// row equation D_r·λ_r + J_r·dv = b_r, which with dv from K gives the small Schur system
+//   (D_R + J_R·K⁻¹·J_f,R)·λ_R = b_R − J_R·K⁻¹·(f₀ + Σ_springs J_f,u·b_u/D_u).
+// The springs' compliances are of the order of their diagonal or larger at the steps this tool
+// takes (1/(h·θ·(θ·h·k + c)) against 1/m: ≈ 14 for the paper's teeth at 1e-5 s), so K is as well
+// conditioned as M; the stiff rows, whose 1/D would make it ill-conditioned, stay out of it.
+// Rows whose condition breaks change their bound state as in solve_row_lcp()
+// (settle_row_states); returns the linear solves it took, 0 where it did not settle (or a
+// factorisation failed): the caller falls back to the row-space solve then.
+int World::Impl::solve_rows_primal() {
+  MultibodyEngine& e = *mb;
+  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
+  const int dofs = e.dofs;
+  const double* jrows = e.jrows.data();
+  const auto j = [&](std::size_t i) { return jrows + i * ud; };
+  RowBound* state = e.row_states.data();
+  const double *lo = e.lo.data(), *hi = e.hi.data(), *b = e.b.data(), *d = e.compliance.data();
+  const int* findex = e.findex.data();
+  double* x = e.x.data();
+  const auto pinned = [&](std::size_t i) {
+    return findex[i] >= 0 && state[findex[i]] == RowBound::lower && lo[findex[i]] == 0;
+  };
+  const auto held = [&](std::size_t i) { return findex[i] >= 0 && !(hi[i] > lo[i]); };
+  e.primal_unknown.resize(n);
+  e.primal_w.resize(n);
+  e.primal_dv.resize(ud);
+  e.primal_const.resize(ud);
+  e.primal_rhs.resize(ud);
+  e.primal_k.resize(ud * ud);
+  e.primal_pivots.resize(ud);
+  for (int solves = 1; solves <= kMaxSolves; ++solves) {
+    // Unknowns: the free rows (not pinned, not held); the others are constants or folded.
+    e.primal_rows.clear();
+    e.primal_stiff.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      e.primal_unknown[i] = -1;
+      if (state[i] == RowBound::free && !pinned(i) && !held(i)) {
+        e.primal_unknown[i] = static_cast<int>(e.primal_rows.size());
+        e.primal_rows.push_back(static_cast<int>(i));
+        if (!(e.rows[i].cfm > 0)) e.primal_stiff.push_back(static_cast<int>(i));
+      }
+    }
+    const std::size_t m = e.primal_rows.size(), ms = e.primal_stiff.size();
+    // Columns: each unknown's J, with the friction held at a multiple c of it (held rows, box
+    // friction on a bound) folded in; the constants' impulses into f₀.
+    e.primal_cols.resize(m * ud);
+    for (std::size_t u = 0; u < m; ++u) std::copy(j(static_cast<std::size_t>(e.primal_rows[u])), j(static_cast<std::size_t>(e.primal_rows[u])) + ud, e.primal_cols.begin() + static_cast<std::ptrdiff_t>(u * ud));
+    double* f0 = e.primal_const.data();
+    std::fill(f0, f0 + ud, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (e.primal_unknown[i] >= 0 || findex[i] >= 0) continue;
+      x[i] = state[i] == RowBound::lower ? lo[i] : hi[i];  // a row on a bound
+      if (x[i] != 0)
+        for (std::size_t k = 0; k < ud; ++k) f0[k] += j(i)[k] * x[i];
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (e.primal_unknown[i] >= 0 || findex[i] < 0) continue;
+      if (pinned(i)) {
+        x[i] = 0;
+        continue;
+      }
+      const double c = held(i) || state[i] == RowBound::lower ? lo[i] : hi[i];
+      const std::size_t f = static_cast<std::size_t>(findex[i]);
+      if (e.primal_unknown[f] >= 0) {
+        double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[f]) * ud;
+        for (std::size_t k = 0; k < ud; ++k) col[k] += c * j(i)[k];
+      } else {
+        x[i] = c * x[f];
+        if (x[i] != 0)
+          for (std::size_t k = 0; k < ud; ++k) f0[k] += j(i)[k] * x[i];
+      }
+    }
+    // K = M + Σ_springs J_f,u·J_uᵀ/D_u and its right-hand side.
+    double* kk = e.primal_k.data();
+    double* rhs = e.primal_rhs.data();
+    for (std::size_t a = 0; a < ud; ++a)
+      for (std::size_t c = 0; c < ud; ++c) kk[a * ud + c] = c <= a ? e.mass[a * ud + c] : e.mass[c * ud + a];
+    std::copy(f0, f0 + ud, rhs);
+    for (std::size_t u = 0; u < m; ++u) {
+      const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
+      if (!(e.rows[i].cfm > 0)) continue;
+      const double inv_d = 1 / d[i];
+      const double* col = e.primal_cols.data() + u * ud;
+      const double* ji = j(i);
+      for (std::size_t a = 0; a < ud; ++a) {
+        const double ca = col[a] * inv_d;
+        if (ca == 0) continue;
+        rhs[a] += ca * b[i];
+        double* row = kk + a * ud;
+        for (std::size_t c = 0; c < ud; ++c) row[c] += ca * ji[c];
+      }
+    }
+    if (!lu_factor(dofs, kk, e.primal_pivots.data())) return 0;
+    lu_solve(dofs, kk, e.primal_pivots.data(), rhs);  // dv of the springs and constants alone
+    double* dv = e.primal_dv.data();
+    std::copy(rhs, rhs + ud, dv);
+    if (ms > 0) {
+      // The stiff rows: Y = K⁻¹·J_f,R, then (D_R + J_R·Y)·λ_R = b_R − J_R·dv₀.
+      e.primal_y.resize(ms * ud);
+      e.primal_s.resize(ms * ms);
+      e.primal_t.resize(ms);
+      for (std::size_t r = 0; r < ms; ++r) {
+        const std::size_t i = static_cast<std::size_t>(e.primal_stiff[r]);
+        double* y = e.primal_y.data() + r * ud;
+        const double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[i]) * ud;
+        std::copy(col, col + ud, y);
+        lu_solve(dofs, kk, e.primal_pivots.data(), y);
+      }
+      for (std::size_t r = 0; r < ms; ++r) {
+        const std::size_t i = static_cast<std::size_t>(e.primal_stiff[r]);
+        for (std::size_t c = 0; c < ms; ++c) e.primal_s[r * ms + c] = dot(j(i), e.primal_y.data() + c * ud, ud) + (r == c ? d[i] : 0.0);
+        e.primal_t[r] = b[i] - dot(j(i), dv, ud);
+      }
+      std::vector<int>& piv = e.primal_stiff_pivots;
+      piv.resize(ms);
+      if (!lu_factor(static_cast<int>(ms), e.primal_s.data(), piv.data())) return 0;
+      lu_solve(static_cast<int>(ms), e.primal_s.data(), piv.data(), e.primal_t.data());
+      for (std::size_t r = 0; r < ms; ++r) {
+        x[static_cast<std::size_t>(e.primal_stiff[r])] = e.primal_t[r];
+        const double* y = e.primal_y.data() + r * ud;
+        for (std::size_t k = 0; k < ud; ++k) dv[k] += y[k] * e.primal_t[r];
+      }
+    }
+    // The springs' impulses from dv, then the folded friction from its normal.
+    for (std::size_t u = 0; u < m; ++u) {
+      const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
+      if (e.rows[i].cfm > 0) x[i] = (b[i] - dot(j(i), dv, ud)) / d[i];
+    }
+    bool on_bound = false;  // a row with conditions on w (one on a bound, not held)
+    for (std::size_t i = 0; i < n; ++i) {
+      if (e.primal_unknown[i] >= 0) continue;
+      if (!held(i) && !pinned(i)) on_bound = true;
+      if (findex[i] < 0 || pinned(i)) continue;
+      const std::size_t f = static_cast<std::size_t>(findex[i]);
+      if (e.primal_unknown[f] >= 0) x[i] = (held(i) || state[i] == RowBound::lower ? lo[i] : hi[i]) * x[f];
+    }
+    // The conditions' scales over the rows that have conditions (held friction has none: it is
+    // not a row of the folded problem); w = A·x − b = J·dv + D·x − b where a row sits on a bound
+    // (a free row's w is 0: it has none to meet).
+    double x_scale = 0, w_scale = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(x[i])) return 0;
+      if (held(i)) continue;
+      x_scale = std::max(x_scale, std::abs(x[i]));
+    }
+    if (on_bound) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double ax = dot(j(i), dv, ud) + d[i] * x[i];
+        e.primal_w[i] = ax - b[i];
+        if (!std::isfinite(ax)) return 0;
+        if (held(i)) continue;
+        w_scale = std::max({w_scale, std::abs(b[i]), std::abs(ax)});
+      }
+    }
+    if (settle_row_states(static_cast<int>(n), x, on_bound ? e.primal_w.data() : nullptr, lo, hi, findex, state, solves,
+                          kRelativeTolerance * x_scale, kRelativeTolerance * w_scale)) {
+      for (std::size_t i = 0; i < n; ++i)
+        if (held(i)) state[i] = RowBound::lower;
+      return solves;
+    }
+  }
+  return 0;
+}
+
+// The rows by the dof-space solve; where it does not settle, by the folded row-space one from
+// the same bound states. With World::set_mass_matrix_check, both, compared
+// (Multibody.TheDofSpaceSolveIsTheRowSpaceSolve).
+int World::Impl::solve_rows_planar() {
+  MultibodyEngine& e = *mb;
+  e.primal_states_before = e.row_states;
+  const int solves = solve_rows_primal();
+  if (solves > 0 && e.check_mass) {
+    e.primal_x_check = e.x;
+    e.primal_states_check = e.row_states;
+    e.row_states = e.primal_states_before;
+    if (solve_rows_folded() > 0) {
+      double scale = 0, difference = 0;
+      for (std::size_t i = 0; i < e.x.size(); ++i) {
+        scale = std::max(scale, std::abs(e.x[i]));
+        difference = std::max(difference, std::abs(e.x[i] - e.primal_x_check[i]));
+      }
+      ++e.mass_check.row_solves_compared;
+      if (scale > 0) e.mass_check.row_solve_difference = std::max(e.mass_check.row_solve_difference, difference / scale);
+    }
+    e.x = e.primal_x_check;
+    e.row_states = e.primal_states_check;
+  }
+  if (solves > 0) return solves;
+  e.row_states = e.primal_states_before;
+  const int folded = solve_rows_folded();
+  if (e.check_mass) ++e.mass_check.row_solve_fallbacks, e.mass_check.row_solve_fallbacks_settled += folded > 0;
+  return folded;
+}
+
+}  // namespace gearsim::physics
