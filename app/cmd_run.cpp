@@ -74,6 +74,7 @@ void run(const RunOptions& o) {
   std::cout << s.name << ": " << sim::status_name(r.status) << ", " << r.sim_seconds << " s simulated in "
             << std::setprecision(3) << r.wall_seconds << " s wall; logs in " << dir.string() << "\n";
   for (const std::string& w : r.warnings) std::cout << "warning: " << w << "\n";
+  std::cout << std::flush;  // the run's outcome before its analysis starts, also through a pipe
   throw_if_stopped(r, dir);
   // The analysis and the scenario's renders of the finished run; a run too short (or of a train
   // the analysis does not know) keeps its logs and says why it was not analysed or rendered.
@@ -82,11 +83,14 @@ void run(const RunOptions& o) {
     } catch (const InputError& e) {
       std::cout << "not analysed: " << e.what() << "\n";
     }
-  if (!s.render) return;
+  // A signal during the analysis (not interruptible: it takes a fraction of the run's time)
+  // ends the command with the signal's code once the analysis is written, and what was asked
+  // after it is not started.
   if (const int sig = stop_signal())
-    throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint, std::string("interrupted by ") + signal_name(sig) +
-                                                                      " after the run and its analysis: not rendered (the run is complete in " +
-                                                                      dir.string() + ")");
+    throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint,
+                     std::string("interrupted by ") + signal_name(sig) + " after the run and its analysis" + (s.render ? ": not rendered" : "") +
+                         " (the run is complete in " + dir.string() + ")");
+  if (!s.render) return;
   try {
     const RenderResult rendered = render_run(open_run_dir(dir), *s.render, stop_signal);
     throw_if_render_stopped(rendered, dir);

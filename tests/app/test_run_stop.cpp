@@ -119,6 +119,53 @@ TEST(RunStop, SigintEndsTheRunAtOneStepWithExitCode130) {
   expect_interrupted(dir, "SIGINT");
 }
 
+TEST(RunStop, ASignalDuringTheAnalysisEndsTheCommandWithItsCodeOnceTheAnalysisIsWritten) {
+  // `gearsim run` prints the run's outcome line before it analyses the run (flushed, also into a
+  // pipe); a SIGTERM sent as soon as that line arrives falls in the analysis (≈ 0.5 s for 4 s of
+  // the spur pair, whose scenario renders nothing). The analysis is written whole, then the
+  // command ends with 143 — it used to end with 0 there, the signal unanswered.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_stop_analysis";
+  fs::remove_all(dir);
+  const std::string bin = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim";
+  const std::string scenario = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/spur_pair.yaml";
+  int out[2];
+  ASSERT_EQ(pipe(out), 0);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    dup2(out[1], STDOUT_FILENO);
+    close(out[0]);
+    close(out[1]);
+    std::freopen("/dev/null", "w", stderr);
+    execl(bin.c_str(), bin.c_str(), "run", scenario.c_str(), "--out", dir.c_str(), "--duration", "4", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(out[1]);
+  std::string text;
+  char buf[4096];
+  bool signalled = false;
+  for (ssize_t got; (got = read(out[0], buf, sizeof buf)) > 0;) {
+    text.append(buf, static_cast<std::size_t>(got));
+    if (!signalled && text.find(": completed, ") != std::string::npos) {
+      kill(pid, SIGTERM);
+      signalled = true;
+    }
+  }
+  close(out[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(signalled) << text;
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 143) << text;
+  // The run and its analysis complete: summary.json says completed, analysis.json parses whole.
+  std::ifstream summary(dir / "summary.json");
+  ASSERT_TRUE(summary);
+  EXPECT_EQ(nlohmann::json::parse(summary)["status"], "completed");
+  std::ifstream analysis(dir / "analysis.json");
+  ASSERT_TRUE(analysis) << "no analysis.json";
+  const nlohmann::json a = nlohmann::json::parse(analysis);
+  EXPECT_TRUE(a.contains("pairs"));
+}
+
 TEST(RunStop, ARunIntoAUsedFolderRemovesTheEarlierRunsOutputsOnly) {
   const fs::path dir = fs::temp_directory_path() / "gearsim_stop_reused";
   fs::remove_all(dir);
