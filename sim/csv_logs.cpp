@@ -7,8 +7,9 @@
 #include <sstream>
 
 #include "core/errors.hpp"
-#include "sim/simulate.hpp"
+#include "core/number_text.hpp"
 #include "core/output_file.hpp"
+#include "sim/simulate.hpp"
 
 namespace gearsim::sim {
 namespace {
@@ -120,14 +121,18 @@ void CsvLogs::on_sample(const physics::World& world) {
   const long sample = world.steps() % every_ == 0 ? world.steps() / every_ : -1;
   PointRow row = point_row(world, sample);
   // The state row's text around its transmission error, which waits for the filter with the forces.
-  std::ostringstream head, tail;
-  head << std::setprecision(17) << world.time_s();
-  tail << std::setprecision(17);
-  for (const physics::BodyState& b : world.bodies()) head << ',' << b.angle_rad << ',' << b.speed_rad_s;
+  std::string& head = row.state_head;
+  std::string& tail = row.state_tail;
+  const auto field = [](std::string& text, double v) {
+    text += ',';
+    append_number(text, v);
+  };
+  append_number(head, world.time_s());
+  for (const physics::BodyState& b : world.bodies()) field(head, b.angle_rad), field(head, b.speed_rad_s);
   if (scenario_.transmission) row.te_rad = transmission_error_rad(world);
   for (const auto& [i, start] : moving_) {
     const Eigen::Vector3d d = world.bodies()[i].position_m - start;
-    tail << ',' << d.x() << ',' << d.y();
+    field(tail, d.x()), field(tail, d.y());
   }
   for (const Carried& c : carried_) {
     const physics::BodyState &b = world.bodies()[c.body], &p = world.bodies()[c.parent];
@@ -135,10 +140,8 @@ void CsvLogs::on_sample(const physics::World& world) {
     const Eigen::Vector3d pin = p.position_m + Eigen::AngleAxisd(p.angle_rad - c.parent_angle0, Eigen::Vector3d::UnitZ()) * c.offset0;
     const Eigen::Vector3d er = (pin - p.position_m).normalized(), et = Eigen::Vector3d::UnitZ().cross(er);
     const Eigen::Vector3d d = b.position_m - pin;
-    tail << ',' << d.dot(er) << ',' << d.dot(et);
+    field(tail, d.dot(er)), field(tail, d.dot(et));
   }
-  row.state_head = head.str();
-  row.state_tail = tail.str();
   if (!decimator_) write_row(row, filtered_point(row));  // every step a sample, or nothing to filter
   else pending_.push_back(std::move(row));
 }
@@ -160,13 +163,31 @@ void CsvLogs::write_ready(const DecimatedRow& out) {
 }
 
 void CsvLogs::write_row(const PointRow& row, const std::vector<double>& filtered) {
-  state_ << row.state_head;
-  if (scenario_.transmission) state_ << ',' << filtered[pairs_] << ',' << row.te_rad;
-  state_ << row.state_tail << '\n';
-  contacts_ << row.time_s;
-  for (std::size_t p = 0; p < pairs_; ++p)
-    contacts_ << ',' << filtered[p] << ',' << row.force_N[p] << ',' << row.tooth_pairs[p] << ',' << row.depth_um[p];
-  contacts_ << '\n';
+  std::string& text = row_text_;
+  text = row.state_head;
+  if (scenario_.transmission) {
+    text += ',';
+    append_number(text, filtered[pairs_]);
+    text += ',';
+    append_number(text, row.te_rad);
+  }
+  text += row.state_tail;
+  text += '\n';
+  state_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  text.clear();
+  append_number(text, row.time_s);
+  for (std::size_t p = 0; p < pairs_; ++p) {
+    text += ',';
+    append_number(text, filtered[p]);
+    text += ',';
+    append_number(text, row.force_N[p]);
+    text += ',';
+    append_number(text, static_cast<long long>(row.tooth_pairs[p]));
+    text += ',';
+    append_number(text, row.depth_um[p]);
+  }
+  text += '\n';
+  contacts_.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 void CsvLogs::on_stop(const physics::World&) {

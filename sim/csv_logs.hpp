@@ -77,6 +77,7 @@ class CsvLogs : public Observer {
   std::optional<Decimator> decimator_;
   std::deque<PointRow> pending_;  // point rows whose filtered values are not ready yet
   std::size_t pairs_ = 0;
+  std::string row_text_;  // write_row(): a row's text before it is written
 };
 
 }  // namespace gearsim::sim

@@ -7,6 +7,7 @@
 #include "analysis/decimation_filter.hpp"
 #include "analysis/planet_separation.hpp"
 #include "core/errors.hpp"
+#include "core/number_text.hpp"
 #include "core/output_file.hpp"
 
 namespace gearsim::sim {
@@ -83,14 +84,18 @@ std::vector<std::string> SensorLog::names() const {
 
 void SensorLog::write(const DecimatedRow& row) {
   if (row.time_s <= 0) return;  // t = 0: the world at rest, not a row
-  out_ << row.time_s;
+  std::string& text = row_text_;
+  text.clear();
+  append_number(text, row.time_s);
   for (std::size_t s = 0; s < channels_.size(); ++s) {
     const double noise = channels_[s].def->noise_rms_m_s2 > 0
                              ? std::normal_distribution<double>(0.0, channels_[s].def->noise_rms_m_s2)(noise_)
                              : 0.0;
-    out_ << ',' << row.values[s] + noise;
+    text += ',';
+    append_number(text, row.values[s] + noise);
   }
-  out_ << '\n';
+  text += '\n';
+  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 void SensorLog::on_stop(const physics::World&) {

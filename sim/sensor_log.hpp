@@ -10,6 +10,7 @@
 #include <fstream>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "analysis/decimator.hpp"
@@ -51,6 +52,7 @@ class SensorLog : public Observer {
   std::optional<Decimator> decimator_;
   std::vector<double> row_;
   std::mt19937_64 noise_;
+  std::string row_text_;  // write(): a row's text before it is written
 };
 
 }  // namespace gearsim::sim
