@@ -3,40 +3,21 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
+
+#include "physics/dense_lu.hpp"
 
 namespace gearsim::physics {
 namespace {
 
 constexpr double kRelativeTolerance = 1e-9;
 
-// Gaussian elimination with partial pivoting of the k×k row-major m, right-hand side r (solution
-// on return). False when a pivot vanishes.
-bool solve_dense(int k, double* m, double* r) {
-  const auto at = [&](int i, int j) -> double& { return m[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
-  for (int c = 0; c < k; ++c) {
-    int p = c;
-    for (int i = c + 1; i < k; ++i)
-      if (std::abs(at(i, c)) > std::abs(at(p, c))) p = i;
-    if (!(std::abs(at(p, c)) > 0)) return false;
-    if (p != c) {
-      for (int j = c; j < k; ++j) std::swap(at(p, j), at(c, j));
-      std::swap(r[p], r[c]);
-    }
-    const double inv = 1 / at(c, c);
-    const double* __restrict pivot_row = &at(c, 0);
-    for (int i = c + 1; i < k; ++i) {
-      const double f = at(i, c) * inv;
-      if (f == 0) continue;
-      double* __restrict row = &at(i, 0);
-      for (int j = c + 1; j < k; ++j) row[j] -= f * pivot_row[j];
-      r[i] -= f * r[c];
-    }
-  }
-  for (int i = k - 1; i >= 0; --i) {
-    double s = r[i];
-    for (int j = i + 1; j < k; ++j) s -= at(i, j) * r[j];
-    r[i] = s / at(i, i);
-  }
+// The k×k row-major m solved for right-hand side r (the solution on return; m overwritten). False
+// when a pivot vanishes.
+bool solve_dense(int k, double* m, double* r, std::vector<int>& pivots) {
+  pivots.resize(static_cast<std::size_t>(k));
+  if (!lu_factor(k, m, pivots.data())) return false;
+  lu_solve(k, m, pivots.data(), r);
   return true;
 }
 
@@ -71,7 +52,7 @@ int solve_row_lcp(int n, const double* A, const double* b, const double* lo, con
       s.m.resize(uk * uk);
       for (std::size_t e = 0; e < uk * uk; ++e) s.m[e] = A[e] == 0 ? 0.0 : A[e];
       s.rhs.assign(b, b + n);
-      if (!solve_dense(k, s.m.data(), s.rhs.data())) return 0;
+      if (!solve_dense(k, s.m.data(), s.rhs.data(), s.pivots)) return 0;
       double x_scale = 0;
       for (int i = 0; i < n; ++i) {
         x[i] = s.rhs[static_cast<std::size_t>(i)];
@@ -125,7 +106,7 @@ int solve_row_lcp(int n, const double* A, const double* b, const double* lo, con
       }
       s.rhs[static_cast<std::size_t>(r)] = rhs;
     }
-    if (k > 0 && !solve_dense(k, s.m.data(), s.rhs.data())) return 0;
+    if (k > 0 && !solve_dense(k, s.m.data(), s.rhs.data(), s.pivots)) return 0;
     for (int r = 0; r < k; ++r) x[s.rows_of[static_cast<std::size_t>(r)]] = s.rhs[static_cast<std::size_t>(r)];
     for (int c = 0; c < n; ++c)
       if (s.unknown_of[static_cast<std::size_t>(c)] < 0 && findex[c] >= 0 && !pinned(c)) x[c] = bound_value(c) * x[findex[c]];

@@ -17,7 +17,7 @@ enum class RowBound : signed char { lower = -1, free = 0, upper = 1 };
 
 struct RowLcpScratch {
   std::vector<double> m, rhs, w;
-  std::vector<int> unknown_of, rows_of;
+  std::vector<int> unknown_of, rows_of, pivots;
   // Per column of A, where its entry goes in a free row's equation: into unknown `target` times
   // `factor`, or (target −1) to the right-hand side as entry · factor · constant.
   std::vector<int> target;

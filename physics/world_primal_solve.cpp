@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "physics/dense_lu.hpp"
 #include "physics/row_lcp.hpp"
 #include "physics/world_impl.hpp"
 
@@ -14,44 +15,6 @@ namespace {
 
 constexpr double kRelativeTolerance = 1e-9;  // as solve_row_lcp()
 constexpr int kMaxSolves = 8;                // as solve_row_lcp()'s default
-
-// LU factorisation with partial pivoting of the k×k row-major a, in place; false when a pivot
-// vanishes.
-bool lu_factor(int k, double* a, int* pivots) {
-  const auto at = [&](int i, int j) -> double& { return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
-  for (int c = 0; c < k; ++c) {
-    int p = c;
-    for (int i = c + 1; i < k; ++i)
-      if (std::abs(at(i, c)) > std::abs(at(p, c))) p = i;
-    pivots[c] = p;
-    if (!(std::abs(at(p, c)) > 0)) return false;
-    if (p != c)
-      for (int j = 0; j < k; ++j) std::swap(at(p, j), at(c, j));
-    const double inv = 1 / at(c, c);
-    for (int i = c + 1; i < k; ++i) {
-      const double f = at(i, c) * inv;
-      at(i, c) = f;
-      if (f == 0) continue;
-      for (int j = c + 1; j < k; ++j) at(i, j) -= f * at(c, j);
-    }
-  }
-  return true;
-}
-
-// x ← A⁻¹·x from lu_factor()'s factors (P·A = L·U: the row interchanges first, as they were
-// made, then the two substitutions).
-void lu_solve(int k, const double* a, const int* pivots, double* x) {
-  const auto at = [&](int i, int j) { return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
-  for (int c = 0; c < k; ++c)
-    if (pivots[c] != c) std::swap(x[c], x[pivots[c]]);
-  for (int c = 0; c < k; ++c)
-    for (int i = c + 1; i < k; ++i) x[i] -= at(i, c) * x[c];
-  for (int i = k - 1; i >= 0; --i) {
-    double s = x[i];
-    for (int j = i + 1; j < k; ++j) s -= at(i, j) * x[j];
-    x[i] = s / at(i, i);
-  }
-}
 
 double dot(const double* a, const double* b, std::size_t n) {
   double s = 0;
