@@ -174,7 +174,7 @@ struct MultibodyEngine {
   std::vector<double> mass;                          // dofs × dofs, row-major: M (lower triangle)
   std::vector<double> g;                             // dofs × rows: G = L⁻¹·Jᵀ (planar_g(), when needed)
   bool g_formed = false;                             // e.g holds this step's G
-  std::vector<double> g_lambda;                      // dofs: G·λ
+  std::vector<double> g_lambda;                      // dofs: scratch (Jᵀ·λ and its substitutions; a row's L⁻¹·Jᵀ)
   std::vector<double> compliance;                    // per row: the compliance added to A's diagonal
   bool a_formed = false;                             // e.a holds this step's dense A (planar_full_a)
   // solve_rows_folded(): the rows kept (not friction held at a multiple of its normal), each row's
@@ -188,6 +188,7 @@ struct MultibodyEngine {
   // impulses on the coordinates, K and its LU pivots, and the solutions.
   std::vector<int> primal_unknown, primal_rows, primal_pivots, primal_stiff, primal_stiff_pivots;
   std::vector<double> primal_cols, primal_const, primal_k, primal_rhs, primal_y, primal_s, primal_t, primal_dv, primal_w;
+  std::vector<char> primal_soft;  // per row: a spring soft enough for K (else stiff)
   std::vector<RowBound> primal_states_before;
   std::vector<double> primal_x_check;
   std::vector<RowBound> primal_states_check;

@@ -127,7 +127,7 @@ void World::Impl::planar_mass_factor() {
 // a_l = Σ_d q̇_d·(ω_i·ẑ × b_d + s_d·ẑ × (v_l − v_i)) over the coordinates d of the links i on l's
 // chain (b_d turns with its link i). Spins need no term: s_d is constant, and a link turning
 // about z has no gyroscopic torque about z. Bullet's pass is the reference
-// (World::set_mass_matrix_check: Multibody.ThePlanarFreeMotionIsBulletsArticulatedBodyPass).
+// (World::set_mass_matrix_check: Multibody.ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEveryStep).
 void World::Impl::planar_free_velocities(double h) {
   MultibodyEngine& e = *mb;
   btMultiBody& t = *e.tree;

@@ -15,6 +15,10 @@ namespace {
 
 constexpr double kRelativeTolerance = 1e-9;  // as solve_row_lcp()
 constexpr int kMaxSolves = 8;                // as solve_row_lcp()'s default
+// A spring row whose compliance is below this times its diagonal A_ii = J_i·M⁻¹·J_iᵀ (a spring
+// far stiffer than the step resolves) is solved as a stiff row: in K its 1/D would raise the
+// condition number by up to A_ii/D.
+constexpr double kSoftSpring = 1e-4;
 
 double dot(const double* a, const double* b, std::size_t n) {
   double s = 0;
@@ -31,8 +35,9 @@ double dot(const double* a, const double* b, std::size_t n) {
 // bound). A spring row u (compliance D_u, a tooth contact, a bearing) is λ_u = (b_u − J_u·dv)/D_u,
 // so that
 //   K·dv = f₀ + Σ_springs J_f,u·b_u/D_u + Σ_stiff J_f,r·λ_r,   K = M + Σ_springs J_f,u·J_uᵀ/D_u,
-// and a stiff row r (no spring: a motor, sticking friction; D_r = 1e-8 of its diagonal) keeps its
-// row equation D_r·λ_r + J_r·dv = b_r, which with dv from K gives the small Schur system
+// and a stiff row r (no spring: a motor, sticking friction, D_r = 1e-8 of its diagonal; or a
+// spring with D_r < kSoftSpring·A_rr) keeps its row equation D_r·λ_r + J_r·dv = b_r, which with
+// dv from K gives the small Schur system
 //   (D_R + J_R·K⁻¹·J_f,R)·λ_R = b_R − J_R·K⁻¹·(f₀ + Σ_springs J_f,u·b_u/D_u).
 // The springs' compliances are of the order of their diagonal or larger at the steps this tool
 // takes (1/(h·θ·(θ·h·k + c)) against 1/m: ≈ 14 for the paper's teeth at 1e-5 s), so K is as well
@@ -61,6 +66,28 @@ int World::Impl::solve_rows_primal() {
   e.primal_rhs.resize(ud);
   e.primal_k.resize(ud * ud);
   e.primal_pivots.resize(ud);
+  // Which rows enter K (soft springs) and which the Schur system (the rest). A_ii ≤ trace(M⁻¹)·|J_i|²
+  // (M⁻¹ is positive definite), trace(M⁻¹) = ‖L⁻¹‖²_F: the exact A_ii only where that bound
+  // leaves the question open.
+  double trace_minv = 0;
+  {
+    const double* l = e.chol.data();
+    std::vector<double>& col = e.primal_rhs;  // scratch: column c of L⁻¹
+    for (std::size_t c = 0; c < ud; ++c) {
+      for (std::size_t i = 0; i < ud; ++i) {
+        double v = i == c ? 1.0 : 0.0;
+        for (std::size_t k = c; k < i; ++k) v -= l[i * ud + k] * col[k];
+        col[i] = i < c ? 0.0 : v * e.chol_inv_diag[i];
+        trace_minv += col[i] * col[i];
+      }
+    }
+  }
+  e.primal_soft.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    bool soft = e.rows[i].cfm > 0;
+    if (soft && !(d[i] >= kSoftSpring * trace_minv * dot(j(i), j(i), ud))) soft = d[i] >= kSoftSpring * planar_diag_a(i);
+    e.primal_soft[i] = soft;
+  }
   for (int solves = 1; solves <= kMaxSolves; ++solves) {
     // Unknowns: the free rows (not pinned, not held); the others are constants or folded.
     e.primal_rows.clear();
@@ -70,7 +97,7 @@ int World::Impl::solve_rows_primal() {
       if (state[i] == RowBound::free && !pinned(i) && !held(i)) {
         e.primal_unknown[i] = static_cast<int>(e.primal_rows.size());
         e.primal_rows.push_back(static_cast<int>(i));
-        if (!(e.rows[i].cfm > 0)) e.primal_stiff.push_back(static_cast<int>(i));
+        if (!e.primal_soft[i]) e.primal_stiff.push_back(static_cast<int>(i));
       }
     }
     const std::size_t m = e.primal_rows.size(), ms = e.primal_stiff.size();
@@ -111,7 +138,7 @@ int World::Impl::solve_rows_primal() {
     std::copy(f0, f0 + ud, rhs);
     for (std::size_t u = 0; u < m; ++u) {
       const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
-      if (!(e.rows[i].cfm > 0)) continue;
+      if (!e.primal_soft[i]) continue;
       const double inv_d = 1 / d[i];
       const double* col = e.primal_cols.data() + u * ud;
       const double* ji = j(i);
@@ -157,7 +184,7 @@ int World::Impl::solve_rows_primal() {
     // The springs' impulses from dv, then the folded friction from its normal.
     for (std::size_t u = 0; u < m; ++u) {
       const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
-      if (e.rows[i].cfm > 0) x[i] = (b[i] - dot(j(i), dv, ud)) / d[i];
+      if (e.primal_soft[i]) x[i] = (b[i] - dot(j(i), dv, ud)) / d[i];
     }
     bool on_bound = false;  // a row with conditions on w (one on a bound, not held)
     for (std::size_t i = 0; i < n; ++i) {
