@@ -294,6 +294,7 @@ struct World::Impl {
   double planar_diag_a(std::size_t row);
   void planar_full_a();
   int solve_rows_folded();
+  void planar_soft_rows();  // per row: soft spring (into K) or stiff, for solve_rows_primal()
   int solve_rows_primal();
   int solve_rows_planar();  // solve_rows_primal(), solve_rows_folded() where it does not settle
   void planar_g();

@@ -28,6 +28,38 @@ double dot(const double* a, const double* b, std::size_t n) {
 
 }  // namespace
 
+// Which of this step's rows enter K (soft springs) and which the Schur system of
+// solve_rows_primal() (the rest): once per step, after the rows' compliances (the rows and
+// their compliances stay the step's through the slip reversals' solves again). A_ii ≤
+// trace(M⁻¹)·|J_i|² (M⁻¹ is positive definite), trace(M⁻¹) = ‖L⁻¹‖²_F: the exact A_ii only where
+// that bound leaves the question open.
+void World::Impl::planar_soft_rows() {
+  MultibodyEngine& e = *mb;
+  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
+  const double* jrows = e.jrows.data();
+  const auto j = [&](std::size_t i) { return jrows + i * ud; };
+  const double* d = e.compliance.data();
+  double trace_minv = 0;
+  {
+    const double* l = e.chol.data();
+    std::vector<double>& col = e.g_lambda;  // scratch: column c of L⁻¹
+    for (std::size_t c = 0; c < ud; ++c) {
+      for (std::size_t i = 0; i < ud; ++i) {
+        double v = i == c ? 1.0 : 0.0;
+        for (std::size_t k = c; k < i; ++k) v -= l[i * ud + k] * col[k];
+        col[i] = i < c ? 0.0 : v * e.chol_inv_diag[i];
+        trace_minv += col[i] * col[i];
+      }
+    }
+  }
+  e.primal_soft.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    bool soft = e.rows[i].cfm > 0;
+    if (soft && !(d[i] >= kSoftSpring * trace_minv * dot(j(i), j(i), ud))) soft = d[i] >= kSoftSpring * planar_diag_a(i);
+    e.primal_soft[i] = soft;
+  }
+}
+
 // The problem of solve_rows_folded() — A·λ = b + w with A = J·M⁻¹·J_fᵀ + D (J_f: each unknown
 // row's column with the friction held at a multiple of its impulse folded in, D the rows'
 // compliances), every row's bound conditions — for given bound states, solved through the
@@ -66,28 +98,6 @@ int World::Impl::solve_rows_primal() {
   e.primal_rhs.resize(ud);
   e.primal_k.resize(ud * ud);
   e.primal_pivots.resize(ud);
-  // Which rows enter K (soft springs) and which the Schur system (the rest). A_ii ≤ trace(M⁻¹)·|J_i|²
-  // (M⁻¹ is positive definite), trace(M⁻¹) = ‖L⁻¹‖²_F: the exact A_ii only where that bound
-  // leaves the question open.
-  double trace_minv = 0;
-  {
-    const double* l = e.chol.data();
-    std::vector<double>& col = e.primal_rhs;  // scratch: column c of L⁻¹
-    for (std::size_t c = 0; c < ud; ++c) {
-      for (std::size_t i = 0; i < ud; ++i) {
-        double v = i == c ? 1.0 : 0.0;
-        for (std::size_t k = c; k < i; ++k) v -= l[i * ud + k] * col[k];
-        col[i] = i < c ? 0.0 : v * e.chol_inv_diag[i];
-        trace_minv += col[i] * col[i];
-      }
-    }
-  }
-  e.primal_soft.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    bool soft = e.rows[i].cfm > 0;
-    if (soft && !(d[i] >= kSoftSpring * trace_minv * dot(j(i), j(i), ud))) soft = d[i] >= kSoftSpring * planar_diag_a(i);
-    e.primal_soft[i] = soft;
-  }
   for (int solves = 1; solves <= kMaxSolves; ++solves) {
     // Unknowns: the free rows (not pinned, not held); the others are constants or folded.
     e.primal_rows.clear();

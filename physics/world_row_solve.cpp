@@ -74,6 +74,7 @@ void World::Impl::solve_multibody_rows() {
     if (e.planar_mass)
       e.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : e.held_friction(static_cast<std::size_t>(i)) ? 0.0 : kStiffRow * planar_diag_a(static_cast<std::size_t>(i));
   }
+  if (e.planar_mass) planar_soft_rows();
   e.dv_of_x = false;
   bool solved = e.active_set && solve_rows_active_set();
   if (!solved) {
