@@ -56,11 +56,19 @@ constexpr double kNone = FlankTable::kNoDepth;
 // (~1e-17 m at gear scale) times any flank slope that matters.
 constexpr double kRisingCheck_m = 1e-10;
 
+// The rotation of a pose: Eigen's Rotation2D (std::sin and std::cos of the angle), or the same
+// two numbers where the caller has them for this angle (PlanarPose::has_rotation()).
+Eigen::Matrix2d rotation_of(const PlanarPose& pose) {
+  if (!pose.has_rotation()) return Eigen::Rotation2Dd(pose.angle_rad).toRotationMatrix();
+  Eigen::Matrix2d m;
+  m << pose.cos_angle, -pose.sin_angle, pose.sin_angle, pose.cos_angle;
+  return m;
+}
+
 struct Frame {
   const FlankTable& table;
   PlanarPose pose;
-  Eigen::Rotation2Dd rot{pose.angle_rad};
-  Eigen::Matrix2d to_world_m = rot.toRotationMatrix(), to_local_m = to_world_m.transpose();
+  Eigen::Matrix2d to_world_m = rotation_of(pose), to_local_m = to_world_m.transpose();
   Vector2d to_world(const Vector2d& p) const { return pose.centre_m + to_world_m * p; }
   Vector2d to_local(const Vector2d& w) const { return to_local_m * (w - pose.centre_m); }
   Vector2d dir_to_world(const Vector2d& d) const { return to_world_m * d; }
@@ -380,9 +388,41 @@ double tip_circle_crossing(const XY& xy, int k, Flank f, double r_in, double r_o
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+// Best not at an end of its bracket but next to a sample that measured nothing because it lies
+// beyond y's tips: where the depth still rises toward the radius at which x's flank crosses y's
+// tip circle, a search with one maximum in the bracket ends there, found by Newton's method on
+// the circle instead of golden section's 22 depths. NaN where that does not hold.
+double crossing_radius(FlankSamples& s) {
+  constexpr int n = FlankSamples::n;
+  const FlankTable& table = s.xy.x.table;
+  const int best_i = s.best_i;
+  const double r_b = table.probe_radius(best_i);
+  for (int side : {-1, 1}) {
+    const int nb = best_i + side;
+    if (nb < 0 || nb >= n || s.missing(nb) || s.depth[nb] > kNone) continue;
+    const double r_c = tip_circle_crossing(s.xy, s.k, s.f, r_b, table.probe_radius(nb));
+    if (std::isnan(r_c)) break;
+    const double d_out = depth_at(s.xy, s.k, s.f, r_c + side * kRisingCheck_m, s.hint);
+    const double d_end = depth_at(s.xy, s.k, s.f, r_c - side * kRisingCheck_m, s.hint);
+    const double d_in = depth_at(s.xy, s.k, s.f, r_c - 2 * side * kRisingCheck_m, s.hint);
+    if (d_out <= kNone && d_end > kNone && d_in > kNone && d_end > d_in) return r_c - side * kRisingCheck_m;
+    break;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Whether the best sample lies at an end of its refinement bracket (an end of the flank's samples).
+bool best_at_bracket_end(const FlankSamples& s) {
+  const FlankTable& table = s.xy.x.table;
+  const double r_b = table.probe_radius(s.best_i);
+  const double lo = std::max(r_b - s.step, table.probe_radius(0)), hi = std::min(r_b + s.step, table.probe_radius(FlankSamples::n - 1));
+  return r_b == hi || r_b == lo;
+}
+
 // The radius of the deepest point near the best sample: a parabola through it and its neighbours
-// inside the flank, golden section at an end of it.
-double refined_radius(FlankSamples& s) {
+// inside the flank, golden section at an end of it. `crossing_tried`: crossing_radius() was
+// tried already (refined_hit()) and did not hold.
+double refined_radius(FlankSamples& s, bool crossing_tried) {
   constexpr int n = FlankSamples::n;
   const FlankTable& table = s.xy.x.table;
   const int best_i = s.best_i;
@@ -402,20 +442,9 @@ double refined_radius(FlankSamples& s) {
     const double d_in = depth_at(s.xy, s.k, s.f, r_end + (at_hi ? -kRisingCheck_m : kRisingCheck_m), s.hint);
     if (d_end > kNone && d_in > kNone && d_end > d_in) return r_end;
   }
-  // Best next to a sample that measured nothing because it lies beyond y's tips: where the depth
-  // still rises toward the radius at which x's flank crosses y's tip circle, a search with one
-  // maximum in the bracket ends there, found by Newton's method on the circle instead of golden
-  // section's 22 depths.
-  for (int side : {-1, 1}) {
-    const int nb = best_i + side;
-    if (nb < 0 || nb >= n || s.missing(nb) || s.depth[nb] > kNone) continue;
-    const double r_c = tip_circle_crossing(s.xy, s.k, s.f, r_b, table.probe_radius(nb));
-    if (std::isnan(r_c)) break;
-    const double d_out = depth_at(s.xy, s.k, s.f, r_c + side * kRisingCheck_m, s.hint);
-    const double d_end = depth_at(s.xy, s.k, s.f, r_c - side * kRisingCheck_m, s.hint);
-    const double d_in = depth_at(s.xy, s.k, s.f, r_c - 2 * side * kRisingCheck_m, s.hint);
-    if (d_out <= kNone && d_end > kNone && d_in > kNone && d_end > d_in) return r_c - side * kRisingCheck_m;
-    break;
+  if (!crossing_tried) {
+    const double r_c = crossing_radius(s);
+    if (!std::isnan(r_c)) return r_c;
   }
   return golden_refine(s.xy, s.k, s.f, lo, hi, s.hint);
 }
@@ -436,7 +465,18 @@ namespace {
 // flank, face it or a neighbour. Updated.
 // The hit of a flank whose probing found a best sample within the refinement window: refined,
 // then measured exactly.
+// The hit of a sampled refinement that ended at radius r_best: measured exactly there (at the
+// best sample where r_best has no material, or measures nothing).
+Hit sampled_hit_at(const FlankSamples& s, double r_best) {
+  const double r_b = s.xy.x.table.probe_radius(s.best_i);
+  if (std::isnan(s.xy.x.table.flank_angle(s.k, s.f, r_best))) r_best = r_b;
+  const Hit refined = probe_at(s.xy, s.k, s.f, r_best);
+  if (refined.depth > kNone) return refined;
+  return probe_at(s.xy, s.k, s.f, r_b);
+}
+
 Hit refined_hit(FlankSamples& s) {
+  bool crossing_tried = false;
   const XY& xy = s.xy;
   const int k = s.k;
   const Flank f = s.f;
@@ -466,6 +506,17 @@ Hit refined_hit(FlankSamples& s) {
     }
     if (corner.depth > kNone) return corner;
     if (!interior) {
+      // The depth still rising toward y's tip circle next to the best sample (not at its
+      // bracket's end, where refined_radius() looks at the flank's end first): the maximum is
+      // where x's flank crosses the circle, and Newton's method from the sample is not tried —
+      // it found no other maximum there in any of the 80 737 such refinements of
+      // bench_contact_sweep's paper sweep, nor in the paper, bearings, sequential, Lin–Parker and
+      // spur-pair runs (docs/tooth-contact.md, "The tip-circle crossing").
+      crossing_tried = !best_at_bracket_end(s);
+      if (crossing_tried) {
+        const double r_c = crossing_radius(s);
+        if (!std::isnan(r_c)) return sampled_hit_at(s, r_c);
+      }
       const bool high = i == n - 1 || s.missing(i + 1);
       const double r_end = high ? end_hi : end_lo;
       if (std::abs(r_end - r_b) <= s.step) {
@@ -479,11 +530,7 @@ Hit refined_hit(FlankSamples& s) {
       }
     }
   }
-  double r_best = refined_radius(s);
-  if (std::isnan(xy.x.table.flank_angle(k, f, r_best))) r_best = r_b;
-  const Hit refined = probe_at(xy, k, f, r_best);
-  if (refined.depth > kNone) return refined;
-  return probe_at(xy, k, f, r_b);
+  return sampled_hit_at(s, refined_radius(s, crossing_tried));
 }
 
 [[maybe_unused]] Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {

@@ -6,6 +6,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "contact/flank_table.hpp"
@@ -16,7 +20,22 @@ namespace gearsim::contact {
 struct PlanarPose {
   Eigen::Vector2d centre_m = Eigen::Vector2d::Zero();
   double angle_rad = 0;
+  // std::cos and std::sin of the angle, where the caller has them (a gear meshing in several
+  // pairs turns its angle into them once per step, not once per pair: with_rotation()), and the
+  // angle they are of: used only while angle_rad is still that angle, bit for bit, so a pose
+  // turned afterwards is never taken at a stale rotation. NaN by default: the search takes them
+  // itself.
+  double cos_angle = std::numeric_limits<double>::quiet_NaN(), sin_angle = std::numeric_limits<double>::quiet_NaN();
+  double rotation_of_rad = std::numeric_limits<double>::quiet_NaN();
+  bool has_rotation() const { return std::bit_cast<std::uint64_t>(rotation_of_rad) == std::bit_cast<std::uint64_t>(angle_rad); }
 };
+
+inline PlanarPose with_rotation(PlanarPose p) {
+  p.cos_angle = std::cos(p.angle_rad);
+  p.sin_angle = std::sin(p.angle_rad);
+  p.rotation_of_rad = p.angle_rad;
+  return p;
+}
 
 struct ToothContact {
   int tooth_a = -1, tooth_b = -1;

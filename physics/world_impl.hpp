@@ -312,7 +312,7 @@ struct World::Impl {
 inline contact::PlanarPose planar_pose(const BuiltBody& b) {
   const btTransform t = b.rigid->getWorldTransform() * b.com_from_gear;
   const btVector3 x = t.getBasis().getColumn(0);
-  return {{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())};
+  return contact::with_rotation({{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())});
 }
 
 }  // namespace gearsim::physics

@@ -84,6 +84,39 @@ TEST(ToothContact, DriverRotationPressesEachLoadedPairByBaseRadiusTimesAngle) {
   }
 }
 
+// A pose may carry its rotation (with_rotation(), what the World passes: one sincos per gear per
+// step). The search then gives the same contacts bit for bit as from the angle alone; and a pose
+// turned after its rotation was taken (PlanarPose is a plain aggregate callers do turn) is
+// searched at its new angle, not at the stale rotation.
+TEST(ToothContact, APoseCarryingItsRotationIsSearchedAtItsAngle) {
+  SunPlanet s;
+  const double dtheta = 2e-6 / 11.2763e-3;  // presses the loaded flanks by 2 µm
+  auto same = [](const std::vector<ToothContact>& u, const std::vector<ToothContact>& v) {
+    if (u.size() != v.size()) return false;
+    for (std::size_t i = 0; i < u.size(); ++i)
+      if (u[i].tooth_a != v[i].tooth_a || u[i].tooth_b != v[i].tooth_b || u[i].flank_a != v[i].flank_a ||
+          u[i].depth_m != v[i].depth_m || u[i].point_m != v[i].point_m || u[i].normal_on_b != v[i].normal_on_b)
+        return false;
+    return true;
+  };
+  const PlanarPose pressed{{0, 0}, dtheta};
+  const std::vector<ToothContact> plain = find_tooth_contacts(s.ts, pressed, s.tp, s.planet_pose);
+  ASSERT_FALSE(plain.empty());
+  EXPECT_TRUE(same(find_tooth_contacts(s.ts, with_rotation(pressed), s.tp, with_rotation(s.planet_pose)), plain));
+  // Rotation taken at the assembly angle (no contact), then the sun pressed: the new angle counts.
+  PlanarPose turned = with_rotation(PlanarPose{{0, 0}, 0.0});
+  turned.angle_rad = dtheta;
+  EXPECT_FALSE(turned.has_rotation());
+  EXPECT_TRUE(same(find_tooth_contacts(s.ts, turned, s.tp, s.planet_pose), plain));
+  // The stale rotation would have found the assembly pose's contacts: none 2 µm deep.
+  for (const ToothContact& c : find_tooth_contacts(s.ts, PlanarPose{{0, 0}, 0.0}, s.tp, s.planet_pose)) EXPECT_LT(c.depth_m, 0.1e-6);
+  for (const ToothContact& c : plain) {
+    if (off_line_of_action(c.point_m) < 1e-6) {
+      EXPECT_NEAR(c.depth_m, 2e-6, 0.02e-6);
+    }
+  }
+}
+
 // A module-4 pair at 25° (17 and 24 teeth): its flanks are 4× longer than the paper's and the
 // contact depth along them 4× more sharply peaked between the 16 probe samples. At every phase
 // of a pitch the pinion pressed by 1.2 µm on its base circle must load a flank pair by 1.2 µm
