@@ -410,6 +410,23 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           else keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
         };
         Hit continued;  // depth kNone: none
+        if (pass == 1 && continuation_ == Continuation::replace && sol.solved == Hit::kInterior && sol.call + 1 == calls_) {
+          // This flank's interior maximum continues on a's flank (sol.tooth_y, sol.flank_y). Where
+          // the first pass solved that flank's interior maximum in this call on this very flank of
+          // b, both are the one common normal of the two flanks (the foot of each point on the
+          // other flank, their tangents parallel), seen from either side: the same depth, point
+          // and normal to rounding (keep_contact() would keep either). That solution stands for
+          // this flank too, its radii swapped, and is not solved again.
+          const Solution& first = solutions_[0][static_cast<std::size_t>(sol.tooth_y) * 2 + (sol.flank_y == Flank::Cw)];
+          if (first.call == calls_ && first.solved == Hit::kInterior && first.tooth_y == k && first.flank_y == f) {
+            ++counts_.shared;
+            sol = {static_cast<signed char>(Hit::kInterior), sol.tooth_y, sol.flank_y, first.s_y, first.r_x, calls_, sol.r_x, sol.s_y,
+                   sol.r_prev, sol.s_prev, std::min(sol.history + 1, 2), sol.face_point, sol.face_margin_m};
+            rec.travel_m = -1;  // searched in full when the continuation ends
+            rec.tracked = false;
+            continue;
+          }
+        }
         if (continuation_ != Continuation::off && sol.solved != 0 && sol.call + 1 == calls_) {
           // Started where the last steps' motion, continued, takes the solution: the parabola
           // through the last three solutions (the start is then off by the motion's third

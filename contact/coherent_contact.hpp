@@ -45,8 +45,11 @@ class CoherentToothSearch {
   // skipped and continued since construction (both probing passes).
   // Renewed: a clear flank whose record ran out, found clear again by measuring only the samples
   // whose own travel had run out (coherent_contact.cpp, renew_clear()).
+  // Shared: a second-pass flank whose continued interior maximum is the first pass's of this call
+  // (the same two flanks' common normal, seen from the other side), taken from it instead of
+  // solved again (Continuation::replace only; find()).
   struct Counts {
-    long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0;
+    long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0, shared = 0;
   };
   const Counts& counts() const { return counts_; }
 

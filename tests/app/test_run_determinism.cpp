@@ -41,7 +41,14 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 
 // The hash of the 0.004 s paper run (200 steps) on Debian 12 / x86-64 with this build. Update
 // it (the failure message prints the new value) only together with the change that explains it.
-// Last change: with the planar mass matrix the rows are solved in the coordinates' space
+// Last change: the continued search's second probing pass takes a flank's interior maximum
+// from the first pass where that pass solved the same two flanks' common normal in the same
+// call (contact/coherent_contact.cpp, Counts::shared), instead of solving it again from the
+// other side and keeping the deeper of two equal depths: over the 974 618 contacts of the paper
+// sweep (bench_contact_sweep --coherent --continued --compare) depths within 2.6e-15 m, points
+// 1.3e-9 m, normals 8.9e-8 rad. Every hash of a continued search changed (all four below); the
+// sampled searches' did not.
+// Before: with the planar mass matrix the rows are solved in the coordinates' space
 // (physics/world_primal_solve.cpp: K = M + Σ J_f·Jᵀ/D over the spring rows, the stiff rows by
 // their Schur complement) instead of the n × n folded rows, and M⁻¹·Jᵀ·λ comes from the Cholesky
 // factor and Jᵀ·λ: the same impulses within 7.4e-14 of the largest at every step
@@ -110,13 +117,13 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 // "Continuation"): depths agree with the sampled search's within 0.1 nm, but not bit for bit (the
 // sampled search's hashes are kept below).
 // kGoldenHash is the rigid-body engine's (it runs with --set solver.engine=rigid_bodies).
-constexpr std::uint64_t kGoldenHash = 0x7ffcfb9625302578ull;
+constexpr std::uint64_t kGoldenHash = 0x67b22859856dcda4ull;
 // The default engine's (multibody, trapezoid_closed, active_set, planar mass matrix) hash.
-constexpr std::uint64_t kGoldenHashMultibody = 0x9c14364c016c2b76ull;
-// The same with --set solver.mass_matrix=articulated: the default's hash before the planar mass matrix.
-constexpr std::uint64_t kGoldenHashMultibodyArticulated = 0x2760ffa22991bb3bull;
+constexpr std::uint64_t kGoldenHashMultibody = 0x886332ab2327db23ull;
+// The same with --set solver.mass_matrix=articulated (Bullet's articulated-body pass and tree walks).
+constexpr std::uint64_t kGoldenHashMultibodyArticulated = 0x0fb81591badcf458ull;
 // The multibody engine with implicit Euler (θ = 1) and Dantzig, the defaults before.
-constexpr std::uint64_t kGoldenHashImplicitEuler = 0xc9c0b2cf040862baull;
+constexpr std::uint64_t kGoldenHashImplicitEuler = 0x9c728771f0419265ull;
 // Without the continuation (--set contact.continued_search=false): the coherent search's and the
 // stateless search's, the same physics since Newton's refinement came in (multibody with θ = 1).
 constexpr std::uint64_t kGoldenHashSampled = 0x9bfa267c6f7374e5ull;

@@ -127,6 +127,7 @@ Sweep sweep_pair(const Gear& a, const Gear& b, double step_rad, long steps, cons
     sw.counts.skipped += search.counts().skipped;
     sw.counts.continued += search.counts().continued;
     sw.counts.renewed += search.counts().renewed;
+    sw.counts.shared += search.counts().shared;
   }
   return sw;
 }
@@ -244,6 +245,10 @@ TEST(CoherentToothSearch, ContinuationFindsTheStatelessContactsOverAPlanetTurn) 
     expect_continued(sun, std::string("sun–") + planet + ", continued", sun.contacts / 2);
     const Sweep ring = sweep_pair(named(g, planet), named(g, "ring"), kStepRad, kPlanetTurnSteps, kPresses_m, true);
     expect_continued(ring, std::string(planet) + "–ring, continued", ring.contacts / 2);
+    // Contacts near the second gear's tips are solved from both sides; the second pass takes
+    // the first's solution there (Counts::shared) — with the same contacts as above.
+    EXPECT_GT(sun.counts.shared, sun.contacts / 2) << "sun–" << planet;
+    EXPECT_GT(ring.counts.shared, ring.contacts / 2) << planet << "–ring";
   }
 }
 
