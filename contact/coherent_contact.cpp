@@ -417,8 +417,16 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           // other flank, their tangents parallel), seen from either side: the same depth, point
           // and normal to rounding (keep_contact() would keep either). That solution stands for
           // this flank too, its radii swapped, and is not solved again.
+          // Only where this pass would have kept the solution (continued_hit()): within 1.5 sample
+          // spacings of this flank's tip, and on flanks curved no more sharply than its own
+          // spacing allows (the first pass checked its own, so a spacing no wider here).
           const Solution& first = solutions_[0][static_cast<std::size_t>(sol.tooth_y) * 2 + (sol.flank_y == Flank::Cw)];
-          if (first.call == calls_ && first.solved == Hit::kInterior && first.tooth_y == k && first.flank_y == f) {
+          const double spacing = x.table.probe_radius(1) - x.table.probe_radius(0);
+          double lo, hi;
+          x.table.flank_extent(k, f, &lo, &hi);
+          if (first.call == calls_ && first.solved == Hit::kInterior && first.tooth_y == k && first.flank_y == f &&
+              std::abs(first.s_y - (x.table.internal() ? lo : hi)) <= 1.5 * spacing &&
+              spacing <= y.table.probe_radius(1) - y.table.probe_radius(0)) {
             ++counts_.shared;
             sol = {static_cast<signed char>(Hit::kInterior), sol.tooth_y, sol.flank_y, first.s_y, first.r_x, calls_, sol.r_x, sol.s_y,
                    sol.r_prev, sol.s_prev, std::min(sol.history + 1, 2), sol.face_point, sol.face_margin_m};
