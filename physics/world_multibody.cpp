@@ -278,6 +278,14 @@ void World::Impl::multibody_rows() {
       const btVector3 r = point - t.getLink(link).m_cachedWorldTransform.getOrigin();
       const double* jl = e.link_jac.data() + static_cast<std::size_t>(link) * 3 * ud;
       const double w = sign * (r.x() * dir.y() - r.y() * dir.x()), wx = sign * dir.x(), wy = sign * dir.y();
+      if (e.planar_mass) {
+        // Only the coordinates on the link's chain: planar_link_jacobians() leaves the others 0.
+        for (const int d : e.link_dofs[static_cast<std::size_t>(link)]) {
+          const std::size_t k = static_cast<std::size_t>(d);
+          out[k] += w * jl[k] + wx * jl[ud + k] + wy * jl[2 * ud + k];
+        }
+        return;
+      }
       for (std::size_t k = 0; k < ud; ++k) out[k] += w * jl[k] + wx * jl[ud + k] + wy * jl[2 * ud + k];
       return;
     }
