@@ -151,6 +151,10 @@ class World {
     // Fallbacks: the dof-space solve did not settle; of them, settled by the row-space solve.
     long row_solves_compared = 0, row_solve_fallbacks = 0, row_solve_fallbacks_settled = 0;
     double row_solve_difference = 0;
+    // The velocity change the dof-space solve found with its impulses (what the step applies
+    // where that solve settled) against M⁻¹·Jᵀ·λ from the same impulses: max |Δdv| / max |dv|.
+    long velocity_changes_compared = 0;
+    double velocity_change_difference = 0;
   };
   void set_mass_matrix_check(bool on);
   const MassMatrixCheck& mass_matrix_check() const;

@@ -61,7 +61,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
   e.slip_brackets.assign(static_cast<std::size_t>(n), MultibodyEngine::SlipBracket{});
   bool dv_of_x = false;  // dv is M⁻¹·Jᵀ·x of the present x
   for (int round = 0; solved && round < kSlipRounds; ++round) {
-    velocity_change(e.x.data(), dv.data());
+    velocity_change_of_x(dv.data());
     dv_of_x = true;
     bool changed = false;
     for (int i = 0; i < n; ++i) {
@@ -97,7 +97,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     solved = solve_rows_dantzig_fixed_friction();
   }
   {  // each contact's slip at the step's end on this step's rows, for the next step's drift
-    if (!dv_of_x) velocity_change(e.x.data(), dv.data());
+    if (!dv_of_x) velocity_change_of_x(dv.data());
     e.dv_of_x = true;  // solve_multibody_rows applies it
     std::swap(e.slip_end_before, e.slip_end);
     e.slip_end.clear();

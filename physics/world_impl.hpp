@@ -148,6 +148,7 @@ struct MultibodyEngine {
   };
   std::vector<SlipBracket> slip_brackets;
   bool dv_of_x = false;  // buf[6…] holds M⁻¹·Jᵀ·x of this step's x (locate_slip_reversals left it)
+  bool primal_dv_of_x = false;  // primal_dv is the velocity change of x: the dof-space solve settled x (solve_rows_planar)
   // Row i is friction held at a fixed multiple of its normal's impulse (lo = hi): no unknown of the solve.
   bool held_friction(std::size_t i) const { return findex[i] >= 0 && !(hi[i] > lo[i]); }
   std::vector<std::pair<ContactKey, double>> slip_end, slip_end_before;
@@ -302,6 +303,7 @@ struct World::Impl {
   bool solve_rows_dantzig_fixed_friction();
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).
   void velocity_change(const double* lambda, double* dv);
+  void velocity_change_of_x(double* dv);  // of e.x: the dof-space solve's where it found x, else velocity_change()
   bool locate_slip_reversals(bool solved);
   double slip_drift(int row, double slip_start_m_s, std::size_t& hint) const;
   bool solve_rows_active_set();

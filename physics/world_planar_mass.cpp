@@ -371,6 +371,28 @@ void World::Impl::velocity_change(const double* lambda, double* dv) {
   }
 }
 
+// The velocity change of this step's impulses e.x. Where the dof-space solve found them
+// (solve_rows_planar), the dv it solved them with: M·dv = Jᵀ·x to rounding, so M⁻¹·Jᵀ·x need
+// not be formed again (World::set_mass_matrix_check compares the two).
+void World::Impl::velocity_change_of_x(double* dv) {
+  MultibodyEngine& e = *mb;
+  if (!(e.planar_mass && e.primal_dv_of_x)) {
+    velocity_change(e.x.data(), dv);
+    return;
+  }
+  std::copy(e.primal_dv.begin(), e.primal_dv.end(), dv);
+  if (!e.check_mass) return;
+  std::vector<double> reference(e.primal_dv.size());
+  velocity_change(e.x.data(), reference.data());
+  double scale = 0, difference = 0;
+  for (std::size_t k = 0; k < reference.size(); ++k) {
+    scale = std::max(scale, std::abs(reference[k]));
+    difference = std::max(difference, std::abs(reference[k] - dv[k]));
+  }
+  ++e.mass_check.velocity_changes_compared;
+  if (scale > 0) e.mass_check.velocity_change_difference = std::max(e.mass_check.velocity_change_difference, difference / scale);
+}
+
 // World::set_mass_matrix_check: this step's M (lower triangle, before its factorisation) against
 // the articulated-body solves' M⁻¹, and e.link_jac against Bullet's tree walks, at the same pose.
 void World::Impl::check_planar_mass(const double* m_lower) {

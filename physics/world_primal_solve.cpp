@@ -239,6 +239,7 @@ int World::Impl::solve_rows_planar() {
   MultibodyEngine& e = *mb;
   e.primal_states_before = e.row_states;
   const int solves = solve_rows_primal();
+  e.primal_dv_of_x = solves > 0;
   if (solves > 0 && e.check_mass) {
     e.primal_x_check = e.x;
     e.primal_states_check = e.row_states;

@@ -76,6 +76,7 @@ void World::Impl::solve_multibody_rows() {
   }
   if (e.planar_mass) planar_soft_rows();
   e.dv_of_x = false;
+  e.primal_dv_of_x = false;
   bool solved = e.active_set && solve_rows_active_set();
   if (!solved) {
     ++profile.dantzig_solves;
@@ -90,7 +91,7 @@ void World::Impl::solve_multibody_rows() {
     std::fill(e.buf.begin(), e.buf.begin() + 6, 0.0);
   } else {
     std::fill(e.buf.begin(), e.buf.end(), 0.0);
-    velocity_change(e.x.data(), e.buf.data() + 6);
+    velocity_change_of_x(e.buf.data() + 6);
   }
   t.applyDeltaVeeMultiDof(e.buf.data(), 1);
 }

@@ -224,6 +224,7 @@ TEST(Multibody, TheDofSpaceSolveIsTheRowSpaceSolve) {
   // the bearing-mounted set (18 coordinates, bearing springs as rows), on the rigid sun, and with
   // the sun's bearing 1e23 times stiffer than the paper's (compliance ≈ 1e-21 of its diagonal:
   // solved as a stiff row — through K, kSoftSpring 0, the run breaks down within 3 000 steps).
+  // And the velocity change the step applies, the dof-space solve's own dv, against M⁻¹·Jᵀ·λ.
   struct Case {
     std::string scenario;
     std::vector<std::string> settings;
@@ -247,6 +248,12 @@ TEST(Multibody, TheDofSpaceSolveIsTheRowSpaceSolve) {
     EXPECT_EQ(k.row_solve_fallbacks_settled, 0) << c.scenario;  // it settles wherever the row-space solve does
     EXPECT_LT(k.row_solve_difference, 1e-9) << c.scenario;
     EXPECT_EQ(w.failed_solves(), 0) << c.scenario;  // Dantzig solves where neither settles
+    // The velocity change a step applies where the dof-space solve settled is the dv it solved
+    // with, not M⁻¹·Jᵀ·λ formed again: the two agree to rounding.
+    std::printf("    %ld velocity changes compared, max |Δdv| %.2e of the largest\n", k.velocity_changes_compared,
+                k.velocity_change_difference);
+    EXPECT_GE(k.velocity_changes_compared, 3000) << c.scenario;
+    EXPECT_LT(k.velocity_change_difference, 1e-12) << c.scenario;
   }
 }
 
