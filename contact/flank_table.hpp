@@ -117,7 +117,7 @@ class FlankTable {
     double slope = kInfinity, growth = kInfinity, jump = kInfinity, side = kInfinity;  // 1, 1/m, 1, 1
   };
   static constexpr double kInfinity = 1e300;
-  FirstOrderRise first_order_rise(double r_lo_m, double r_hi_m) const {
+  [[gnu::always_inline]] FirstOrderRise first_order_rise(double r_lo_m, double r_hi_m) const {
     const double last = samples_ - 2, lo = (r_lo_m - r_min_) * inv_dr_, hi = (r_hi_m - r_min_) * inv_dr_;
     const int b_lo = static_cast<int>(lo <= 0 ? 0 : lo >= last ? last : lo) / kRiseBand;
     const int b_hi = static_cast<int>(hi <= 0 ? 0 : hi >= last ? last : hi) / kRiseBand;
