@@ -92,7 +92,8 @@ Eigen::Vector2d FlankTable::in_tooth_frame(const Eigen::Vector2d& p, int k) cons
   return {axis.x() * p.x() + axis.y() * p.y(), axis.x() * p.y() - axis.y() * p.x()};
 }
 
-int FlankTable::nearest_tooth_from(const Eigen::Vector2d& p, int k, Eigen::Vector2d* q) const {
+// Inline: every call is in this file (first_order_depth() and the probes, ≈ 54 per paper step).
+inline int FlankTable::nearest_tooth_from(const Eigen::Vector2d& p, int k, Eigen::Vector2d* q) const {
   // Within half a pitch of tooth k's centre line: |q_y| ≤ tan(π/z)·q_x in the tooth's frame. A
   // point on a tooth is far inside that cone; one near the cone's edge lies mid-way across a
   // tooth space, where either bounding tooth gives the same depth (probe_depth() compares the
