@@ -1,4 +1,4 @@
-// Internal to contact/, included by flank_search_impl.hpp only (after Hit and XY): Newton's
+// Internal to contact/, included by flank_refine_impl.hpp only (after Hit and XY): Newton's
 // method on the smooth (C¹) flanks for a contact's deepest point — an interior maximum of the
 // overlap (newton_hit) or a flank's corner (corner_hit). docs/tooth-contact.md, "Newton
 // refinement on smooth flanks". Not an interface.
