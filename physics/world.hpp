@@ -136,8 +136,9 @@ class World {
   // links, and records the largest |M·M⁻¹ − I| (M the planar mass matrix) and the largest
   // difference of a link Jacobian's entries (1 or m) seen: that both paths state the same
   // equations, to rounding (docs/solver.md, "The planar mass matrix"); likewise the free motion
-  // against Bullet's articulated-body pass, and every dof-space row solve against the folded
-  // row-space solve from the same bound states ("The row solve in the coordinates' space").
+  // against Bullet's articulated-body pass, every dof-space row solve against the folded
+  // row-space solve from the same bound states ("The row solve in the coordinates' space"), and
+  // the velocity change a step applies from that solve against M⁻¹·Jᵀ·λ.
   // Costs the articulated path's time; off by default. steps stays 0 where the planar path is
   // not used.
   struct MassMatrixCheck {
