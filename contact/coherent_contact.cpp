@@ -306,7 +306,7 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
   }
   if (h.depth <= kNone) return {};
   const double spacing = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
-  if (!(h.rho_x > spacing && h.rho_y > spacing) || h.depth > refine_window_m(spacing)) return {};
+  if (!h.gentle || h.depth > refine_window_m(spacing)) return {};
   // The second gear's flanks are searched at their tips only (probe_tip(): a maximum farther
   // down than its third sample is the first gear's to find): a solution there must stay within
   // 1.5 sample spacings of the tip.

@@ -42,12 +42,17 @@ Hit solved_hit(const XY& xy, const Vector2d& P, const Vector2d& Q, const Vector2
   return h;
 }
 
-// The radius of curvature of a flank curve with derivatives d1, d2 (FlankTable::FlankJet), m:
-// +∞ where it is straight.
-double radius_of_curvature(const Vector2d& d1, const Vector2d& d2) {
-  const double c = std::abs(d1.x() * d2.y() - d1.y() * d2.x()), n = d1.norm();
-  return c > 0 ? n * n * n / c : std::numeric_limits<double>::infinity();
+// Whether a flank curve with derivatives d1, d2 (FlankTable::FlankJet) curves less sharply than a
+// circle of `radius` (m): its radius of curvature |d1|³ / |d1 × d2| (+∞ where it is straight)
+// above it, compared as |d1|⁶ > radius²·(d1 × d2)², without a root or a division.
+bool curvature_radius_above(const Vector2d& d1, const Vector2d& d2, double radius) {
+  const double c = d1.x() * d2.y() - d1.y() * d2.x(), n2 = d1.squaredNorm();
+  return n2 * n2 * n2 > radius * radius * (c * c);
 }
+
+// x's probe spacing, m: a solved hit whose flanks curve more sharply than it (Hit::gentle false)
+// is not continued (continued_hit()).
+double probe_spacing(const FlankTable& t) { return t.probe_radius(1) - t.probe_radius(0); }
 
 // y's flank that x's point P (y's frame) faces, and the start of the search for its foot there
 // (the flank point at P's own radius). False where P faces no flank.
@@ -94,8 +99,8 @@ Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double
       const double d2 = -P2.dot(n) - P1t.dot(dn) * (-j11 / j12);
       if (!(d2 < 0) || !(j12 != 0)) return {};
       Hit h = solved_hit(xy, Pt, Qt, n, j, g);
-      h.rho_x = radius_of_curvature(a.d1 + hr * a.d2, a.d2);
-      h.rho_y = radius_of_curvature(Q1t, Q2);
+      const double spacing = probe_spacing(xt);
+      h.gentle = curvature_radius_above(a.d1 + hr * a.d2, a.d2, spacing) && curvature_radius_above(Q1t, Q2, spacing);
       h.solved = Hit::kInterior;
       h.r_x = r + hr;
       h.s_y = s + hs;
@@ -157,8 +162,8 @@ Hit corner_solve(const XY& xy, int k, Flank f, double r_end, bool high_end, int 
       const double rise = -P1.dot(n);
       if (!(high_end ? rise > 0 : rise < 0)) return {};
       Hit h = solved_hit(xy, P, Qt, n, j, g);
-      h.rho_x = radius_of_curvature(a.d1, a.d2);
-      h.rho_y = radius_of_curvature(Q1t, b.d2);
+      const double spacing = probe_spacing(xt);
+      h.gentle = curvature_radius_above(a.d1, a.d2, spacing) && curvature_radius_above(Q1t, b.d2, spacing);
       h.solved = high_end ? Hit::kCornerHigh : Hit::kCornerLow;
       h.r_x = r_end;
       h.s_y = s + hs;

@@ -8,19 +8,13 @@
 
 #include "contact/fast_angle.hpp"
 #include "contact/flank_table.hpp"
+#include "contact/integer_round.hpp"
 #include "geometry/constants.hpp"
 
 namespace gearsim::contact {
 namespace {
 
 using gearsim::constants::kNaN;
-
-// std::nearbyint in the default rounding mode (to nearest, ties to even) without a libm call:
-// adding and subtracting 1.5·2^52 rounds |x| < 2^51 to an integer. Bit for bit nearbyint's answer.
-double round_to_even(double x) {
-  constexpr double kShift = 6755399441055744.0;  // 1.5·2^52
-  return (x + kShift) - kShift;
-}
 
 }  // namespace
 

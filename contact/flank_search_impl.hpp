@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "contact/fast_angle.hpp"
+#include "contact/integer_round.hpp"
 #include "contact/tooth_contact.hpp"
 
 namespace gearsim::contact {
@@ -160,8 +161,10 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
     return w;
   }
   const int teeth = x.table.teeth();
-  const double lo = std::ceil((centre - half) / pitch), hi = std::floor((centre + half) / pitch);
-  if (!(hi - lo + 1 < teeth && std::abs(lo) < 1e15)) return w;
+  const double a = (centre - half) / pitch, b = (centre + half) / pitch;
+  if (!(std::abs(a) < 1e15 && std::abs(b) < 1e15)) return w;
+  const double lo = ceil_small(a), hi = floor_small(b);
+  if (!(hi - lo + 1 < teeth)) return w;
   w.count = hi < lo ? 0 : static_cast<int>(hi - lo) + 1;
   const long long first = static_cast<long long>(lo) % teeth;
   w.first = static_cast<int>(first < 0 ? first + teeth : first);
@@ -180,7 +183,9 @@ struct Hit {
   enum Solved : signed char { kSampled, kInterior, kCornerHigh, kCornerLow };
   Solved solved = kSampled;
   double r_x = 0, s_y = 0;
-  double rho_x = 0, rho_y = 0;  // a solved hit's radii of curvature of x's and y's flank there, m
+  // A solved hit whose flanks both curve there less sharply than x's probe spacing (radii of
+  // curvature above it: flank_newton_impl.hpp, curvature_radius_above()).
+  bool gentle = false;
 };
 
 // Exact depth of x's flank point at radius r inside y, with the contact geometry, in world terms.

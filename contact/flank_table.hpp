@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "contact/integer_round.hpp"
 #include "geometry/convex_decomposition.hpp"
 #include "geometry/gear_spec.hpp"
 #include "geometry/outline.hpp"
@@ -170,7 +171,9 @@ class FlankTable {
   // flank_jet() evaluates): a jet at r0 expands the flank to r1 without a jump of its second
   // derivative between them.
   bool same_interval(double r0, double r1) const {
-    return std::floor((r0 - r_min_) * inv_dr_) == std::floor((r1 - r_min_) * inv_dr_);
+    const double x0 = (r0 - r_min_) * inv_dr_, x1 = (r1 - r_min_) * inv_dr_;
+    if (!(std::abs(x0) < kIntegerRoundLimit && std::abs(x1) < kIntegerRoundLimit)) return std::floor(x0) == std::floor(x1);
+    return floor_small(x0) == floor_small(x1);
   }
   // The radii of a flank's first and last sample with material (its root and tip ends), m.
   void flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const {
