@@ -273,6 +273,56 @@ bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, Vector
   return true;
 }
 
+// Whether the stateless search of x's flank (tooth k, f; the first gear's, probe_flank()) comes
+// to a continued tip crossing's maximum at x's radius r_c (`side`: +1 where larger radii of x's
+// flank lie beyond y's tip circle): the probe samples about it, measured as it measures them.
+// The depth falling away from the crossing inside, its best sample is `in`, the one inside next
+// to the crossing, where `out` beyond it has material and measures nothing: it then looks for
+// the crossing there (crossing_radius()). It refines only a best sample within the window, and
+// gives a flank up where its best after the coarse passes (the first samples, every other one
+// where needed) lies more than 4 windows clear. Those passes probe `in` where it is a first
+// sample or even (the even ones from 2 on are needed next to a sample two steps away that
+// measured nothing: `out`'s neighbour beyond, |P| growing steadily along the flank over two
+// spacings); else their best is the even sample inside `in`, which must then lie within 4
+// windows.
+bool samples_see_crossing(const XY& xy, int k, Flank f, double r_c, int side, int& hint) {
+  constexpr int n = FlankTable::kProbeRadii;
+  const FlankTable& xt = xy.x.table;
+  const double spacing = xt.probe_radius(1) - xt.probe_radius(0), window = refine_window_m(spacing);
+  const std::uint32_t material = xt.probe_material(k, f);
+  auto has = [&](int i) { return i >= 0 && i < n && ((material >> i) & 1u); };
+  auto depth = [&](int i) { return depth_of(xy, xt.probe_point(k, f, i), hint); };
+  const int lo = std::clamp(static_cast<int>(floor_small((r_c - xt.probe_radius(0)) / spacing)), 0, n - 2);
+  const int in = side > 0 ? lo : lo + 1, out = side > 0 ? lo + 1 : lo;
+  if (!has(in) || !has(out) || !(depth(out) <= kNone && depth(in) >= -window)) return false;
+  if (((first_samples(material) >> in) & 1u) || in % 2 == 0) return true;
+  return has(in - side) && depth(in - side) >= -4 * window;
+}
+
+// A maximum where x's flank (tooth k, f) crosses y's tip circle (Hit::kCrossing;
+// flank_refine_impl.hpp, Crossing) continued: the crossing solved again by Newton's method from
+// r0, the depth checked to still rise toward the circle with nothing measured beyond it
+// (tip_crossing_maximum(), as the stateless search checks it), and the probe samples about it
+// checked to lead the stateless search there (samples_see_crossing()). No hit where any of that
+// fails or the point measured faces another flank of y than (j, g).
+Hit continued_crossing(const XY& xy, int k, Flank f, double r0, int j, Flank g, int& hint) {
+  double lo, hi;
+  xy.x.table.flank_extent(k, f, &lo, &hi);
+  double rise = 0;
+  const double r_c = circle_crossing(xy, k, f, tip_circle_m(xy.y.table), std::clamp(r0, lo, hi), lo, hi, &rise);
+  if (std::isnan(r_c)) return {};
+  // Beyond the circle: larger radii of x's flank where |P| grows with them, for an external y.
+  const int side = (rise > 0) != xy.y.table.internal() ? 1 : -1;
+  const double r = tip_crossing_maximum(xy, k, f, r_c, side, hint);
+  if (std::isnan(r) || !samples_see_crossing(xy, k, f, r_c, side, hint)) return {};
+  Hit h = probe_at(xy, k, f, r);
+  if (!(h.depth > kNone) || h.tooth_y != j || h.flank_y != g) return {};
+  h.solved = Hit::kCrossing;
+  h.r_x = r_c;
+  h.s_y = tip_circle_m(xy.y.table);
+  return h;
+}
+
 // The deepest point of x's flank (tooth k, f) solved from the last call's solution (`solved`:
 // its kind; on y's tooth j, flank g; at radii r_x on x's flank, s_y on y's) on the same flank of
 // y: an interior maximum by Newton's method, or the corner
@@ -284,10 +334,17 @@ bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, Vector
 // (r0, s0): where to start, last step's radii (r_x, s_y) or a prediction from them.
 // (face_point, face_margin): the facing check's reference (still_faces()), updated.
 Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, double r0,
-                  double s0, bool tip_only, Vector2d& face_point, double& face_margin) {
+                  double s0, bool tip_only, Vector2d& face_point, double& face_margin, int& hint) {
   double lo, hi;
   xy.x.table.flank_extent(k, f, &lo, &hi);
+  const double spacing = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
   Hit h;
+  if (solved == Hit::kCrossing) {
+    // Kept for the first gear's flanks only (find()): never tip_only.
+    h = continued_crossing(xy, k, f, r0, j, g, hint);
+    if (h.depth <= kNone || h.depth > refine_window_m(spacing)) return {};
+    return h;
+  }
   if (solved == Hit::kInterior) {
     h = newton_solve(xy, k, f, std::clamp(r0, lo, hi), j, g, s0, lo, hi);
     if (h.depth <= kNone) {
@@ -305,7 +362,6 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
     }
   }
   if (h.depth <= kNone) return {};
-  const double spacing = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
   if (!h.gentle || h.depth > refine_window_m(spacing)) return {};
   // The second gear's flanks are searched at their tips only (probe_tip(): a maximum farther
   // down than its third sample is the first gear's to find): a solution there must stay within
@@ -450,9 +506,11 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           Vector2d face_point = sol.face_point;
           double face_margin = sol.face_margin_m;
           const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y,
-                                      r0, s0, tip_only, face_point, face_margin);
+                                      r0, s0, tip_only, face_point, face_margin, hint);
           if (h.depth >= -refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0))) {
             ++counts_.continued;
+            counts_.crossings += h.solved == Hit::kCrossing;
+            // The same maximum continued: its history predicts the next start.
             const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y;
             sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_, sol.r_x, sol.s_y,
                    sol.r_prev, sol.s_prev, same ? std::min(sol.history + 1, continuation_ == Continuation::replace ? 2 : 1) : 0,
@@ -473,7 +531,11 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           continue;
         }
         if (sampled.tooth_y < 0) continue;
-        if (continuation_ != Continuation::off && sampled.solved != Hit::kSampled)
+        // A tip crossing's maximum is continued only where the continued answer replaces the
+        // search (`deeper` searches every flank anyway), and only on the first gear's flanks
+        // (samples_see_crossing() reproduces probe_flank()'s view, not probe_tip()'s).
+        if (continuation_ != Continuation::off && sampled.solved != Hit::kSampled &&
+            (sampled.solved != Hit::kCrossing || (continuation_ == Continuation::replace && pass == 0)))
           sol = {static_cast<signed char>(sampled.solved), sampled.tooth_y, sampled.flank_y, sampled.r_x, sampled.s_y, calls_};
         else sol = Solution{};
         emit(sampled);

@@ -31,6 +31,9 @@ class CoherentToothSearch {
   // method (an interior maximum or a corner, flank_newton_impl.hpp) is solved again from that
   // solution, on the same flank of the other gear; where the solve fails, leaves the flank,
   // faces another flank, curves too sharply or lies outside the refinement window, it is not.
+  // With `replace`, a first-gear flank whose maximum lay where it crosses the other gear's tip
+  // circle is solved there again (Counts::crossings), while the stateless search would still
+  // come to it (coherent_contact.cpp, continued_crossing()).
   //  - replace: the continued solution stands for the flank, which is not probed (smooth flanks
   //    with one maximum per contact: the stateless search's contacts to ~0.1 nm, not bit for bit);
   //  - deeper: the flank is also searched as the stateless search does, and the deeper of the two
@@ -48,8 +51,10 @@ class CoherentToothSearch {
   // Shared: a second-pass flank whose continued interior maximum is the first pass's of this call
   // (the same two flanks' common normal, seen from the other side), taken from it instead of
   // solved again (Continuation::replace only; find()).
+  // Crossings: continued flanks whose maximum is where they cross the other gear's tip circle
+  // (the depth still rising toward it), solved there again (part of `continued`).
   struct Counts {
-    long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0, shared = 0;
+    long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0, shared = 0, crossings = 0;
   };
   const Counts& counts() const { return counts_; }
 

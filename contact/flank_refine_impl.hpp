@@ -60,20 +60,18 @@ double golden_refine(const XY& xy, int k, Flank f, double lo, double hi, int& hi
   return fc > fd ? c : d;
 }
 
-// Where x's flank (tooth k, f) crosses y's tip circle (the circle beyond which y's first-order
-// depth measures nothing), between radii r_in and r_out of x's flank: Newton's method on
-// |P(r)|² = R² from their middle. NaN where it leaves that interval or does not converge.
-double tip_circle_crossing(const XY& xy, int k, Flank f, double r_in, double r_out) {
-  const FlankTable& yt = xy.y.table;
-  const double R = yt.internal() ? yt.r_min_m() : yt.r_max_m();
-  const double lo = std::min(r_in, r_out), hi = std::max(r_in, r_out);
+// Where x's flank (tooth k, f) crosses y's circle of radius R, inside (lo, hi) on x's flank:
+// Newton's method on |P(r)|² = R² from r0. NaN where it leaves that interval or does not
+// converge. `rise`: d|P|²/dr at the last point evaluated (its sign: whether |P| grows with r).
+double circle_crossing(const XY& xy, int k, Flank f, double R, double r0, double lo, double hi, double* rise = nullptr) {
   FlankTable::FlankJet a;
-  double r = 0.5 * (lo + hi);
+  double r = r0;
   for (int it = 0; it < 8; ++it) {
     if (!xy.x.table.flank_jet(k, f, r, &a)) break;
     const Vector2d P = xy.in_y(a.point), P1 = xy.rot * a.d1;
     const double slope = 2 * P.dot(P1);
     if (!(slope != 0)) break;
+    if (rise) *rise = slope;
     const double dr = -(P.squaredNorm() - R * R) / slope;
     r += dr;
     if (!(r > lo && r < hi)) break;
@@ -82,11 +80,45 @@ double tip_circle_crossing(const XY& xy, int k, Flank f, double r_in, double r_o
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+// y's tip circle: beyond it (outside an external y, inside an internal one) y's first-order
+// depth measures nothing.
+double tip_circle_m(const FlankTable& yt) { return yt.internal() ? yt.r_min_m() : yt.r_max_m(); }
+
+// Where x's flank (tooth k, f) crosses y's tip circle between radii r_in and r_out of x's
+// flank, from their middle (circle_crossing()).
+double tip_circle_crossing(const XY& xy, int k, Flank f, double r_in, double r_out) {
+  const double lo = std::min(r_in, r_out), hi = std::max(r_in, r_out);
+  return circle_crossing(xy, k, f, tip_circle_m(xy.y.table), 0.5 * (lo + hi), lo, hi);
+}
+
+// A maximum of the depth where x's flank crosses y's tip circle (the depth still rising toward
+// it, nothing measured beyond). `r`: the radius on x's flank the hit is measured at (a rising
+// check's step inside); `crossing`: where x's flank crosses the circle, of radius `circle_m`. A
+// continued search (coherent_contact.cpp) solves the crossing again next step instead of
+// searching the flank (Hit::kCrossing). NaN: not such a maximum.
+struct Crossing {
+  double r = std::numeric_limits<double>::quiet_NaN();
+  double crossing = std::numeric_limits<double>::quiet_NaN();
+  double circle_m = std::numeric_limits<double>::quiet_NaN();
+};
+
+// Whether the first-order depth at x's flank radius r_c (the crossing of y's tip circle) still
+// rises toward the circle, measured nothing a step beyond it (`side`: +1 where larger radii of
+// x's flank lie beyond the circle, −1 where smaller ones do): the maximum then lies a rising
+// check's step inside the circle, returned; NaN where that does not hold.
+double tip_crossing_maximum(const XY& xy, int k, Flank f, double r_c, int side, int& hint) {
+  const double d_out = depth_at(xy, k, f, r_c + side * kRisingCheck_m, hint);
+  const double d_end = depth_at(xy, k, f, r_c - side * kRisingCheck_m, hint);
+  const double d_in = depth_at(xy, k, f, r_c - 2 * side * kRisingCheck_m, hint);
+  if (d_out <= kNone && d_end > kNone && d_in > kNone && d_end > d_in) return r_c - side * kRisingCheck_m;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
 // Best not at an end of its bracket but next to a sample that measured nothing because it lies
 // beyond y's tips: where the depth still rises toward the radius at which x's flank crosses y's
 // tip circle, a search with one maximum in the bracket ends there, found by Newton's method on
 // the circle instead of golden section's 22 depths. NaN where that does not hold.
-double crossing_radius(FlankSamples& s) {
+Crossing crossing_radius(FlankSamples& s) {
   constexpr int n = FlankSamples::n;
   const FlankTable& table = s.xy.x.table;
   const int best_i = s.best_i;
@@ -96,13 +128,11 @@ double crossing_radius(FlankSamples& s) {
     if (nb < 0 || nb >= n || s.missing(nb) || s.depth[nb] > kNone) continue;
     const double r_c = tip_circle_crossing(s.xy, s.k, s.f, r_b, table.probe_radius(nb));
     if (std::isnan(r_c)) break;
-    const double d_out = depth_at(s.xy, s.k, s.f, r_c + side * kRisingCheck_m, s.hint);
-    const double d_end = depth_at(s.xy, s.k, s.f, r_c - side * kRisingCheck_m, s.hint);
-    const double d_in = depth_at(s.xy, s.k, s.f, r_c - 2 * side * kRisingCheck_m, s.hint);
-    if (d_out <= kNone && d_end > kNone && d_in > kNone && d_end > d_in) return r_c - side * kRisingCheck_m;
+    const double r = tip_crossing_maximum(s.xy, s.k, s.f, r_c, side, s.hint);
+    if (!std::isnan(r)) return {r, r_c, tip_circle_m(s.xy.y.table)};
     break;
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  return {};
 }
 
 // Whether the best sample lies at an end of its refinement bracket (an end of the flank's samples).
@@ -115,8 +145,9 @@ bool best_at_bracket_end(const FlankSamples& s) {
 
 // The radius of the deepest point near the best sample: a parabola through it and its neighbours
 // inside the flank, golden section at an end of it. `crossing_tried`: crossing_radius() was
-// tried already (refined_hit()) and did not hold.
-double refined_radius(FlankSamples& s, bool crossing_tried) {
+// tried already (refined_hit()) and did not hold. `crossing`: set where the point is the
+// crossing of y's tip circle (Crossing).
+double refined_radius(FlankSamples& s, bool crossing_tried, Crossing& crossing) {
   constexpr int n = FlankSamples::n;
   const FlankTable& table = s.xy.x.table;
   const int best_i = s.best_i;
@@ -137,8 +168,11 @@ double refined_radius(FlankSamples& s, bool crossing_tried) {
     if (d_end > kNone && d_in > kNone && d_end > d_in) return r_end;
   }
   if (!crossing_tried) {
-    const double r_c = crossing_radius(s);
-    if (!std::isnan(r_c)) return r_c;
+    const Crossing c = crossing_radius(s);
+    if (!std::isnan(c.r)) {
+      crossing = c;
+      return c.r;
+    }
   }
   return golden_refine(s.xy, s.k, s.f, lo, hi, s.hint);
 }
@@ -151,24 +185,27 @@ double refined_radius(FlankSamples& s, bool crossing_tried) {
 namespace gearsim::contact {
 namespace {
 
-// The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
-// first order, the best refined, and the result measured exactly. A flank whose best sample
-// stays more than its refinement window (refine_window_m) clear of y returns no hit. With
-// `tip_only`, only a maximum at the tooth's free end (its tip corner) is looked for.
-// `hint`: y's tooth the last probe faced (or −1); the next ones along the flank, or on the next
-// flank, face it or a neighbour. Updated.
-// The hit of a flank whose probing found a best sample within the refinement window: refined,
-// then measured exactly.
-// The hit of a sampled refinement that ended at radius r_best: measured exactly there (at the
-// best sample where r_best has no material, or measures nothing).
-Hit sampled_hit_at(const FlankSamples& s, double r_best) {
-  const double r_b = s.xy.x.table.probe_radius(s.best_i);
-  if (std::isnan(s.xy.x.table.flank_angle(s.k, s.f, r_best))) r_best = r_b;
-  const Hit refined = probe_at(s.xy, s.k, s.f, r_best);
-  if (refined.depth > kNone) return refined;
-  return probe_at(s.xy, s.k, s.f, r_b);
+// The hit of a sampled refinement that ended at radius c.r: measured exactly there (at the best
+// sample where c.r has no material, or measures nothing). Where c.r is a crossing's maximum
+// (Crossing) and measured there, marked as one (Hit::kCrossing: r_x the crossing on x's flank,
+// s_y the circle's radius).
+Hit crossing_hit_at(const FlankSamples& s, const Crossing& c) {
+  if (!std::isnan(s.xy.x.table.flank_angle(s.k, s.f, c.r))) {
+    Hit h = probe_at(s.xy, s.k, s.f, c.r);
+    if (h.depth > kNone) {
+      if (!std::isnan(c.circle_m)) {
+        h.solved = Hit::kCrossing;
+        h.r_x = c.crossing;
+        h.s_y = c.circle_m;
+      }
+      return h;
+    }
+  }
+  return probe_at(s.xy, s.k, s.f, s.xy.x.table.probe_radius(s.best_i));
 }
 
+// The hit of a flank whose probing found a best sample within the refinement window: refined,
+// then measured exactly.
 Hit refined_hit(FlankSamples& s) {
   bool crossing_tried = false;
   const XY& xy = s.xy;
@@ -208,8 +245,8 @@ Hit refined_hit(FlankSamples& s) {
       // spur-pair runs (docs/tooth-contact.md, "The tip-circle crossing").
       crossing_tried = !best_at_bracket_end(s);
       if (crossing_tried) {
-        const double r_c = crossing_radius(s);
-        if (!std::isnan(r_c)) return sampled_hit_at(s, r_c);
+        const Crossing c = crossing_radius(s);
+        if (!std::isnan(c.r)) return crossing_hit_at(s, c);
       }
       const bool high = i == n - 1 || s.missing(i + 1);
       const double r_end = high ? end_hi : end_lo;
@@ -224,9 +261,18 @@ Hit refined_hit(FlankSamples& s) {
       }
     }
   }
-  return sampled_hit_at(s, refined_radius(s, crossing_tried));
+  Crossing c;
+  const double r = refined_radius(s, crossing_tried, c);
+  c.r = r;
+  return crossing_hit_at(s, c);
 }
 
+// The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to
+// first order, the best refined, and the result measured exactly. A flank whose best sample
+// stays more than its refinement window (refine_window_m) clear of y returns no hit. With
+// `tip_only`, only a maximum at the tooth's free end (its tip corner) is looked for.
+// `hint`: y's tooth the last probe faced (or −1); the next ones along the flank, or on the next
+// flank, face it or a neighbour. Updated.
 [[maybe_unused]] Hit deepest_on_flank(const XY& xy, int k, Flank f, bool tip_only, int& hint) {
   FlankSamples s(xy, k, f, hint);
   if (!(tip_only ? probe_tip(s) : probe_flank(s))) return {};

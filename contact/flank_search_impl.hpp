@@ -180,7 +180,9 @@ struct Hit {
   // (flank_newton_impl.hpp) as an interior maximum or a corner at x's flank end; for a solved
   // hit, the radii of its point on x's flank and of the foot on y's (what a continued search
   // starts from next step).
-  enum Solved : signed char { kSampled, kInterior, kCornerHigh, kCornerLow };
+  // kCrossing: a sampled maximum where x's flank crosses y's tip circle (flank_refine_impl.hpp,
+  // Crossing): r_x the crossing's radius on x's flank, s_y the circle's radius.
+  enum Solved : signed char { kSampled, kInterior, kCornerHigh, kCornerLow, kCrossing };
   Solved solved = kSampled;
   double r_x = 0, s_y = 0;
   // A solved hit whose flanks both curve there less sharply than x's probe spacing (radii of
