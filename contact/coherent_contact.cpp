@@ -374,16 +374,22 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
 // The stateless search's answer for one flank, from its record where that holds (skipped: no
 // hit; tracked: only the samples that can hold the deepest probed) or by a full search that
 // makes the record afresh. No hit: depth kNone, tooth_y −1.
+// Whether a clear flank's record still holds (rec.travel_m > 0): every point of its tooth has
+// moved by less than the record's travel since. Any point p of the tooth moves in y's frame by
+// Δc + (R1 − R0)(p − c): at most the tooth centre's move plus |Δturn| times the tooth's bounding
+// radius (|R1 − R0| = 2|sin(Δturn/2)| ≤ |Δturn|). Without a square root:
+// |Δc| + |Δturn|·reach + rounding < travel_m.
+bool record_holds(const CoherentToothSearch::FlankRecord& rec, const Vector2d& centre, double turn, double reach) {
+  const double left = rec.travel_m - std::abs(turn - rec.turn_rad) * reach - kTravelRounding_m;
+  return left > 0 && (centre - rec.tooth_centre_in_y_m).squaredNorm() < left * left;
+}
+
+// `skip_tested`: record_holds() was found false already (find()).
 Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& centre, double turn, double reach,
                 CoherentToothSearch::FlankRecord& rec, SampleTravels& travels, CoherentToothSearch::TrackedFlank* track_of,
-                int& hint, CoherentToothSearch::Counts& counts) {
-  // Any point p of the tooth moves in y's frame by Δc + (R1 − R0)(p − c): at most the tooth
-  // centre's move plus |Δturn| times the tooth's bounding radius (|R1 − R0| = 2|sin(Δturn/2)| ≤
-  // |Δturn|).
-  // The skip test first, without a square root: |Δc| + |Δturn|·reach + rounding < travel_m.
+                int& hint, CoherentToothSearch::Counts& counts, bool skip_tested) {
   if (rec.travel_m > 0) {
-    const double left = rec.travel_m - std::abs(turn - rec.turn_rad) * reach - kTravelRounding_m;
-    if (left > 0 && (centre - rec.tooth_centre_in_y_m).squaredNorm() < left * left) {
+    if (!skip_tested && record_holds(rec, centre, turn, reach)) {
       ++counts.skipped;
       return {};
     }
@@ -461,6 +467,15 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];
         Solution& sol = solutions_[pass][at];
+        // A flank with last call's solution to continue (never one whose record says it is
+        // clear, except with `deeper`, where a faceted flank can be both), or without.
+        const bool live = continuation_ != Continuation::off && sol.solved != 0 && sol.call + 1 == calls_;
+        // Most flanks are clear and stay so: their record's test before anything else.
+        const bool skip_tested = !live && rec.travel_m > 0;
+        if (skip_tested && record_holds(rec, centre, turn, reach)) {
+          ++counts_.skipped;
+          continue;
+        }
         auto emit = [&](const Hit& h) {
           if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true, near);
           else keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
@@ -491,7 +506,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
             continue;
           }
         }
-        if (continuation_ != Continuation::off && sol.solved != 0 && sol.call + 1 == calls_) {
+        if (live) {
           // Started where the last steps' motion, continued, takes the solution: the parabola
           // through the last three solutions (the start is then off by the motion's third
           // difference: ~1e-11 m for a contact rolling 12 µm per step along an involute of 10 mm
@@ -525,7 +540,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           }
         }
         const Hit sampled =
-            sampled_hit(xy, k, f, tip_only, centre, turn, reach, rec, travels_[pass][at], pass == 0 ? &tracks_[at] : nullptr, hint, counts_);
+            sampled_hit(xy, k, f, tip_only, centre, turn, reach, rec, travels_[pass][at], pass == 0 ? &tracks_[at] : nullptr, hint, counts_,
+                        skip_tested);
         if (continued.depth > kNone && !(sampled.depth > continued.depth)) {
           emit(continued);  // deeper: the continued maximum, which goes on being continued
           continue;
