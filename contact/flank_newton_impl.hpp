@@ -92,8 +92,9 @@ Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double
       // At the foot: D(r) = (Q(s(r)) − P(r))·n_y, dD/dr = −P'·n_y, and
       // d²D/dr² = −P''·n_y − P'·(dn_y/ds)·(ds/dr) with ds/dr = −J11/J12 (F1 held at 0).
       const double j11 = P1t.dot(Q1t), j12 = -Q1t.squaredNorm() + (Pt - Qt).dot(Q2);
-      const Vector2d n = FlankTable::outward_normal(g, Q1t);
+      // FlankTable::outward_normal(g, Q1t), with |Q1t| taken once for it and dn.
       const double q1 = Q1t.norm();
+      const Vector2d n = g == Flank::Ccw ? Vector2d(Vector2d(-Q1t.y(), Q1t.x()) / q1) : Vector2d(-(Vector2d(-Q1t.y(), Q1t.x()) / q1));
       Vector2d dn = Vector2d(-Q2.y(), Q2.x()) / q1 - Vector2d(-Q1t.y(), Q1t.x()) * (Q1t.dot(Q2) / (q1 * q1 * q1));
       if (g == Flank::Cw) dn = -dn;
       const double d2 = -P2.dot(n) - P1t.dot(dn) * (-j11 / j12);

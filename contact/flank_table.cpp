@@ -224,11 +224,12 @@ bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) cons
   const double ym = i > 0 ? row[i - 1] : kNaN, yp = i + 2 < samples_ ? row[i + 2] : kNaN;
   const double m0 = std::isnan(ym) ? y1 - y0 : 0.5 * (y1 - ym);
   const double m1 = std::isnan(yp) ? y1 - y0 : 0.5 * (yp - y0);
-  // Cubic Hermite in t ∈ [0, 1] and its derivatives.
-  const double t2 = t * t, t3 = t2 * t;
-  const double theta = (2 * t3 - 3 * t2 + 1) * y0 + (t3 - 2 * t2 + t) * m0 + (-2 * t3 + 3 * t2) * y1 + (t3 - t2) * m1;
-  const double dt1 = (6 * t2 - 6 * t) * y0 + (3 * t2 - 4 * t + 1) * m0 + (-6 * t2 + 6 * t) * y1 + (3 * t2 - 2 * t) * m1;
-  const double dt2 = (12 * t - 6) * y0 + (6 * t - 4) * m0 + (-12 * t + 6) * y1 + (6 * t - 2) * m1;
+  // Cubic Hermite in t ∈ [0, 1] and its derivatives, from its power-basis coefficients
+  // y0 + m0·t + c2·t² + c3·t³.
+  const double c2 = 3 * (y1 - y0) - 2 * m0 - m1, c3 = 2 * (y0 - y1) + m0 + m1;
+  const double theta = y0 + t * (m0 + t * (c2 + t * c3));
+  const double dt1 = m0 + t * (2 * c2 + 3 * t * c3);
+  const double dt2 = 2 * c2 + 6 * t * c3;
   const double th1 = dt1 * inv_dr_, th2 = dt2 * inv_dr_ * inv_dr_;  // dθ/dr, d²θ/dr²
   const Eigen::Vector2d u = direction(tooth, theta), v(-u.y(), u.x());
   // p = r·u(θ(r)): p' = u + r·θ'·v, p'' = (2θ' + r·θ'')·v − r·θ'²·u.
