@@ -127,7 +127,7 @@ constexpr double kRenewAhead = 1;
 // too (kRenewAhead).
 bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, double& travel, int hint) {
   const FlankTable& xt = xy.x.table;
-  const double window = refine_window_m(xt.probe_radius(1) - xt.probe_radius(0));
+  const double window = xy.window_m;
   double least = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!(t[i] < std::numeric_limits<double>::infinity())) continue;  // a sample the search does not look at
@@ -288,7 +288,7 @@ bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, Vector
 bool samples_see_crossing(const XY& xy, int k, Flank f, double r_c, int side, int& hint) {
   constexpr int n = FlankTable::kProbeRadii;
   const FlankTable& xt = xy.x.table;
-  const double spacing = xt.probe_radius(1) - xt.probe_radius(0), window = refine_window_m(spacing);
+  const double spacing = xy.spacing_m, window = xy.window_m;
   const std::uint32_t material = xt.probe_material(k, f);
   auto has = [&](int i) { return i >= 0 && i < n && ((material >> i) & 1u); };
   auto depth = [&](int i) { return depth_of(xy, xt.probe_point(k, f, i), hint); };
@@ -337,12 +337,12 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
                   double s0, bool tip_only, Vector2d& face_point, double& face_margin, int& hint) {
   double lo, hi;
   xy.x.table.flank_extent(k, f, &lo, &hi);
-  const double spacing = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
+  const double spacing = xy.spacing_m, window = xy.window_m;
   Hit h;
   if (solved == Hit::kCrossing) {
     // Kept for the first gear's flanks only (find()): never tip_only.
     h = continued_crossing(xy, k, f, r0, j, g, hint);
-    if (h.depth <= kNone || h.depth > refine_window_m(spacing)) return {};
+    if (h.depth <= kNone || h.depth > window) return {};
     return h;
   }
   if (solved == Hit::kInterior) {
@@ -357,12 +357,12 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
     if (h.depth <= kNone) {
       // Start a step inside the end: Newton's first step from the corner itself (where d²D/dr²
       // may not yet be negative) could leave the flank.
-      const double step = xy.x.table.probe_radius(1) - xy.x.table.probe_radius(0);
+      const double step = spacing;
       h = newton_solve(xy, k, f, high ? std::max(lo, hi - 0.5 * step) : std::min(hi, lo + 0.5 * step), j, g, s_y, lo, hi);
     }
   }
   if (h.depth <= kNone) return {};
-  if (!h.gentle || h.depth > refine_window_m(spacing)) return {};
+  if (!h.gentle || h.depth > window) return {};
   // The second gear's flanks are searched at their tips only (probe_tip(): a maximum farther
   // down than its third sample is the first gear's to find): a solution there must stay within
   // 1.5 sample spacings of the tip.
@@ -492,7 +492,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           // spacings of this flank's tip, and on flanks curved no more sharply than its own
           // spacing allows (the first pass checked its own, so a spacing no wider here).
           const Solution& first = solutions_[0][static_cast<std::size_t>(sol.tooth_y) * 2 + (sol.flank_y == Flank::Cw)];
-          const double spacing = x.table.probe_radius(1) - x.table.probe_radius(0);
+          const double spacing = xy.spacing_m;
           double lo, hi;
           x.table.flank_extent(k, f, &lo, &hi);
           if (first.call == calls_ && first.solved == Hit::kInterior && first.tooth_y == k && first.flank_y == f &&
@@ -522,7 +522,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           double face_margin = sol.face_margin_m;
           const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y,
                                       r0, s0, tip_only, face_point, face_margin, hint);
-          if (h.depth >= -refine_window_m(x.table.probe_radius(1) - x.table.probe_radius(0))) {
+          if (h.depth >= -xy.window_m) {
             ++counts_.continued;
             counts_.crossings += h.solved == Hit::kCrossing;
             // The same maximum continued: its history predicts the next start.

@@ -50,10 +50,6 @@ bool curvature_radius_above(const Vector2d& d1, const Vector2d& d2, double radiu
   return n2 * n2 * n2 > radius * radius * (c * c);
 }
 
-// x's probe spacing, m: a solved hit whose flanks curve more sharply than it (Hit::gentle false)
-// is not continued (continued_hit()).
-double probe_spacing(const FlankTable& t) { return t.probe_radius(1) - t.probe_radius(0); }
-
 // y's flank that x's point P (y's frame) faces, and the start of the search for its foot there
 // (the flank point at P's own radius). False where P faces no flank.
 struct Facing {
@@ -100,7 +96,7 @@ Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double
       const double d2 = -P2.dot(n) - P1t.dot(dn) * (-j11 / j12);
       if (!(d2 < 0) || !(j12 != 0)) return {};
       Hit h = solved_hit(xy, Pt, Qt, n, j, g);
-      const double spacing = probe_spacing(xt);
+      const double spacing = xy.spacing_m;  // x's probe spacing (Hit::gentle)
       h.gentle = curvature_radius_above(a.d1 + hr * a.d2, a.d2, spacing) && curvature_radius_above(Q1t, Q2, spacing);
       h.solved = Hit::kInterior;
       h.r_x = r + hr;
@@ -163,7 +159,7 @@ Hit corner_solve(const XY& xy, int k, Flank f, double r_end, bool high_end, int 
       const double rise = -P1.dot(n);
       if (!(high_end ? rise > 0 : rise < 0)) return {};
       Hit h = solved_hit(xy, P, Qt, n, j, g);
-      const double spacing = probe_spacing(xt);
+      const double spacing = xy.spacing_m;  // x's probe spacing (Hit::gentle)
       h.gentle = curvature_radius_above(a.d1, a.d2, spacing) && curvature_radius_above(Q1t, b.d2, spacing);
       h.solved = high_end ? Hit::kCornerHigh : Hit::kCornerLow;
       h.r_x = r_end;

@@ -91,6 +91,9 @@ struct XY {
   double taylor_step_m = kNewtonTaylor_m;  // kNewtonTaylor_m or kNewtonTaylorSmooth_m
   Eigen::Matrix2d rot = y.to_local_m * x.to_world_m;
   Vector2d shift = y.to_local(x.pose.centre_m);
+  // x's probe spacing and refinement window, m, taken once per pass.
+  double spacing_m = x.table.probe_radius(1) - x.table.probe_radius(0);
+  double window_m = refine_window_m(spacing_m);
   Vector2d in_y(const Vector2d& p_x) const { return shift + rot * p_x; }
 };
 
@@ -223,7 +226,7 @@ struct FlankSamples {
   static constexpr int n = FlankTable::kProbeRadii;
   FlankSamples(const XY& xy_, int k_, Flank f_, int& hint_)
       : xy(xy_), k(k_), f(f_), hint(hint_), material(xy_.x.table.probe_material(k_, f_)),
-        step(xy_.x.table.probe_radius(1) - xy_.x.table.probe_radius(0)), window(refine_window_m(step)) {
+        step(xy_.spacing_m), window(xy_.window_m) {
     depth.fill(kNone);
   }
   bool missing(int i) const { return i < 0 || i >= n || !((material >> i) & 1u); }
