@@ -26,6 +26,7 @@ constexpr int kSpanTries = 4;
 
 // The longest arc of a circle (up to a half circle) against its chord.
 constexpr double kArcOverChord = 1.5707963267948966;
+constexpr double kChordOverArc = 0.6366197723675814;  // 1/kArcOverChord, to rounding
 
 // An upper bound on e^x for x ≥ 0 without a libm call: 1/(1 − x) below x = 1/2 (e^x ≤ 1/(1 − x)
 // for x < 1), infinite beyond (the bound is useless there anyway).
@@ -68,10 +69,14 @@ double sample_travel(const XY& xy, const Vector2d& p_x, double d, double window,
   double span = std::min(gap, to_root), best = 0;
   for (int attempt = 0; attempt < kSpanTries && span > 0; ++attempt, span *= 0.25) {
     const FlankTable::FirstOrderRise rise = yt.first_order_rise(r - span, r + span);
-    const double rate = rise.slope + rise.growth * (e + rise.slope * span) * exp_bound(rise.growth * span);
-    const double travel = gap / rate;
+    // gap / rate with rate = slope + growth·(e + slope·span)·exp_bound(growth·span), the bound's
+    // 1/(1 − growth·span) cleared from the fraction: one division. No travel where that bound
+    // is infinite.
+    const double keep = 1 - rise.growth * span;
+    if (!(keep > 0.5)) continue;
+    const double travel = gap * keep / (rise.slope * keep + rise.growth * (e + rise.slope * span));
     if (!(travel > 0)) continue;
-    best = std::max(best, std::min(travel, span) / (span > to_tips ? kArcOverChord : 1));
+    best = std::max(best, std::min(travel, span) * (span > to_tips ? kChordOverArc : 1));
     if (travel >= 0.25 * span) break;  // a narrower span cannot allow more
   }
   return best;
