@@ -189,10 +189,10 @@ void World::Impl::advance_multibody(double h) {
   // mass matrix from it (which the rows then use), else by Bullet's articulated-body pass.
   if (e.planar_mass) planar_free_velocities(e.h_eff);
   else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(e.h_eff, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
-  const auto solve_start = WorldClock::now();
+  const std::uint64_t solve_start = clock.now();
   multibody_rows();
   solve_multibody_rows();
-  profile.row_solve_s += seconds_since(solve_start);
+  row_solve_ticks += clock.now() - solve_start;
   if (e.bdf2) {
     // x⁺ = (4x − x_prev)/3 + h_eff·v⁺ = x + h·v_move, v_move = (v_move_prev + 2v⁺)/3; then v⁺ returns.
     const double* v = t.getVelocityVector() + 6;

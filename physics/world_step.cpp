@@ -5,12 +5,17 @@
 #include "geometry/constants.hpp"
 #include "physics/world_impl.hpp"
 
+#if defined(__x86_64__)
+#include <cpuid.h>
+#include <x86intrin.h>
+#endif
+
 // World::step and what it does: tooth contacts into the pairs' manifolds (Bullet calls
 // generate_contacts before each solve), motors and loads, the solve, then the measurements.
 namespace gearsim::physics {
 
 void World::Impl::generate_contacts() {
-  const auto start = WorldClock::now();
+  const std::uint64_t start = clock.now();
   max_penetration = 0;
   // Each gear's planar pose once per step (a gear meshes in several pairs).
   gear_poses.resize(bodies.size());
@@ -43,7 +48,7 @@ void World::Impl::generate_contacts() {
                             (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     add_manifold_points(pr, z);
   }
-  profile.tooth_contact_s += seconds_since(start);
+  tooth_contact_ticks += clock.now() - start;
 }
 
 // pr.pair_stiffness and pr.active for this step's contacts pr.found.
@@ -202,10 +207,10 @@ void World::Impl::measure_contacts() {
 
 void World::step() {
   Impl& m = *impl_;
-  const auto start = WorldClock::now();
+  const std::uint64_t start = m.clock.now();
   if (m.mb) {
     m.step_multibody();
-    m.profile.step_total_s += seconds_since(start);
+    m.step_total_ticks += m.clock.now() - start;
     return;
   }
   m.apply_motors_and_loads();
@@ -215,10 +220,42 @@ void World::step() {
   ++m.steps;
   m.measure();
   m.measure_power();
-  m.profile.step_total_s += seconds_since(start);
+  m.step_total_ticks += m.clock.now() - start;
 }
 
-const World::Profile& World::profile() const { return impl_->profile; }
+const World::Profile& World::profile() const {
+  Impl& m = *impl_;
+  const double per_tick = m.clock.seconds_per_tick();
+  m.profile.tooth_contact_s = static_cast<double>(m.tooth_contact_ticks) * per_tick;
+  m.profile.row_solve_s = static_cast<double>(m.row_solve_ticks) * per_tick;
+  m.profile.step_total_s = static_cast<double>(m.step_total_ticks) * per_tick;
+  return m.profile;
+}
+
+#if defined(__x86_64__)
+ProfileClock::ProfileClock() : t0_(std::chrono::steady_clock::now()) {
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  tsc_ = __get_cpuid(0x80000007u, &a, &b, &c, &d) && ((d >> 8) & 1u);  // invariant TSC
+  tick0_ = now();
+}
+std::uint64_t ProfileClock::now() const {
+  if (tsc_) return __rdtsc();
+  return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+}
+#else
+ProfileClock::ProfileClock() : t0_(std::chrono::steady_clock::now()) { tick0_ = now(); }
+std::uint64_t ProfileClock::now() const {
+  return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+}
+#endif
+
+double ProfileClock::seconds_per_tick() const {
+  using Period = std::chrono::steady_clock::period;
+  if (!tsc_) return static_cast<double>(Period::num) / static_cast<double>(Period::den);
+  const std::uint64_t ticks = now() - tick0_;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  return ticks > 0 ? seconds / static_cast<double>(ticks) : 0.0;
+}
 const PowerFlows& World::power() const { return impl_->power; }
 long World::dropped_contacts() const { return impl_->dropped_points; }
 long World::stiffness_table_misses() const { return impl_->table_misses; }
