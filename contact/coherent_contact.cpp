@@ -452,12 +452,15 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
   best.clear();
   if (near) near->clear();
   // As find_tooth_contacts(), flank by flank, but a flank whose record still holds is skipped or
-  // probed only where it can hold its deepest sample.
+  // probed only where it can hold its deepest sample. The centres' distance and direction once
+  // for both passes' tooth windows.
+  const Vector2d a_to_b = pb.centre_m - pa.centre_m;
+  const double dist = a_to_b.norm(), facing_b = rough_atan2(a_to_b.y(), a_to_b.x());
   for (int pass = 0; pass < 2; ++pass) {
     const Frame& x = pass == 0 ? a : b;
     const Frame& y = pass == 0 ? b : a;
     const XY xy{x, y, continuation_ == Continuation::replace ? kNewtonTaylorSmooth_m : kNewtonTaylor_m};
-    const ToothWindow window = tooth_window(x, y);
+    const ToothWindow window = tooth_window(x, y, dist, pass == 0 ? facing_b : facing_b + 3.141592653589793);
     const bool tip_only = pass == 1;
     const double turn = x.pose.angle_rad - y.pose.angle_rad, reach = x.table.tooth_bound_radius_m();
     std::vector<FlankRecord>& records = records_[pass];

@@ -136,10 +136,11 @@ void for_each_tooth(const ToothWindow& w, int teeth, Visit&& visit) {
 // of the tooth angles (far below), with a wide margin; acos_above() is never below acos.
 constexpr double kToothWindowMargin_rad = 1e-4;
 
-ToothWindow tooth_window(const Frame& x, const Frame& y) {
+// With the distance between the centres and the direction from x's centre to y's (rough_atan2()
+// of it, or of its opposite plus π: within the margin alike) given.
+ToothWindow tooth_window(const Frame& x, const Frame& y, double dist, double facing_rad) {
   ToothWindow w;
-  const Vector2d to_y = y.pose.centre_m - x.pose.centre_m;
-  const double dist = to_y.norm(), r_c = x.table.tooth_centre(0).norm();
+  const double r_c = x.table.tooth_centre(0).norm();
   const double outer = y.table.r_max_m() + x.table.tooth_bound_radius_m(), inner = y.table.r_min_m() - x.table.tooth_bound_radius_m();
   if (!(dist > 0 && r_c > 0)) return w;
   // |c_k − c_y|² = r_c² + dist² − 2·r_c·dist·cos Δ, Δ the angle between tooth k's centre and the
@@ -154,7 +155,7 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
   // clear); else, where the inner one does (x inside an internal y: only the teeth facing away
   // from y's centre reach its teeth), about the opposite direction, Δ ≥ acos(cos_inner) — the
   // bound from acos_above() less its error (≤ 1.34e-4 rad above acos).
-  double centre = rough_atan2(to_y.y(), to_y.x()) - x.pose.angle_rad - x.table.tooth_angle_rad(0), half;
+  double centre = facing_rad - x.pose.angle_rad - x.table.tooth_angle_rad(0), half;
   if (cos_outer > -1) {
     half = (cos_outer >= 1 ? 0.0 : acos_above(cos_outer)) + kToothWindowMargin_rad;
   } else if (inner > 0 && cos_inner < 1) {
@@ -172,6 +173,11 @@ ToothWindow tooth_window(const Frame& x, const Frame& y) {
   const long long first = static_cast<long long>(lo) % teeth;
   w.first = static_cast<int>(first < 0 ? first + teeth : first);
   return w;
+}
+
+ToothWindow tooth_window(const Frame& x, const Frame& y) {
+  const Vector2d to_y = y.pose.centre_m - x.pose.centre_m;
+  return tooth_window(x, y, to_y.norm(), rough_atan2(to_y.y(), to_y.x()));
 }
 
 struct Hit {

@@ -37,13 +37,24 @@ long check_window(const FlankTable& x_table, const FlankTable& y_table, double d
     const double d = dist(rng), phi = dir(rng);
     const PlanarPose px{{d * std::cos(phi), d * std::sin(phi)}, angle(rng)}, py{{0, 0}, angle(rng)};
     const Frame x{x_table, px}, y{y_table, py};
-    std::vector<int> visited;
+    std::vector<int> visited, visited_from_y;
     for_each_tooth(tooth_window(x, y), x_table.teeth(), [&](int k) { visited.push_back(k); });
+    // As CoherentToothSearch's second pass takes it: the distance and direction measured from
+    // y's centre to x's, the direction turned by π.
+    const Vector2d y_to_x = px.centre_m - py.centre_m;
+    for_each_tooth(tooth_window(x, y, y_to_x.norm(), rough_atan2(y_to_x.y(), y_to_x.x()) + 3.141592653589793), x_table.teeth(),
+                   [&](int k) { visited_from_y.push_back(k); });
     for (std::size_t j = 1; j < visited.size(); ++j) EXPECT_LT(visited[j - 1], visited[j]) << "pose " << i;
+    for (std::size_t j = 1; j < visited_from_y.size(); ++j) EXPECT_LT(visited_from_y[j - 1], visited_from_y[j]) << "pose " << i;
     for (int k = 0; k < x_table.teeth(); ++k) {
       const bool in_window = std::find(visited.begin(), visited.end(), k) != visited.end();
-      if (tooth_near(x, k, y)) EXPECT_TRUE(in_window) << "pose " << i << ": tooth " << k << " reaches y but lies outside the window";
-      else if (in_window) ++extra;
+      const bool in_window_from_y = std::find(visited_from_y.begin(), visited_from_y.end(), k) != visited_from_y.end();
+      if (tooth_near(x, k, y)) {
+        EXPECT_TRUE(in_window) << "pose " << i << ": tooth " << k << " reaches y but lies outside the window";
+        EXPECT_TRUE(in_window_from_y) << "pose " << i << ": tooth " << k << " reaches y but lies outside the window taken from y";
+      } else if (in_window) {
+        ++extra;
+      }
     }
   }
   return extra;
