@@ -475,15 +475,18 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];
         Solution& sol = solutions_[pass][at];
-        // A flank with last call's solution to continue (never one whose record says it is
-        // clear, except with `deeper`, where a faceted flank can be both), or without.
-        const bool live = continuation_ != Continuation::off && sol.solved != 0 && sol.call + 1 == calls_;
+        // A flank with last call's solution to continue, or without. A solution clears the
+        // flank's record (it is searched in full when the continuation ends), so a flank whose
+        // record says it is clear has none — except with `deeper`, where a faceted flank can
+        // be both: only there is its solution looked at before the record's test.
+        auto is_live = [&] { return continuation_ != Continuation::off && sol.solved != 0 && sol.call + 1 == calls_; };
         // Most flanks are clear and stay so: their record's test before anything else.
-        const bool skip_tested = !live && rec.travel_m > 0;
+        const bool skip_tested = rec.travel_m > 0 && (continuation_ != Continuation::deeper || !is_live());
         if (skip_tested && record_holds(rec, centre, turn, reach)) {
           ++counts_.skipped;
           continue;
         }
+        const bool live = !skip_tested && is_live();
         auto emit = [&](const Hit& h) {
           if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true, near);
           else keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
