@@ -80,21 +80,23 @@ Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double
     const double det = J11 * J22 - J12 * J21;
     if (!(std::abs(det) > 0)) return {};
     const double dr = -(F1 * J22 - F2 * J12) / det, ds = -(J11 * F2 - J21 * F1) / det;
-    // The solution at (r + hr, s + hs) from the curves' second-order expansions at (r, s) (hr =
-    // hs = 0: exactly the evaluated point).
-    auto solution = [&](double hr, double hs) -> Hit {
-      const Vector2d Pt = P + hr * (P1 + (0.5 * hr) * P2), P1t = P1 + hr * P2;
-      const Vector2d Qt = Q + hs * (Q1 + (0.5 * hs) * Q2), Q1t = Q1 + hs * Q2;
+    // The solution at (r + hr, s + hs), where the curves' second-order expansions at (r, s) put
+    // P, P' and Q, Q' at Pt, P1t and Qt, Q1t (hr = hs = 0: exactly the evaluated point).
+    auto solution = [&](double hr, double hs, const Vector2d& Pt, const Vector2d& P1t, const Vector2d& Qt, const Vector2d& Q1t) -> Hit {
       // At the foot: D(r) = (Q(s(r)) − P(r))·n_y, dD/dr = −P'·n_y, and
-      // d²D/dr² = −P''·n_y − P'·(dn_y/ds)·(ds/dr) with ds/dr = −J11/J12 (F1 held at 0).
+      // d²D/dr² = −P''·n_y − P'·(dn_y/ds)·(ds/dr) with ds/dr = −J11/J12 (F1 held at 0), where
+      // n_y = σ·t/|t| (t = Q1t turned a quarter, σ = ±1 by the flank) and
+      // dn_y/ds = σ·(t'/|t| − t·(Q1t·Q2)/|t|³), t' = Q2 turned a quarter. Its sign from
+      // d²D/dr²·|t|³·J12² = −σ·(P''·t)·|t|²·J12² + σ·(P'·(t'·|t|² − t·(Q1t·Q2)))·J11·J12,
+      // without a root or a division.
       const double j11 = P1t.dot(Q1t), j12 = -Q1t.squaredNorm() + (Pt - Qt).dot(Q2);
-      // FlankTable::outward_normal(g, Q1t), with |Q1t| taken once for it and dn.
+      const Vector2d t(-Q1t.y(), Q1t.x()), t1(-Q2.y(), Q2.x());
+      const double sigma = g == Flank::Ccw ? 1.0 : -1.0, q2 = Q1t.squaredNorm();
+      const double d2_scaled = sigma * (-P2.dot(t) * q2 * (j12 * j12) + P1t.dot(t1 * q2 - t * Q1t.dot(Q2)) * j11 * j12);
+      if (!(d2_scaled < 0) || !(j12 != 0)) return {};
+      // FlankTable::outward_normal(g, Q1t).
       const double q1 = Q1t.norm();
-      const Vector2d n = g == Flank::Ccw ? Vector2d(Vector2d(-Q1t.y(), Q1t.x()) / q1) : Vector2d(-(Vector2d(-Q1t.y(), Q1t.x()) / q1));
-      Vector2d dn = Vector2d(-Q2.y(), Q2.x()) / q1 - Vector2d(-Q1t.y(), Q1t.x()) * (Q1t.dot(Q2) / (q1 * q1 * q1));
-      if (g == Flank::Cw) dn = -dn;
-      const double d2 = -P2.dot(n) - P1t.dot(dn) * (-j11 / j12);
-      if (!(d2 < 0) || !(j12 != 0)) return {};
+      const Vector2d n = g == Flank::Ccw ? Vector2d(t / q1) : Vector2d(-(t / q1));
       Hit h = solved_hit(xy, Pt, Qt, n, j, g);
       const double spacing = xy.spacing_m;  // x's probe spacing (Hit::gentle)
       h.gentle = curvature_radius_above(a.d1 + hr * a.d2, a.d2, spacing) && curvature_radius_above(Q1t, Q2, spacing);
@@ -103,7 +105,7 @@ Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double
       h.s_y = s + hs;
       return h;
     };
-    if (std::abs(dr) < kNewtonTolerance_m && std::abs(ds) < kNewtonTolerance_m) return solution(0, 0);
+    if (std::abs(dr) < kNewtonTolerance_m && std::abs(ds) < kNewtonTolerance_m) return solution(0, 0, P, P1, Q, Q1);
     if (std::abs(dr) < xy.taylor_step_m && std::abs(ds) < xy.taylor_step_m) {
       double s_lo, s_hi;
       yt.flank_extent(j, g, &s_lo, &s_hi);
@@ -117,7 +119,7 @@ Hit newton_solve(const XY& xy, int k, Flank f, double r0, int j, Flank g, double
         const Vector2d Qt = Q + ds * (Q1 + (0.5 * ds) * Q2), Q1t = Q1 + ds * Q2;
         const double G1 = (Pt - Qt).dot(Q1t), G2 = cross(P1t, Q1t);
         const double dr2 = -(G1 * J22 - G2 * J12) / det, ds2 = -(J11 * G2 - J21 * G1) / det;
-        if (std::abs(dr2) < kNewtonTolerance_m && std::abs(ds2) < kNewtonTolerance_m) return solution(dr, ds);
+        if (std::abs(dr2) < kNewtonTolerance_m && std::abs(ds2) < kNewtonTolerance_m) return solution(dr, ds, Pt, P1t, Qt, Q1t);
       }
     }
     r += dr;
