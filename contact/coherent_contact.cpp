@@ -257,24 +257,26 @@ bool probe_tracked(FlankSamples& s, const Track& t, double travel) {
 // a wide margin.
 constexpr double kFaceRounding_m = 1e-12;
 
+using FaceReference = CoherentToothSearch::FaceReference;
+
 // Does y's point P (y's frame) still face flank (j, g), as FlankTable::face() last found at
-// `face_point` with `face_margin` to spare? Every candidate flank's offset moves by at most
-// L·|P − face_point| (L: first_order_rise().side over the radii the segment between them can
+// `face.point` with `face.margin_m` to spare? Every candidate flank's offset moves by at most
+// L·|P − face.point| (L: first_order_rise().side over the radii the segment between them can
 // reach), so the choice stands while twice that stays below the margin. Else P is measured and
 // the reference moves to it. False: P faces another flank or none.
-bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, Vector2d& face_point, double& face_margin) {
-  if (face_margin > 0) {
-    const double delta = (P - face_point).norm(), r0 = face_point.norm(), r1 = P.norm();
+bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, FaceReference& face) {
+  const double r1 = P.norm();
+  if (face.margin_m > 0) {
+    const double delta = (P - face.point).norm(), r0 = face.radius_m;
     const double lo = std::min(r0, r1) - delta, hi = std::max(r0, r1) + delta;
     if (lo > yt.r_min_m() && hi < yt.r_max_m()) {
       const double side = yt.first_order_rise(lo, hi).side;
-      if (side < FlankTable::kInfinity && 2 * side * delta + kFaceRounding_m < face_margin) return true;
+      if (side < FlankTable::kInfinity && 2 * side * delta + kFaceRounding_m < face.margin_m) return true;
     }
   }
   const FlankTable::Facing now = yt.face(P, j);
   if (!now.has_flank || now.tooth != j || now.flank != g) return false;
-  face_point = P;
-  face_margin = now.margin_m;
+  face = {P, r1, now.margin_m};
   return true;
 }
 
@@ -337,9 +339,9 @@ Hit continued_crossing(const XY& xy, int k, Flank f, double r0, int j, Flank g, 
 // or the point found faces another flank of y than the one solved on (the stateless search's
 // foot is on the flank the point faces): the caller searches the flank in full then.
 // (r0, s0): where to start, last step's radii (r_x, s_y) or a prediction from them.
-// (face_point, face_margin): the facing check's reference (still_faces()), updated.
+// `face`: the facing check's reference (still_faces()), updated.
 Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, double r0,
-                  double s0, bool tip_only, Vector2d& face_point, double& face_margin, int& hint) {
+                  double s0, bool tip_only, FaceReference& face, int& hint) {
   double lo, hi;
   xy.x.table.flank_extent(k, f, &lo, &hi);
   const double spacing = xy.spacing_m, window = xy.window_m;
@@ -372,7 +374,7 @@ Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank
   // down than its third sample is the first gear's to find): a solution there must stay within
   // 1.5 sample spacings of the tip.
   if (tip_only && !(std::abs(h.r_x - (xy.x.table.internal() ? lo : hi)) <= 1.5 * spacing)) return {};
-  if (!still_faces(xy.y.table, xy.y.to_local(h.point), j, g, face_point, face_margin)) return {};
+  if (!still_faces(xy.y.table, xy.y.to_local(h.point), j, g, face)) return {};
   return h;
 }
 
@@ -511,7 +513,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
               spacing <= y.table.probe_radius(1) - y.table.probe_radius(0)) {
             ++counts_.shared;
             sol = {static_cast<signed char>(Hit::kInterior), sol.tooth_y, sol.flank_y, first.s_y, first.r_x, calls_, sol.r_x, sol.s_y,
-                   sol.r_prev, sol.s_prev, std::min(sol.history + 1, 2), sol.face_point, sol.face_margin_m};
+                   sol.r_prev, sol.s_prev, std::min(sol.history + 1, 2), sol.face};
             rec.travel_m = -1;  // searched in full when the continuation ends
             rec.tracked = false;
             continue;
@@ -529,10 +531,9 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           const double s0 = sol.history >= 2   ? 3 * (sol.s_y - sol.s_prev) + sol.s_prev2
                             : sol.history == 1 ? 2 * sol.s_y - sol.s_prev
                                                : sol.s_y;
-          Vector2d face_point = sol.face_point;
-          double face_margin = sol.face_margin_m;
+          FaceReference face = sol.face;
           const Hit h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y,
-                                      r0, s0, tip_only, face_point, face_margin, hint);
+                                      r0, s0, tip_only, face, hint);
           if (h.depth >= -xy.window_m) {
             ++counts_.continued;
             counts_.crossings += h.solved == Hit::kCrossing;
@@ -540,7 +541,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
             const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y;
             sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_, sol.r_x, sol.s_y,
                    sol.r_prev, sol.s_prev, same ? std::min(sol.history + 1, continuation_ == Continuation::replace ? 2 : 1) : 0,
-                   face_point, face_margin};
+                   face};
             if (continuation_ == Continuation::replace) {
               rec.travel_m = -1;  // searched in full when the continuation ends
               rec.tracked = false;
@@ -563,7 +564,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         // (samples_see_crossing() reproduces probe_flank()'s view, not probe_tip()'s).
         if (continuation_ != Continuation::off && sampled.solved != Hit::kSampled &&
             (sampled.solved != Hit::kCrossing || (continuation_ == Continuation::replace && pass == 0)))
-          sol = {static_cast<signed char>(sampled.solved), sampled.tooth_y, sampled.flank_y, sampled.r_x, sampled.s_y, calls_};
+          sol = {static_cast<signed char>(sampled.solved), sampled.tooth_y, sampled.flank_y, sampled.r_x, sampled.s_y, calls_, 0, 0, 0, 0, 0,
+                 FaceReference{}};
         else sol = Solution{};
         emit(sampled);
       }

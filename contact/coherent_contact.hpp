@@ -86,6 +86,15 @@ class CoherentToothSearch {
     std::array<double, n> free_m;                                  // kFree: distance to the teeth's circle
   };
 
+  // Where a continued point last had its facing flank measured (FlankTable::face(), the other
+  // gear's frame; its radius) and the margin found there (−1: none): later points within the
+  // margin's reach skip the measurement (coherent_contact.cpp, continued_hit()).
+  struct FaceReference {
+    Eigen::Vector2d point = Eigen::Vector2d::Zero();
+    double radius_m = 0;
+    double margin_m = -1;
+  };
+
  private:
   const FlankTable* tables_[2] = {nullptr, nullptr};
   std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
@@ -103,11 +112,7 @@ class CoherentToothSearch {
     // The calls before's, where it was continued into this one: `history` of them (up to 2).
     double r_prev = 0, s_prev = 0, r_prev2 = 0, s_prev2 = 0;
     int history = 0;
-    // Where the continued point last had its facing flank measured (FlankTable::face(), y's
-    // frame) and the margin found there (−1: none): later points within the margin's reach skip
-    // the measurement (coherent_contact.cpp, continued_hit()).
-    Eigen::Vector2d face_point = Eigen::Vector2d::Zero();
-    double face_margin_m = -1;
+    FaceReference face;
   };
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
   Continuation continuation_ = Continuation::off;
