@@ -328,11 +328,19 @@ struct World::Impl {
   void multibody_results();
 };
 
-// Gear-frame pose projected on the common plane (the gear axes must be parallel to world z).
+// Gear-frame pose projected on the common plane (the gear axes must be parallel to world z): its
+// angle from the gear frame's x axis, and that axis normalised in the plane as the angle's cosine
+// and sine (the same rotation to rounding, without libm's sincos of an angle that grows with
+// every turn).
 inline contact::PlanarPose planar_pose(const BuiltBody& b) {
   const btTransform t = b.rigid->getWorldTransform() * b.com_from_gear;
   const btVector3 x = t.getBasis().getColumn(0);
-  return contact::with_rotation({{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())});
+  contact::PlanarPose p{{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())};
+  const double length = std::sqrt(x.x() * x.x() + x.y() * x.y());
+  p.cos_angle = x.x() / length;
+  p.sin_angle = x.y() / length;
+  p.rotation_of_rad = p.angle_rad;
+  return p;
 }
 
 }  // namespace gearsim::physics
