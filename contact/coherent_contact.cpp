@@ -19,6 +19,11 @@ constexpr double kTravelRounding_m = 1e-9;
 // Normally 2 (chosen by instruction counts of the paper run at dt 1e-5 and 2e-5 s: 1, 3 and 4
 // cost 1–2 % more).
 constexpr double kRecordBeyondWindows = 2;
+// The same for the second gear's flanks, which are not tracked (their search probes two or three
+// samples at the tip): a record wherever the search did not refine. Normally 1 (instructions
+// per paper step at 1e-5 s: 1.1 the same, 1.5 +0.2 %, 2 +0.5 %, 3 +1.3 %; at 2e-5 s 2 costs
+// +0.14 %).
+constexpr double kRecordBeyondWindowsTip = 1;
 
 // Halvings (by 4) of the radial span a sample's bound is taken over: a narrower span leaves out
 // the steep fillet bands that a wide one reaches.
@@ -90,7 +95,7 @@ using SampleTravels = CoherentToothSearch::SampleTravels;
 double clear_travel(const FlankSamples& s, bool tip_only, SampleTravels& t) {
   constexpr int n = FlankSamples::n;
   for (int i = 0; i < n; ++i)
-    if (s.depth[i] > -kRecordBeyondWindows * s.window) return 0;
+    if (s.depth[i] > -(tip_only ? kRecordBeyondWindowsTip : kRecordBeyondWindows) * s.window) return 0;
   // The samples the search would look at: every one with material, or the two at the tip
   // (probe_tip() looks further only when one of these is within the window).
   std::uint32_t relevant = s.material;
@@ -127,10 +132,11 @@ constexpr double kRenewAhead = 1;
 // most the move from the record's). The others are measured again and bounded afresh as
 // clear_travel() does. True: the flank is clear, `t` holds the samples' travels from now and
 // `travel` their least — the stateless search finds nothing on it, as after a full search that
-// makes a record. False: search it in full (a sample within kRecordBeyondWindows windows, or
+// makes a record. False: search it in full (a sample within kRecordBeyondWindows windows —
+// kRecordBeyondWindowsTip on the second gear's flanks, `tip_only` —, or
 // one without a bound); `t` is then stale. Samples whose travel left is short are measured again
 // too (kRenewAhead).
-bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, double& travel, int hint) {
+bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, double& travel, int hint, bool tip_only) {
   const FlankTable& xt = xy.x.table;
   const double window = xy.window_m;
   double least = std::numeric_limits<double>::infinity();
@@ -140,7 +146,7 @@ bool renew_clear(const XY& xy, int k, Flank f, double moved, SampleTravels& t, d
     if (!(left > kRenewAhead * moved)) {
       const Vector2d p = xt.probe_point(k, f, static_cast<int>(i));
       const double d = depth_of(xy, p, hint);
-      if (d > -kRecordBeyondWindows * window) return false;
+      if (d > -(tip_only ? kRecordBeyondWindowsTip : kRecordBeyondWindows) * window) return false;
       left = sample_travel(xy, p, d, window, hint);
       if (!(left > 0)) return false;
     }
@@ -402,7 +408,7 @@ Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& cen
     }
     const double moved = (centre - rec.tooth_centre_in_y_m).norm() + std::abs(turn - rec.turn_rad) * reach + kTravelRounding_m;
     double renewed = 0;
-    if (renew_clear(xy, k, f, moved, travels, renewed, hint)) {
+    if (renew_clear(xy, k, f, moved, travels, renewed, hint, tip_only)) {
       rec.tooth_centre_in_y_m = centre;
       rec.turn_rad = turn;
       rec.travel_m = renewed;
