@@ -33,7 +33,7 @@ class CoherentToothSearch {
   // faces another flank, curves too sharply or lies outside the refinement window, it is not.
   // With `replace`, a first-gear flank whose maximum lay where it crosses the other gear's tip
   // circle is solved there again (Counts::crossings), while the stateless search would still
-  // come to it (coherent_contact.cpp, continued_crossing()).
+  // come to it (continuation_impl.hpp, continued_crossing()).
   //  - replace: the continued solution stands for the flank, which is not probed (smooth flanks
   //    with one maximum per contact: the stateless search's contacts to ~0.1 nm, not bit for bit);
   //  - deeper: the flank is also searched as the stateless search does, and the deeper of the two
@@ -88,7 +88,7 @@ class CoherentToothSearch {
 
   // Where a continued point last had its facing flank measured (FlankTable::face(), the other
   // gear's frame; its radius) and the margin found there (−1: none): later points within the
-  // margin's reach skip the measurement (coherent_contact.cpp, continued_hit()).
+  // margin's reach skip the measurement (continuation_impl.hpp, continued_hit()).
   struct FaceReference {
     Eigen::Vector2d point = Eigen::Vector2d::Zero();
     double radius_m = 0;

@@ -21,48 +21,15 @@
 #include "input/scenario_file.hpp"
 #include "physics/world_bodies.hpp"
 #include "tests/support/asset_scenario.hpp"
+#include "tests/support/paper_flank_tables.hpp"
 
 namespace gearsim::contact {
 namespace {
 
-// A gear of a scenario: its flank table and start pose, and how far it turns in the carrier's
-// frame per unit turn of the sun (1 for the sun, −Zs/Z for the others).
-struct Gear {
-  std::string name;
-  std::shared_ptr<const FlankTable> table;
-  PlanarPose pose;
-  double ratio = 0;
-};
-
-double angle_of(const Eigen::Quaterniond& q) {
-  const Eigen::Vector3d x = q * Eigen::Vector3d::UnitX();
-  return std::atan2(x.y(), x.x());
-}
-
-std::vector<Gear> gears_of(const physics::Scenario& s, const std::string& driver, int driver_teeth) {
-  std::vector<Gear> gears;
-  for (const physics::BodyDef& d : s.bodies) {
-    if (!d.gear && !d.mesh) continue;
-    const physics::BuiltBody b = physics::build_body(d, s.contact);
-    if (!b.flanks) continue;
-    const double ratio = d.name == driver ? 1.0 : -static_cast<double>(driver_teeth) / b.flanks->teeth();
-    gears.push_back({d.name, b.flanks, {d.pose.position_m.head<2>(), angle_of(d.pose.orientation)}, ratio});
-  }
-  return gears;
-}
-
-// The paper's faulty set (paper_dynamics.yaml), built once.
-const std::vector<Gear>& paper_gears() {
-  static const std::vector<Gear> gears = gears_of(
-      input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml"), "sun", 24);
-  return gears;
-}
-
-const Gear& named(const std::vector<Gear>& gears, const std::string& name) {
-  for (const Gear& g : gears)
-    if (g.name == name) return g;
-  throw std::runtime_error("no gear " + name);
-}
+using test::Gear;
+using test::gears_of;
+using test::named;
+using test::paper_gears;
 
 // How the coherent search's answers differed from the stateless search's over a sweep.
 struct Sweep {
@@ -283,79 +250,6 @@ TEST(CoherentToothSearch, ResetForgetsEveryRecord) {
   EXPECT_EQ(search.counts().skipped + search.counts().tracked, 0);
 }
 
-TEST(FirstOrderRise, BoundsHowFarTheFirstOrderDepthMovesWithThePoint) {
-  // The bound the coherent search rests on (FlankTable::first_order_rise): for points anywhere in
-  // the teeth of the paper's sun and ring moved by up to 20 µm in any direction (staying clear of
-  // the root and tip circles), the first-order depth after the move stays below the bound from
-  // the depth before it. 200 000 random moves per gear.
-  const std::vector<Gear>& g = paper_gears();
-  for (const char* name : {"sun", "ring", "planet_0"}) {
-    const FlankTable& t = *named(g, name).table;
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> unit(0, 1);
-    long checked = 0, above = 0;
-    for (int i = 0; i < 200000; ++i) {
-      const double delta = 20e-6 * unit(rng), r = t.r_min_m() + delta + unit(rng) * (t.r_max_m() - t.r_min_m() - 2 * delta);
-      const double at = 2 * M_PI * unit(rng), dir = 2 * M_PI * unit(rng);
-      const Eigen::Vector2d q0 = r * Eigen::Vector2d(std::cos(at), std::sin(at));
-      const Eigen::Vector2d q1 = q0 + delta * unit(rng) * Eigen::Vector2d(std::cos(dir), std::sin(dir));
-      int h0 = -1, h1 = -1;
-      const double d0 = t.first_order_depth(q0, h0), d1 = t.first_order_depth(q1, h1);
-      const FlankTable::FirstOrderRise rise = t.first_order_rise(r - delta, r + delta);
-      if (d0 <= FlankTable::kNoDepth || d1 <= FlankTable::kNoDepth || !(rise.slope < FlankTable::kInfinity) ||
-          rise.growth * delta >= 0.5 || rise.jump >= 1)
-        continue;
-      const double top = d0 < 0 ? d0 * (1 - rise.jump) : d0;
-      const double f = top + delta * (rise.slope + rise.growth * (std::abs(top) + rise.slope * delta) / (1 - rise.growth * delta));
-      above += d1 > (f > 0 ? f * (1 + rise.jump) : f);
-      ++checked;
-    }
-    EXPECT_GT(checked, 100000) << name;
-    EXPECT_EQ(above, 0) << name << ": moves whose depth rose beyond the bound, of " << checked;
-  }
-}
-
-// The facing margin (FlankTable::face()) a continued contact's flank check rests on: for points
-// anywhere in the teeth moved by up to 300 µm, a move within the margin's reach (twice the
-// offsets' slope bound times the move, below the margin) leaves the point facing the same flank;
-// and face() chooses what probe_depth() chooses. `moves` random moves per table.
-void expect_facing_margin_holds(const FlankTable& t, const std::string& name, int moves) {
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> unit(0, 1);
-  long within = 0, kept = 0, moved_away = 0;
-  for (int i = 0; i < moves; ++i) {
-    const double r = t.r_min_m() + unit(rng) * (t.r_max_m() - t.r_min_m()), at = 2 * M_PI * unit(rng);
-    const Eigen::Vector2d q0 = r * Eigen::Vector2d(std::cos(at), std::sin(at));
-    const FlankTable::Probe p0 = t.probe_depth(q0);
-    if (!p0.has_flank) continue;
-    const FlankTable::Facing f0 = t.face(q0, p0.tooth);
-    const FlankTable::Probe p0h = t.probe_depth(q0, p0.tooth);
-    ASSERT_TRUE(f0.has_flank) << name;
-    EXPECT_TRUE(f0.tooth == p0h.tooth && f0.flank == p0h.flank) << name << ": face() and probe_depth() differ at " << q0.transpose();
-    const double dir = 2 * M_PI * unit(rng), delta = 300e-6 * unit(rng) * unit(rng);
-    const Eigen::Vector2d q1 = q0 + delta * Eigen::Vector2d(std::cos(dir), std::sin(dir));
-    const double lo = std::min(q0.norm(), q1.norm()) - delta, hi = std::max(q0.norm(), q1.norm()) + delta;
-    if (!(lo > t.r_min_m() && hi < t.r_max_m())) continue;
-    const double side = t.first_order_rise(lo, hi).side;
-    const FlankTable::Probe p1 = t.probe_depth(q1, f0.tooth);
-    const bool same = p1.has_flank && p1.tooth == f0.tooth && p1.flank == f0.flank;
-    if (side < FlankTable::kInfinity && 2 * side * delta < f0.margin_m) {
-      ++within;
-      kept += same;
-    } else {
-      moved_away += !same;
-    }
-  }
-  EXPECT_GT(within, moves / 4) << name;
-  EXPECT_EQ(kept, within) << name << ": moves within the margin's reach that changed the facing flank";
-  EXPECT_GT(moved_away, 0) << name << ": the sample should hold moves that change the flank";
-}
-
-TEST(FlankTable, AMoveWithinTheFacingMarginFacesTheSameFlank) {
-  const std::vector<Gear>& g = paper_gears();
-  for (const char* name : {"sun", "ring", "planet_0"}) expect_facing_margin_holds(*named(g, name).table, name, 100000);
-}
-
 // OpenSCAD MCAD meshes (tests/data/mcad: z 12 drives z 24, module 1, 0.05 mm backlash each),
 // recognised and tabled as a run builds them, turned at the ideal ratio through 1.2 turns of the
 // pinion, its backlash closed by `closure_m` along the pitch circle and pressed by 0–2 µm; the
@@ -437,8 +331,8 @@ TEST(CoherentToothSearch, CadPairMatchesTheStatelessSearch) {
 TEST(FlankTable, AMoveWithinTheFacingMarginFacesTheSameFlankOnMcadMeshes) {
   // The same on tables of faceted STL flanks (OpenSCAD's MCAD, not made here).
   const CadPair cad;
-  expect_facing_margin_holds(*cad.gears[0].table, "MCAD z12", 50000);
-  expect_facing_margin_holds(*cad.gears[1].table, "MCAD z24", 50000);
+  test::expect_facing_margin_holds(*cad.gears[0].table, "MCAD z12", 50000);
+  test::expect_facing_margin_holds(*cad.gears[1].table, "MCAD z24", 50000);
 }
 
 // The MCAD pair closed just to its first touch (the least, over a tooth period, of the deepest
