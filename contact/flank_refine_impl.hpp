@@ -94,7 +94,7 @@ double tip_circle_crossing(const XY& xy, int k, Flank f, double r_in, double r_o
 // A maximum of the depth where x's flank crosses y's tip circle (the depth still rising toward
 // it, nothing measured beyond). `r`: the radius on x's flank the hit is measured at (a rising
 // check's step inside); `crossing`: where x's flank crosses the circle, of radius `circle_m`. A
-// continued search (coherent_contact.cpp) solves the crossing again next step instead of
+// continued search (continuation_impl.hpp) solves the crossing again next step instead of
 // searching the flank (Hit::kCrossing). NaN: not such a maximum.
 struct Crossing {
   double r = std::numeric_limits<double>::quiet_NaN();
