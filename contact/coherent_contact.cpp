@@ -101,9 +101,8 @@ double clear_travel(const FlankSamples& s, bool tip_only, SampleTravels& t) {
   // (probe_tip() looks further only when one of these is within the window).
   std::uint32_t relevant = s.material;
   if (tip_only) {
-    const int dir = s.xy.x.table.internal() ? 1 : -1;
-    int end = s.xy.x.table.internal() ? 0 : n - 1;
-    while (s.missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
+    int end, dir;
+    tip_end(s, end, dir);
     relevant = 0;
     for (int j = 0; j < 2; ++j)
       if (!s.missing(end + j * dir)) relevant |= std::uint32_t{1} << (end + j * dir);

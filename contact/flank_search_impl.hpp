@@ -250,15 +250,22 @@ struct FlankSamples {
   int best_i = -1;
 };
 
+// The sample probe_tip() starts from, `end` (the tip's, or the first with material inward of
+// it), and the direction inward along the flank, `dir` (+1 or −1 in sample index).
+void tip_end(const FlankSamples& s, int& end, int& dir) {
+  constexpr int n = FlankSamples::n;
+  dir = s.xy.x.table.internal() ? 1 : -1;
+  end = s.xy.x.table.internal() ? 0 : n - 1;
+  while (s.missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
+}
+
 // The three samples nearest the tooth's free end (an internal gear's teeth point inward); a
 // maximum at the farthest of them lies down the flank, where the other probing direction finds
 // it, so the third is probed only when one of the first two is within the refinement window.
 // False: no hit on this flank.
 bool probe_tip(FlankSamples& s) {
-  constexpr int n = FlankSamples::n;
-  const int dir = s.xy.x.table.internal() ? 1 : -1;
-  int end = s.xy.x.table.internal() ? 0 : n - 1;
-  while (s.missing(end) && end - 3 * dir >= 0 && end - 3 * dir < n) end += dir;
+  int end, dir;
+  tip_end(s, end, dir);
   for (int j = 0; j < 2; ++j)
     if (!s.missing(end + j * dir)) s.probe(end + j * dir);
   if (s.best_i < 0 || s.depth[s.best_i] < -s.window) return false;
