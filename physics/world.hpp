@@ -156,6 +156,12 @@ class World {
     // where that solve settled) against M⁻¹·Jᵀ·λ from the same impulses: max |Δdv| / max |dv|.
     long velocity_changes_compared = 0;
     double velocity_change_difference = 0;
+    // The planar kinematics (world_planar_kinematics.cpp) against Bullet's position step, forward
+    // kinematics and link velocities from the same coordinates: the largest coordinate
+    // difference, link centre distance (m), basis row difference and link velocity difference
+    // (rad/s, m/s), over kinematics_steps steps.
+    long kinematics_steps = 0;
+    double coordinate_difference = 0, centre_difference_m = 0, basis_difference = 0, link_velocity_difference = 0;
   };
   void set_mass_matrix_check(bool on);
   const MassMatrixCheck& mass_matrix_check() const;

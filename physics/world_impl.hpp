@@ -92,6 +92,7 @@ struct JointRec {
   btGeneric6DofSpring2Constraint* spring = nullptr;
   Eigen::Vector3d axis_world = Eigen::Vector3d::UnitZ();
   double last_raw = 0, unwrapped = 0;
+  double angle_at_zero = 0;  // the multibody tree's joint angle at q = 0 (planar kinematics)
   const MotorDef* motor = nullptr;
   const LoadDef* load = nullptr;
 };
@@ -183,6 +184,28 @@ struct MultibodyEngine {
   std::vector<int> dof_link;
   std::vector<double> link_w, link_vx, link_vy;
   std::vector<double> gen_force;                     // dofs: Q − c of planar_free_velocities()
+  // The planar kinematics (world_planar_kinematics.cpp): per link its parent, its joint's turn
+  // about world z (σ = ±1) and vectors at q = 0 (world), its basis at q = 0; per link this
+  // pose's turn φ, cos φ, sin φ; link_jac_current: link_jac is this pose's (the pose has not
+  // moved since planar_forward_kinematics()). Per gear body its frame's in-plane x axis (unit)
+  // and angle at q = 0; the fixed gears' poses.
+  struct PlanarLink {
+    int parent = -1;
+    bool planar_joint = false;
+    double sigma = 1, axis_length2 = 1;
+    btMatrix3x3 basis0 = btMatrix3x3::getIdentity();
+    btVector3 e0{0, 0, 0}, d0{0, 0, 0}, b1{0, 0, 0}, b2{0, 0, 0};
+  };
+  std::vector<PlanarLink> plinks;
+  std::vector<double> link_phi, link_cos, link_sin;
+  bool link_jac_current = false;
+  std::vector<Eigen::Vector2d> gear_x0;
+  std::vector<double> gear_angle0;
+  std::vector<contact::PlanarPose> fixed_pose;
+  // World::set_mass_matrix_check: the step's start coordinates, the velocities its positions
+  // moved with and its length (check_planar_kinematics() steps Bullet from them).
+  std::vector<double> check_q_start, check_v_positions;
+  double check_h = 0;
   std::vector<double> bullet_qdd;                    // dofs: Bullet's q̈ at the same state (check_mass)
   std::vector<double> chol;                          // dofs × dofs, row-major: L (lower triangle)
   std::vector<double> chol_inv_diag;                 // dofs: 1 / L's diagonal
@@ -293,6 +316,7 @@ struct World::Impl {
   void apply_impulses();
   void measure();  // joints (from the bodies' transforms), then contacts of the rigid-body engine
   void measure_joints();
+  double joint_raw_angle(const JointRec& j) const;
   void measure_contacts();
   void measure_power();
   double kinetic_energy_J() const;
@@ -318,6 +342,14 @@ struct World::Impl {
   int solve_rows_planar();  // solve_rows_primal(), solve_rows_folded() where it does not settle
   void planar_g();
   void check_planar_mass(const double* m_lower);
+  void build_planar_kinematics();
+  void planar_step_positions(double h, const double* v);
+  void planar_forward_kinematics();
+  void planar_link_velocities(const double* u);
+  void planar_finish_step();
+  void planar_measure_joints();
+  contact::PlanarPose planar_gear_pose(std::size_t body) const;
+  void check_planar_kinematics();
   bool solve_rows_dantzig_fixed_friction();
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).
   void velocity_change(const double* lambda, double* dv);

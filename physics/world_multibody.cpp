@@ -156,7 +156,10 @@ void World::Impl::build_multibody() {
                   "a multibody link must start at its body's pose");
   }
   e.planar_mass = e.planar && scenario.solver.mass_matrix == SolverDef::MassMatrix::planar;
-  if (e.planar_mass) build_planar_mass();
+  if (e.planar_mass) {
+    build_planar_mass();
+    build_planar_kinematics();
+  }
 }
 
 // One step (or sub-step) of length h from the contacts generate_contacts() found at its start.
@@ -189,49 +192,65 @@ void World::Impl::advance_multibody(double h) {
   // mass matrix from it (which the rows then use), else by Bullet's articulated-body pass.
   if (e.planar_mass) planar_free_velocities(e.h_eff);
   else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(e.h_eff, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
+  if (e.planar_mass && e.check_mass) {  // check_planar_kinematics() steps Bullet from here
+    e.check_q_start.clear();
+    for (int l = 0; l < t.getNumLinks(); ++l)
+      for (int k = 0; k < t.getLink(l).m_posVarCount; ++k) e.check_q_start.push_back(t.getJointPosMultiDof(l)[k]);
+    e.check_h = h;
+  }
   const std::uint64_t solve_start = clock.now();
   multibody_rows();
   solve_multibody_rows();
   row_solve_ticks += clock.now() - solve_start;
+  // The positions move with v_move (BDF2), the θ-weighted mean of the start and end velocities,
+  // or v⁺; the velocities stay v⁺. On the planar path by its own kinematics (which also set the
+  // links' and bodies' poses and velocities), else by Bullet's.
+  const double* v_end = t.getVelocityVector() + 6;
+  const double* v_positions = v_end;
   if (e.bdf2) {
-    // x⁺ = (4x − x_prev)/3 + h_eff·v⁺ = x + h·v_move, v_move = (v_move_prev + 2v⁺)/3; then v⁺ returns.
-    const double* v = t.getVelocityVector() + 6;
-    e.v_end.assign(v, v + e.dofs);
+    // x⁺ = (4x − x_prev)/3 + h_eff·v⁺ = x + h·v_move, v_move = (v_move_prev + 2v⁺)/3.
+    e.v_end.assign(v_end, v_end + e.dofs);
     for (int k = 0; k < e.dofs; ++k) {
       const std::size_t u = static_cast<std::size_t>(k);
       e.v_mid[u] = two_step ? (e.v_move[u] + 2 * e.v_end[u]) / 3 : e.v_end[u];
     }
-    set_joint_velocities(t, e.v_mid);
-    t.stepPositionsMultiDof(h);
-    set_joint_velocities(t, e.v_end);
+    v_positions = e.v_mid.data();
     e.v_prev = e.v_start;
     e.v_move = e.v_mid;
     e.has_history = true;
   } else if (e.theta < 1) {
-    // Positions advance with the θ-weighted mean of the step's start and end velocities, then v⁺ returns.
-    const double* v = t.getVelocityVector() + 6;
-    e.v_end.assign(v, v + e.dofs);
+    e.v_end.assign(v_end, v_end + e.dofs);
     for (int k = 0; k < e.dofs; ++k)
       e.v_mid[static_cast<std::size_t>(k)] = (1 - e.theta) * e.v_start[static_cast<std::size_t>(k)] + e.theta * e.v_end[static_cast<std::size_t>(k)];
-    set_joint_velocities(t, e.v_mid);
-    t.stepPositionsMultiDof(h);
-    set_joint_velocities(t, e.v_end);
-  } else {
-    t.stepPositionsMultiDof(h);
+    v_positions = e.v_mid.data();
   }
-  t.clearForcesAndTorques();
-  // The links' poses and velocities onto the rigid bodies, which measuring and rendering read.
-  t.forwardKinematics(e.world_to_local, e.local_origin);
-  t.compTreeLinkVelocities(e.omega.data(), e.vel.data());
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const int l = e.link_of_body[i];
-    if (l < 0) continue;
-    const btTransform& tl = t.getLink(l).m_cachedWorldTransform;
-    btRigidBody& r = *bodies[i].rigid;
-    r.setCenterOfMassTransform(tl);
-    r.updateInertiaTensor();
-    r.setAngularVelocity(tl.getBasis() * e.omega[static_cast<std::size_t>(l) + 1]);
-    r.setLinearVelocity(tl.getBasis() * e.vel[static_cast<std::size_t>(l) + 1]);
+  if (e.planar_mass) {
+    if (e.check_mass) e.check_v_positions.assign(v_positions, v_positions + e.dofs);
+    planar_step_positions(h, v_positions);
+    t.clearForcesAndTorques();
+    planar_finish_step();
+  } else {
+    if (v_positions != v_end) {
+      set_joint_velocities(t, e.v_mid);
+      t.stepPositionsMultiDof(h);
+      set_joint_velocities(t, e.v_end);
+    } else {
+      t.stepPositionsMultiDof(h);
+    }
+    t.clearForcesAndTorques();
+    // The links' poses and velocities onto the rigid bodies, which measuring and rendering read.
+    t.forwardKinematics(e.world_to_local, e.local_origin);
+    t.compTreeLinkVelocities(e.omega.data(), e.vel.data());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const int l = e.link_of_body[i];
+      if (l < 0) continue;
+      const btTransform& tl = t.getLink(l).m_cachedWorldTransform;
+      btRigidBody& r = *bodies[i].rigid;
+      r.setCenterOfMassTransform(tl);
+      r.updateInertiaTensor();
+      r.setAngularVelocity(tl.getBasis() * e.omega[static_cast<std::size_t>(l) + 1]);
+      r.setLinearVelocity(tl.getBasis() * e.vel[static_cast<std::size_t>(l) + 1]);
+    }
   }
   time += h;
   measure_joints();

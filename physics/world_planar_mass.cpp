@@ -137,23 +137,12 @@ void World::Impl::planar_free_velocities(double h) {
     t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
     e.bullet_qdd.assign(&e.scratch_r[e.dofs] + 6, &e.scratch_r[e.dofs] + 6 + e.dofs);
   }
-  planar_link_jacobians();
+  // The link Jacobians of this pose: the last step's end made them (planar_forward_kinematics()).
+  if (!e.link_jac_current) planar_link_jacobians();
   planar_mass_factor();
   const std::size_t links = static_cast<std::size_t>(t.getNumLinks()), ud = static_cast<std::size_t>(e.dofs);
   const double* u = t.getVelocityVector() + 6;
-  e.link_w.resize(links);
-  e.link_vx.resize(links);
-  e.link_vy.resize(links);
-  for (std::size_t l = 0; l < links; ++l) {
-    const double* jw = e.link_jac.data() + l * 3 * ud;
-    const double *jx = jw + ud, *jy = jw + 2 * ud;
-    double w = 0, vx = 0, vy = 0;
-    for (const int d : e.link_dofs[l]) {
-      const std::size_t k = static_cast<std::size_t>(d);
-      w += jw[k] * u[k], vx += jx[k] * u[k], vy += jy[k] * u[k];
-    }
-    e.link_w[l] = w, e.link_vx[l] = vx, e.link_vy[l] = vy;
-  }
+  planar_link_velocities(u);
   e.gen_force.assign(ud, 0.0);
   double* q = e.gen_force.data();
   for (std::size_t l = 0; l < links; ++l) {

@@ -20,7 +20,7 @@ void World::Impl::generate_contacts() {
   // Each gear's planar pose once per step (a gear meshes in several pairs).
   gear_poses.resize(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i)
-    if (bodies[i].flanks) gear_poses[i] = planar_pose(bodies[i]);
+    if (bodies[i].flanks) gear_poses[i] = mb && mb->planar_mass ? planar_gear_pose(i) : planar_pose(bodies[i]);
   for (PairRec& pr : pairs) {
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
     std::vector<contact::ToothContact>& found = pr.found;
@@ -153,24 +153,16 @@ double wrapped_turn(double d) {
 }  // namespace
 
 void World::Impl::measure_joints() {
+  if (mb && mb->planar_mass) {
+    planar_measure_joints();
+    return;
+  }
   // Joint angles: the body's gear-frame x axis against the parent's, about the joint axis.
   for (JointRec& j : joints) {
     const BuiltBody& b = bodies[j.body];
-    // The gear frame's x axis: the first column of (body basis · com_from_gear basis).
-    auto gear_x = [](const BuiltBody& g) { return eig(g.rigid->getWorldTransform().getBasis() * g.com_from_gear.getBasis().getColumn(0)); };
+    const Eigen::Vector3d omega_parent = j.parent >= 0 ? eig(bodies[j.parent].rigid->getAngularVelocity()) : Eigen::Vector3d::Zero();
     const Eigen::Vector3d ax = j.axis_world;
-    const Eigen::Vector3d xb = gear_x(b);
-    Eigen::Vector3d ref = Eigen::Vector3d::UnitX(), ref2;
-    Eigen::Vector3d omega_parent = Eigen::Vector3d::Zero();
-    if (j.parent >= 0) {
-      const BuiltBody& p = bodies[j.parent];
-      ref = gear_x(p);
-      omega_parent = eig(p.rigid->getAngularVelocity());
-    }
-    if (std::abs(ref.dot(ax)) > 0.9) ref = Eigen::Vector3d::UnitY();
-    ref = (ref - ref.dot(ax) * ax).normalized();
-    ref2 = ax.cross(ref);
-    const double raw = std::atan2(xb.dot(ref2), xb.dot(ref));
+    const double raw = joint_raw_angle(j);
     j.unwrapped += wrapped_turn(raw - j.last_raw);
     j.last_raw = raw;
     BodyState& s = states[j.body];
@@ -277,6 +269,14 @@ double World::Impl::impulse_power_W(double h) const {
 
 double World::Impl::kinetic_energy_J() const {
   double kinetic = 0;
+  if (mb && mb->planar_mass) {
+    // The planar tree's links turn about z: ½·m·|v|² + ½·I_zz·ω² each, from this pose's link
+    // velocities (the bodies' world inertia tensors are not kept on this path).
+    const MultibodyEngine& e = *mb;
+    for (std::size_t l = 0; l < e.link_w.size(); ++l)
+      kinetic += 0.5 * e.link_mass_kg[l] * (e.link_vx[l] * e.link_vx[l] + e.link_vy[l] * e.link_vy[l]) + 0.5 * e.link_izz_kg_m2[l] * e.link_w[l] * e.link_w[l];
+    return kinetic;
+  }
   for (const BuiltBody& b : bodies) {
     const btRigidBody& r = *b.rigid;
     if (r.getInvMass() == 0) continue;

@@ -207,6 +207,16 @@ TEST(Multibody, ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEverySt
     EXPECT_LT(c.identity_residual, 1e-13) << scenario;
     EXPECT_LT(c.jacobian_difference, 1e-14) << scenario;
     EXPECT_LT(c.free_velocity_difference, 1e-12) << scenario;
+    // The planar kinematics (world_planar_kinematics.cpp: positions, poses, link velocities in
+    // closed form) against Bullet's position step, forward kinematics and link velocities from
+    // the same coordinates, at every step.
+    std::printf("  %s: planar kinematics, %ld steps: coordinates %.2e, centres %.2e m, bases %.2e, link velocities %.2e\n", scenario.c_str(),
+                c.kinematics_steps, c.coordinate_difference, c.centre_difference_m, c.basis_difference, c.link_velocity_difference);
+    EXPECT_GE(c.kinematics_steps, 3000) << scenario;
+    EXPECT_LT(c.coordinate_difference, 1e-18) << scenario;
+    EXPECT_LT(c.centre_difference_m, 1e-15) << scenario;
+    EXPECT_LT(c.basis_difference, 1e-14) << scenario;
+    EXPECT_LT(c.link_velocity_difference, 1e-12) << scenario;
   }
   // Not used (and so not checked) where the articulated path is asked for.
   physics::World w(input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml", {"solver.mass_matrix=articulated"}));
