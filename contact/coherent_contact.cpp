@@ -269,6 +269,29 @@ bool record_holds(const CoherentToothSearch::FlankRecord& rec, const Vector2d& c
   return left > 0 && (centre - rec.tooth_centre_in_y_m).squaredNorm() < left * left;
 }
 
+// A travel from the tooth's pose now (its centre in y's frame, its turn) within which both its
+// flank records still hold, where both are clear: each record's travel less how far every point
+// of the tooth has moved since it was made (|Δc| + |Δturn|·reach + rounding, as record_holds()),
+// the least of the two. By the triangle inequality a move within it from here is within each
+// record's own travel from its pose: record_holds() on the tooth record implies it on both flank
+// records (the same skips, one test). −1 where either flank is not clear or nothing is left.
+CoherentToothSearch::ToothRecord tooth_record(const CoherentToothSearch::FlankRecord& ccw, const CoherentToothSearch::FlankRecord& cw,
+                                              const Vector2d& centre, double turn, double reach) {
+  CoherentToothSearch::ToothRecord t;
+  if (!(ccw.travel_m > 0 && cw.travel_m > 0)) return t;
+  auto left = [&](const CoherentToothSearch::FlankRecord& r) {
+    return r.travel_m - ((centre - r.tooth_centre_in_y_m).norm() + std::abs(turn - r.turn_rad) * reach + kTravelRounding_m);
+  };
+  const double travel = std::min(left(ccw), left(cw));
+  if (travel > 0) t = {centre, turn, travel};
+  return t;
+}
+
+bool record_holds(const CoherentToothSearch::ToothRecord& rec, const Vector2d& centre, double turn, double reach) {
+  const double left = rec.travel_m - std::abs(turn - rec.turn_rad) * reach - kTravelRounding_m;
+  return left > 0 && (centre - rec.tooth_centre_in_y_m).squaredNorm() < left * left;
+}
+
 // The stateless search's answer for one flank, from its record where that holds (skipped: no
 // hit; tracked: only the samples that can hold the deepest probed) or by a full search that
 // makes the record afresh. No hit: depth kNone, tooth_y −1. `skip_tested`: record_holds() was
@@ -315,6 +338,7 @@ Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& cen
 
 void CoherentToothSearch::reset() {
   for (std::vector<FlankRecord>& r : records_) r.assign(r.size(), FlankRecord{});
+  for (std::vector<ToothRecord>& r : tooth_records_) r.assign(r.size(), ToothRecord{});
   for (std::vector<Solution>& s : solutions_) s.assign(s.size(), Solution{});
 }
 
@@ -324,6 +348,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     tables_[0] = &ta, tables_[1] = &tb;
     records_[0].assign(static_cast<std::size_t>(ta.teeth()) * 2, FlankRecord{});
     records_[1].assign(static_cast<std::size_t>(tb.teeth()) * 2, FlankRecord{});
+    tooth_records_[0].assign(static_cast<std::size_t>(ta.teeth()), ToothRecord{});
+    tooth_records_[1].assign(static_cast<std::size_t>(tb.teeth()), ToothRecord{});
     tracks_.assign(records_[0].size(), TrackedFlank{});
     solutions_[0].assign(records_[0].size(), Solution{});
     solutions_[1].assign(records_[1].size(), Solution{});
@@ -354,6 +380,13 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
       const Vector2d centre = xy.in_y(x.table.tooth_centre(k));
       const double d2 = centre.squaredNorm();
       if (!(d2 < outer2 && (inner < 0 || d2 > inner * inner))) return;
+      // Both flanks clear since their records were made (with `deeper` a clear flank may still
+      // hold a solution: there each flank is looked at).
+      ToothRecord& tooth_rec = tooth_records_[pass][static_cast<std::size_t>(k)];
+      if (tooth_rec.travel_m > 0 && continuation_ != Continuation::deeper && record_holds(tooth_rec, centre, turn, reach)) {
+        counts_.skipped += 2;
+        return;
+      }
       for (Flank f : {Flank::Ccw, Flank::Cw}) {
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];
@@ -450,6 +483,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         else sol = Solution{};
         emit(sampled);
       }
+      if (continuation_ != Continuation::deeper)
+        tooth_rec = tooth_record(records[static_cast<std::size_t>(k) * 2], records[static_cast<std::size_t>(k) * 2 + 1], centre, turn, reach);
     });
   }
   sort_contacts(best);

@@ -68,6 +68,14 @@ class CoherentToothSearch {
     double travel_m = -1;  // > 0: no contact within this travel
     bool tracked = false;  // the flank's TrackedFlank holds
   };
+  // Both flanks of a tooth clear (their records hold travels): a travel from one pose of the
+  // tooth within which both records still hold (coherent_contact.cpp, tooth_record()), so that
+  // the tooth is skipped by one test instead of two. −1: not both clear.
+  struct ToothRecord {
+    Eigen::Vector2d tooth_centre_in_y_m = Eigen::Vector2d::Zero();
+    double turn_rad = 0;
+    double travel_m = -1;
+  };
   // Per probe sample of a flank whose record holds a travel (`travel_m` > 0): the sample's own
   // travel from the record's pose (+∞: a sample the search does not look at); travel_m is their
   // least.
@@ -98,6 +106,7 @@ class CoherentToothSearch {
  private:
   const FlankTable* tables_[2] = {nullptr, nullptr};
   std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
+  std::vector<ToothRecord> tooth_records_[2];  // per pass, per tooth
   std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
   std::vector<SampleTravels> travels_[2];  // per pass, indexed as records_
   // Per pass, indexed as records_: a call's solution (flank_search_impl.hpp's
