@@ -11,7 +11,10 @@ namespace gearsim::physics {
 
 // P·A = L·U of the k×k row-major a, in place (L's multipliers below the diagonal, U on and above
 // it; pivots[c]: the row swapped with row c at step c, whole rows). False when a pivot vanishes.
-inline bool lu_factor(int k, double* a, int* pivots) {
+// N > 0: k is N, known when compiling (the loops then unroll; the same arithmetic).
+template <int N = 0>
+inline bool lu_factor(int k_arg, double* a, int* pivots) {
+  const int k = N > 0 ? N : k_arg;
   const auto at = [&](int i, int j) -> double& { return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
   for (int c = 0; c < k; ++c) {
     int p = c;
@@ -36,7 +39,9 @@ inline bool lu_factor(int k, double* a, int* pivots) {
 
 // x ← A⁻¹·x from lu_factor()'s factors: the row interchanges first, as they were made, then the
 // two substitutions.
-inline void lu_solve(int k, const double* a, const int* pivots, double* x) {
+template <int N = 0>
+inline void lu_solve(int k_arg, const double* a, const int* pivots, double* x) {
+  const int k = N > 0 ? N : k_arg;
   const auto at = [&](int i, int j) { return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
   for (int c = 0; c < k; ++c)
     if (pivots[c] != c) std::swap(x[c], x[pivots[c]]);

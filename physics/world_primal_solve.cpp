@@ -77,10 +77,13 @@ void World::Impl::planar_soft_rows() {
 // Rows whose condition breaks change their bound state as in solve_row_lcp()
 // (settle_row_states); returns the linear solves it took, 0 where it did not settle (or a
 // factorisation failed): the caller falls back to the row-space solve then.
-int World::Impl::solve_rows_primal() {
-  MultibodyEngine& e = *mb;
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
-  const int dofs = e.dofs;
+// N > 0: the tree has N coordinates, known when compiling (solve_rows_primal() dispatches on the
+// count): the short loops over them unroll; the same arithmetic in the same order.
+namespace {
+template <int N>
+int primal_solve(MultibodyEngine& e) {
+  const std::size_t n = e.rows.size(), ud = N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(e.dofs);
+  const int dofs = static_cast<int>(ud);
   const double* jrows = e.jrows.data();
   const auto j = [&](std::size_t i) { return jrows + i * ud; };
   RowBound* state = e.row_states.data();
@@ -160,8 +163,8 @@ int World::Impl::solve_rows_primal() {
         for (std::size_t c = 0; c < ud; ++c) row[c] += ca * ji[c];
       }
     }
-    if (!lu_factor(dofs, kk, e.primal_pivots.data())) return 0;
-    lu_solve(dofs, kk, e.primal_pivots.data(), rhs);  // dv of the springs and constants alone
+    if (!lu_factor<N>(dofs, kk, e.primal_pivots.data())) return 0;
+    lu_solve<N>(dofs, kk, e.primal_pivots.data(), rhs);  // dv of the springs and constants alone
     double* dv = e.primal_dv.data();
     std::copy(rhs, rhs + ud, dv);
     if (ms > 0) {
@@ -174,7 +177,7 @@ int World::Impl::solve_rows_primal() {
         double* y = e.primal_y.data() + r * ud;
         const double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[i]) * ud;
         std::copy(col, col + ud, y);
-        lu_solve(dofs, kk, e.primal_pivots.data(), y);
+        lu_solve<N>(dofs, kk, e.primal_pivots.data(), y);
       }
       for (std::size_t r = 0; r < ms; ++r) {
         const std::size_t i = static_cast<std::size_t>(e.primal_stiff[r]);
@@ -230,6 +233,26 @@ int World::Impl::solve_rows_primal() {
     }
   }
   return 0;
+}
+}  // namespace
+
+int World::Impl::solve_rows_primal() {
+  MultibodyEngine& e = *mb;
+  switch (e.dofs) {
+    case 1: return primal_solve<1>(e);
+    case 2: return primal_solve<2>(e);
+    case 3: return primal_solve<3>(e);
+    case 4: return primal_solve<4>(e);
+    case 5: return primal_solve<5>(e);
+    case 6: return primal_solve<6>(e);
+    case 7: return primal_solve<7>(e);
+    case 8: return primal_solve<8>(e);
+    case 9: return primal_solve<9>(e);
+    case 10: return primal_solve<10>(e);
+    case 11: return primal_solve<11>(e);
+    case 12: return primal_solve<12>(e);
+    default: return primal_solve<0>(e);
+  }
 }
 
 // The rows by the dof-space solve; where it does not settle, by the folded row-space one from
