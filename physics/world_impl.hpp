@@ -338,6 +338,8 @@ struct World::Impl {
   void planar_full_a();
   int solve_rows_folded();
   void planar_soft_rows();  // per row: soft spring (into K) or stiff, for solve_rows_primal()
+  template <int N>
+  void planar_soft_rows_n();  // N coordinates (0: e.dofs), physics/dof_dispatch.hpp
   int solve_rows_primal();
   int solve_rows_planar();  // solve_rows_primal(), solve_rows_folded() where it does not settle
   void planar_g();

@@ -3,6 +3,7 @@
 #include <cstddef>
 
 #include "physics/dense_lu.hpp"
+#include "physics/dof_dispatch.hpp"
 #include "physics/row_lcp.hpp"
 #include "physics/world_impl.hpp"
 
@@ -34,8 +35,13 @@ double dot(const double* a, const double* b, std::size_t n) {
 // trace(M⁻¹)·|J_i|² (M⁻¹ is positive definite), trace(M⁻¹) = ‖L⁻¹‖²_F: the exact A_ii only where
 // that bound leaves the question open.
 void World::Impl::planar_soft_rows() {
+  with_dof_count(mb->dofs, [&](auto dofs) { planar_soft_rows_n<decltype(dofs)::value>(); });
+}
+
+template <int N>
+void World::Impl::planar_soft_rows_n() {
   MultibodyEngine& e = *mb;
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
+  const std::size_t n = e.rows.size(), ud = N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(e.dofs);
   const double* jrows = e.jrows.data();
   const auto j = [&](std::size_t i) { return jrows + i * ud; };
   const double* d = e.compliance.data();
@@ -238,21 +244,7 @@ int primal_solve(MultibodyEngine& e) {
 
 int World::Impl::solve_rows_primal() {
   MultibodyEngine& e = *mb;
-  switch (e.dofs) {
-    case 1: return primal_solve<1>(e);
-    case 2: return primal_solve<2>(e);
-    case 3: return primal_solve<3>(e);
-    case 4: return primal_solve<4>(e);
-    case 5: return primal_solve<5>(e);
-    case 6: return primal_solve<6>(e);
-    case 7: return primal_solve<7>(e);
-    case 8: return primal_solve<8>(e);
-    case 9: return primal_solve<9>(e);
-    case 10: return primal_solve<10>(e);
-    case 11: return primal_solve<11>(e);
-    case 12: return primal_solve<12>(e);
-    default: return primal_solve<0>(e);
-  }
+  return with_dof_count(e.dofs, [&](auto n) { return primal_solve<decltype(n)::value>(e); });
 }
 
 // The rows by the dof-space solve; where it does not settle, by the folded row-space one from
