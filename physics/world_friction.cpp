@@ -68,7 +68,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
       const MultibodyRow& r = e.rows[static_cast<std::size_t>(i)];
       const std::size_t at = static_cast<std::size_t>(i);
       if (r.kind != MultibodyRow::contact_friction || j_v_start(i) == 0) continue;
-      const double s1 = j_v(i) + e.jac.row(i).dot(dv) + e.slip_drift[at];
+      const double s1 = j_v(i) + e.row_dot(at, dv.data()) + e.slip_drift[at];
       const double now = -e.lo[at] / r.hi, want = sliding_share(j_v_start(i), s1), g = want - now;
       if (std::abs(g) <= kSlipShareTolerance) continue;
       MultibodyEngine::SlipBracket& br = e.slip_brackets[at];
@@ -103,7 +103,7 @@ bool World::Impl::locate_slip_reversals(bool solved) {
     e.slip_end.clear();
     e.slip_end_h = e.h_step;  // the (sub)step these end slips close (the drift is per its length)
     for (int i = 0; i < n; ++i)
-      if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(contact_key(contacts[static_cast<std::size_t>(e.rows[static_cast<std::size_t>(i)].owner)]), j_v(i) + e.jac.row(i).dot(dv));
+      if (e.rows[static_cast<std::size_t>(i)].kind == MultibodyRow::contact_friction) e.slip_end.emplace_back(contact_key(contacts[static_cast<std::size_t>(e.rows[static_cast<std::size_t>(i)].owner)]), j_v(i) + e.row_dot(static_cast<std::size_t>(i), dv.data()));
   }
   return solved;
 }

@@ -141,7 +141,7 @@ struct MultibodyEngine {
   std::vector<btVector3> pivot_in_body, pivot_in_parent;  // per joint: bearing centre in the body's and the parent's frame (world for the ground)
   std::vector<double> motor_torque_N_m;                   // per joint, last step
   std::vector<MultibodyRow> rows;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jac;  // rows × dofs
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jac;  // rows × dofs: jrows, on the articulated path
   Eigen::MatrixXd inverse_mass;                                                // dofs × dofs
   Eigen::MatrixXd minv_jt;                                                     // dofs × rows
   Eigen::VectorXd row_rate, row_rate_start, v_theta;  // per step, kept for their storage
@@ -232,7 +232,20 @@ struct MultibodyEngine {
   std::vector<RowBound> primal_states_check;
   bool check_mass = false;                           // World::set_mass_matrix_check
   World::MassMatrixCheck mass_check;
-  std::vector<double> jrows;      // this step's row Jacobians, row-major, before e.jac
+  std::vector<double> jrows;      // this step's row Jacobians, row-major (e.jac: the same, articulated path only)
+  // Row i of this step's Jacobian times v (one entry per coordinate), summed in coordinate order.
+  double row_dot(std::size_t i, const double* v) const {
+    const std::size_t ud = static_cast<std::size_t>(dofs);
+    const double* j = jrows.data() + i * ud;
+    double s = 0;
+    for (std::size_t k = 0; k < ud; ++k) s += j[k] * v[k];
+    return s;
+  }
+  // rates = J·v over this step's rows.
+  void rows_times(const double* v, Eigen::VectorXd& rates) const {
+    rates.resize(static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t i = 0; i < rows.size(); ++i) rates[static_cast<Eigen::Index>(i)] = row_dot(i, v);
+  }
   double theta = 1;  // spring rows at s + θ·h·ṡ_θ, positions with (1 − θ)·v + θ·v⁺; 1: implicit Euler
   // BDF2 (solver.integrator bdf2): v⁺ = v̂ + h_eff·M⁻¹·F(x⁺, v⁺), x⁺ = x + h·v_move with
   // v̂ = (4v − v_prev)/3, h_eff = 2h/3, v_move = (v_move_prev + 2v⁺)/3 (so x⁺ = (4x − x_prev)/3 +

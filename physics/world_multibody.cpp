@@ -257,7 +257,7 @@ void World::Impl::advance_multibody(double h) {
   multibody_results();
 }
 
-// The rows of this step: their Jacobians (e.jac), compliances, targets and bounds.
+// The rows of this step: their Jacobians (e.jrows), compliances, targets and bounds.
 void World::Impl::multibody_rows() {
   MultibodyEngine& e = *mb;
   btMultiBody& t = *e.tree;
@@ -265,7 +265,7 @@ void World::Impl::multibody_rows() {
   e.rows.clear();
   if (e.trapezoid_closed) e.theta = trapezoid_closed_theta();
   contacts.clear();
-  std::vector<double>& jrows = e.jrows;  // grown row by row, then copied into e.jac
+  std::vector<double>& jrows = e.jrows;  // grown row by row
   jrows.clear();
   // A planar tree (every joint axis along z): each link's spin rate and centre velocity as rows
   // over the coordinates, once per step; a point's velocity along an in-plane direction is then
@@ -401,7 +401,8 @@ void World::Impl::multibody_rows() {
       jrows[new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;
     }
   }
-  e.jac = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(jrows.data(), static_cast<Eigen::Index>(e.rows.size()), dofs);
+  if (!e.planar_mass)  // the articulated path's products with M⁻¹ (solve_multibody_rows)
+    e.jac = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(jrows.data(), static_cast<Eigen::Index>(e.rows.size()), dofs);
 }
 
 // Forces, motor torques and power flows of the step just taken (velocities after it).
@@ -417,7 +418,7 @@ void World::Impl::multibody_results() {
   std::fill(e.motor_torque_N_m.begin(), e.motor_torque_N_m.end(), 0.0);
   for (std::size_t r = 0; r < e.rows.size(); ++r) {
     const MultibodyRow& row = e.rows[r];
-    const double force = e.x[r] / e.h_eff, rate = e.jac.row(static_cast<Eigen::Index>(r)).dot(v);
+    const double force = e.x[r] / e.h_eff, rate = e.row_dot(r, v.data());
     switch (row.kind) {
       case MultibodyRow::contact_normal:
         contacts[static_cast<std::size_t>(row.owner)].normal_force_N = force;

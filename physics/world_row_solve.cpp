@@ -40,9 +40,9 @@ void World::Impl::solve_multibody_rows() {
     a.noalias() = e.jac * e.minv_jt;
   }
   const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs), v_start(e.v_start.data(), dofs);
-  e.row_rate.noalias() = e.jac * v_pred;
-  e.row_rate_start.noalias() = e.jac * v_start;
-  if (e.bdf2 && e.has_history) e.row_rate_move.noalias() = e.jac * Eigen::Map<const Eigen::VectorXd>(e.v_move.data(), dofs);
+  e.rows_times(v_pred.data(), e.row_rate);
+  e.rows_times(v_start.data(), e.row_rate_start);
+  if (e.bdf2 && e.has_history) e.rows_times(e.v_move.data(), e.row_rate_move);
   const Eigen::VectorXd &j_v = e.row_rate, &j_v_start = e.row_rate_start;
   e.b.resize(static_cast<std::size_t>(n));
   e.w.assign(static_cast<std::size_t>(n), 0);
