@@ -64,15 +64,22 @@ void FlankTable::build_rise_bands() {
       }
     worst(band.jump, c_min > 0 ? (c_max - c_min) / c_min : kInfinity);
   }
-  rise_runs_.assign(1, bands_max);
+  std::vector<std::vector<FirstOrderRise>> rise_runs(1, bands_max);
   for (int run = 2; run <= bands; run *= 2) {
-    const std::vector<FirstOrderRise>& half = rise_runs_.back();
+    const std::vector<FirstOrderRise>& half = rise_runs.back();
     std::vector<FirstOrderRise> level(static_cast<std::size_t>(bands - run + 1));
     for (std::size_t b = 0; b < level.size(); ++b) {
       const FirstOrderRise &u = half[b], &v = half[b + static_cast<std::size_t>(run / 2)];
       level[b] = {std::max(u.slope, v.slope), std::max(u.growth, v.growth), std::max(u.jump, v.jump), std::max(u.side, v.side)};
     }
-    rise_runs_.push_back(std::move(level));
+    rise_runs.push_back(std::move(level));
+  }
+  // The runs in one array, level after level.
+  rise_flat_.clear();
+  rise_level_start_.fill(0);
+  for (std::size_t l = 0; l < rise_runs.size(); ++l) {
+    rise_level_start_[l] = rise_flat_.size();
+    rise_flat_.insert(rise_flat_.end(), rise_runs[l].begin(), rise_runs[l].end());
   }
 }
 

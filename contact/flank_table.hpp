@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -124,8 +125,8 @@ class FlankTable {
     const int b_hi = static_cast<int>(hi <= 0 ? 0 : hi >= last ? last : hi) / kRiseBand;
     // The range's maximum from two overlapping power-of-two runs of bands (a sparse table).
     const int level = std::bit_width(static_cast<unsigned>(b_hi - b_lo + 1)) - 1;
-    const std::vector<FirstOrderRise>& runs = rise_runs_[static_cast<std::size_t>(level)];
-    const FirstOrderRise &u = runs[static_cast<std::size_t>(b_lo)], &v = runs[static_cast<std::size_t>(b_hi - (1 << level) + 1)];
+    const FirstOrderRise* runs = rise_flat_.data() + rise_level_start_[static_cast<std::size_t>(level)];
+    const FirstOrderRise &u = runs[b_lo], &v = runs[b_hi - (1 << level) + 1];
     return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth,
             u.jump > v.jump ? u.jump : v.jump, u.side > v.side ? u.side : v.side};
   }
@@ -262,9 +263,10 @@ class FlankTable {
   std::vector<int> tooth_of_row_;  // a tooth of each row
   std::vector<KnotPair> knots_;                 // [row * samples + i]
   // first_order_rise() per band of kRiseBand knot intervals (max over rows and flanks), and over
-  // runs of bands: rise_runs_[l][b] over bands b to b + 2^l − 1.
+  // runs of bands: rise_flat_[rise_level_start_[l] + b] over bands b to b + 2^l − 1.
   static constexpr int kRiseBand = 32;
-  std::vector<std::vector<FirstOrderRise>> rise_runs_;
+  std::vector<FirstOrderRise> rise_flat_;          // the runs of 2^l bands, level l after level
+  std::array<std::size_t, 32> rise_level_start_{};  // where level l starts in rise_flat_
   void build_rise_bands();
 
   double tan_half_pitch_ = 0;
