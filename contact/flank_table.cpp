@@ -71,7 +71,6 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
     }
   share_identical_teeth();
   build_extents();
-  build_hermite();
   build_probe_knots();
   probe_points_.resize(static_cast<std::size_t>(layout.teeth) * 2 * kProbeRadii);
   probe_material_.assign(static_cast<std::size_t>(layout.teeth) * 2, 0);
@@ -210,42 +209,27 @@ void FlankTable::build_extents() {
     }
 }
 
-void FlankTable::build_hermite() {
-  const std::size_t n = static_cast<std::size_t>(samples_);
-  hermite_.assign(tooth_of_row_.size() * 2 * n, {kNaN, kNaN, kNaN, kNaN});
-  for (std::size_t row = 0; row < tooth_of_row_.size(); ++row)
-    for (Flank flank : {Flank::Ccw, Flank::Cw}) {
-      const double* y = row_data(tooth_of_row_[row], flank);
-      Hermite* out = hermite_.data() + (row * 2 + (flank == Flank::Cw)) * n;
-      for (int i = 0; i + 1 < samples_; ++i) {
-        const double y0 = y[i], y1 = y[i + 1];
-        if (std::isnan(y0) || std::isnan(y1)) continue;
-        // Slopes per sample step at i and i + 1: central where both neighbours have material.
-        const double ym = i > 0 ? y[i - 1] : kNaN, yp = i + 2 < samples_ ? y[i + 2] : kNaN;
-        const double m0 = std::isnan(ym) ? y1 - y0 : 0.5 * (y1 - ym);
-        const double m1 = std::isnan(yp) ? y1 - y0 : 0.5 * (yp - y0);
-        // Power-basis coefficients of the cubic Hermite in t ∈ [0, 1]: y0 + m0·t + c2·t² + c3·t³.
-        out[i] = {y0, m0, 3 * (y1 - y0) - 2 * m0 - m1, 2 * (y0 - y1) + m0 + m1};
-      }
-    }
-}
-
 bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const {
   const double x = (r - r_min_) * inv_dr_;
   if (!(x >= 0 && x <= samples_ - 1)) return false;
   int i = std::min(static_cast<int>(x), samples_ - 2);
   double t = x - i;
-  const Hermite* row = hermite_row(tooth, flank);
-  // No cubic over [i, i + 1] at t = 0: the flank's last sample, as the end of the interval below
-  // (where that has no cubic either, there is no material at i).
-  if (std::isnan(row[i].y0) && t == 0 && i > 0) {
+  const double* row = row_data(tooth, flank);
+  double y0 = row[i], y1 = row[i + 1];
+  if (std::isnan(y1) && t == 0 && i > 0) {  // the flank's last sample: the interval below, at its end
     --i;
     t = 1;
+    y1 = y0;
+    y0 = row[i];
   }
-  const Hermite& hm = row[i];
-  if (std::isnan(hm.y0)) return false;
-  const double y0 = hm.y0, m0 = hm.m0, c2 = hm.c2, c3 = hm.c3;
-  // The cubic and its derivatives.
+  if (std::isnan(y0) || std::isnan(y1)) return false;
+  // Slopes per sample step at i and i + 1: central where both neighbours have material.
+  const double ym = i > 0 ? row[i - 1] : kNaN, yp = i + 2 < samples_ ? row[i + 2] : kNaN;
+  const double m0 = std::isnan(ym) ? y1 - y0 : 0.5 * (y1 - ym);
+  const double m1 = std::isnan(yp) ? y1 - y0 : 0.5 * (yp - y0);
+  // Cubic Hermite in t ∈ [0, 1] and its derivatives, from its power-basis coefficients
+  // y0 + m0·t + c2·t² + c3·t³.
+  const double c2 = 3 * (y1 - y0) - 2 * m0 - m1, c3 = 2 * (y0 - y1) + m0 + m1;
   const double theta = y0 + t * (m0 + t * (c2 + t * c3));
   const double dt1 = m0 + t * (2 * c2 + 3 * t * c3);
   const double dt2 = 2 * c2 + 6 * t * c3;

@@ -195,18 +195,6 @@ class FlankTable {
     return (flank == Flank::Ccw ? ccw_ : cw_).data() + static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * samples_;
   }
   void build_extents();
-  // flank_jet()'s cubic Hermite per interval [i, i + 1] of each shared row and flank, in power
-  // basis: θ = y0 + t·(m0 + t·(c2 + t·c3)) (NaN y0: no material at one end). Built once from the
-  // samples with flank_jet()'s own arithmetic (the slopes central where both neighbours have
-  // material), so the same cubic bit for bit.
-  struct Hermite {
-    double y0, m0, c2, c3;
-  };
-  const Hermite* hermite_row(int tooth, Flank flank) const {
-    return hermite_.data() + (static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)) * samples_;
-  }
-  void build_hermite();
-  std::vector<Hermite> hermite_;  // [(row * 2 + (flank == Cw)) * samples + i], i < samples − 1
   std::vector<std::pair<double, double>> extents_;  // [row * 2 + (flank == Cw)]: flank_extent()
   void share_identical_teeth();
   void build_probe_knots();
