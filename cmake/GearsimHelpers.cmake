@@ -27,6 +27,17 @@ function(gearsim_target_defaults target)
     # The same results bit for bit (golden hashes); the paper run's step 0.9 % fewer instructions.
     target_compile_options(${target} PRIVATE -fno-semantic-interposition)
   endif()
+  if(GEARSIM_PGO STREQUAL "generate")
+    # One thread writes the counters (a run steps on one): no atomic updates needed.
+    target_compile_options(${target} PRIVATE -fprofile-generate -fprofile-update=single -fprofile-dir=${GEARSIM_PGO_DIR})
+  elseif(GEARSIM_PGO STREQUAL "use")
+    # Code the training runs never reached is optimised as without a profile
+    # (-fprofile-partial-training), and so is a function whose source changed since the profile
+    # was made (-Wno-coverage-mismatch: GCC then leaves its profile out). The optimisation moves
+    # code, not arithmetic: the same results bit for bit (the golden-hash tests).
+    target_compile_options(${target} PRIVATE -fprofile-use -fprofile-partial-training -fprofile-dir=${GEARSIM_PGO_DIR}
+                                             -Wno-missing-profile -Wno-coverage-mismatch)
+  endif()
   if(GEARSIM_UNITY AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     # A unity batch #includes the sources, so GCC no longer sees an Impl's anonymous-namespace
     # members as belonging to the main file and warns; the warning is only about that inclusion.
