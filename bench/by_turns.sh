@@ -9,11 +9,12 @@
 # Usage: bench/by_turns.sh ROUNDS SECONDS BIN_A BIN_B [BIN_C …] [-- bench_dynamics arguments]
 #   e.g. bench/by_turns.sh 10 0.2 /tmp/old/bench_dynamics build/bin/bench_dynamics -- \
 #          assets/scenarios/paper_dynamics_healthy.yaml --set solver.time_step_s=1e-5
-# The scenario defaults to assets/scenarios/paper_dynamics_healthy.yaml at dt = 1e-5 s.
+# Without arguments after --: assets/scenarios/paper_dynamics_healthy.yaml at dt = 1e-5 s; arguments
+# without a scenario first run that scenario at the dt they set (its own without one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ $# -lt 4 ]; then
-  sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//' >&2
+if [ $# -lt 3 ]; then
+  sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//' >&2
   exit 2
 fi
 rounds=$1 seconds=$2
@@ -23,11 +24,11 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do bins+=("$1"); shift; done
 [ $# -gt 0 ] && shift
 extra=("$@")
 scenario=assets/scenarios/paper_dynamics_healthy.yaml
-if [ ${#extra[@]} -gt 0 ] && [ "${extra[0]#-}" = "${extra[0]}" ]; then
+if [ ${#extra[@]} -eq 0 ]; then
+  extra=(--set solver.time_step_s=1e-5)
+elif [ "${extra[0]#-}" = "${extra[0]}" ]; then
   scenario=${extra[0]}
   extra=("${extra[@]:1}")
-else
-  extra=(--set solver.time_step_s=1e-5 "${extra[@]}")
 fi
 case $rounds in '' | *[!0-9]*) echo "by_turns: ROUNDS must be a whole number, got '$rounds'" >&2; exit 2 ;; esac
 for b in "${bins[@]}"; do
