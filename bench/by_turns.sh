@@ -35,12 +35,18 @@ for b in "${bins[@]}"; do
   [ -x "$b" ] || { echo "by_turns: not an executable: $b" >&2; exit 2; }
 done
 
+# Least, median and largest of the numbers on standard input, one a line.
+spread() {
+  sort -g | awk '{a[NR] = $1} END {printf "%.3f %.3f %.3f\n", a[1], (NR % 2 ? a[(NR + 1) / 2] : 0.5 * (a[NR / 2] + a[NR / 2 + 1])), a[NR]}'
+}
+
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 for ((i = 1; i <= rounds; ++i)); do
   line=""
   for b in "${bins[@]}"; do
-    v=$("$b" "$scenario" "$seconds" "${extra[@]}" | awk '/^stepping, CPU time/ {print $7}')
+    v=$("$b" "$scenario" "$seconds" "${extra[@]}" | awk '/^stepping, CPU time/ {print $7}') ||
+      { echo "by_turns: $b failed (exit code ${PIPESTATUS[0]:-?}): its run did not complete" >&2; exit 1; }
     [ -n "$v" ] || { echo "by_turns: $b printed no 'stepping, CPU time' line" >&2; exit 1; }
     line="$line $v"
   done
@@ -48,10 +54,12 @@ for ((i = 1; i <= rounds; ++i)); do
 done
 echo "by turns: $rounds rounds of $scenario, $seconds s simulated, ${extra[*]}; CPU s per simulated second"
 for ((c = 1; c <= ${#bins[@]}; ++c)); do
-  stats=$(awk -v c="$c" '{print $c}' "$out" | sort -g | awk '{a[NR] = $1} END {printf "least %.3f  median %.3f  largest %.3f", a[1], (NR % 2 ? a[(NR + 1) / 2] : 0.5 * (a[NR / 2] + a[NR / 2 + 1])), a[NR]}')
+  read -r least median largest < <(awk -v c="$c" '{print $c}' "$out" | spread)
+  stats="least $least  median $median  largest $largest"
   ratio=""
   if [ "$c" -gt 1 ]; then
-    ratio=$(awk -v c="$c" '{print $c / $1}' "$out" | sort -g | awk '{a[NR] = $1} END {printf "; median ratio to the first %.3f (%.3f to %.3f)", (NR % 2 ? a[(NR + 1) / 2] : 0.5 * (a[NR / 2] + a[NR / 2 + 1])), a[1], a[NR]}')
+    read -r least median largest < <(awk -v c="$c" '{print $c / $1}' "$out" | spread)
+    ratio="; median ratio to the first $median ($least to $largest)"
   fi
   echo "  ${bins[$((c - 1))]}: $stats$ratio"
 done

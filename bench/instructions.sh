@@ -6,7 +6,8 @@
 # Usage: bench/instructions.sh [BIN=build/bin/bench_dynamics] [SECONDS=0.05] [bench_dynamics arguments…]
 #   e.g. bench/instructions.sh build/bin/bench_dynamics 0.05 assets/scenarios/paper_dynamics_healthy.yaml \
 #          --set solver.time_step_s=1e-5
-# The scenario defaults to assets/scenarios/paper_dynamics_healthy.yaml at dt = 1e-5 s. With
+# Without arguments: assets/scenarios/paper_dynamics_healthy.yaml at dt = 1e-5 s; arguments without
+# a scenario first run that scenario at the dt they set (its own without one). With
 # GEARSIM_CALLGRIND_OUT=FILE the callgrind profile is kept there (callgrind_annotate reads it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,14 +18,20 @@ seconds=${2:-0.05}
 [ $# -gt 0 ] && shift
 [ -x "$bin" ] || { echo "instructions: not an executable: $bin" >&2; exit 2; }
 args=("$@")
-if [ ${#args[@]} -eq 0 ] || [ "${args[0]#-}" != "${args[0]}" ]; then
-  args=(assets/scenarios/paper_dynamics_healthy.yaml --set solver.time_step_s=1e-5 "${args[@]}")
+if [ ${#args[@]} -eq 0 ]; then
+  args=(assets/scenarios/paper_dynamics_healthy.yaml --set solver.time_step_s=1e-5)
+elif [ "${args[0]#-}" != "${args[0]}" ]; then
+  args=(assets/scenarios/paper_dynamics_healthy.yaml "${args[@]}")
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 profile=${GEARSIM_CALLGRIND_OUT:-$work/callgrind.out}
-valgrind --tool=callgrind --callgrind-out-file="$profile" --toggle-collect='gearsim::physics::World::step*' \
-  "$bin" "${args[0]}" "$seconds" "${args[@]:1}" >"$work/bench.txt" 2>"$work/valgrind.txt"
+if ! valgrind --tool=callgrind --callgrind-out-file="$profile" --toggle-collect='gearsim::physics::World::step*' \
+  "$bin" "${args[0]}" "$seconds" "${args[@]:1}" >"$work/bench.txt" 2>"$work/valgrind.txt"; then
+  echo "instructions: the run under callgrind failed:" >&2
+  grep -v '^==' "$work/valgrind.txt" >&2 || true
+  exit 1
+fi
 steps=$(awk '/^scenario / {for (i = 1; i <= NF; ++i) if ($i == "steps") print $(i - 1)}' "$work/bench.txt")
 collected=$(awk '/Collected :/ {print $NF}' "$work/valgrind.txt")
 [ -n "$steps" ] && [ -n "$collected" ] || { echo "instructions: no step count or no collected total" >&2; cat "$work/valgrind.txt" >&2; exit 1; }
