@@ -116,8 +116,10 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
 
 std::string blame_override(const std::string& message, const std::vector<std::string>& overrides) {
   // The longest override path (or a prefix of one, e.g. the body an override changed) that the
-  // message names as its key path.
-  for (const std::string& text : overrides) {
+  // message names as its key path; of overrides setting the same key, the last, whose value
+  // stands (apply_overrides() applies them in order).
+  for (auto it = overrides.rbegin(); it != overrides.rend(); ++it) {
+    const std::string& text = *it;
     std::string p = path_of(text);
     while (!p.empty()) {
       if (message.find(" " + p + ":") != std::string::npos) return message + " (set by --set '" + text + "')";

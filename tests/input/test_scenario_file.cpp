@@ -337,6 +337,14 @@ TEST(ScenarioOverrides, SetOfAWrongValueNamesTheOverride) {
   EXPECT_NE(e.find("--set 'duration_s=long'"), std::string::npos) << e;
 }
 
+TEST(ScenarioOverrides, AKeySetTwiceNamesTheOverrideWhoseValueStands) {
+  // The later --set replaces the earlier: a wrong value there is the later one's.
+  const std::string e = override_error({"duration_s=0.1", "duration_s=long"});
+  EXPECT_NE(e.find("duration_s: expected a number, got 'long'"), std::string::npos) << e;
+  EXPECT_NE(e.find("--set 'duration_s=long'"), std::string::npos) << e;
+  EXPECT_EQ(e.find("--set 'duration_s=0.1'"), std::string::npos) << e;
+}
+
 TEST(ScenarioOverrides, MalformedOverrideIsAnErrorQuotingIt) {
   EXPECT_NE(override_error({"duration_s"}).find("--set 'duration_s': expected key.path=value"), std::string::npos);
   EXPECT_NE(override_error({"motors[x].joint=sun"}).find("--set 'motors[x].joint=sun'"), std::string::npos);
