@@ -159,29 +159,61 @@ TEST(DecimatorExactness, StraightLinePassesAwayFromTheEnds) {
 }
 
 TEST(DecimatorStream, MatchesTheWholeRecordForEveryChannel) {
-  // One kernel, the same values in the same order: the same bits.
-  const DecimationFilter& f = paper_filter();
-  const std::size_t n = 12345;  // not a multiple of R: the end falls between outputs
-  const double t0 = 1.5;
-  std::array<std::vector<double>, 3> columns = {test::tone(n, kStepRate, 640.0, 1.0),
-                                                test::white_noise(n, 0.5, 7), std::vector<double>(n)};
-  test::add(columns[0], test::tone(n, kStepRate, 7680.0, 0.3, 1.0));
-  for (std::size_t k = 0; k < n; ++k) columns[2][k] = 100.0 + static_cast<double>(k);
-  Decimator d(f, 3, t0);
-  std::vector<DecimatedRow> streamed;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::array<double, 3> row = {columns[0][k], columns[1][k], columns[2][k]};
-    if (auto out = d.push(row)) streamed.push_back(std::move(*out));
-  }
-  for (DecimatedRow& out : d.finish()) streamed.push_back(std::move(out));
-  for (std::size_t c = 0; c < 3; ++c) {
-    SCOPED_TRACE(c);
-    const UniformSignal whole = decimate(columns[c], f, t0);
-    ASSERT_EQ(streamed.size(), whole.values.size());
-    for (std::size_t j = 0; j < whole.values.size(); ++j) {
-      EXPECT_EQ(streamed[j].values[c], whole.values[j]);
-      EXPECT_EQ(streamed[j].time_s, t0 + static_cast<double>(j) / kOutputRate);
+  // One kernel, the same values in the same order: the same bits — for records shorter
+  // than the filter (every output edge-held, all returned by finish()), one output long, and long;
+  // at the paper's ratio and at 1e-5 s steps (R = 50, L = 8 017).
+  const DecimationFilter fine = design_decimation_filter(2.0 * kStepRate, kOutputRate, {960.0, 100.0});
+  for (const DecimationFilter* f : {&paper_filter(), &fine}) {
+    const std::size_t ratio = static_cast<std::size_t>(f->ratio);
+    for (const std::size_t n : {std::size_t{1}, ratio + 1, f->group_delay_samples, f->length() + 3,
+                                std::size_t{12345}}) {  // 12345: not a multiple of R, the end falls between outputs
+      SCOPED_TRACE(testing::Message() << "R " << ratio << ", n " << n);
+      const double t0 = 1.5;
+      const double rate = f->input_rate_hz;
+      std::array<std::vector<double>, 3> columns = {test::tone(n, rate, 640.0, 1.0), test::white_noise(n, 0.5, 7),
+                                                    std::vector<double>(n)};
+      test::add(columns[0], test::tone(n, rate, 7680.0, 0.3, 1.0));
+      for (std::size_t k = 0; k < n; ++k) columns[2][k] = 100.0 + static_cast<double>(k);
+      Decimator d(*f, 3, t0);
+      std::vector<DecimatedRow> streamed;
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::array<double, 3> row = {columns[0][k], columns[1][k], columns[2][k]};
+        if (auto out = d.push(row)) streamed.push_back(std::move(*out));
+      }
+      for (DecimatedRow& out : d.finish()) streamed.push_back(std::move(out));
+      for (std::size_t c = 0; c < 3; ++c) {
+        SCOPED_TRACE(c);
+        const UniformSignal whole = decimate(columns[c], *f, t0);
+        ASSERT_EQ(streamed.size(), whole.values.size());
+        for (std::size_t j = 0; j < whole.values.size(); ++j) {
+          EXPECT_EQ(streamed[j].values[c], whole.values[j]);
+          EXPECT_EQ(streamed[j].time_s, t0 + static_cast<double>(j) / kOutputRate);
+        }
+      }
     }
+  }
+}
+
+TEST(DecimatorStream, EachOutputIsTheFilterCentredOnItsInput) {
+  // Against the definition, summed apart in long double: y_j = Σ_n h_n·x(jR + n − M), x held at
+  // its first value before the record and its last after (white noise, 3 000 samples at R = 25).
+  const DecimationFilter& f = paper_filter();
+  const std::size_t n = 3000, m = f.group_delay_samples;
+  const std::vector<double> x = test::white_noise(n, 1.0, 11);
+  Decimator d(f, 1);
+  std::vector<double> y;
+  for (const double v : x)
+    if (auto out = d.push(std::span<const double>(&v, 1))) y.push_back(out->values[0]);
+  for (const DecimatedRow& out : d.finish()) y.push_back(out.values[0]);
+  ASSERT_EQ(y.size(), (n - 1) / 25 + 1);
+  for (std::size_t j = 0; j < y.size(); ++j) {
+    long double sum = 0;
+    for (std::size_t t = 0; t < f.length(); ++t) {
+      const long double at = static_cast<long double>(j * 25 + t) - static_cast<long double>(m);
+      const std::size_t k = at < 0 ? 0 : std::min(static_cast<std::size_t>(at), n - 1);
+      sum += static_cast<long double>(f.taps[t]) * x[k];
+    }
+    EXPECT_NEAR(y[j], static_cast<double>(sum), 1e-13) << "output " << j;
   }
 }
 
