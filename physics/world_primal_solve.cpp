@@ -49,11 +49,13 @@ void World::Impl::planar_soft_rows_n() {
   {
     const double* l = e.chol.data();
     std::vector<double>& col = e.g_lambda;  // scratch: column c of L⁻¹
+    // Column c of L⁻¹ is zero above its diagonal (L lower triangular): only rows i ≥ c are
+    // formed and summed (the zeros added nothing to the trace).
     for (std::size_t c = 0; c < ud; ++c) {
-      for (std::size_t i = 0; i < ud; ++i) {
+      for (std::size_t i = c; i < ud; ++i) {
         double v = i == c ? 1.0 : 0.0;
         for (std::size_t k = c; k < i; ++k) v -= l[i * ud + k] * col[k];
-        col[i] = i < c ? 0.0 : v * e.chol_inv_diag[i];
+        col[i] = v * e.chol_inv_diag[i];
         trace_minv += col[i] * col[i];
       }
     }
