@@ -58,8 +58,8 @@ class Decimator {
   std::size_t channels_;
   double start_time_s_;
   std::size_t length_;  // L
-  // Per channel 2·L values, each row written at p and p + L: the last L rows are always
-  // contiguous, starting at (appended_ mod L).
+  // 2·L rows of `channels` values (a row's channels side by side), each row written at rows p
+  // and p + L: the last L rows are always contiguous, starting at row (appended_ mod L).
   std::vector<double> ring_;
   // Rows in the ring's stream: group_delay_samples copies of the first row, the inputs, then (at
   // finish) copies of the last row. Output j is centred on stream row j·R + group_delay_samples.

@@ -194,6 +194,32 @@ TEST(DecimatorStream, MatchesTheWholeRecordForEveryChannel) {
   }
 }
 
+TEST(DecimatorStream, ManyChannelsAreEachTheirOwnWholeRecord) {
+  // The outputs are summed for up to 8 channels side by side: 11 channels (one block of 8, one of
+  // 3), each a different signal, and each the whole-record answer bit for bit.
+  const DecimationFilter& f = paper_filter();
+  const std::size_t n = 6000, channels = 11;
+  std::vector<std::vector<double>> columns;
+  for (std::size_t c = 0; c < channels; ++c) {
+    columns.push_back(test::white_noise(n, 1.0 + static_cast<double>(c), 100 + c));
+    test::add(columns.back(), test::tone(n, kStepRate, 320.0 * static_cast<double>(c + 1), 2.0));
+  }
+  Decimator d(f, channels);
+  std::vector<DecimatedRow> streamed;
+  std::vector<double> row(channels);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t c = 0; c < channels; ++c) row[c] = columns[c][k];
+    if (auto out = d.push(row)) streamed.push_back(std::move(*out));
+  }
+  for (DecimatedRow& out : d.finish()) streamed.push_back(std::move(out));
+  for (std::size_t c = 0; c < channels; ++c) {
+    SCOPED_TRACE(c);
+    const UniformSignal whole = decimate(columns[c], f);
+    ASSERT_EQ(streamed.size(), whole.values.size());
+    for (std::size_t j = 0; j < whole.values.size(); ++j) EXPECT_EQ(streamed[j].values[c], whole.values[j]);
+  }
+}
+
 TEST(DecimatorStream, EachOutputIsTheFilterCentredOnItsInput) {
   // Against the definition, summed apart in long double: y_j = Σ_n h_n·x(jR + n − M), x held at
   // its first value before the record and its last after (white noise, 3 000 samples at R = 25).
