@@ -12,20 +12,13 @@
 namespace gearsim {
 namespace {
 
-// The filter centred on window[m_half]: window holds 2·m_half + 1 consecutive samples. Summed in
-// mirrored pairs (half the multiplies; a straight line passes exactly, its pairs sum to twice the
-// centre). The one kernel for streaming and whole records, so both give the same bits.
-double decimation_centred_output(const std::vector<double>& taps, const double* window, std::size_t m_half) {
-  double y = taps[m_half] * window[m_half];
-  for (std::size_t m = 0; m < m_half; ++m) y += taps[m] * (window[m] + window[2 * m_half - m]);
-  return y;
-}
-
-// The same for several channels whose samples lie interleaved (sample i of channel c at
-// window[i·stride + c], c < count ≤ kChannelBlock), into y[c]: each channel's sum in the same
-// order as decimation_centred_output(), so the same bits, but the channels' sums side by side —
-// independent chains of additions instead of one chain L/2 additions long whose latency set the
-// time.
+// The filter centred on the middle of a window of 2·m_half + 1 consecutive samples, for `count`
+// (≤ kChannelBlock) channels whose samples lie interleaved (sample i of channel c at
+// window[i·stride + c]), into y[c]. Summed in mirrored pairs (half the multiplies; a straight line
+// passes exactly, its pairs sum to twice the centre), each channel in the same order, the
+// channels side by side: independent chains of additions instead of one chain m_half long whose
+// latency set the time. The one kernel for streaming (a ring of rows) and whole records (one
+// channel, stride 1), so both give the same bits.
 constexpr std::size_t kChannelBlock = 8;
 void decimation_centred_outputs(const std::vector<double>& taps, const double* window, std::size_t stride,
                                 std::size_t count, std::size_t m_half, double* y) {
@@ -137,7 +130,7 @@ UniformSignal decimate(const std::vector<double>& x, const DecimationFilter& fil
   y.sample_rate_hz = filter.output_rate_hz;
   y.values.resize((x.size() - 1) / ratio + 1);  // every j with j·R ≤ the last sample
   for (std::size_t j = 0; j < y.values.size(); ++j)
-    y.values[j] = decimation_centred_output(filter.taps, held.data() + j * ratio, m_half);
+    decimation_centred_outputs(filter.taps, held.data() + j * ratio, 1, 1, m_half, &y.values[j]);
   return y;
 }
 

@@ -224,19 +224,20 @@ TEST(DecimatorStream, EachOutputIsTheFilterCentredOnItsInput) {
   // Against the definition, summed apart in long double: y_j = Σ_n h_n·x(jR + n − M), x held at
   // its first value before the record and its last after (white noise, 3 000 samples at R = 25).
   const DecimationFilter& f = paper_filter();
-  const std::size_t n = 3000, m = f.group_delay_samples;
+  const std::size_t n = 3000;
+  const auto m = static_cast<long long>(f.group_delay_samples), ratio = static_cast<long long>(f.ratio);
   const std::vector<double> x = test::white_noise(n, 1.0, 11);
   Decimator d(f, 1);
   std::vector<double> y;
   for (const double v : x)
     if (auto out = d.push(std::span<const double>(&v, 1))) y.push_back(out->values[0]);
   for (const DecimatedRow& out : d.finish()) y.push_back(out.values[0]);
-  ASSERT_EQ(y.size(), (n - 1) / 25 + 1);
+  ASSERT_EQ(y.size(), (n - 1) / static_cast<std::size_t>(ratio) + 1);
   for (std::size_t j = 0; j < y.size(); ++j) {
     long double sum = 0;
     for (std::size_t t = 0; t < f.length(); ++t) {
-      const long double at = static_cast<long double>(j * 25 + t) - static_cast<long double>(m);
-      const std::size_t k = at < 0 ? 0 : std::min(static_cast<std::size_t>(at), n - 1);
+      const long long at = static_cast<long long>(j) * ratio + static_cast<long long>(t) - m;
+      const std::size_t k = static_cast<std::size_t>(std::clamp(at, 0LL, static_cast<long long>(n) - 1));
       sum += static_cast<long double>(f.taps[t]) * x[k];
     }
     EXPECT_NEAR(y[j], static_cast<double>(sum), 1e-13) << "output " << j;
