@@ -6,6 +6,7 @@
 #include "contact/contact_list_impl.hpp"
 #include "contact/flank_search_impl.hpp"
 #include "contact/continuation_impl.hpp"
+#include "contact/near_bound_impl.hpp"
 
 namespace gearsim::contact {
 namespace {
@@ -343,7 +344,7 @@ void CoherentToothSearch::reset() {
 }
 
 void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
-                               std::vector<ToothContact>& best, std::vector<ToothContact>* near) {
+                               std::vector<ToothContact>& best, std::vector<ToothContact>* near, const Motion* motion) {
   if (tables_[0] != &ta || tables_[1] != &tb) {
     tables_[0] = &ta, tables_[1] = &tb;
     records_[0].assign(static_cast<std::size_t>(ta.teeth()) * 2, FlankRecord{});
@@ -353,6 +354,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
     tracks_.assign(records_[0].size(), TrackedFlank{});
     solutions_[0].assign(records_[0].size(), Solution{});
     solutions_[1].assign(records_[1].size(), Solution{});
+    bounds_[0].assign(records_[0].size(), NearBound{});
+    bounds_[1].assign(records_[1].size(), NearBound{});
     travels_[0].resize(records_[0].size());
     travels_[1].resize(records_[1].size());
   }
@@ -360,6 +363,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
   const Frame a{ta, pa}, b{tb, pb};
   best.clear();
   if (near) near->clear();
+  parked_.clear();
   // As find_tooth_contacts(), flank by flank, but a flank whose record still holds is skipped or
   // probed only where it can hold its deepest sample. The centres' distance and direction once
   // for both passes' tooth windows.
@@ -391,6 +395,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         const std::size_t at = static_cast<std::size_t>(k) * 2 + (f == Flank::Cw);
         FlankRecord& rec = records[at];
         Solution& sol = solutions_[pass][at];
+        NearBound& bound = bounds_[pass][at];  // meaningful only with sol
         // A flank with last call's solution to continue, or without. A solution clears the
         // flank's record (it is searched in full when the continuation ends), so a flank whose
         // record says it is clear has none — except with `deeper`, where a faceted flank can
@@ -422,13 +427,40 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
           const double spacing = xy.spacing_m;
           double lo, hi;
           x.table.flank_extent(k, f, &lo, &hi);
-          if (first.call == calls_ && first.solved == Hit::kInterior && first.tooth_y == k && first.flank_y == f &&
+          if (first.call == calls_ && !first.parked && first.solved == Hit::kInterior && first.tooth_y == k && first.flank_y == f &&
               std::abs(first.s_y - (x.table.internal() ? lo : hi)) <= 1.5 * spacing &&
               spacing <= y.table.probe_radius(1) - y.table.probe_radius(0)) {
             ++counts_.shared;
             sol = {static_cast<signed char>(Hit::kInterior), sol.tooth_y, sol.flank_y, first.s_y, first.r_x, calls_, sol.r_x, sol.s_y,
-                   sol.r_prev, sol.s_prev, std::min(sol.history + 1, 2), sol.face};
+                   sol.r_prev, sol.s_prev, sol.parked ? 0 : std::min(sol.history + 1, 2), sol.face, false};
+            if (park_) bound = swapped(bounds_[0][static_cast<std::size_t>(sol.tooth_y) * 2 + (sol.flank_y == Flank::Cw)]);
             rec.travel_m = -1;  // searched in full when the continuation ends
+            rec.tracked = false;
+            continue;
+          }
+        }
+        // A near pair whose bound still proves it apart (and, where the near list is asked for,
+        // unable to close within two steps at the present velocities) is not solved: no contact
+        // and no near pair, as the stateless search would find (near_bound_impl.hpp). Its
+        // continuation goes on from its last solve's radii. Only while it is still the flank y's
+        // point faces (still_faces(), as a continued solution must).
+        if (live && park_ && continuation_ == Continuation::replace && bound.valid && (!near || motion)) {
+          const PlanarTwist* vx = motion ? (pass == 0 ? &motion->a : &motion->b) : nullptr;
+          const PlanarTwist* vy = motion ? (pass == 0 ? &motion->b : &motion->a) : nullptr;
+          double closing = 0;
+          const double gap_bound = near_bound(xy, k, f, bound, sol.tooth_y, sol.flank_y, tip_only, vx, vy, &closing);
+          if (gap_bound > 0 && gap_bound < xy.window_m && (!near || gap_bound > 2 * motion->step_s * std::max(0.0, closing)) &&
+              still_faces(y.table, y.to_local(x.to_world(bound.point_x)), sol.tooth_y, sol.flank_y, sol.face)) {
+            ++counts_.parked;
+            if (record_parked_) {
+              // As keep_contact() keys a pair: a's tooth and flank, b's tooth.
+              const ParkedPair pp = pass == 0 ? ParkedPair{k, sol.tooth_y, f, gap_bound, closing} : ParkedPair{sol.tooth_y, k, sol.flank_y, gap_bound, closing};
+              parked_.push_back(pp);
+            }
+            sol.call = calls_;  // still live next call
+            sol.history = 0;    // solved again from the last solve's radii
+            sol.parked = true;
+            rec.travel_m = -1;
             rec.tracked = false;
             continue;
           }
@@ -452,11 +484,17 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
             ++counts_.continued;
             counts_.crossings += h.solved == Hit::kCrossing;
             // The same maximum continued: its history predicts the next start.
-            const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y;
+            const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y && !sol.parked;
             sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls_, sol.r_x, sol.s_y,
                    sol.r_prev, sol.s_prev, same ? std::min(sol.history + 1, continuation_ == Continuation::replace ? 2 : 1) : 0,
-                   face};
+                   face, false};
             if (continuation_ == Continuation::replace) {
+              if (!park_) {
+              } else if (h.depth < 0) {
+                bound = near_snapshot(xy, k, f, h);
+              } else {
+                bound.valid = false;
+              }
               rec.travel_m = -1;  // searched in full when the continuation ends
               rec.tracked = false;
               emit(h);
@@ -478,8 +516,16 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         // (samples_see_crossing() reproduces probe_flank()'s view, not probe_tip()'s).
         if (continuation_ != Continuation::off && sampled.solved != Hit::kSampled &&
             (sampled.solved != Hit::kCrossing || (continuation_ == Continuation::replace && pass == 0)))
+        {
           sol = {static_cast<signed char>(sampled.solved), sampled.tooth_y, sampled.flank_y, sampled.r_x, sampled.s_y, calls_, 0, 0, 0, 0, 0,
-                 FaceReference{}};
+                 FaceReference{}, false};
+          if (!park_ || continuation_ != Continuation::replace) {
+          } else if (sampled.depth < 0) {
+            bound = near_snapshot(xy, k, f, sampled);
+          } else {
+            bound.valid = false;
+          }
+        }
         else sol = Solution{};
         emit(sampled);
       }

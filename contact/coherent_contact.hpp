@@ -22,8 +22,25 @@ class CoherentToothSearch {
   // The contacts find_tooth_contacts(a, pa, b, pb, out) returns, into `out` (cleared first). The
   // tables must outlive the object; other tables than the last call's start it afresh.
   // With `near`: the near pairs find_tooth_contacts() gives there.
+  //
+  // Near pairs (Continuation::replace, set_park_near_pairs()): a continued solution that left
+  // the two flanks apart (a gap) is not solved again while a bound proves them still apart — it
+  // is "parked": no contact, and no entry in `near`. The bound (coherent_contact.cpp,
+  // near_bound(); docs/tooth-contact.md, "Near pairs: the osculating-circle bound") holds for
+  // any motion of the poses. With `near` a pair is parked only when `motion` is given too, and
+  // only while it also cannot close within two steps at the present velocities: the near list
+  // is what predicts a contact's onset (World's contact_onset_s()), and a parked pair is one it
+  // would not have split a step for.
+  struct PlanarTwist {
+    Eigen::Vector2d velocity_m_s = Eigen::Vector2d::Zero();  // the gear centre's (PlanarPose::centre_m), world
+    double angular_velocity_rad_s = 0;
+  };
+  struct Motion {
+    PlanarTwist a, b;
+    double step_s = 0;  // the time step the poses advance by
+  };
   void find(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb,
-            std::vector<ToothContact>& out, std::vector<ToothContact>* near = nullptr);
+            std::vector<ToothContact>& out, std::vector<ToothContact>* near = nullptr, const Motion* motion = nullptr);
   // Forget every measurement: the next call searches every flank.
   void reset();
 
@@ -43,6 +60,18 @@ class CoherentToothSearch {
   enum class Continuation { off, replace, deeper };
   void set_continuation(Continuation c) { continuation_ = c; }
   void set_continuation(bool on) { continuation_ = on ? Continuation::replace : Continuation::off; }
+  // Near pairs parked under their bound (on by default; only with Continuation::replace).
+  void set_park_near_pairs(bool on) { park_ = on; }
+  // The last call's parked pairs with their bounds, kept only when asked for (a record for
+  // checking the bound: tests/contact/test_near_bound.cpp).
+  struct ParkedPair {
+    int tooth_a = -1, tooth_b = -1;
+    Flank flank_a = Flank::Ccw;
+    double bound_m = 0;      // ≤ the pair's gap
+    double closing_m_s = 0;  // the circles' rate of approach (with `motion`)
+  };
+  void record_parked(bool on) { record_parked_ = on; }
+  const std::vector<ParkedPair>& parked() const { return parked_; }
 
   // Flanks searched in full, tracked (only the samples that can hold the deepest probed),
   // skipped and continued since construction (both probing passes).
@@ -53,8 +82,9 @@ class CoherentToothSearch {
   // solved again (Continuation::replace only; find()).
   // Crossings: continued flanks whose maximum is where they cross the other gear's tip circle
   // (the depth still rising toward it), solved there again (part of `continued`).
+  // Parked: near pairs left unsolved under their bound (find()).
   struct Counts {
-    long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0, shared = 0, crossings = 0;
+    long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0, shared = 0, crossings = 0, parked = 0;
   };
   const Counts& counts() const { return counts_; }
 
@@ -94,6 +124,26 @@ class CoherentToothSearch {
     std::array<double, n> free_m;                                  // kFree: distance to the teeth's circle
   };
 
+  // A near pair as its last solve left it (x: the flank searched, y: the other gear; each in its
+  // own gear's frame), what near_bound() bounds its gap from: both flanks replaced by their
+  // osculating circles there — centres of curvature fixed in each gear —, whose distance is
+  // exact for any motion, less how far each flank can depart from its circle over the slide of
+  // its closest point. x's point may be the corner at its flank's end (rho_x = 0).
+  struct NearBound {
+    bool valid = false;
+    double gap_m = 0;
+    Eigen::Vector2d centre_x = Eigen::Vector2d::Zero(), centre_y = Eigen::Vector2d::Zero();  // m
+    double rho_x = 0, rho_y = 0;  // signed radii of curvature, m (> 0 convex)
+    double c_x = 0, c_y = 0;      // the convexities 1/rho, 1/m (0 at a corner)
+    double dist0_m = 0;           // the centres' distance then
+    double side = 1;              // +1: convex against convex (gap = dist − rho_x − rho_y); −1: one concave
+    Eigen::Vector2d n_x = Eigen::Vector2d::Zero(), n_y = Eigen::Vector2d::Zero();  // the normal from y toward x
+    Eigen::Vector2d point_x = Eigen::Vector2d::Zero(), point_y = Eigen::Vector2d::Zero();  // the two closest points
+    Eigen::Vector2d into_flank_x = Eigen::Vector2d::Zero();  // a corner: unit tangent from it into its flank
+    double r_x = 0, s_y = 0;  // their radii on x's and y's flank
+    bool corner = false;
+  };
+
   // Where a continued point last had its facing flank measured (FlankTable::face(), the other
   // gear's frame; its radius) and the margin found there (−1: none): later points within the
   // margin's reach skip the measurement (continuation_impl.hpp, continued_hit()).
@@ -122,9 +172,16 @@ class CoherentToothSearch {
     double r_prev = 0, s_prev = 0, r_prev2 = 0, s_prev2 = 0;
     int history = 0;
     FaceReference face;
+    bool parked = false;  // left unsolved by the call `call` (its radii are older)
   };
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
+  // Per pass, indexed as records_: a near pair's last solve, for parking it (valid where the
+  // flank's solution is one; apart from Solution, whose copies it would lengthen).
+  std::vector<NearBound> bounds_[2];
   Continuation continuation_ = Continuation::off;
+  bool park_ = true;
+  bool record_parked_ = false;
+  std::vector<ParkedPair> parked_;
   long calls_ = 0;
   Counts counts_;
 };

@@ -22,7 +22,7 @@ using FaceReference = CoherentToothSearch::FaceReference;
 // L·|P − face.point| (L: first_order_rise().side over the radii the segment between them can
 // reach), so the choice stands while twice that stays below the margin. Else P is measured and
 // the reference moves to it. False: P faces another flank or none.
-bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, FaceReference& face) {
+[[gnu::always_inline]] inline bool still_faces(const FlankTable& yt, const Vector2d& P, int j, Flank g, FaceReference& face) {
   const double r1 = P.norm();
   if (face.margin_m > 0) {
     const double delta = (P - face.point).norm(), r0 = face.radius_m;

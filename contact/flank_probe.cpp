@@ -36,6 +36,7 @@ void FlankTable::build_probe_knots() {
   pitch_axis_ = {std::cos(pitch_), std::sin(pitch_)};
   tan_half_pitch_ = std::tan(0.5 * pitch_);
   build_rise_bands();
+  build_convexity_bands();
 }
 
 void FlankTable::build_rise_bands() {

@@ -151,7 +151,7 @@ double FlankTable::flank_slope(int tooth, Flank flank, double r) const {
 }
 
 // Inline: every call is in this file (flank_jet() makes most of them, ≈ 75 per paper step).
-inline Eigen::Vector2d FlankTable::direction(int tooth, double rel) const {
+[[gnu::always_inline]] inline Eigen::Vector2d FlankTable::direction(int tooth, double rel) const {
   // cos and sin of the small angle rel (|rel| < half a pitch) by their Taylor series, which at
   // |rel| ≤ 0.25 rad end below 1e-16 (the next terms: 0.25^13/13! = 2.4e-18, 0.25^14/14! = 4e-20);
   // then turned by the tooth's centre-line direction. The same unit vector as the sincos of the
@@ -209,37 +209,98 @@ void FlankTable::build_extents() {
     }
 }
 
-bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const {
-  const double x = (r - r_min_) * inv_dr_;
-  if (!(x >= 0 && x <= samples_ - 1)) return false;
-  int i = std::min(static_cast<int>(x), samples_ - 2);
-  double t = x - i;
-  const double* row = row_data(tooth, flank);
-  double y0 = row[i], y1 = row[i + 1];
-  if (std::isnan(y1) && t == 0 && i > 0) {  // the flank's last sample: the interval below, at its end
-    --i;
-    t = 1;
-    y1 = y0;
-    y0 = row[i];
-  }
+namespace {
+// The cubic Hermite of sample interval i of a flank's row at t ∈ [0, 1] (flank_jet()): θ and
+// its first two derivatives in r. False where either end lacks material.
+[[gnu::always_inline]] inline bool hermite(const double* row, int samples, int i, double t, double inv_dr, double* theta, double* th1, double* th2) {
+  const double y0 = row[i], y1 = row[i + 1];
   if (std::isnan(y0) || std::isnan(y1)) return false;
   // Slopes per sample step at i and i + 1: central where both neighbours have material.
-  const double ym = i > 0 ? row[i - 1] : kNaN, yp = i + 2 < samples_ ? row[i + 2] : kNaN;
+  const double ym = i > 0 ? row[i - 1] : kNaN, yp = i + 2 < samples ? row[i + 2] : kNaN;
   const double m0 = std::isnan(ym) ? y1 - y0 : 0.5 * (y1 - ym);
   const double m1 = std::isnan(yp) ? y1 - y0 : 0.5 * (yp - y0);
   // Cubic Hermite in t ∈ [0, 1] and its derivatives, from its power-basis coefficients
   // y0 + m0·t + c2·t² + c3·t³.
   const double c2 = 3 * (y1 - y0) - 2 * m0 - m1, c3 = 2 * (y0 - y1) + m0 + m1;
-  const double theta = y0 + t * (m0 + t * (c2 + t * c3));
-  const double dt1 = m0 + t * (2 * c2 + 3 * t * c3);
-  const double dt2 = 2 * c2 + 6 * t * c3;
-  const double th1 = dt1 * inv_dr_, th2 = dt2 * inv_dr_ * inv_dr_;  // dθ/dr, d²θ/dr²
+  *theta = y0 + t * (m0 + t * (c2 + t * c3));
+  *th1 = (m0 + t * (2 * c2 + 3 * t * c3)) * inv_dr;  // dθ/dr
+  *th2 = (2 * c2 + 6 * t * c3) * inv_dr * inv_dr;    // d²θ/dr²
+  return true;
+}
+}  // namespace
+
+[[gnu::always_inline]] inline bool FlankTable::interval_jet(int tooth, Flank flank, int i, double t, FlankJet* jet, double r) const {
+  double theta, th1, th2;
+  if (!hermite(row_data(tooth, flank), samples_, i, t, inv_dr_, &theta, &th1, &th2)) return false;
   const Eigen::Vector2d u = direction(tooth, theta), v(-u.y(), u.x());
   // p = r·u(θ(r)): p' = u + r·θ'·v, p'' = (2θ' + r·θ'')·v − r·θ'²·u.
   jet->point = r * u;
   jet->d1 = u + (r * th1) * v;
   jet->d2 = (2 * th1 + r * th2) * v - (r * th1 * th1) * u;
   return true;
+}
+
+bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) const {
+  const double x = (r - r_min_) * inv_dr_;
+  if (!(x >= 0 && x <= samples_ - 1)) return false;
+  int i = std::min(static_cast<int>(x), samples_ - 2);
+  double t = x - i;
+  if (std::isnan(row_data(tooth, flank)[i + 1]) && t == 0 && i > 0) {  // the flank's last sample: the interval below, at its end
+    --i;
+    t = 1;
+  }
+  return interval_jet(tooth, flank, i, t, jet, r);
+}
+
+void FlankTable::build_convexity_bands() {
+  const int intervals = samples_ - 1;
+  const int bands = (intervals + kConvexityBand - 1) / kConvexityBand;
+  const std::size_t rows = tooth_of_row_.size();
+  // Level l of a flank's block: the range over bands b … b + 2^l − 1, for b = 0 … bands − 2^l.
+  convexity_level_start_.fill(0);
+  std::size_t per_flank = 0;
+  int levels = 0;
+  for (int run = 1; run <= bands; run *= 2, ++levels) {
+    convexity_level_start_[static_cast<std::size_t>(levels)] = per_flank;
+    per_flank += static_cast<std::size_t>(bands - run + 1);
+  }
+  convexity_block_ = per_flank;
+  convexity_bands_.assign(rows * 2 * per_flank, ConvexityRange{kInfinity, -kInfinity});
+  for (std::size_t row = 0; row < rows; ++row)
+    for (Flank f : {Flank::Ccw, Flank::Cw}) {
+      ConvexityRange* out = convexity_bands_.data() + (row * 2 + (f == Flank::Cw)) * per_flank;
+      for (int i = 0; i < intervals; ++i) {
+        ConvexityRange& band = out[i / kConvexityBand];
+        for (double t : {0.0, 1.0 / 3, 2.0 / 3, 1.0}) {
+          FlankJet jet;
+          const double c = interval_jet(tooth_of_row_[row], f, i, t, &jet, r_min_ + (i + t) * dr_) ? convexity(f, jet) : kNaN;
+          if (!std::isfinite(c)) band = {-kInfinity, kInfinity};  // no material: unbounded from now on
+          else if (band.lo > -kInfinity || band.hi < kInfinity) band = {std::min(band.lo, c), std::max(band.hi, c)};
+        }
+      }
+      for (int l = 1; l < levels; ++l) {
+        const ConvexityRange* half = out + convexity_level_start_[static_cast<std::size_t>(l - 1)];
+        ConvexityRange* level = out + convexity_level_start_[static_cast<std::size_t>(l)];
+        for (int b = 0; b + (1 << l) <= bands; ++b) {
+          const ConvexityRange &u = half[b], &v = half[b + (1 << (l - 1))];
+          level[b] = {std::min(u.lo, v.lo), std::max(u.hi, v.hi)};
+        }
+      }
+    }
+}
+
+FlankTable::ConvexityRange FlankTable::convexity_range(int tooth, Flank flank, double r_lo_m, double r_hi_m) const {
+  if (!(r_lo_m >= r_min_ && r_hi_m <= r_max_ && r_lo_m <= r_hi_m)) return {};
+  const int last = samples_ - 2;
+  const int i_lo = std::min(static_cast<int>((r_lo_m - r_min_) * inv_dr_), last), i_hi = std::min(static_cast<int>((r_hi_m - r_min_) * inv_dr_), last);
+  const int b_lo = i_lo / kConvexityBand, b_hi = i_hi / kConvexityBand;
+  // The range's extremes from two overlapping power-of-two runs of bands (a sparse table).
+  const int level = std::bit_width(static_cast<unsigned>(b_hi - b_lo + 1)) - 1;
+  const ConvexityRange* runs = convexity_bands_.data() +
+                               (static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)) * convexity_block_ +
+                               convexity_level_start_[static_cast<std::size_t>(level)];
+  const ConvexityRange &u = runs[b_lo], &v = runs[b_hi - (1 << level) + 1];
+  return {std::min(u.lo, v.lo), std::max(u.hi, v.hi)};
 }
 
 }  // namespace gearsim::contact

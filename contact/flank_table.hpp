@@ -182,6 +182,25 @@ class FlankTable {
     *r_lo = e.first;
     *r_hi = e.second;
   }
+  // A flank's convexity at a jet: the curvature of the interpolant, 1/m, > 0 where the flank
+  // bends away from its outward normal (its centre of curvature inside the material: an external
+  // gear's involute), < 0 where it bends toward it (an internal gear's involute, a fillet).
+  static double convexity(Flank flank, const FlankJet& jet) {
+    const double cross = jet.d1.x() * jet.d2.y() - jet.d1.y() * jet.d2.x(), norm = jet.d1.norm();
+    const double turn_left = cross / (norm * norm * norm);  // toward d1 turned by +90°
+    return flank == Flank::Ccw ? -turn_left : turn_left;    // the outward normal is d1 turned by +90° on Ccw
+  }
+  // The least and largest convexity of a flank's interpolant over radii [r_lo, r_hi], 1/m: from
+  // bands of kConvexityBand sample intervals, each interval's cubic evaluated at its two ends and
+  // two points between (within one cubic the curvature varies smoothly; between cubics it jumps,
+  // the interpolant being C¹ only, and both sides of every knot are evaluated). Unbounded
+  // ({−kInfinity, kInfinity}) where the range leaves [r_min, r_max] or reaches a radius without
+  // material.
+  struct ConvexityRange {
+    double lo = -kInfinity, hi = kInfinity;
+  };
+  static constexpr int kConvexityBand = 8;
+  ConvexityRange convexity_range(int tooth, Flank flank, double r_lo_m, double r_hi_m) const;
   // The outward unit normal of a flank with derivative d1 (FlankJet::d1) at a point.
   static Eigen::Vector2d outward_normal(Flank flank, const Eigen::Vector2d& d1) {
     const Eigen::Vector2d n = Eigen::Vector2d(-d1.y(), d1.x()).normalized();
@@ -256,6 +275,17 @@ class FlankTable {
   std::vector<FirstOrderRise> rise_flat_;          // the runs of 2^l bands, level l after level
   std::array<std::size_t, 32> rise_level_start_{};  // where level l starts in rise_flat_
   void build_rise_bands();
+  // convexity_range() per band of kConvexityBand intervals and over runs of 2^l bands, a block
+  // per row and flank ([(row * 2 + (flank == Cw)) * convexity_block_]), level l at
+  // convexity_level_start_[l] in it.
+  std::vector<ConvexityRange> convexity_bands_;
+  std::size_t convexity_block_ = 0;
+  std::array<std::size_t, 32> convexity_level_start_{};
+  void build_convexity_bands();
+  // The jet of sample interval i's cubic at t ∈ [0, 1], radius r = r_min + (i + t)·dr
+  // (flank_jet() within one interval, its ends included: both sides of a knot). False without
+  // material at either end.
+  bool interval_jet(int tooth, Flank flank, int i, double t, FlankJet* jet, double r) const;
 
   double tan_half_pitch_ = 0;
   std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle

@@ -238,6 +238,13 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     } else if (!c.coherent_search) {
       c.continued_search = false;
     }
+    if (given(m, "park_near_pairs")) {
+      c.park_near_pairs = m.boolean_or("park_near_pairs", c.park_near_pairs);
+      if (c.park_near_pairs && !c.continued_search)
+        m.fail("park_near_pairs", "park_near_pairs: true needs continued_search: true (near pairs are parked continued solutions)");
+    } else if (!c.continued_search) {
+      c.park_near_pairs = false;
+    }
     // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
     if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
     if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");

@@ -126,7 +126,8 @@ json scenario_json(const physics::Scenario& s) {
                   {"chordal_deviation_m", s.contact.chordal_deviation_m},
                   {"max_flank_departure_m", s.contact.max_flank_departure_m},
                   {"coherent_search", s.contact.coherent_search},
-                  {"continued_search", s.contact.continued_search}};
+                  {"continued_search", s.contact.continued_search},
+                  {"park_near_pairs", s.contact.park_near_pairs}};
   if (!s.contact.stiffness_tables.empty()) {
     json tables = json::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)

@@ -196,6 +196,7 @@ physics::ContactDef contact_of(const Node& n) {
   // Records written before the key existed ran the stateless search.
   c.coherent_search = n.has("coherent_search") ? n.boolean("coherent_search") : false;
   c.continued_search = n.has("continued_search") ? n.boolean("continued_search") : false;
+  c.park_near_pairs = n.has("park_near_pairs") ? n.boolean("park_near_pairs") : false;
   if (n.has("stiffness_tables"))
     for (const Node& t : n.list("stiffness_tables")) {
       physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),

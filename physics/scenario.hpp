@@ -204,6 +204,11 @@ struct ContactDef {
   // bit (docs/tooth-contact.md, "Continuation"). Part of coherent_search: off without it. With a
   // CAD mesh in the pair, the deeper of the continued and the searched contact.
   bool continued_search = true;
+  // Near pairs parked on top of the continuation (CoherentToothSearch::set_park_near_pairs): a
+  // continued pair with a gap is not solved again while a bound proves it still apart and (with
+  // solver.locate_contact_onset) unable to close within two steps (docs/tooth-contact.md, "Near
+  // pairs: the osculating-circle bound"). Part of continued_search: off without it.
+  bool park_near_pairs = true;
 };
 
 // How Bullet advances the bodies. `rigid_bodies`: each body a btRigidBody, joints, bearings,

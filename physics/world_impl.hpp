@@ -336,6 +336,7 @@ struct World::Impl {
   double impulse_power_W(double h) const;  // of the pulses in the (sub)step of length h just taken
   void step_multibody();
   void advance_multibody(double h);  // one (sub)step from the contacts generate_contacts() found
+  contact::CoherentToothSearch::PlanarTwist gear_twist(std::size_t body) const;
   double contact_onset_s(double within_s) const;  // when the first near pair touches (≥ within_s: none)
   void accumulate_substep(double h, bool first);
   void finish_split_step(double h);

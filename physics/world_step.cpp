@@ -29,8 +29,14 @@ void World::Impl::generate_contacts() {
     pr.search.set_continuation(!scenario.contact.continued_search                ? Continuation::off
                                : a.flanks_from_spec && b.flanks_from_spec ? Continuation::replace
                                                                             : Continuation::deeper);
+    pr.search.set_park_near_pairs(scenario.contact.park_near_pairs);
     std::vector<contact::ToothContact>* near = mb && mb->locate_onset ? &pr.near : nullptr;
-    if (scenario.contact.coherent_search) pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near);
+    // Where the near pairs predict onsets, the gears' velocities: a parked pair must not be one
+    // that closes within the step (CoherentToothSearch::find()).
+    contact::CoherentToothSearch::Motion motion;
+    if (near && scenario.contact.park_near_pairs) motion = {gear_twist(pr.a), gear_twist(pr.b), scenario.solver.time_step_s};
+    if (scenario.contact.coherent_search)
+      pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near, near ? &motion : nullptr);
     else contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near);
     // A manifold holds kMaxPointsPerPair points; the multibody engine's rows have no such limit.
     if (pr.manifold && static_cast<int>(found.size()) > kMaxPointsPerPair) {
@@ -49,6 +55,15 @@ void World::Impl::generate_contacts() {
     add_manifold_points(pr, z);
   }
   tooth_contact_ticks += clock.now() - start;
+}
+
+// A gear's planar velocity: its centre's (gear_poses[i].centre_m) and its angular velocity, world.
+contact::CoherentToothSearch::PlanarTwist World::Impl::gear_twist(std::size_t i) const {
+  const btRigidBody& r = *bodies[i].rigid;
+  const contact::PlanarPose& p = gear_poses[i];
+  const btVector3 at(p.centre_m.x(), p.centre_m.y(), r.getCenterOfMassPosition().z());
+  const btVector3 v = r.getVelocityInLocalPoint(at - r.getCenterOfMassPosition());
+  return {Eigen::Vector2d(v.x(), v.y()), r.getAngularVelocity().z()};
 }
 
 // pr.pair_stiffness and pr.active for this step's contacts pr.found.
