@@ -229,22 +229,19 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
     c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
     c.coherent_search = m.boolean_or("coherent_search", c.coherent_search);
-    // The continuation is part of the coherent search: off with it unless asked for, and then
+    // A search option that is part of another (`parent`): off with it unless asked for, and then
     // refused.
-    if (given(m, "continued_search")) {
-      c.continued_search = m.boolean_or("continued_search", c.continued_search);
-      if (c.continued_search && !c.coherent_search)
-        m.fail("continued_search", "continued_search: true needs coherent_search: true (the continuation is part of the coherent search)");
-    } else if (!c.coherent_search) {
-      c.continued_search = false;
-    }
-    if (given(m, "park_near_pairs")) {
-      c.park_near_pairs = m.boolean_or("park_near_pairs", c.park_near_pairs);
-      if (c.park_near_pairs && !c.continued_search)
-        m.fail("park_near_pairs", "park_near_pairs: true needs continued_search: true (near pairs are parked continued solutions)");
-    } else if (!c.continued_search) {
-      c.park_near_pairs = false;
-    }
+    auto part_of = [&](const char* key, bool& flag, bool parent, const char* why) {
+      if (given(m, key)) {
+        flag = m.boolean_or(key, flag);
+        if (flag && !parent) m.fail(key, std::string(key) + ": true needs " + why);
+      } else if (!parent) {
+        flag = false;
+      }
+    };
+    part_of("continued_search", c.continued_search, c.coherent_search,
+            "coherent_search: true (the continuation is part of the coherent search)");
+    part_of("park_near_pairs", c.park_near_pairs, c.continued_search, "continued_search: true (near pairs are parked continued solutions)");
     // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
     if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
     if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");

@@ -103,6 +103,17 @@ TEST(ScenarioErrors, ContinuedSearchNeedsTheCoherentOne) {
   EXPECT_EQ(error_for(kGood + "contact: {continued_search: false}\n"), "");
 }
 
+TEST(ScenarioErrors, ParkedNearPairsNeedTheContinuation) {
+  // Near pairs are parked continued solutions: asking for them without the continuation is refused;
+  // without it (or without the coherent search) they are off, and the scenario's record says so.
+  EXPECT_NAMES(error_for(kGood + "contact: {continued_search: false, park_near_pairs: true}\n"), "bad.yaml:11:",
+               "contact.park_near_pairs", "needs continued_search: true");
+  EXPECT_NAMES(error_for(kGood + "contact: {park_near_pairs: maybe}\n"), "contact.park_near_pairs", "expected true or false");
+  EXPECT_EQ(error_for(kGood + "contact: {continued_search: false, park_near_pairs: false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "contact: {park_near_pairs: false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false}\n"), "");
+}
+
 TEST(ScenarioErrors, TheRowSolverAndTheMassMatrixAreOneOfTwoAndTheMultibodyEnginesOnly) {
   EXPECT_NAMES(error_for(kGood + "solver: {row_solver: lemke}\n"), "bad.yaml:11:", "solver.row_solver", "active_set", "dantzig", "lemke");
   EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, row_solver: dantzig}\n"), "solver.row_solver", "only engine multibody");
