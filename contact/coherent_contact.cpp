@@ -489,12 +489,7 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
                    sol.r_prev, sol.s_prev, same ? std::min(sol.history + 1, continuation_ == Continuation::replace ? 2 : 1) : 0,
                    face, false};
             if (continuation_ == Continuation::replace) {
-              if (!park_) {
-              } else if (h.depth < 0) {
-                bound = near_snapshot(xy, k, f, h);
-              } else {
-                bound.valid = false;
-              }
+              if (park_) keep_near_snapshot(bound, xy, k, f, h);
               rec.travel_m = -1;  // searched in full when the continuation ends
               rec.tracked = false;
               emit(h);
@@ -515,18 +510,13 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         // search (`deeper` searches every flank anyway), and only on the first gear's flanks
         // (samples_see_crossing() reproduces probe_flank()'s view, not probe_tip()'s).
         if (continuation_ != Continuation::off && sampled.solved != Hit::kSampled &&
-            (sampled.solved != Hit::kCrossing || (continuation_ == Continuation::replace && pass == 0)))
-        {
+            (sampled.solved != Hit::kCrossing || (continuation_ == Continuation::replace && pass == 0))) {
           sol = {static_cast<signed char>(sampled.solved), sampled.tooth_y, sampled.flank_y, sampled.r_x, sampled.s_y, calls_, 0, 0, 0, 0, 0,
                  FaceReference{}, false};
-          if (!park_ || continuation_ != Continuation::replace) {
-          } else if (sampled.depth < 0) {
-            bound = near_snapshot(xy, k, f, sampled);
-          } else {
-            bound.valid = false;
-          }
+          if (park_ && continuation_ == Continuation::replace) keep_near_snapshot(bound, xy, k, f, sampled);
+        } else {
+          sol = Solution{};
         }
-        else sol = Solution{};
         emit(sampled);
       }
       if (continuation_ != Continuation::deeper)

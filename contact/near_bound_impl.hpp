@@ -81,6 +81,13 @@ double cross2(const Vector2d& v, const Vector2d& w) { return v.x() * w.y() - v.y
   return b;
 }
 
+// A flank's bound after a solve `h`: its snapshot where the solve left a gap, else none (only
+// the flag is cleared: the rest is not read without it).
+void keep_near_snapshot(NearBound& bound, const XY& xy, int k, Flank f, const Hit& h) {
+  if (h.depth < 0) bound = near_snapshot(xy, k, f, h);
+  else bound.valid = false;
+}
+
 // The same near pair seen from y (the second pass's flank sharing the first pass's solution).
 NearBound swapped(const NearBound& a) {
   NearBound b;
