@@ -94,23 +94,23 @@ TEST(ScenarioErrors, CoherentSearchIsTrueOrFalse) {
   EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false}\n"), "");
 }
 
-TEST(ScenarioErrors, ContinuedSearchNeedsTheCoherentOne) {
-  // The continuation is part of the coherent search: asking for it without is refused, not ignored.
-  EXPECT_NAMES(error_for(kGood + "contact: {coherent_search: false, continued_search: true}\n"), "bad.yaml:11:",
-               "contact.continued_search", "needs coherent_search: true");
-  EXPECT_NAMES(error_for(kGood + "contact: {continued_search: 2}\n"), "contact.continued_search", "expected true or false");
-  EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false, continued_search: false}\n"), "");
-  EXPECT_EQ(error_for(kGood + "contact: {continued_search: false}\n"), "");
+// A search option that is part of another (`parent`): asking for it without the parent is
+// refused, not ignored; off with it, and with the parent on either way.
+void expect_part_of(const std::string& key, const std::string& parent) {
+  const std::string named = "contact." + key, needs = "needs " + parent + ": true";
+  EXPECT_NAMES(error_for(kGood + "contact: {" + parent + ": false, " + key + ": true}\n"), "bad.yaml:11:", named.c_str(), needs.c_str());
+  EXPECT_NAMES(error_for(kGood + "contact: {" + key + ": 2}\n"), named.c_str(), "expected true or false");
+  EXPECT_EQ(error_for(kGood + "contact: {" + parent + ": false, " + key + ": false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "contact: {" + key + ": false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "contact: {" + parent + ": false}\n"), "");
 }
 
+TEST(ScenarioErrors, ContinuedSearchNeedsTheCoherentOne) { expect_part_of("continued_search", "coherent_search"); }
+
 TEST(ScenarioErrors, ParkedNearPairsNeedTheContinuation) {
-  // Near pairs are parked continued solutions: asking for them without the continuation is refused;
-  // without it (or without the coherent search) they are off, and the scenario's record says so.
-  EXPECT_NAMES(error_for(kGood + "contact: {continued_search: false, park_near_pairs: true}\n"), "bad.yaml:11:",
-               "contact.park_near_pairs", "needs continued_search: true");
-  EXPECT_NAMES(error_for(kGood + "contact: {park_near_pairs: maybe}\n"), "contact.park_near_pairs", "expected true or false");
-  EXPECT_EQ(error_for(kGood + "contact: {continued_search: false, park_near_pairs: false}\n"), "");
-  EXPECT_EQ(error_for(kGood + "contact: {park_near_pairs: false}\n"), "");
+  // Near pairs are parked continued solutions.
+  expect_part_of("park_near_pairs", "continued_search");
+  // Without the coherent search the continuation is off, and so the parking.
   EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false}\n"), "");
 }
 
