@@ -25,9 +25,9 @@ class CoherentToothSearch {
   //
   // Near pairs (Continuation::replace, set_park_near_pairs()): a continued solution that left
   // the two flanks apart (a gap) is not solved again while a bound proves them still apart — it
-  // is "parked": no contact, and no entry in `near`. The bound (coherent_contact.cpp,
-  // near_bound(); docs/tooth-contact.md, "Near pairs: the osculating-circle bound") holds for
-  // any motion of the poses. With `near` a pair is parked only when `motion` is given too, and
+  // is "parked": no contact, and no entry in `near`. The bound (near_bound_impl.hpp,
+  // near_bound(); docs/tooth-contact.md, "Near pairs: the osculating-circle bound") is taken
+  // from the poses alone, whatever their motion since the solve. With `near` a pair is parked only when `motion` is given too, and
   // only while it also cannot close within two steps at the present velocities: the near list
   // is what predicts a contact's onset (World's contact_onset_s()), and a parked pair is one it
   // would not have split a step for.
