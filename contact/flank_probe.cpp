@@ -39,6 +39,16 @@ void FlankTable::build_probe_knots() {
   build_convexity_bands();
 }
 
+std::size_t FlankTable::band_levels(int bands, LevelStarts& start) {
+  start.fill(0);
+  std::size_t length = 0;
+  for (int run = 1, l = 0; run <= bands; run *= 2, ++l) {
+    start[static_cast<std::size_t>(l)] = length;
+    length += static_cast<std::size_t>(bands - run + 1);
+  }
+  return length;
+}
+
 void FlankTable::build_rise_bands() {
   const int n = samples_;
   const int intervals = n - 1, bands = (intervals + kRiseBand - 1) / kRiseBand;
@@ -65,23 +75,9 @@ void FlankTable::build_rise_bands() {
       }
     worst(band.jump, c_min > 0 ? (c_max - c_min) / c_min : kInfinity);
   }
-  std::vector<std::vector<FirstOrderRise>> rise_runs(1, bands_max);
-  for (int run = 2; run <= bands; run *= 2) {
-    const std::vector<FirstOrderRise>& half = rise_runs.back();
-    std::vector<FirstOrderRise> level(static_cast<std::size_t>(bands - run + 1));
-    for (std::size_t b = 0; b < level.size(); ++b) {
-      const FirstOrderRise &u = half[b], &v = half[b + static_cast<std::size_t>(run / 2)];
-      level[b] = {std::max(u.slope, v.slope), std::max(u.growth, v.growth), std::max(u.jump, v.jump), std::max(u.side, v.side)};
-    }
-    rise_runs.push_back(std::move(level));
-  }
-  // The runs in one array, level after level.
-  rise_flat_.clear();
-  rise_level_start_.fill(0);
-  for (std::size_t l = 0; l < rise_runs.size(); ++l) {
-    rise_level_start_[l] = rise_flat_.size();
-    rise_flat_.insert(rise_flat_.end(), rise_runs[l].begin(), rise_runs[l].end());
-  }
+  rise_flat_.assign(band_levels(bands, rise_level_start_), FirstOrderRise{});
+  std::copy(bands_max.begin(), bands_max.end(), rise_flat_.begin());
+  fill_band_runs(rise_flat_.data(), bands, rise_level_start_, larger_rise);
 }
 
 

@@ -255,15 +255,7 @@ bool FlankTable::flank_jet(int tooth, Flank flank, double r, FlankJet* jet) cons
 void FlankTable::build_convexity_bands() {
   const int intervals = samples_ - 1;
   const int bands = (intervals + kConvexityBand - 1) / kConvexityBand;
-  const std::size_t rows = tooth_of_row_.size();
-  // Level l of a flank's block: the range over bands b … b + 2^l − 1, for b = 0 … bands − 2^l.
-  convexity_level_start_.fill(0);
-  std::size_t per_flank = 0;
-  int levels = 0;
-  for (int run = 1; run <= bands; run *= 2, ++levels) {
-    convexity_level_start_[static_cast<std::size_t>(levels)] = per_flank;
-    per_flank += static_cast<std::size_t>(bands - run + 1);
-  }
+  const std::size_t rows = tooth_of_row_.size(), per_flank = band_levels(bands, convexity_level_start_);
   convexity_block_ = per_flank;
   convexity_bands_.assign(rows * 2 * per_flank, ConvexityRange{kInfinity, -kInfinity});
   for (std::size_t row = 0; row < rows; ++row)
@@ -274,18 +266,11 @@ void FlankTable::build_convexity_bands() {
         for (double t : {0.0, 1.0 / 3, 2.0 / 3, 1.0}) {
           FlankJet jet;
           const double c = interval_jet(tooth_of_row_[row], f, i, t, &jet, r_min_ + (i + t) * dr_) ? convexity(f, jet) : kNaN;
-          if (!std::isfinite(c)) band = {-kInfinity, kInfinity};  // no material: unbounded from now on
-          else if (band.lo > -kInfinity || band.hi < kInfinity) band = {std::min(band.lo, c), std::max(band.hi, c)};
+          if (!std::isfinite(c)) band = {-kInfinity, kInfinity};                  // no material: unbounded
+          else if (band.lo != -kInfinity) band = {std::min(band.lo, c), std::max(band.hi, c)};  // not already unbounded
         }
       }
-      for (int l = 1; l < levels; ++l) {
-        const ConvexityRange* half = out + convexity_level_start_[static_cast<std::size_t>(l - 1)];
-        ConvexityRange* level = out + convexity_level_start_[static_cast<std::size_t>(l)];
-        for (int b = 0; b + (1 << l) <= bands; ++b) {
-          const ConvexityRange &u = half[b], &v = half[b + (1 << (l - 1))];
-          level[b] = {std::min(u.lo, v.lo), std::max(u.hi, v.hi)};
-        }
-      }
+      fill_band_runs(out, bands, convexity_level_start_, wider_convexity);
     }
 }
 
@@ -294,13 +279,9 @@ FlankTable::ConvexityRange FlankTable::convexity_range(int tooth, Flank flank, d
   const int last = samples_ - 2;
   const int i_lo = std::min(static_cast<int>((r_lo_m - r_min_) * inv_dr_), last), i_hi = std::min(static_cast<int>((r_hi_m - r_min_) * inv_dr_), last);
   const int b_lo = i_lo / kConvexityBand, b_hi = i_hi / kConvexityBand;
-  // The range's extremes from two overlapping power-of-two runs of bands (a sparse table).
-  const int level = std::bit_width(static_cast<unsigned>(b_hi - b_lo + 1)) - 1;
-  const ConvexityRange* runs = convexity_bands_.data() +
-                               (static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)) * convexity_block_ +
-                               convexity_level_start_[static_cast<std::size_t>(level)];
-  const ConvexityRange &u = runs[b_lo], &v = runs[b_hi - (1 << level) + 1];
-  return {std::min(u.lo, v.lo), std::max(u.hi, v.hi)};
+  const ConvexityRange* block = convexity_bands_.data() +
+                                (static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)) * convexity_block_;
+  return band_range(block, convexity_level_start_, b_lo, b_hi, wider_convexity);
 }
 
 }  // namespace gearsim::contact

@@ -123,12 +123,7 @@ class FlankTable {
     const double last = samples_ - 2, lo = (r_lo_m - r_min_) * inv_dr_, hi = (r_hi_m - r_min_) * inv_dr_;
     const int b_lo = static_cast<int>(lo <= 0 ? 0 : lo >= last ? last : lo) / kRiseBand;
     const int b_hi = static_cast<int>(hi <= 0 ? 0 : hi >= last ? last : hi) / kRiseBand;
-    // The range's maximum from two overlapping power-of-two runs of bands (a sparse table).
-    const int level = std::bit_width(static_cast<unsigned>(b_hi - b_lo + 1)) - 1;
-    const FirstOrderRise* runs = rise_flat_.data() + rise_level_start_[static_cast<std::size_t>(level)];
-    const FirstOrderRise &u = runs[b_lo], &v = runs[b_hi - (1 << level) + 1];
-    return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth,
-            u.jump > v.jump ? u.jump : v.jump, u.side > v.side ? u.side : v.side};
+    return band_range(rise_flat_.data(), rise_level_start_, b_lo, b_hi, larger_rise);
   }
 
   // Points of every flank at `kProbeRadii` evenly spaced radii from r_min to r_max (gear frame,
@@ -272,15 +267,42 @@ class FlankTable {
   // first_order_rise() per band of kRiseBand knot intervals (max over rows and flanks), and over
   // runs of bands: rise_flat_[rise_level_start_[l] + b] over bands b to b + 2^l − 1.
   static constexpr int kRiseBand = 32;
-  std::vector<FirstOrderRise> rise_flat_;          // the runs of 2^l bands, level l after level
-  std::array<std::size_t, 32> rise_level_start_{};  // where level l starts in rise_flat_
+  // Sparse tables over bands of sample intervals (first_order_rise(), convexity_range()): a
+  // block holds level after level, level l from start[l] on, with per band b the merge of bands
+  // b … b + 2^l − 1 (level 0: the bands themselves); any range of bands is then the merge of two
+  // overlapping runs.
+  using LevelStarts = std::array<std::size_t, 32>;
+  static std::size_t band_levels(int bands, LevelStarts& start);  // fills start; the block's length
+  template <class T, class Merge>
+  static void fill_band_runs(T* block, int bands, const LevelStarts& start, Merge merge) {
+    for (int l = 1; (1 << l) <= bands; ++l)
+      for (int b = 0; b + (1 << l) <= bands; ++b)
+        block[start[static_cast<std::size_t>(l)] + static_cast<std::size_t>(b)] =
+            merge(block[start[static_cast<std::size_t>(l - 1)] + static_cast<std::size_t>(b)],
+                  block[start[static_cast<std::size_t>(l - 1)] + static_cast<std::size_t>(b + (1 << (l - 1)))]);
+  }
+  template <class T, class Merge>
+  [[gnu::always_inline]] static T band_range(const T* block, const LevelStarts& start, int b_lo, int b_hi, Merge merge) {
+    const int level = std::bit_width(static_cast<unsigned>(b_hi - b_lo + 1)) - 1;
+    const T* runs = block + start[static_cast<std::size_t>(level)];
+    return merge(runs[b_lo], runs[b_hi - (1 << level) + 1]);
+  }
+  static FirstOrderRise larger_rise(const FirstOrderRise& u, const FirstOrderRise& v) {
+    return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth,
+            u.jump > v.jump ? u.jump : v.jump, u.side > v.side ? u.side : v.side};
+  }
+  static ConvexityRange wider_convexity(const ConvexityRange& u, const ConvexityRange& v) {
+    return {std::min(u.lo, v.lo), std::max(u.hi, v.hi)};
+  }
+  std::vector<FirstOrderRise> rise_flat_;  // one block for every row and flank
+  LevelStarts rise_level_start_{};
   void build_rise_bands();
   // convexity_range() per band of kConvexityBand intervals and over runs of 2^l bands, a block
   // per row and flank ([(row * 2 + (flank == Cw)) * convexity_block_]), level l at
   // convexity_level_start_[l] in it.
   std::vector<ConvexityRange> convexity_bands_;
   std::size_t convexity_block_ = 0;
-  std::array<std::size_t, 32> convexity_level_start_{};
+  LevelStarts convexity_level_start_{};
   void build_convexity_bands();
   // The jet of sample interval i's cubic at t ∈ [0, 1], radius r = r_min + (i + t)·dr
   // (flank_jet() within one interval, its ends included: both sides of a knot). False without

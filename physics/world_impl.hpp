@@ -294,6 +294,7 @@ struct World::Impl {
   std::vector<BodyState> states;
   std::vector<ContactSample> contacts;
   std::vector<contact::PlanarPose> gear_poses;  // this step's, per body (gears only)
+  std::vector<contact::CoherentToothSearch::PlanarTwist> gear_twists;  // the same, their velocities (parking near pairs only)
   std::vector<GearPairInfo> pair_infos;
   std::map<std::string, int> body_index;
   double time = 0;

@@ -21,6 +21,14 @@ void World::Impl::generate_contacts() {
   gear_poses.resize(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i].flanks) gear_poses[i] = mb && mb->planar_mass ? planar_gear_pose(i) : planar_pose(bodies[i]);
+  // Where the near pairs predict onsets and some may be parked, each gear's velocity too: a
+  // parked pair must not be one that closes within the step (CoherentToothSearch::find()).
+  const bool with_motion = mb && mb->locate_onset && scenario.contact.park_near_pairs;
+  if (with_motion) {
+    gear_twists.resize(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+      if (bodies[i].flanks) gear_twists[i] = gear_twist(i);
+  }
   for (PairRec& pr : pairs) {
     const BuiltBody &a = bodies[pr.a], &b = bodies[pr.b];
     std::vector<contact::ToothContact>& found = pr.found;
@@ -31,12 +39,10 @@ void World::Impl::generate_contacts() {
                                                                             : Continuation::deeper);
     pr.search.set_park_near_pairs(scenario.contact.park_near_pairs);
     std::vector<contact::ToothContact>* near = mb && mb->locate_onset ? &pr.near : nullptr;
-    // Where the near pairs predict onsets, the gears' velocities: a parked pair must not be one
-    // that closes within the step (CoherentToothSearch::find()).
     contact::CoherentToothSearch::Motion motion;
-    if (near && scenario.contact.park_near_pairs) motion = {gear_twist(pr.a), gear_twist(pr.b), scenario.solver.time_step_s};
+    if (with_motion) motion = {gear_twists[pr.a], gear_twists[pr.b], scenario.solver.time_step_s};
     if (scenario.contact.coherent_search)
-      pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near, near ? &motion : nullptr);
+      pr.search.find(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near, with_motion ? &motion : nullptr);
     else contact::find_tooth_contacts(*a.flanks, gear_poses[pr.a], *b.flanks, gear_poses[pr.b], found, near);
     // A manifold holds kMaxPointsPerPair points; the multibody engine's rows have no such limit.
     if (pr.manifold && static_cast<int>(found.size()) > kMaxPointsPerPair) {
