@@ -28,6 +28,12 @@ constexpr double kMinKnotRise_m = 1e-8;
 // the shape-preserving cubic, rad: rounding only (1e-14 m at 10 mm).
 constexpr double kOvershoot_rad = 1e-12;
 
+// A shifted stencil replaces the centred one where its third divided difference is this many
+// times smaller (stencil()). On the paper's flanks the ratio is 0.7–2.0 along the involutes,
+// 6.5–663 at their junctions with the fillets (docs/tooth-contact.md, "The cubic beside a
+// fillet"): between the two.
+constexpr double kStencilRatio = 4;
+
 // Point of a knot in its tooth's frame.
 struct Knot {
   double r, theta;
@@ -55,6 +61,31 @@ double pchip_slope(const std::vector<double>& x, const std::vector<double>& y, s
   const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
   const double w1 = 2 * h1 + h0, w2 = h1 + 2 * h0;
   return (w1 + w2) / (w1 / d0 + w2 / d1);
+}
+
+// Third divided difference of (x, y) over knots s..s+3: the leading coefficient of their cubic.
+double third_difference(const std::vector<double>& x, const std::vector<double>& y, std::size_t s) {
+  auto d1 = [&](std::size_t a) { return (y[a + 1] - y[a]) / (x[a + 1] - x[a]); };
+  auto d2 = [&](std::size_t a) { return (d1(a + 1) - d1(a)) / (x[a + 2] - x[a]); };
+  return (d2(s + 1) - d2(s)) / (x[s + 3] - x[s]);
+}
+
+// The stencil of four knots for interval j (knots s..s+3, j and j+1 among them): the centred
+// one (s = j − 1, clamped to the ends), unless a stencil shifted by one knot has a third
+// divided difference kStencilRatio times smaller — the centred cubic then spans a jump of the
+// curve's curvature (an involute meeting its fillet) that the shifted one, on one side of it,
+// does not (the idea of ENO interpolation, Harten et al. 1987, held to where it matters).
+std::size_t stencil(const std::vector<double>& x, const std::vector<double>& y, std::size_t j) {
+  const std::size_t n = x.size(), centred = std::clamp<std::size_t>(j + 1, 2, n - 2) - 2;
+  const double d_c = std::abs(third_difference(x, y, centred));
+  std::size_t best = centred;
+  double d_best = d_c;
+  for (std::size_t cand : {centred - 1, centred + 1}) {
+    if (cand > n - 4 || cand > j || cand + 3 < j + 1) continue;  // (centred − 1 wraps for 0)
+    const double d = std::abs(third_difference(x, y, cand));
+    if (d * kStencilRatio < d_c && d < d_best) best = cand, d_best = d;
+  }
+  return best;
 }
 
 double hermite(const std::vector<double>& x, const std::vector<double>& y, std::size_t j, double m0, double m1, double at) {
@@ -144,7 +175,7 @@ double knot_resolution_m(const std::vector<FlankKnots>& flanks) {
 
 void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double* out) {
   const std::vector<double>&x = k.r_m, &y = k.theta_rad;
-  std::size_t interval = static_cast<std::size_t>(-1);
+  std::size_t interval = static_cast<std::size_t>(-1), s = 0;
   bool shape_preserving = false;
   // The Lagrange values the overshoot check computed, for samples [checked_from, checked_to) of
   // the current interval: the same call the sample would make, kept instead of made twice.
@@ -158,7 +189,7 @@ void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double
     // The knot interval [x[j], x[j+1]] holding r, and the stencil of four knots around it.
     const std::size_t j = std::min<std::size_t>(
         static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), r) - x.begin()), x.size() - 1) - 1;
-    const std::size_t s = std::clamp<std::size_t>(j + 1, 2, x.size() - 2) - 2;
+    if (j != interval) s = stencil(x, y, j);
     if (j != interval) {
       // Does the Lagrange cubic stay within the interval's knot range at every sample in it?
       interval = j;

@@ -33,9 +33,12 @@ std::vector<FlankKnots> flank_knots(const Polygon2& loop, const ToothLayout& lay
 double knot_resolution_m(const std::vector<FlankKnots>& flanks);
 
 // θ at `samples` radii r0 + i·dr into out[i] (NaN outside the knots' range): per knot interval
-// the cubic through the four knots around it (Lagrange), or, where that cubic leaves the range
-// of its interval's two knots (a corner, a straight radial piece next to an involute), the
-// shape-preserving Hermite cubic of Fritsch and Carlson (PCHIP) instead.
+// the cubic through four knots around it (Lagrange: the interval's two and one either side, or,
+// where a stencil shifted by one knot has a third divided difference at least 4 times smaller,
+// that one — next to the knot where an involute meets its fillet the centred cubic would reach
+// into the fillet's curvature), or, where that cubic leaves the range of its interval's two
+// knots (a corner, a straight radial piece next to an involute), the shape-preserving Hermite
+// cubic of Fritsch and Carlson (PCHIP) instead.
 void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double* out);
 
 // How far sampled flank values stray from the polyline of their knots, beyond the sagitta a

@@ -33,8 +33,11 @@ double base_radius(int teeth) { return 0.5e-3 * teeth * std::cos(20.0 * M_PI / 1
 
 TEST(FlankConvexity, IsTheInvolutesCurvatureOnTheActiveFlanks) {
   // External teeth bend away from their outward normal (convexity +1/ρ), the ring's internal
-  // ones toward it (−1/ρ). Radii: the involute part of each flank (above the fillet, which ends
-  // at 11.4, 17.3 and, on the ring, 48.9 mm; below the tips). The interpolant's curvature follows
+  // ones toward it (−1/ρ). Radii: the involute part of each flank, from just past the form
+  // circles where it meets the fillet (11.338, 17.221 and, on the ring, 49.018 mm) to below the
+  // tips (since stop 42, with the cubic beside a fillet on one side of it: docs/tooth-contact.md,
+  // "The cubic beside a fillet"; before, the ring's range had to end at 48.85 mm, short of a
+  // kink at its knot at 48.889 mm). The interpolant's curvature follows
   // the involute to ≈ 0.1–1 % (C¹ cubics over samples 0.55 µm apart); where the cubic's second
   // derivative jumps between intervals it spikes (docs/tooth-contact.md: ρ off by up to 2.3 mm
   // at 17.82 and 18.04 mm on the planets) — a few radii of the 2 × 201 per gear.
@@ -44,8 +47,8 @@ TEST(FlankConvexity, IsTheInvolutesCurvatureOnTheActiveFlanks) {
     int teeth;
     double r_lo, r_hi, sign;
   };
-  for (const Case& c : {Case{"sun", 24, 11.5e-3, 12.9e-3, 1}, Case{"planet_1", 36, 17.35e-3, 18.9e-3, 1},
-                        Case{"ring", 96, 47.3e-3, 48.85e-3, -1}}) {
+  for (const Case& c : {Case{"sun", 24, 11.36e-3, 12.9e-3, 1}, Case{"planet_1", 36, 17.24e-3, 18.9e-3, 1},
+                        Case{"ring", 96, 47.3e-3, 49.0e-3, -1}}) {
     const FlankTable& t = *named(g, c.name).table;
     const double r_b = base_radius(c.teeth);
     std::vector<double> departures;
