@@ -186,13 +186,13 @@ void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double
       out[i] = kNaN;
       continue;
     }
-    // The knot interval [x[j], x[j+1]] holding r, and the stencil of four knots around it.
+    // The knot interval [x[j], x[j+1]] holding r (its stencil of four knots, s, chosen once per interval).
     const std::size_t j = std::min<std::size_t>(
         static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), r) - x.begin()), x.size() - 1) - 1;
-    if (j != interval) s = stencil(x, y, j);
     if (j != interval) {
       // Does the Lagrange cubic stay within the interval's knot range at every sample in it?
       interval = j;
+      s = stencil(x, y, j);
       shape_preserving = false;
       const double lo = std::min(y[j], y[j + 1]) - kOvershoot_rad, hi = std::max(y[j], y[j + 1]) + kOvershoot_rad;
       checked_from = checked_to = i;
