@@ -44,25 +44,43 @@ double World::Impl::trapezoid_closed_theta() {
   const double h = e.h_step;
   std::swap(e.touching, e.touching_before);
   e.touching.clear();
-  double added_J = 0, dissipation_weight_J = 0;  // Σ ½kδ₀² of new contacts, Σ k·(h·ṡ)² of all
+  // New contacts first (their energy Σ ½kδ₀²); the rates only where there is one. The contacts
+  // come in the last step's order, mostly: the search for a key starts after the last one found.
+  double added_J = 0;
+  std::size_t hint = 0;
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     const PairRec& pr = pairs[p];
+    for (std::size_t i = 0; i < pr.found.size(); ++i) {
+      if (!pr.active[i]) continue;
+      const contact::ToothContact& c = pr.found[i];
+      const ContactKey key = contact_key(static_cast<int>(p), c);
+      e.touching.push_back(key);
+      const std::vector<ContactKey>& before = e.touching_before;
+      if (hint < before.size() && before[hint] == key) {
+        ++hint;
+        continue;
+      }
+      const auto at = std::find(before.begin(), before.end(), key);
+      if (at != before.end()) {
+        hint = static_cast<std::size_t>(at - before.begin()) + 1;
+        continue;
+      }
+      added_J += 0.5 * pr.pair_stiffness[i] * c.depth_m * c.depth_m;
+    }
+  }
+  if (added_J == 0) return 0.5;
+  double dissipation_weight_J = 0;  // Σ k·(h·ṡ)² over every contact row
+  for (const PairRec& pr : pairs) {
     const btRigidBody &ra = *bodies[static_cast<std::size_t>(pr.a)].rigid, &rb = *bodies[static_cast<std::size_t>(pr.b)].rigid;
     for (std::size_t i = 0; i < pr.found.size(); ++i) {
       if (!pr.active[i]) continue;
       const contact::ToothContact& c = pr.found[i];
-      const double k = pr.pair_stiffness[i];
-      const ContactKey key = contact_key(static_cast<int>(p), c);
-      e.touching.push_back(key);
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0), at(c.point_m.x(), c.point_m.y(), ra.getCenterOfMassPosition().z());
       const btVector3 va = ra.getVelocityInLocalPoint(at - ra.getCenterOfMassPosition());
       const double rate = (va - rb.getVelocityInLocalPoint(at - rb.getCenterOfMassPosition())).dot(n);  // ṡ, the row's rate
-      dissipation_weight_J += k * (h * rate) * (h * rate);
-      if (std::find(e.touching_before.begin(), e.touching_before.end(), key) == e.touching_before.end())
-        added_J += 0.5 * k * c.depth_m * c.depth_m;
+      dissipation_weight_J += pr.pair_stiffness[i] * (h * rate) * (h * rate);
     }
   }
-  if (added_J == 0) return 0.5;
   if (!(added_J < 0.5 * dissipation_weight_J)) return 1.0;
   return 0.5 + added_J / dissipation_weight_J;
 }
