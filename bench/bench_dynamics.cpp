@@ -113,6 +113,12 @@ int main(int argc, char** argv) {
   std::printf("stepping, CPU time      %8.3f s = %.2f s per simulated second (%.1f us per step)\n", cpu, cpu / sim_s,
               1e6 * cpu / n);
   std::printf("  tooth contact         %8.3f s (%.0f %%, %.1f us per step)\n", contact, 100 * contact / wall, 1e6 * contact / n);
+  if (const auto& v = r.profile.flank_visits; v.searched + v.tracked + v.skipped + v.continued + v.shared + v.parked > 0) {
+    auto per = [&](long c) { return static_cast<double>(c) / n; };
+    std::printf("    flanks per step     %.1f skipped by their records, %.1f renewed, %.1f continued (%.2f at a tip circle), %.2f shared, "
+                "%.1f parked near pairs, %.2f searched, %.2f tracked\n",
+                per(v.skipped), per(v.renewed), per(v.continued), per(v.crossings), per(v.shared), per(v.parked), per(v.searched), per(v.tracked));
+  }
   std::printf("  Bullet + measuring    %8.3f s (%.0f %%, %.1f us per step)\n", bullet, 100 * bullet / wall, 1e6 * bullet / n);
   if (r.profile.row_solve_s > 0) {
     const double rows = r.profile.row_solve_s;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "physics/scenario.hpp"
+#include "contact/coherent_contact.hpp"
 #include "contact/tooth_contact.hpp"
 #include "physics/tooth_pair_stiffness.hpp"
 
@@ -118,6 +119,11 @@ class World {
     long active_set_solves = 0, dantzig_solves = 0;  // multibody: steps whose rows each solved
     long onset_splits = 0;     // multibody, solver.locate_contact_onset: splits of a step at a contact's onset (each adds a search and a solve)
     long friction_rounds = 0;  // multibody, contact.friction_model sliding: solves again to locate slip reversals
+    // The coherent tooth search's flank visits, summed over the gear pairs (both passes; all 0
+    // with contact.coherent_search false): contact::CoherentToothSearch::Counts, each a count
+    // of flanks — searched in full, tracked, skipped by their records, continued (of them
+    // `crossings` at a tip circle), renewed, shared between the passes, parked near pairs.
+    contact::CoherentToothSearch::Counts flank_visits;
   };
   const Profile& profile() const;
   const PowerFlows& power() const;
