@@ -120,9 +120,7 @@ int main(int argc, char** argv) {
           contacts += static_cast<long>(found.size());
           ++calls;
         }
-        flanks.searched += search.counts().searched, flanks.skipped += search.counts().skipped;
-        flanks.tracked += search.counts().tracked, flanks.continued += search.counts().continued;
-        flanks.renewed += search.counts().renewed;
+        flanks += search.counts();
       }
   }
   std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",

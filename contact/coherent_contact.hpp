@@ -85,6 +85,11 @@ class CoherentToothSearch {
   // Parked: near pairs left unsolved under their bound (find()).
   struct Counts {
     long searched = 0, tracked = 0, skipped = 0, continued = 0, renewed = 0, shared = 0, crossings = 0, parked = 0;
+    Counts& operator+=(const Counts& o) {  // several searches' counts summed (World::Profile)
+      searched += o.searched, tracked += o.tracked, skipped += o.skipped, continued += o.continued;
+      renewed += o.renewed, shared += o.shared, crossings += o.crossings, parked += o.parked;
+      return *this;
+    }
   };
   const Counts& counts() const { return counts_; }
 

@@ -242,13 +242,8 @@ const World::Profile& World::profile() const {
   m.profile.tooth_contact_s = static_cast<double>(m.tooth_contact_ticks) * per_tick;
   m.profile.row_solve_s = static_cast<double>(m.row_solve_ticks) * per_tick;
   m.profile.step_total_s = static_cast<double>(m.step_total_ticks) * per_tick;
-  contact::CoherentToothSearch::Counts& v = m.profile.flank_visits;
-  v = {};
-  for (const PairRec& pr : m.pairs) {
-    const contact::CoherentToothSearch::Counts& c = pr.search.counts();
-    v.searched += c.searched, v.tracked += c.tracked, v.skipped += c.skipped, v.continued += c.continued;
-    v.renewed += c.renewed, v.shared += c.shared, v.crossings += c.crossings, v.parked += c.parked;
-  }
+  m.profile.flank_visits = {};
+  for (const PairRec& pr : m.pairs) m.profile.flank_visits += pr.search.counts();
   return m.profile;
 }
 
