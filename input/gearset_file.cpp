@@ -4,6 +4,7 @@
 
 #include "input/input_limits.hpp"
 #include "input/safe_name.hpp"
+#include "input/utf8_text.hpp"
 #include "core/errors.hpp"
 #include "geometry/constants.hpp"
 
@@ -19,74 +20,73 @@ Flank parse_flank(const YamlMap& m) {
 }  // namespace
 
 GearErrors parse_gear_errors(const YamlMap& e) {
+  using limits::kToothError_m;
   GearErrors out;
   if (e.has("flank_offsets"))
     for (const YamlMap& f : e.list_of_maps("flank_offsets")) {
-      out.flank_offsets.push_back({f.integer("tooth"), parse_flank(f), f.number("normal_offset_m")});
+      out.flank_offsets.push_back({f.integer("tooth"), parse_flank(f), number_within(f, "normal_offset_m", kToothError_m)});
       f.reject_unknown_keys();
     }
   if (e.has("pitch_errors"))
     for (const YamlMap& p : e.list_of_maps("pitch_errors")) {
-      out.pitch_errors.push_back({p.integer("tooth"), p.number("error_m")});
+      out.pitch_errors.push_back({p.integer("tooth"), number_within(p, "error_m", kToothError_m)});
       p.reject_unknown_keys();
     }
   if (e.has("profile_slopes"))
     for (const YamlMap& p : e.list_of_maps("profile_slopes")) {
-      out.profile_slopes.push_back({p.integer_or("tooth", -1), parse_flank(p), p.number("slope_m")});
+      out.profile_slopes.push_back({p.integer_or("tooth", -1), parse_flank(p), number_within(p, "slope_m", kToothError_m)});
       p.reject_unknown_keys();
     }
   if (e.has("eccentricity")) {
     const YamlMap ecc = e.map("eccentricity");
-    out.eccentricity = {ecc.number("eccentricity_m"), angle_rad_or(ecc, "phase", 0.0)};
+    out.eccentricity = {number_within(ecc, "eccentricity_m", limits::kEccentricity_m), angle_rad_or(ecc, "phase", 0.0)};
     ecc.reject_unknown_keys();
   }
   e.reject_unknown_keys();
   return out;
 }
 
-
-double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad) {
+double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad, const Limit& limit_rad) {
   const bool deg = m.has(base + "_deg"), rad = m.has(base + "_rad");
   if (deg && rad) m.fail(base + "_deg", "give the angle once: " + base + "_deg or " + base + "_rad");
-  if (deg) return m.number(base + "_deg") * kRadPerDeg;
-  if (rad) return m.number(base + "_rad");
+  if (deg) return number_within(m, base + "_deg", limit_in_degrees(limit_rad)) * kRadPerDeg;
+  if (rad) return number_within(m, base + "_rad", limit_rad);
   m.number_or(base + "_deg", 0);  // mark both spellings as known keys
   m.number_or(base + "_rad", 0);
   return fallback_rad;
 }
 
 GearSpec parse_gear(const YamlMap& g, const std::string& name, const YamlMap* defaults) {
-  // A value from the gear, else from the defaults block, else the built-in default.
-  auto num = [&](const std::string& key, std::optional<double> fallback) -> double {
-    if (g.has(key)) return g.number(key);
+  // A value from the gear, else from the defaults block, else the built-in default; each checked
+  // against its limit where it is given.
+  auto num = [&](const std::string& key, std::optional<double> fallback, const Limit& limit) -> double {
+    if (g.has(key)) return number_within(g, key, limit);
     g.number_or(key, 0);
-    if (defaults && defaults->has(key)) return defaults->number(key);
+    if (defaults && defaults->has(key)) return number_within(*defaults, key, limit);
     if (defaults) defaults->number_or(key, 0);
     if (!fallback) g.fail(key, "missing (required, here or in defaults)");
     return *fallback;
   };
-  auto angle = [&](const std::string& base, double fallback) {
-    if (g.has(base + "_deg") || g.has(base + "_rad")) return angle_rad_or(g, base, fallback);
-    angle_rad_or(g, base, fallback);
-    return defaults ? angle_rad_or(*defaults, base, fallback) : fallback;
+  auto angle = [&](const std::string& base, double fallback, const Limit& limit) {
+    if (g.has(base + "_deg") || g.has(base + "_rad")) return angle_rad_or(g, base, fallback, limit);
+    angle_rad_or(g, base, fallback, limit);
+    return defaults ? angle_rad_or(*defaults, base, fallback, limit) : fallback;
   };
   GearSpec s;
   s.name = name;
   s.kind = g.choice("kind", {"external", "internal"}) == "internal" ? GearKind::Internal : GearKind::External;
   s.teeth = integer_within(g, "teeth", limits::kTeeth);
-  s.module_m = num("module_m", std::nullopt);
-  s.pressure_angle_rad = angle("pressure_angle", constants::kDefaultPressureAngle_rad);
-  s.face_width_m = num("face_width_m", std::nullopt);
-  s.profile_shift = num("profile_shift", 0.0);
-  s.addendum_coeff = num("addendum_coeff", constants::kAddendumCoeff);
-  s.dedendum_coeff = num("dedendum_coeff", constants::kDedendumCoeff);
-  s.root_fillet_coeff = num("root_fillet_coeff", constants::kRootFilletCoeff);
-  s.thinning_per_flank_m = num("thinning_per_flank_m", 0.0);
-  s.chordal_deviation_m = num("chordal_deviation_m", constants::kDefaultChordalDeviation_m);
-  if (!within(s.chordal_deviation_m, limits::kChordalDeviation_m))
-    g.fail("chordal_deviation_m", limit_message(limits::kChordalDeviation_m, s.chordal_deviation_m));
-  s.bore_diameter_m = g.number_or("bore_diameter_m", 0.0);
-  s.rim_diameter_m = g.number_or("rim_diameter_m", 0.0);
+  s.module_m = num("module_m", std::nullopt, limits::kModule_m);
+  s.pressure_angle_rad = angle("pressure_angle", constants::kDefaultPressureAngle_rad, limits::kPressureAngle_rad);
+  s.face_width_m = num("face_width_m", std::nullopt, limits::kFaceWidth_m);
+  s.profile_shift = num("profile_shift", 0.0, limits::kProfileShift);
+  s.addendum_coeff = num("addendum_coeff", constants::kAddendumCoeff, limits::kToothDepthFactor);
+  s.dedendum_coeff = num("dedendum_coeff", constants::kDedendumCoeff, limits::kToothDepthFactor);
+  s.root_fillet_coeff = num("root_fillet_coeff", constants::kRootFilletCoeff, limits::kRootFilletFactor);
+  s.thinning_per_flank_m = num("thinning_per_flank_m", 0.0, limits::kThinning_m);
+  s.chordal_deviation_m = num("chordal_deviation_m", constants::kDefaultChordalDeviation_m, limits::kChordalDeviation_m);
+  s.bore_diameter_m = number_within_or(g, "bore_diameter_m", 0.0, limits::kGearDiameter_m);
+  s.rim_diameter_m = number_within_or(g, "rim_diameter_m", 0.0, limits::kGearDiameter_m);
   s.tooth0_angle_rad = angle_rad_or(g, "tooth0_angle", 0.0);
   if (g.has("errors")) s.errors = parse_gear_errors(g.map("errors"));
   g.reject_unknown_keys();
@@ -105,13 +105,14 @@ const GearSpec& GearSetFile::gear(const std::string& gear_name) const {
 }
 
 GearSetFile load_gearset(const std::filesystem::path& path) {
-  const YamlMap top = YamlMap::load_file(path);
+  const YAML::Node root = load_yaml_mapping(path);
+  require_utf8_tree(root, path.string());  // gear names reach gearset.json and the run records
+  const YamlMap top = YamlMap::from_node(root, path.string());
   GearSetFile f;
   f.path = path;
   f.name = top.string("name");
   require_label(top, "name", f.name);
-  f.density_kg_m3 = top.number("density_kg_m3");
-  if (!(f.density_kg_m3 > 0)) top.fail("density_kg_m3", "expected a positive density in kg/m³");
+  f.density_kg_m3 = number_within(top, "density_kg_m3", limits::kDensity_kg_m3);
   std::optional<YamlMap> defaults;
   if (top.has("defaults")) defaults = top.map("defaults");
   const YamlMap gears = top.map("gears");
@@ -140,7 +141,7 @@ GearSetFile load_gearset(const std::filesystem::path& path) {
   }
   if (top.has("tolerance")) {
     const YamlMap t = top.map("tolerance");
-    f.tolerance_quality = t.integer("quality");
+    f.tolerance_quality = integer_within(t, "quality", limits::kQualityClass);
     t.reject_unknown_keys();
   }
   if (top.has("reference")) {
@@ -153,7 +154,10 @@ GearSetFile load_gearset(const std::filesystem::path& path) {
       if (!known) rgears.fail(name, "no gear named '" + name + "' under gears");
       ReferenceGear rg;
       for (const char* key : {"reference_diameter_m", "tip_diameter_m", "root_diameter_m", "base_diameter_m"})
-        if (auto v = g.optional_number(key)) rg.diameters_m[key] = *v;
+        if (auto v = g.optional_number(key)) {
+          if (!within(*v, limits::kGearDiameter_m)) g.fail(key, limit_message(limits::kGearDiameter_m, *v));
+          rg.diameters_m[key] = *v;
+        }
       g.reject_unknown_keys();
       f.reference[name] = rg;
     }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "input/input_limits.hpp"
 #include "input/yaml_reader.hpp"
 #include "geometry/gear_spec.hpp"
 #include "geometry/planetary.hpp"
@@ -40,8 +41,10 @@ GearSetFile load_gearset(const std::filesystem::path& path);
 // One gear from its mapping; `defaults` (may be null) supplies keys the gear leaves out.
 GearSpec parse_gear(const YamlMap& gear, const std::string& name, const YamlMap* defaults);
 
-// Reads `<base>_deg` or `<base>_rad` (not both) as radians; fallback when neither is present.
-double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad);
+// Reads `<base>_deg` or `<base>_rad` (not both) as radians, checked against `limit_rad` in the
+// key's own unit; fallback when neither is present.
+double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad,
+                    const Limit& limit_rad = limits::kAngle_rad);
 
 // A gear's `errors:` mapping (flank_offsets, pitch_errors, profile_slopes, eccentricity), unknown
 // keys refused; the tooth indices are checked with the gear (validate_gear_spec).

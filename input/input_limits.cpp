@@ -1,7 +1,10 @@
 #include "input/input_limits.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
+
+#include "core/errors.hpp"
 
 namespace gearsim::input {
 namespace {
@@ -9,7 +12,8 @@ namespace {
 // "(0, 10000] s"
 std::string interval(const Limit& limit) {
   std::ostringstream s;
-  s << (limit.min_open ? "(" : "[") << limit.min << ", " << limit.max << "]" << (*limit.unit ? " " : "") << limit.unit;
+  s << (limit.min_open ? "(" : "[") << limit.min << ", " << limit.max << (limit.max_open ? ")" : "]") << (*limit.unit ? " " : "")
+    << limit.unit;
   return s.str();
 }
 
@@ -17,13 +21,22 @@ std::string interval(const Limit& limit) {
 
 bool within(double value, const Limit& limit) {
   if (!std::isfinite(value)) return false;
-  return (limit.min_open ? value > limit.min : value >= limit.min) && value <= limit.max;
+  return (limit.min_open ? value > limit.min : value >= limit.min) && (limit.max_open ? value < limit.max : value <= limit.max);
 }
 
 std::string limit_message(const Limit& limit, double value) {
   std::ostringstream s;
   s << "expected " << limit.what << " in " << interval(limit) << ", got " << value;
   return s.str();
+}
+
+void require_within(const std::string& name, double value, const Limit& limit) {
+  if (!within(value, limit)) throw InputError(name + ": " + limit_message(limit, value));
+}
+
+Limit limit_in_degrees(const Limit& limit_rad) {
+  constexpr double kDegPerRad = 180 / std::numbers::pi;
+  return {limit_rad.min * kDegPerRad, limit_rad.max * kDegPerRad, limit_rad.min_open, "°", limit_rad.what, limit_rad.max_open};
 }
 
 double number_within(const YamlMap& m, const std::string& key, const Limit& limit) {

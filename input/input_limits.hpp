@@ -9,19 +9,21 @@
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
+#include <numbers>
 #include <string>
 
 #include "input/yaml_reader.hpp"
 
 namespace gearsim::input {
 
-// A closed interval [min, max] in `unit`, or (min, max] when min_open.
+// A closed interval [min, max] in `unit`; an open end where min_open (max_open) says so.
 struct Limit {
   double min;
   double max;
   bool min_open;
   const char* unit;  // "s", "Hz", "" for counts and factors
   const char* what;  // the message's noun: "a duration"
+  bool max_open = false;
 };
 
 namespace limits {
@@ -59,6 +61,83 @@ constexpr Limit kTeeth{3, 1000, false, "", "a number of teeth"};
 // above 0.1 mm a 1 mm module tooth (2.25 mm high) is a few segments and its flanks are lost.
 constexpr Limit kChordalDeviation_m{1e-9, 1e-4, false, "m", "a chordal deviation"};
 
+// Gear geometry (gear-set specs, a scenario's `gear:`, run records). Each bound keeps the outline
+// finite: 1e300 m reached the tessellation as an overflow (an internal error, not a refusal).
+// Module, m: 0.01 mm is below the finest watch gears' (~0.05 mm); 0.1 m is twice the largest
+// mill gears' (~50 mm).
+constexpr Limit kModule_m{1e-5, 0.1, false, "m", "a module"};
+// Face width, m: 0.01 mm is a foil; 2 m is twice the widest mill and wind-turbine gears' faces.
+constexpr Limit kFaceWidth_m{1e-5, 2, false, "m", "a face width"};
+// Pressure angle, rad: the involute needs 0 < α < 45° (gear_dimensions.cpp); real spur gears
+// use 14.5° to 25°. Keys in degrees are checked against it in degrees (limit_in_degrees).
+constexpr Limit kPressureAngle_rad{0, std::numbers::pi / 4, true, "rad", "a pressure angle", true};
+// Profile shift coefficient x, in modules: practical shifts lie within −1 to +1.5; beyond ±3 a
+// tooth is all root or all tip.
+constexpr Limit kProfileShift{-3, 3, false, "", "a profile shift coefficient (in modules)"};
+// Addendum and dedendum factors h_a*, h_f*, in modules: the basic rack's are 1 and 1.25; 3 is
+// over twice the deepest high-addendum teeth's.
+constexpr Limit kToothDepthFactor{0, 3, false, "", "a tooth depth factor (in modules)"};
+// Root fillet radius factor ρ*, in modules: ISO 53's racks use 0.25 to 0.38; 1 is a full round
+// root on a deep tooth.
+constexpr Limit kRootFilletFactor{0, 1, false, "", "a root fillet factor (in modules)"};
+// Backlash allowance (thinning) per flank, m: a 10 mm module gear's is ~0.1 mm; 1 mm is ten times
+// that.
+constexpr Limit kThinning_m{0, 1e-3, false, "m", "a thinning per flank"};
+// Flank, pitch and profile slope errors, m (either sign): DIN 3962 class 12 (the coarsest) allows
+// ~0.1 mm at a 10 mm module; 1 mm is ten times that.
+constexpr Limit kToothError_m{-1e-3, 1e-3, false, "m", "a tooth error"};
+// Eccentricity of a toothing, m: radial runout is twice it; a class-12 gear of 1 m diameter allows
+// ~0.3 mm runout, 10 mm is thirty times that.
+constexpr Limit kEccentricity_m{0, 1e-2, false, "m", "an eccentricity"};
+// Bore and rim diameters, m: a gear at the largest module and tooth count (0.1 m × 1000) is 100 m
+// across.
+constexpr Limit kGearDiameter_m{0, 100, false, "m", "a diameter"};
+// Angles of a pose or of tooth 0, rad: one turn either way; more names the same pose and is most
+// likely degrees given as radians (infinity gave NaN poses). In degrees: ±360°.
+constexpr Limit kAngle_rad{-2 * std::numbers::pi, 2 * std::numbers::pi, false, "rad", "an angle"};
+// Quality class of a gear's tolerances: ISO 1328-1 has classes 0 to 12, DIN 3961 1 to 12.
+constexpr Limit kQualityClass{0, 12, false, "", "a quality class"};
+// Centre distance of two gears, m: positive (no other value means "derive it": leave the key
+// out); 100 m is two of the largest gears side by side.
+constexpr Limit kCentreDistance_m{0, 100, true, "m", "a centre distance"};
+// Body positions, hinge pivots and macro origins, m: 1 km from the origin is far beyond any
+// gearbox, and doubles there still resolve 1e-13 m, well below a tooth contact's nanometres.
+constexpr Limit kPosition_m{-1e3, 1e3, false, "m", "a coordinate"};
+
+// Mass properties (bodies, the planetary carrier, inspect --density).
+// Density, kg/m³: 1 is below an aerogel's, 1e5 over four times osmium's (22 590); steel is 7850.
+constexpr Limit kDensity_kg_m3{1, 1e5, false, "kg/m³", "a density"};
+// Mass, kg: 1 µg is a grain of dust; 1e6 kg is ten times the heaviest mill ring gear (~100 t).
+constexpr Limit kMass_kg{1e-9, 1e6, false, "kg", "a mass"};
+// Principal moment of inertia, kg·m²: 1e-18 is 1 µg at 1 µm; 1e9 is 1e6 kg at a 30 m radius.
+constexpr Limit kInertia_kg_m2{1e-18, 1e9, false, "kg·m²", "a moment of inertia"};
+
+// Rates and frequencies a run records, Hz (output and filter rates, band edges): none exceeds the
+// step rate at the shortest time step, 1/kTimeStep_s.min = 1e7 Hz.
+constexpr Limit kRate_Hz{0, 1e7, true, "Hz", "a rate"};
+
+// Options of the commands (and the Python module's keywords of the same name).
+// Mesh harmonics of a Campbell table (modes --harmonics): beyond 50 the crossings lie far above
+// any mode the lumped model resolves.
+constexpr Limit kModeHarmonics{1, 50, false, "", "a number of mesh harmonics"};
+// Mesh positions per pitch for the mean mesh stiffness (modes --phases): 4 is the coarsest that
+// sees the double-contact zone; 4096 resolves it far below the flank table's own error.
+constexpr Limit kModePhases{4, 4096, false, "", "a number of mesh positions per pitch"};
+// A drive speed cap, rad/s (modes --max-speed): high-speed turbine gears turn at ~3000 rad/s;
+// 1e5 rad/s is thirty times that.
+constexpr Limit kDriveSpeed_rad_s{0, 1e5, true, "rad/s", "a drive speed"};
+// How far a mesh's vertices may lie off its cap planes and still make a prism, µm (inspect
+// --prism-tolerance): CAD noise is ~1 µm; at 1 mm the mesh is another shape.
+constexpr Limit kPrismTolerance_um{0, 1000, true, "µm", "a prism tolerance"};
+// Sample spacing of a deviation measurement, mm (--hausdorff-spacing): 0.01 mm puts ~1e7 samples
+// on a 100 mm gear's faces; 100 mm samples only the vertices of any gear.
+constexpr Limit kSampleSpacing_mm{0.01, 100, false, "mm", "a sample spacing"};
+// Rendered frame width and height, px (render --width/--height): 16 px shows nothing smaller;
+// 4096 px is a 4K frame, the largest an H.264 level-5.1 encoder takes.
+constexpr Limit kFrameSize_px{16, 4096, false, "px", "a frame size"};
+// Processes run at once (sweep --jobs): far beyond the cores of one machine.
+constexpr Limit kJobs{1, 1024, false, "", "a number of jobs"};
+
 // Cases of one parameter sweep (grid product or list): each is a run folder and a process; 1e5
 // runs of the shortest useful case (~1 s) are a day on 2 cores, more is a typo in a grid.
 constexpr std::size_t kMaxSweepCases = 100'000;
@@ -71,6 +150,11 @@ constexpr Limit kSweepSteps{2, 1e5, false, "", "a number of grid steps"};
 bool within(double value, const Limit& limit);
 // "expected a duration in (0, 10000] s, got 1e+300".
 std::string limit_message(const Limit& limit, double value);
+// InputError "<name>: <limit_message>" unless `value` is within the limit: the check of a named
+// argument (a Python keyword) with the message the CLI gives for the same option.
+void require_within(const std::string& name, double value, const Limit& limit);
+// An angle's limit in degrees (unit "°"), for keys and options given in degrees.
+Limit limit_in_degrees(const Limit& limit_rad);
 
 // m[key] as a number within `limit`, else m.fail(key, limit_message(…)).
 double number_within(const YamlMap& m, const std::string& key, const Limit& limit);

@@ -4,13 +4,14 @@
 // starting with '.' or '-' — no path separator, no "..", no hidden or option-like name, nothing a
 // CSV or a shell would read differently. A body name also holds no "__", which joins the two
 // bodies of a gear pair. Names that break the rule are refused, never rewritten. Not for labels:
-// a scenario's `name:` is free text (printable, no control characters) that reaches other
+// a scenario's `name:` is free text (UTF-8, printable, no control characters) that reaches other
 // programs only escaped (gnuplot_string, html_escape).
 #pragma once
 
 #include <string>
 #include <string_view>
 
+#include "input/utf8_text.hpp"
 #include "input/yaml_reader.hpp"
 
 namespace gearsim::input {
@@ -35,11 +36,12 @@ inline std::string safe_name_rule(NameUse use) {
          std::string(use == NameUse::Body ? " and without '__' (it joins the bodies of a gear pair)" : "");
 }
 
-// The name as a message may quote it: control characters as '?', at most 80 characters.
+// The name as a message may quote it: control characters as '?', bytes that are not UTF-8 as
+// \xHH, at most 80 bytes.
 inline std::string shown_name(std::string_view name) {
   std::string out;
   for (char c : name.substr(0, 80)) out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
-  return name.size() > 80 ? out + "…" : out;
+  return escaped_bytes(out) + (name.size() > 80 ? "…" : "");
 }
 
 // m.fail(key, …) naming the rule unless `name` (read from m[key], or m's key itself) follows it.
@@ -47,11 +49,12 @@ inline void require_safe_name(const YamlMap& m, const std::string& key, const st
   if (!is_safe_name(name, use)) m.fail(key, "expected " + safe_name_rule(use) + ", got '" + shown_name(name) + "'");
 }
 
-// m.fail(key, …) unless `label` is 1 to kMaxLabelLength characters without control characters.
+// m.fail(key, …) unless `label` is 1 to kMaxLabelLength bytes of UTF-8 without control characters.
 inline void require_label(const YamlMap& m, const std::string& key, const std::string& label) {
-  bool ok = !label.empty() && label.size() <= kMaxLabelLength;
+  bool ok = !label.empty() && label.size() <= kMaxLabelLength && is_utf8(label);
   for (char c : label) ok = ok && static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
-  if (!ok) m.fail(key, "expected a one-line text of 1 to 200 characters without control characters, got '" + shown_name(label) + "'");
+  if (!ok)
+    m.fail(key, "expected a one-line text of 1 to 200 bytes of UTF-8 without control characters, got '" + shown_name(label) + "'");
 }
 
 }  // namespace gearsim::input

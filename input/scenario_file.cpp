@@ -11,7 +11,9 @@
 #include "input/gearset_file.hpp"
 #include "input/input_limits.hpp"
 #include "input/safe_name.hpp"
+#include "input/scenario_events.hpp"
 #include "input/scenario_parts.hpp"
+#include "input/utf8_text.hpp"
 #include "core/errors.hpp"
 
 namespace gearsim::input {
@@ -37,15 +39,15 @@ constexpr const char* kGround = "ground";
 
 physics::Pose parse_pose(const YamlMap& m) {
   physics::Pose pose;
-  pose.position_m = vec3_or(m, "position_m", Eigen::Vector3d::Zero());
+  pose.position_m = vec3_within_or(m, "position_m", Eigen::Vector3d::Zero(), limits::kPosition_m);
   const bool full = m.has("orientation_deg") || m.has("orientation_rad");
   const bool about_z = m.has("angle_deg") || m.has("angle_rad");
   if (full && about_z) m.fail(m.has("angle_deg") ? "angle_deg" : "angle_rad",
                               "give orientation_deg/_rad [rx, ry, rz] or angle_deg/_rad about z, not both");
   if (m.has("orientation_deg") && m.has("orientation_rad"))
     m.fail("orientation_deg", "give the orientation once: orientation_deg or orientation_rad");
-  Eigen::Vector3d r = vec3_or(m, "orientation_rad", Eigen::Vector3d::Zero());
-  r += vec3_or(m, "orientation_deg", Eigen::Vector3d::Zero()) * (std::numbers::pi / 180.0);
+  Eigen::Vector3d r = vec3_within_or(m, "orientation_rad", Eigen::Vector3d::Zero(), limits::kAngle_rad);
+  r += vec3_within_or(m, "orientation_deg", Eigen::Vector3d::Zero(), limit_in_degrees(limits::kAngle_rad)) * (std::numbers::pi / 180.0);
   r.z() += angle_rad_or(m, "angle", 0.0);
   // Rotations about the fixed world axes x, then y, then z: R = Rz·Ry·Rx.
   pose.orientation = Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
@@ -93,9 +95,10 @@ physics::JointDef parse_joint(const YamlMap& m, const Names& names) {
     m.fail("parent", "no body named '" + j.parent + "' (or 'ground')");
   if (j.parent == j.body) m.fail("parent", "a body cannot be hinged to itself");
   // The pivot defaults to the body's origin (a gear's centre).
-  j.pivot_m = vec3_or(m, "pivot_m", body->second->pose.position_m);
+  j.pivot_m = vec3_within_or(m, "pivot_m", body->second->pose.position_m, limits::kPosition_m);
   const Eigen::Vector3d axis = vec3_or(m, "axis", Eigen::Vector3d::UnitZ());
   if (!(axis.norm() > 1e-12)) m.fail("axis", "the hinge axis has zero length");
+  if (!std::isfinite(axis.norm())) m.fail("axis", "expected a direction of finite length (its components overflow)");
   j.axis = axis.normalized();  // a direction: only its sense matters
   if (given(m, "bearing")) j.bearing = parse_bearing(m.map("bearing"));
   m.reject_unknown_keys();
@@ -117,6 +120,27 @@ std::string joint_ref(const YamlMap& m, const std::string& key, const Names& nam
   const std::string j = m.string(key);
   if (!names.joints.count(j)) m.fail(key, "no joint named '" + j + "'");
   return j;
+}
+
+// An impulse on a movable body, within the run (event_outside_run) and no shorter than a step.
+physics::ImpulseDef parse_impulse(const YamlMap& m, const Names& names, const physics::Scenario& s) {
+  physics::ImpulseDef i;
+  i.body = m.string("body");
+  const auto body = names.bodies.find(i.body);
+  if (body == names.bodies.end()) m.fail("body", "no body named '" + i.body + "'");
+  if (body->second->fixed) m.fail("body", "body '" + i.body + "' is fixed (welded to the ground): a pulse cannot move it");
+  i.at_s = number_within_or(m, "at_s", 0.0, limits::kRunTime_s);
+  i.duration_s = number_within(m, "duration_s", limits::kDuration_s);
+  if (const std::string why = event_outside_run(i.at_s, i.duration_s, s.duration_s); !why.empty())
+    m.fail(m.has("at_s") ? "at_s" : "duration_s", why);
+  if (i.duration_s < s.solver.time_step_s)
+    m.fail("duration_s", "a pulse shorter than one time step (" + std::to_string(s.solver.time_step_s) + " s) would be missed or taken whole");
+  i.force_N = vec3_or(m, "force_N", Eigen::Vector3d::Zero());
+  i.torque_N_m = vec3_or(m, "torque_N_m", Eigen::Vector3d::Zero());
+  if (!i.force_N.allFinite() || !i.torque_N_m.allFinite()) m.fail_here("expected finite force_N and torque_N_m");
+  if (i.force_N.isZero(0) && i.torque_N_m.isZero(0)) m.fail_here("a pulse needs force_N or torque_N_m");
+  m.reject_unknown_keys();
+  return i;
 }
 
 void parse_settings(const YamlMap& top, physics::Scenario& s) {
@@ -317,23 +341,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       s.loads.push_back(l);
     }
   if (given(top, "impulses"))
-    for (const YamlMap& m : top.list_of_maps("impulses")) {
-      physics::ImpulseDef i;
-      i.body = m.string("body");
-      const auto body = names.bodies.find(i.body);
-      if (body == names.bodies.end()) m.fail("body", "no body named '" + i.body + "'");
-      if (body->second->fixed) m.fail("body", "body '" + i.body + "' is fixed (welded to the ground): a pulse cannot move it");
-      i.at_s = number_within_or(m, "at_s", 0.0, limits::kDuration_s);
-      i.duration_s = positive(m, "duration_s", "pulse duration in s");
-      if (i.duration_s < s.solver.time_step_s)
-        m.fail("duration_s", "a pulse shorter than one time step (" + std::to_string(s.solver.time_step_s) + " s) would be missed or taken whole");
-      i.force_N = vec3_or(m, "force_N", Eigen::Vector3d::Zero());
-      i.torque_N_m = vec3_or(m, "torque_N_m", Eigen::Vector3d::Zero());
-      if (!i.force_N.allFinite() || !i.torque_N_m.allFinite()) m.fail_here("expected finite force_N and torque_N_m");
-      if (i.force_N.isZero(0) && i.torque_N_m.isZero(0)) m.fail_here("a pulse needs force_N or torque_N_m");
-      m.reject_unknown_keys();
-      s.impulses.push_back(i);
-    }
+    for (const YamlMap& m : top.list_of_maps("impulses")) s.impulses.push_back(parse_impulse(m, names, s));
 
   // Transmission: the explicit block, each key defaulting to the macro's proposal.
   std::optional<physics::TransmissionDef> proposed;
@@ -372,7 +380,9 @@ physics::Scenario load_scenario(const fs::path& file, const std::vector<std::str
   YAML::Node root = load_yaml_mapping(file);  // size, syntax, text keys, no key twice
   apply_overrides(root, overrides, file.string());
   try {
-    return parse(YamlMap::from_node(root, file.string()), file);
+    const YamlMap top = YamlMap::from_node(root, file.string());
+    require_utf8_tree(root, file.string());  // names, paths and --set values reach the JSON records
+    return parse(top, file);
   } catch (const InputError& e) {
     throw InputError(blame_override(e.what(), overrides));
   }

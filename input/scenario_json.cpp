@@ -11,14 +11,15 @@
 namespace gearsim::input {
 namespace {
 
-using json = nlohmann::ordered_json;
+// Not `json`: a unity batch may hold scenario_record.cpp, whose `json` is nlohmann::json.
+using ojson = nlohmann::ordered_json;
 
-json vec(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+ojson vec(const Eigen::Vector3d& v) { return ojson::array({v.x(), v.y(), v.z()}); }
 
 const char* flank_name(Flank f) { return f == Flank::Ccw ? "ccw" : "cw"; }
 
-json gear_json(const GearSpec& g) {
-  json errors = {{"flank_offsets", json::array()}, {"pitch_errors", json::array()}, {"profile_slopes", json::array()}};
+ojson gear_json(const GearSpec& g) {
+  ojson errors = {{"flank_offsets", ojson::array()}, {"pitch_errors", ojson::array()}, {"profile_slopes", ojson::array()}};
   for (const FlankOffset& f : g.errors.flank_offsets)
     errors["flank_offsets"].push_back({{"tooth", f.tooth}, {"flank", flank_name(f.flank)}, {"normal_offset_m", f.normal_offset_m}});
   for (const PitchError& p : g.errors.pitch_errors)
@@ -45,8 +46,8 @@ json gear_json(const GearSpec& g) {
           {"errors", errors}};
 }
 
-json body_json(const physics::BodyDef& b) {
-  json j = {{"name", b.name}};
+ojson body_json(const physics::BodyDef& b) {
+  ojson j = {{"name", b.name}};
   if (b.gear) j["gear"] = gear_json(*b.gear);
   if (b.mesh) {
     std::error_code ec;
@@ -69,14 +70,14 @@ json body_json(const physics::BodyDef& b) {
   const Eigen::AngleAxisd aa(b.pose.orientation);
   const Eigen::Quaterniond& q = b.pose.orientation;
   j["position_m"] = vec(b.pose.position_m);
-  j["orientation_wxyz"] = json::array({q.w(), q.x(), q.y(), q.z()});
+  j["orientation_wxyz"] = ojson::array({q.w(), q.x(), q.y(), q.z()});
   j["rotation_vector_rad"] = vec(aa.axis() * aa.angle());  // the same orientation, for reading
   j["fixed"] = b.fixed;
   return j;
 }
 
-json joint_json(const physics::JointDef& jd) {
-  json j = {{"name", jd.name}, {"body", jd.body}, {"parent", jd.parent}, {"pivot_m", vec(jd.pivot_m)}, {"axis", vec(jd.axis)}};
+ojson joint_json(const physics::JointDef& jd) {
+  ojson j = {{"name", jd.name}, {"body", jd.body}, {"parent", jd.parent}, {"pivot_m", vec(jd.pivot_m)}, {"axis", vec(jd.axis)}};
   if (jd.bearing)
     j["bearing"] = {{"radial_stiffness_N_per_m", jd.bearing->radial_stiffness_N_per_m},
                     {"radial_damping_N_s_per_m", jd.bearing->radial_damping_N_s_per_m},
@@ -85,7 +86,7 @@ json joint_json(const physics::JointDef& jd) {
   return j;
 }
 
-json fe_json(const physics::FeTeDef& f) {
+ojson fe_json(const physics::FeTeDef& f) {
   return {{"flank_size_m", f.flank_size_m},     {"core_size_m", f.core_size_m},
           {"transition_m", f.transition_m},     {"max_sagitta_m", f.max_sagitta_m},
           {"thinning_per_flank_m", f.thinning_per_flank_m}, {"sun_torque_N_m", f.sun_torque_N_m},
@@ -94,14 +95,14 @@ json fe_json(const physics::FeTeDef& f) {
           {"mesh_periods", f.mesh_periods},     {"jobs", f.jobs}};
 }
 
-json planetary_json(const physics::PlanetaryTrainDef& p) {
-  json planets = json::array();
+ojson planetary_json(const physics::PlanetaryTrainDef& p) {
+  ojson planets = ojson::array();
   for (const GearSpec& g : p.planet_gears) planets.push_back(gear_json(g));
   return {{"sun", gear_json(p.spec.sun)}, {"planet", gear_json(p.spec.planet)}, {"ring", gear_json(p.spec.ring)},
           {"planets", p.spec.planets}, {"planet_gears", planets}, {"ring_fixed", p.ring_fixed}};
 }
 
-json pair_table_json(const physics::PairTableDef& t) {
+ojson pair_table_json(const physics::PairTableDef& t) {
   return {{"driver", t.driver},
           {"driven", t.driven},
           {"centre_distance_derived", t.centre_distance_derived},
@@ -115,8 +116,8 @@ json pair_table_json(const physics::PairTableDef& t) {
 
 }  // namespace
 
-json scenario_json(const physics::Scenario& s) {
-  json j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
+ojson scenario_json(const physics::Scenario& s) {
+  ojson j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
   j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}, {"engine", physics::engine_name(s.solver.engine)}, {"theta", s.solver.theta}, {"integrator", physics::integrator_name(s.solver.integrator)}, {"row_solver", physics::row_solver_name(s.solver.row_solver)}, {"mass_matrix", physics::mass_matrix_name(s.solver.mass_matrix)}, {"locate_contact_onset", s.solver.locate_contact_onset}};
   j["output"] = {{"sample_rate_hz", s.output.sample_rate_hz}, {"per_step_log", s.output.per_step_log}};
   j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
@@ -129,33 +130,33 @@ json scenario_json(const physics::Scenario& s) {
                   {"continued_search", s.contact.continued_search},
                   {"park_near_pairs", s.contact.park_near_pairs}};
   if (!s.contact.stiffness_tables.empty()) {
-    json tables = json::array();
+    ojson tables = ojson::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)
       tables.push_back({{"body_a", t.body_a}, {"body_b", t.body_b}, {"file", t.table.source},
                         {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m},
                         {"body_stiffness_N_per_m", t.body_stiffness_N_per_m}});
     j["contact"]["stiffness_tables"] = tables;
   }  if (!s.contact.mesh_stiffnesses.empty()) {
-    json meshes = json::array();
+    ojson meshes = ojson::array();
     for (const physics::PairMeshStiffnessDef& m : s.contact.mesh_stiffnesses)
       meshes.push_back({{"body_a", m.body_a}, {"body_b", m.body_b}, {"stiffness_N_per_m", m.stiffness_N_per_m}});
     j["contact"]["mesh_stiffnesses"] = meshes;
   }
 
-  j["bodies"] = json::array();
+  j["bodies"] = ojson::array();
   for (const physics::BodyDef& b : s.bodies) j["bodies"].push_back(body_json(b));
-  j["joints"] = json::array();
+  j["joints"] = ojson::array();
   for (const physics::JointDef& jd : s.joints) j["joints"].push_back(joint_json(jd));
-  j["motors"] = json::array();
+  j["motors"] = ojson::array();
   for (const physics::MotorDef& m : s.motors)
     j["motors"].push_back({{"joint", m.joint}, {"target_speed_rad_s", m.target_speed_rad_s},
                            {"ramp_time_s", m.ramp_time_s}, {"max_torque_N_m", m.max_torque_N_m}});
-  j["loads"] = json::array();
+  j["loads"] = ojson::array();
   for (const physics::LoadDef& l : s.loads)
     j["loads"].push_back({{"joint", l.joint}, {"constant_torque_N_m", l.constant_torque_N_m},
                           {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}, {"ramp_time_s", l.ramp_time_s}});
   if (!s.sensors.empty()) {
-    j["sensors"] = json::array();
+    j["sensors"] = ojson::array();
     for (const physics::SensorDef& d : s.sensors)
       j["sensors"].push_back({{"name", d.name}, {"body", d.body}, {"angle_rad", d.angle_rad}, {"window_width_rad", d.window_width_rad},
                               {"other_meshes_weight", d.other_meshes_weight}, {"resonance_hz", d.resonance_hz},
@@ -163,7 +164,7 @@ json scenario_json(const physics::Scenario& s) {
                               {"noise_rms_m_s2", d.noise_rms_m_s2}, {"sample_rate_hz", d.sample_rate_hz}});
   }
   if (!s.impulses.empty()) {
-    j["impulses"] = json::array();
+    j["impulses"] = ojson::array();
     for (const physics::ImpulseDef& i : s.impulses)
       j["impulses"].push_back({{"body", i.body}, {"at_s", i.at_s}, {"duration_s", i.duration_s}, {"force_N", vec(i.force_N)},
                                {"torque_N_m", vec(i.torque_N_m)}});
@@ -184,7 +185,7 @@ json scenario_json(const physics::Scenario& s) {
   if (s.planetary) j["planetary"] = planetary_json(*s.planetary);
   if (s.fe) j["fe"] = fe_json(*s.fe);
   if (!s.pair_tables.empty()) {
-    j["pair_tables"] = json::array();
+    j["pair_tables"] = ojson::array();
     for (const physics::PairTableDef& t : s.pair_tables) j["pair_tables"].push_back(pair_table_json(t));
   }
   return j;

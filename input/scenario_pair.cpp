@@ -51,7 +51,8 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
   if (a.gear && b.gear) {
     // Generated gears: the zero-backlash distance unless given; either way the mesh must work.
     try {
-      centre_distance_m = m.number_or("centre_distance_m", zero_backlash_centre_distance(*ext.gear, *in.gear));
+      centre_distance_m = number_within_or(m, "centre_distance_m", zero_backlash_centre_distance(*ext.gear, *in.gear),
+                                           limits::kCentreDistance_m);
       analyse_mesh(*ext.gear, *in.gear, centre_distance_m);
     } catch (const InputError& e) {
       m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());
@@ -64,14 +65,14 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
     if (!te && !m.has("centre_distance_m")) m.fail(ext_key, why + ", so the centre distance cannot be derived: give centre_distance_m");
     const std::optional<InvoluteTeeth> ti = involutes_of(in, why);
     if (!ti && !m.has("centre_distance_m")) m.fail(in_key, why + ", so the centre distance cannot be derived: give centre_distance_m");
-    centre_distance_m = m.number_or("centre_distance_m", 0.0);
+    centre_distance_m = number_within_or(m, "centre_distance_m", 0.0, limits::kCentreDistance_m);  // 0: derived
     if (te && ti) {
       table = checked_pair_table(m, a.name, b.name, *te, *ti, centre_distance_m, !m.has("centre_distance_m"), "driven");
       centre_distance_m = table->figures.centre_distance_m;
     }
   }
   if (!(centre_distance_m > 0)) m.fail("centre_distance_m", "expected a positive centre distance in m");
-  const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
+  const Eigen::Vector3d origin = vec3_within_or(m, "origin_m", Eigen::Vector3d::Zero(), limits::kPosition_m);
   m.reject_unknown_keys();
 
   // Placing: external, the driver at the origin and the driven on +x; internal, the ring at the

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "input/input_limits.hpp"
 #include "input/yaml_reader.hpp"
 #include "physics/scenario.hpp"
 
@@ -36,6 +37,8 @@ std::filesystem::path resolve(const std::filesystem::path& dir, const std::strin
 
 // [x, y, z] under `key`, or `fallback` when absent.
 Eigen::Vector3d vec3_or(const YamlMap& m, const std::string& key, const Eigen::Vector3d& fallback);
+// The same with each given component within `limit` (refused naming the key and x, y or z).
+Eigen::Vector3d vec3_within_or(const YamlMap& m, const std::string& key, const Eigen::Vector3d& fallback, const Limit& limit);
 
 // The shape (gear / gear_from / mesh / none) and mass keys of a body mapping into `body`
 // (body.name must be set). Every body needs a mass, fixed ones too (physics builds them all).

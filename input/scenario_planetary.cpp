@@ -27,7 +27,7 @@ double tooth0_of_member(const physics::BodyDef& b) {
 // and planet–ring zero-backlash distances), both meshes checked there, the phasing.
 PlanetaryGeometry shapes_geometry(const YamlMap& m, const PlanetaryMembers& s, std::vector<physics::PairTableDef>& tables) {
   const bool derived = !m.has("centre_distance_m");
-  double a = derived ? 0.0 : positive(m, "centre_distance_m", "centre distance in m");
+  double a = derived ? 0.0 : number_within(m, "centre_distance_m", limits::kCentreDistance_m);
   if (derived) {
     double a_sp = 0, a_pr = 0;
     try {
@@ -130,8 +130,8 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
     m.fail_here("give sun, planet and ring all as gear names of `spec`, or all as shapes (mesh:, gear: or gear_from:)");
   PlanetaryMembers s = shapes ? members_from_shapes(m, dir) : members_from_spec(m, dir);
   const YamlMap c = m.map("carrier");
-  const double carrier_mass_kg = positive(c, "mass_kg", "carrier mass in kg");
-  const double carrier_jz = positive(c, "inertia_z_kg_m2", "carrier moment of inertia in kg·m²");
+  const double carrier_mass_kg = number_within(c, "mass_kg", limits::kMass_kg);
+  const double carrier_jz = number_within(c, "inertia_z_kg_m2", limits::kInertia_kg_m2);
   c.reject_unknown_keys();
   const Supports supports = parse_supports(m);
   const bool ring_fixed = m.boolean_or("ring_fixed", true);
@@ -139,7 +139,7 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
     m.map("supports").map("ring").fail("torsional_stiffness_N_m_per_rad",
                                          "a fixed ring on a bearing is held against rotation by its torsional spring: expected a stiffness > 0 in N·m/rad "
                                          "(or ring_fixed: false for a ring free to turn)");
-  const Eigen::Vector3d origin = vec3_or(m, "origin_m", Eigen::Vector3d::Zero());
+  const Eigen::Vector3d origin = vec3_within_or(m, "origin_m", Eigen::Vector3d::Zero(), limits::kPosition_m);
   std::vector<physics::PairTableDef> tables;
   // The set's geometry last: the mesh analysis is the slow part.
   const PlanetaryGeometry g = set_geometry(m, s, shapes != 0, tables);

@@ -68,6 +68,12 @@ class Node {
     const std::vector<double> v = numbers(key, 3);
     return {v[0], v[1], v[2]};
   }
+  Eigen::Vector3d vec3_within(const std::string& key, const Limit& limit) const {
+    const Eigen::Vector3d v = vec3(key);
+    for (int i = 0; i < 3; ++i)
+      if (!within(v[i], limit)) fail(key, std::string(1, "xyz"[i]) + ": " + limit_message(limit, v[i]));
+    return v;
+  }
   Node object(const std::string& key) const {
     if (!at(key).is_object()) fail(key, "expected an object");
     return Node(at(key), where(key), file_);
@@ -104,21 +110,30 @@ GearSpec gear_of(const Node& n) {
   if (kind != "internal" && kind != "external") n.fail("kind", "expected internal or external");
   g.kind = kind == "internal" ? GearKind::Internal : GearKind::External;
   g.teeth = n.integer("teeth", limits::kTeeth);
-  for (auto [key, field] : {std::pair{"module_m", &g.module_m}, {"pressure_angle_rad", &g.pressure_angle_rad},
-                            {"face_width_m", &g.face_width_m}, {"profile_shift", &g.profile_shift},
-                            {"addendum_coeff", &g.addendum_coeff}, {"dedendum_coeff", &g.dedendum_coeff},
-                            {"root_fillet_coeff", &g.root_fillet_coeff}, {"thinning_per_flank_m", &g.thinning_per_flank_m},
-                            {"bore_diameter_m", &g.bore_diameter_m}, {"rim_diameter_m", &g.rim_diameter_m},
-                            {"tooth0_angle_rad", &g.tooth0_angle_rad}, {"chordal_deviation_m", &g.chordal_deviation_m}})
-    *field = n.number(key);
+  // The limits of the gear-set reader (gearset_file.cpp): a record is input too.
+  for (auto [key, field, limit] : {std::tuple{"module_m", &g.module_m, limits::kModule_m},
+                                   {"pressure_angle_rad", &g.pressure_angle_rad, limits::kPressureAngle_rad},
+                                   {"face_width_m", &g.face_width_m, limits::kFaceWidth_m},
+                                   {"profile_shift", &g.profile_shift, limits::kProfileShift},
+                                   {"addendum_coeff", &g.addendum_coeff, limits::kToothDepthFactor},
+                                   {"dedendum_coeff", &g.dedendum_coeff, limits::kToothDepthFactor},
+                                   {"root_fillet_coeff", &g.root_fillet_coeff, limits::kRootFilletFactor},
+                                   {"thinning_per_flank_m", &g.thinning_per_flank_m, limits::kThinning_m},
+                                   {"bore_diameter_m", &g.bore_diameter_m, limits::kGearDiameter_m},
+                                   {"rim_diameter_m", &g.rim_diameter_m, limits::kGearDiameter_m},
+                                   {"tooth0_angle_rad", &g.tooth0_angle_rad, limits::kAngle_rad},
+                                   {"chordal_deviation_m", &g.chordal_deviation_m, limits::kChordalDeviation_m}})
+    *field = n.number_within(key, limit);
   const Node e = n.object("errors");
+  using limits::kToothError_m;
   for (const Node& f : e.list("flank_offsets"))
-    g.errors.flank_offsets.push_back({f.integer("tooth", kCount), flank_of(f, "flank"), f.number("normal_offset_m")});
-  for (const Node& p : e.list("pitch_errors")) g.errors.pitch_errors.push_back({p.integer("tooth", kCount), p.number("error_m")});
+    g.errors.flank_offsets.push_back({f.integer("tooth", kCount), flank_of(f, "flank"), f.number_within("normal_offset_m", kToothError_m)});
+  for (const Node& p : e.list("pitch_errors"))
+    g.errors.pitch_errors.push_back({p.integer("tooth", kCount), p.number_within("error_m", kToothError_m)});
   for (const Node& p : e.list("profile_slopes"))
-    g.errors.profile_slopes.push_back({p.integer("tooth", kAny), flank_of(p, "flank"), p.number("slope_m")});
+    g.errors.profile_slopes.push_back({p.integer("tooth", kAny), flank_of(p, "flank"), p.number_within("slope_m", kToothError_m)});
   const Node ecc = e.object("eccentricity");
-  g.errors.eccentricity = {ecc.number("eccentricity_m"), ecc.number("phase_rad")};
+  g.errors.eccentricity = {ecc.number_within("eccentricity_m", limits::kEccentricity_m), ecc.number_within("phase_rad", limits::kAngle_rad)};
   try {
     validate_gear_spec(g);
   } catch (const InputError& err) {
@@ -156,10 +171,10 @@ physics::BodyDef body_of(const Node& n) {
   b.name = n.string("name");
   if (n.has("gear")) b.gear = gear_of(n.object("gear"));
   if (n.has("mesh")) b.mesh = mesh_of(n.object("mesh"));
-  if (n.has("density_kg_m3")) b.density_kg_m3 = n.number("density_kg_m3");
-  if (n.has("mass_kg")) b.mass_kg = n.number("mass_kg");
-  if (n.has("principal_inertia_kg_m2")) b.principal_inertia_kg_m2 = n.vec3("principal_inertia_kg_m2");
-  b.pose.position_m = n.vec3("position_m");
+  if (n.has("density_kg_m3")) b.density_kg_m3 = n.number_within("density_kg_m3", limits::kDensity_kg_m3);
+  if (n.has("mass_kg")) b.mass_kg = n.number_within("mass_kg", limits::kMass_kg);
+  if (n.has("principal_inertia_kg_m2")) b.principal_inertia_kg_m2 = n.vec3_within("principal_inertia_kg_m2", limits::kInertia_kg_m2);
+  b.pose.position_m = n.vec3_within("position_m", limits::kPosition_m);
   const std::vector<double> q = n.numbers("orientation_wxyz", 4);
   b.pose.orientation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
   if (std::abs(b.pose.orientation.norm() - 1) > 1e-9) n.fail("orientation_wxyz", "expected a unit quaternion");
@@ -168,7 +183,8 @@ physics::BodyDef body_of(const Node& n) {
 }
 
 physics::JointDef joint_of(const Node& n) {
-  physics::JointDef j{n.string("name"), n.string("body"), n.string("parent"), n.vec3("pivot_m"), n.vec3("axis"), {}};
+  physics::JointDef j{n.string("name"), n.string("body"), n.string("parent"), n.vec3_within("pivot_m", limits::kPosition_m),
+                      n.vec3_within("axis", {-1, 1, false, "", "a unit axis component"}), {}};
   if (n.has("bearing")) {
     const Node b = n.object("bearing");
     j.bearing = physics::BearingDef{b.number("radial_stiffness_N_per_m"), b.number("radial_damping_N_s_per_m"), 0, 0};
@@ -274,7 +290,8 @@ void read_rest(const Node& r, physics::Scenario& s) {
                            d.number("effective_mass_kg"), d.number("noise_rms_m_s2"), d.number("sample_rate_hz")});
   if (r.has("impulses"))
     for (const Node& i : r.list("impulses"))
-      s.impulses.push_back({i.string("body"), i.number("at_s"), i.number("duration_s"), i.vec3("force_N"), i.vec3("torque_N_m")});
+      s.impulses.push_back({i.string("body"), i.number_within("at_s", limits::kRunTime_s), i.number_within("duration_s", limits::kDuration_s),
+                            i.vec3("force_N"), i.vec3("torque_N_m")});
   if (r.has("render")) s.render = render_of(r.object("render"));
   if (r.has("transmission")) {
     const Node t = r.object("transmission");

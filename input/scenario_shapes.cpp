@@ -36,6 +36,14 @@ Eigen::Vector3d vec3_or(const YamlMap& m, const std::string& key, const Eigen::V
   return {v[0], v[1], v[2]};
 }
 
+Eigen::Vector3d vec3_within_or(const YamlMap& m, const std::string& key, const Eigen::Vector3d& fallback, const Limit& limit) {
+  const Eigen::Vector3d v = vec3_or(m, key, fallback);
+  if (!m.has(key)) return v;
+  for (int i = 0; i < 3; ++i)
+    if (!within(v[i], limit)) m.fail(key, std::string(1, "xyz"[i]) + ": " + limit_message(limit, v[i]));
+  return v;
+}
+
 namespace {
 
 // gear_from: {spec: FILE, gear: NAME}; also returns the spec's density.
@@ -106,10 +114,9 @@ physics::MeshSource mesh_source(const YamlMap& m, const fs::path& dir) {
   return src;
 }
 
-// Principal moments must be positive and obey the triangle inequality (a real body's do).
+// Principal moments must be within their limit and obey the triangle inequality (a real body's do).
 Eigen::Vector3d principal_inertia(const YamlMap& m) {
-  const Eigen::Vector3d j = vec3_or(m, "principal_inertia_kg_m2", Eigen::Vector3d::Zero());
-  if (!(j.minCoeff() > 0)) m.fail("principal_inertia_kg_m2", "expected three positive moments in kg·m²");
+  const Eigen::Vector3d j = vec3_within_or(m, "principal_inertia_kg_m2", Eigen::Vector3d::Zero(), limits::kInertia_kg_m2);
   if (j.x() + j.y() < j.z() || j.y() + j.z() < j.x() || j.z() + j.x() < j.y())
     m.fail("principal_inertia_kg_m2", "no rigid body has these moments (each must be ≤ the sum of the other two)");
   return j;
@@ -134,8 +141,8 @@ void parse_shape_and_mass(const YamlMap& m, physics::BodyDef& b, const fs::path&
   b.density_kg_m3 = m.optional_number("density_kg_m3");
   b.mass_kg = m.optional_number("mass_kg");
   if (b.density_kg_m3 && b.mass_kg) m.fail("mass_kg", "give density_kg_m3 or mass_kg, not both");
-  if (b.density_kg_m3 && !(*b.density_kg_m3 > 0)) m.fail("density_kg_m3", "expected a positive density in kg/m³");
-  if (b.mass_kg && !(*b.mass_kg > 0)) m.fail("mass_kg", "expected a positive mass in kg");
+  if (b.density_kg_m3) number_within(m, "density_kg_m3", limits::kDensity_kg_m3);
+  if (b.mass_kg) number_within(m, "mass_kg", limits::kMass_kg);
   if (given(m, "principal_inertia_kg_m2")) b.principal_inertia_kg_m2 = principal_inertia(m);
   if (shapes == 1) {
     if (b.principal_inertia_kg_m2 && !b.mass_kg)

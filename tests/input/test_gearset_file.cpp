@@ -113,6 +113,75 @@ TEST(GearSetFile, ImpossibleGearNamesTheGearAndField) {
   EXPECT_NE(e.find("got 2"), std::string::npos) << e;
 }
 
+// kGood with `from` (in the pinion's line, line 4) replaced by `to`.
+std::string pinion_with(const std::string& from, const std::string& to) {
+  std::string text = kGood;
+  const std::size_t at = text.find(from, text.find("pinion:"));
+  return text.replace(at, from.size(), to);
+}
+
+TEST(GearSetFile, AModuleOrFaceWidthOf1e300IsRefusedWithItsRange) {
+  // Both once reached the outline's tessellation as an overflow (an internal error, exit 3).
+  std::string e = error_for(pinion_with("module_m: 0.002", "module_m: 1.0e300"));
+  EXPECT_NE(e.find(".yaml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("gears.pinion.module_m: expected a module in [1e-05, 0.1] m, got 1e+300"), std::string::npos) << e;
+  e = error_for(pinion_with("face_width_m: 0.01", "face_width_m: 1.0e300"));
+  EXPECT_NE(e.find(".yaml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("gears.pinion.face_width_m: expected a face width in [1e-05, 2] m, got 1e+300"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, EveryNumberOfAGearIsCheckedAgainstItsLimit) {
+  struct Case {
+    std::string key_value, expected;
+  };
+  const Case cases[] = {
+      {"pressure_angle_deg: 60", "gears.pinion.pressure_angle_deg: expected a pressure angle in (0, 45) °, got 60"},
+      {"pressure_angle_rad: 1e300", "gears.pinion.pressure_angle_rad: expected a pressure angle in (0, 0.785398) rad"},
+      {"profile_shift: 1e300", "gears.pinion.profile_shift: expected a profile shift coefficient (in modules) in [-3, 3]"},
+      {"addendum_coeff: 1e300", "gears.pinion.addendum_coeff: expected a tooth depth factor (in modules) in [0, 3]"},
+      {"dedendum_coeff: -1", "gears.pinion.dedendum_coeff: expected a tooth depth factor (in modules) in [0, 3], got -1"},
+      {"root_fillet_coeff: 1e300", "gears.pinion.root_fillet_coeff: expected a root fillet factor (in modules) in [0, 1]"},
+      {"thinning_per_flank_m: 1e300", "gears.pinion.thinning_per_flank_m: expected a thinning per flank in [0, 0.001] m"},
+      {"bore_diameter_m: 1e300", "gears.pinion.bore_diameter_m: expected a diameter in [0, 100] m, got 1e+300"},
+      {"tooth0_angle_deg: 1e300", "gears.pinion.tooth0_angle_deg: expected an angle in [-360, 360] °, got 1e+300"},
+      {"errors: {flank_offsets: [{tooth: 0, flank: ccw, normal_offset_m: 1e300}]}",
+       "gears.pinion.errors.flank_offsets[0].normal_offset_m: expected a tooth error in [-0.001, 0.001] m"},
+      {"errors: {pitch_errors: [{tooth: 0, error_m: -1e300}]}", "gears.pinion.errors.pitch_errors[0].error_m: expected a tooth error"},
+      {"errors: {profile_slopes: [{flank: cw, slope_m: 1e300}]}", "gears.pinion.errors.profile_slopes[0].slope_m: expected a tooth error"},
+      {"errors: {eccentricity: {eccentricity_m: 1e300}}", "gears.pinion.errors.eccentricity.eccentricity_m: expected an eccentricity in [0, 0.01] m"},
+      {"errors: {eccentricity: {eccentricity_m: 1e-5, phase_rad: 1e300}}", "gears.pinion.errors.eccentricity.phase_rad: expected an angle"},
+  };
+  for (const Case& c : cases) {
+    const std::string e = error_for(pinion_with("teeth: 20", "teeth: 20, " + c.key_value));
+    EXPECT_NE(e.find(".yaml:4:"), std::string::npos) << c.key_value << ": " << e;
+    EXPECT_NE(e.find(c.expected), std::string::npos) << c.key_value << ": " << e;
+  }
+}
+
+TEST(GearSetFile, AValueFromTheDefaultsBlockIsCheckedWhereItStands) {
+  std::string text = kGood;
+  text.replace(text.find("gears:\n"), 7, "defaults: {profile_shift: 1e300}\ngears:\n");
+  const std::string e = error_for(text);
+  EXPECT_NE(e.find(".yaml:3:"), std::string::npos) << e;
+  EXPECT_NE(e.find("defaults.profile_shift: expected a profile shift coefficient"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, DensityAndToleranceClassAreBounded) {
+  std::string text = kGood;
+  std::string e = error_for(text.replace(text.find("7850"), 4, "1e300"));
+  EXPECT_NE(e.find(".yaml:2:"), std::string::npos) << e;
+  EXPECT_NE(e.find("density_kg_m3: expected a density in [1, 100000] kg/m³, got 1e+300"), std::string::npos) << e;
+  e = error_for(kGood + "tolerance: {quality: 99}\n");
+  EXPECT_NE(e.find("tolerance.quality: expected a quality class in [0, 12], got 99"), std::string::npos) << e;
+}
+
+TEST(GearSetFile, ANameThatIsNotUtf8IsRefusedNamingTheKey) {
+  std::string text = kGood;
+  const std::string e = error_for(text.replace(0, 7, "name: \"t\xff\"\n"));
+  EXPECT_NE(e.find(".yaml:1:"), std::string::npos) << e;
+  EXPECT_NE(e.find("name: expected UTF-8 text, got 't\\xFF' (invalid byte 0xFF at byte 2)"), std::string::npos) << e;
+}
+
 TEST(GearSetFile, YamlSyntaxErrorGivesLineAndColumn) {
   const std::string e = error_for("name: t\ngears: [unclosed\n");
   EXPECT_NE(e.find("YAML syntax error"), std::string::npos) << e;

@@ -194,14 +194,82 @@ TEST(ScenarioErrors, MeshFileNameTooLongForTheSystemIsRefusedAsNotFound) {
 }
 
 TEST(ScenarioErrors, NegativeMass) {
-  EXPECT_NAMES(error_for(edited("mass_kg: 1.0", "mass_kg: -1.0")), "bodies[0].mass_kg", "expected a positive mass");
+  EXPECT_NAMES(error_for(edited("mass_kg: 1.0", "mass_kg: -1.0")), "bad.yaml:4:", "bodies[0].mass_kg",
+               "expected a mass in [1e-09, 1e+06] kg, got -1");
 }
 
 TEST(ScenarioErrors, ZeroDensity) {
   const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
                                          "density_kg_m3: 0, gear: {kind: external, teeth: 20, module_m: 0.002, "
                                          "face_width_m: 0.01}"));
-  EXPECT_NAMES(e, "bodies[0].density_kg_m3", "expected a positive density");
+  EXPECT_NAMES(e, "bad.yaml:4:", "bodies[0].density_kg_m3", "expected a density in [1, 100000] kg/m³, got 0");
+}
+
+TEST(ScenarioErrors, MassPropertiesAndPosesOf1e300AreRefused) {
+  const std::string body = "mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]";
+  EXPECT_NAMES(error_for(edited("mass_kg: 1.0", "mass_kg: 1.0e300")), "bad.yaml:4:", "bodies[0].mass_kg",
+               "expected a mass in [1e-09, 1e+06] kg, got 1e+300");
+  EXPECT_NAMES(error_for(edited("[0.01, 0.01, 0.02]", "[0.01, 0.01, 1.0e300]")), "bad.yaml:4:", "bodies[0].principal_inertia_kg_m2",
+               "z: expected a moment of inertia in [1e-18, 1e+09] kg·m², got 1e+300");
+  EXPECT_NAMES(error_for(edited(body, body + ", position_m: [1.0e300, 0, 0]")), "bad.yaml:4:", "bodies[0].position_m",
+               "x: expected a coordinate in [-1000, 1000] m, got 1e+300");
+  EXPECT_NAMES(error_for(edited(body, body + ", orientation_deg: [0, 1.0e300, 0]")), "bad.yaml:4:", "bodies[0].orientation_deg",
+               "y: expected an angle in [-360, 360] °, got 1e+300");
+  EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]", "axis: [0, 0, 1], pivot_m: [0, 0, -1.0e300]")), "bad.yaml:6:", "joints[0].pivot_m",
+               "z: expected a coordinate in [-1000, 1000] m");
+  EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]", "axis: [1.0e300, 1.0e300, 0]")), "bad.yaml:6:", "joints[0].axis",
+               "expected a direction of finite length");
+}
+
+TEST(ScenarioErrors, AnInlineGearsModuleOf1e300IsRefused) {
+  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+                                         "density_kg_m3: 7850, gear: {kind: external, teeth: 20, module_m: 1.0e300, "
+                                         "face_width_m: 0.01}"));
+  EXPECT_NAMES(e, "bad.yaml:4:", "bodies[0].gear.module_m", "expected a module in [1e-05, 0.1] m, got 1e+300");
+}
+
+// The pair macro with `extra` added to its mapping: of CAD meshes (a 12- and an 18-tooth gear of
+// module 1 mm), or of the spur pair's generated gears.
+std::string pair_error(const std::string& extra, bool meshes) {
+  const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
+  const std::string spec = std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/spur_pair_gearset.yaml";
+  const std::string driver = meshes ? "{mesh: {file: " + data + "mcad_m1_z12_a20_f5_b005.stl, unit: mm}, density_kg_m3: 7850}"
+                                    : "{gear_from: {spec: " + spec + ", gear: pinion}}";
+  const std::string driven = meshes ? "{mesh: {file: " + data + "mcad_m1_z18_a20_f5_b005.stl, unit: mm}, density_kg_m3: 7850}"
+                                    : "{gear_from: {spec: " + spec + ", gear: wheel}}";
+  return error_for("name: t\nduration_s: 0.1\npair:\n  driver: " + driver + "\n  driven: " + driven + "\n" + extra);
+}
+
+TEST(ScenarioErrors, ACentreDistanceOfZeroOrLessIsRefusedNotDerived) {
+  // A mesh pair's −1 or 0 was once replaced by the derived distance while the run recorded it as
+  // given (centre_distance_derived: false).
+  for (const bool meshes : {true, false}) {
+    EXPECT_EQ(pair_error("", meshes), "");
+    for (const std::string d : {"-1", "0"}) {
+      const std::string e = pair_error("  centre_distance_m: " + d + "\n", meshes);
+      EXPECT_NE(e.find("bad.yaml:6:"), std::string::npos) << e;
+      EXPECT_NE(e.find("pair.centre_distance_m: expected a centre distance in (0, 100] m, got " + d), std::string::npos) << e;
+    }
+  }
+}
+
+TEST(ScenarioErrors, AnImpulseOutsideTheRunIsRefused) {
+  const std::string pulse = "impulses:\n  - {body: wheel, at_s: AT, duration_s: 0.001, torque_N_m: [0, 0, 1]}\n";
+  const auto with_at = [&](const std::string& at) { return kGood + std::string(pulse).replace(pulse.find("AT"), 2, at); };
+  EXPECT_EQ(error_for(with_at("0.05")), "");
+  EXPECT_EQ(error_for(with_at("0.099")), "");  // ends at the run's end
+  // 9999 s in a 0.1 s run was once skipped without a word.
+  EXPECT_NAMES(error_for(with_at("9999")), "bad.yaml:12:", "impulses[0].at_s",
+               "the pulse from 9999 s to 9999.001 s ends after the run's end at 0.1 s: expected a pulse within [0, 0.1] s (the run would skip it)");
+  EXPECT_NAMES(error_for(with_at("0.0995")), "bad.yaml:12:", "impulses[0].at_s", "ends after the run's end at 0.1 s",
+               "(the run would skip its end)");
+  EXPECT_NAMES(error_for(with_at("-1")), "bad.yaml:12:", "impulses[0].at_s", "expected a time in [0, 10000] s, got -1");
+}
+
+TEST(ScenarioErrors, AScenarioNameThatIsNotUtf8IsRefusedNamingTheKey) {
+  // Such a name once reached scenario.json, whose writer then failed half-way (a 0-byte record).
+  const std::string e = error_for(edited("name: t", "name: \"gear\xe9\""));
+  EXPECT_NAMES(e, "bad.yaml:1:", "name: expected UTF-8 text, got 'gear\\xE9' (invalid byte 0xE9 at byte 5)");
 }
 
 TEST(ScenarioErrors, ZeroDuration) {

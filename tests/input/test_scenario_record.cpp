@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "input/gearset_file.hpp"
 #include "input/scenario_file.hpp"
 #include "input/scenario_record.hpp"
 #include "tests/support/asset_scenario.hpp"
@@ -179,6 +180,39 @@ TEST(ScenarioRecord, ADamagedRecordNamesTheKey) {
   j = good;
   j["bodies"][0]["orientation_wxyz"] = {2, 0, 0, 0};
   EXPECT_NE(error_of(j).find("bodies[0].orientation_wxyz: expected a unit quaternion"), std::string::npos) << error_of(j);
+}
+
+TEST(ScenarioRecord, ARecordsGearAndBodyNumbersAreCheckedAgainstTheReadersLimits) {
+  const nlohmann::json good = nlohmann::json::parse(scenario_json(load_scenario(asset("paper_dynamics.yaml"))).dump());
+  nlohmann::json j = good;
+  j["bodies"][1]["gear"]["module_m"] = 1e300;
+  EXPECT_NE(error_of(j).find("rec.json: key bodies[1].gear.module_m: expected a module in [1e-05, 0.1] m, got 1e+300"),
+            std::string::npos)
+      << error_of(j);
+  j = good;
+  j["bodies"][1]["gear"]["face_width_m"] = 1e300;
+  EXPECT_NE(error_of(j).find("key bodies[1].gear.face_width_m: expected a face width"), std::string::npos) << error_of(j);
+  j = good;
+  j["bodies"][0]["position_m"] = {0, 1e300, 0};
+  EXPECT_NE(error_of(j).find("key bodies[0].position_m: y: expected a coordinate in [-1000, 1000] m"), std::string::npos) << error_of(j);
+}
+
+TEST(ScenarioRecord, TheRunFoldersGearSetCopyIsCheckedAsTheOriginal) {
+  const fs::path dir = test::fresh_test_dir();
+  write_scenario_record(load_scenario(asset("paper_dynamics.yaml")), dir);
+  std::ifstream in(dir / "gearset.yaml");
+  std::string text(std::istreambuf_iterator<char>(in), {});
+  const std::size_t at = text.find("module_m: 1.0e-3");
+  ASSERT_NE(at, std::string::npos);
+  std::ofstream(dir / "gearset.yaml") << text.replace(at, 16, "module_m: 1.0e300");
+  try {
+    load_gearset(read_scenario_record(dir).gearset_spec);  // as report does
+    ADD_FAILURE() << "a module of 1e300 m was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("gearset.yaml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("defaults.module_m: expected a module in [1e-05, 0.1] m, got 1e+300"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ScenarioRecord, AMeshEditedSinceTheRunIsRefused) {
