@@ -62,7 +62,7 @@ constexpr Limit kTeeth{3, 1000, false, "", "a number of teeth"};
 constexpr Limit kChordalDeviation_m{1e-9, 1e-4, false, "m", "a chordal deviation"};
 
 // Gear geometry (gear-set specs, a scenario's `gear:`, run records). Each bound keeps the outline
-// finite: 1e300 m reached the tessellation as an overflow (an internal error, not a refusal).
+// finite: 1e300 m overflows the tessellation (an internal error, not a refusal).
 // Module, m: 0.01 mm is below the finest watch gears' (~0.05 mm); 0.1 m is twice the largest
 // mill gears' (~50 mm).
 constexpr Limit kModule_m{1e-5, 0.1, false, "m", "a module"};
@@ -93,7 +93,7 @@ constexpr Limit kEccentricity_m{0, 1e-2, false, "m", "an eccentricity"};
 // across.
 constexpr Limit kGearDiameter_m{0, 100, false, "m", "a diameter"};
 // Angles of a pose or of tooth 0, rad: one turn either way; more names the same pose and is most
-// likely degrees given as radians (infinity gave NaN poses). In degrees: ±360°.
+// likely degrees given as radians. In degrees: ±360°.
 constexpr Limit kAngle_rad{-2 * std::numbers::pi, 2 * std::numbers::pi, false, "rad", "an angle"};
 // Quality class of a gear's tolerances: ISO 1328-1 has classes 0 to 12, DIN 3961 1 to 12.
 constexpr Limit kQualityClass{0, 12, false, "", "a quality class"};
@@ -103,6 +103,13 @@ constexpr Limit kCentreDistance_m{0, 100, true, "m", "a centre distance"};
 // Body positions, hinge pivots and macro origins, m: 1 km from the origin is far beyond any
 // gearbox, and doubles there still resolve 1e-13 m, well below a tooth contact's nanometres.
 constexpr Limit kPosition_m{-1e3, 1e3, false, "m", "a coordinate"};
+
+// The finite-element model of fe-te (a scenario's fe:), m. Element sizes: 10 µm puts ~1e7 quads on
+// a 1 mm module planetary set; 0.1 m is a large gear in one element. The size transition: up to
+// 1 m, a large gear's radius. The boundary's sagitta: 0 (none) to 1 mm, a coarse module's tooth.
+constexpr Limit kFeElementSize_m{1e-5, 0.1, false, "m", "an element size"};
+constexpr Limit kFeTransition_m{0, 1, false, "m", "a size transition"};
+constexpr Limit kFeSagitta_m{0, 1e-3, false, "m", "a sagitta"};
 
 // Mass properties (bodies, the planetary carrier, inspect --density).
 // Density, kg/m³: 1 is below an aerogel's, 1e5 over four times osmium's (22 590); steel is 7850.

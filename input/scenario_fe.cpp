@@ -13,18 +13,13 @@ physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& s) {
     m.fail("fe", "fe-te solves planetary trains of generated gears: the scenario needs the planetary: macro with "
                  "the gear names of a spec (a set of CAD meshes has no finite-element model yet)");
   physics::FeTeDef f;
-  auto length = [&](const char* key, double fallback, bool zero_ok) {
-    const double v = m.number_or(key, fallback);
-    if (!std::isfinite(v) || v < 0 || (!zero_ok && v == 0))
-      m.fail(key, std::string("expected a length ") + (zero_ok ? "≥ 0" : "> 0") + " in m");
-    return v;
-  };
-  f.flank_size_m = length("flank_size_m", fe::kDefaultFeTeFlankSize_m, false);
-  f.core_size_m = length("core_size_m", std::max(fe::kDefaultCoreElementSize_m, f.flank_size_m), false);
+  using namespace limits;
+  f.flank_size_m = number_within_or(m, "flank_size_m", fe::kDefaultFeTeFlankSize_m, kFeElementSize_m);
+  f.core_size_m = number_within_or(m, "core_size_m", std::max(fe::kDefaultCoreElementSize_m, f.flank_size_m), kFeElementSize_m);
   if (f.core_size_m < f.flank_size_m) m.fail("core_size_m", "expected at least flank_size_m");
-  f.transition_m = length("transition_m", fe::kDefaultSizeTransition_m, true);
-  f.max_sagitta_m = length("max_sagitta_m", fe::kDefaultMaxSagitta_m, true);
-  f.thinning_per_flank_m = length("thinning_per_flank_m", 0.0, true);
+  f.transition_m = number_within_or(m, "transition_m", fe::kDefaultSizeTransition_m, kFeTransition_m);
+  f.max_sagitta_m = number_within_or(m, "max_sagitta_m", fe::kDefaultMaxSagitta_m, kFeSagitta_m);
+  f.thinning_per_flank_m = number_within_or(m, "thinning_per_flank_m", 0.0, kThinning_m);
   f.friction = m.number_or("friction", fe::kDefaultFlankFriction);
   if (!(f.friction >= 0) || f.friction > 1) m.fail("friction", "expected a Coulomb coefficient 0 to 1");
   f.element_type = m.choice_or("element_type", {"CPS4R", "CPS4"}, "CPS4R");

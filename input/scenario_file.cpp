@@ -378,6 +378,9 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
 
 physics::Scenario load_scenario(const fs::path& file, const std::vector<std::string>& overrides) {
   YAML::Node root = load_yaml_mapping(file);  // size, syntax, text keys, no key twice
+  // The overrides' text is recorded whole in summary.json (a YAML comment in it included).
+  for (const std::string& o : overrides)
+    if (!is_utf8(o)) throw InputError(file.string() + ": --set '" + escaped_bytes(o) + "': expected UTF-8 text");
   apply_overrides(root, overrides, file.string());
   try {
     const YamlMap top = YamlMap::from_node(root, file.string());

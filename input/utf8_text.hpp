@@ -1,5 +1,5 @@
 // Text read from input files must be UTF-8: the records a run writes are JSON, which holds nothing
-// else (writing invalid bytes into scenario.json failed half-way and left it empty). The keys and
+// else (nlohmann's writer throws at the first invalid byte, leaving scenario.json empty). The keys and
 // values of a scenario, gear-set or sweep file are checked once, when it is read, naming
 // file:line:col and key. Not a normaliser: valid text is kept byte for byte.
 #pragma once

@@ -121,7 +121,7 @@ std::string pinion_with(const std::string& from, const std::string& to) {
 }
 
 TEST(GearSetFile, AModuleOrFaceWidthOf1e300IsRefusedWithItsRange) {
-  // Both once reached the outline's tessellation as an overflow (an internal error, exit 3).
+  // Unchecked, either overflows the outline's tessellation: an internal error, not a refusal.
   std::string e = error_for(pinion_with("module_m: 0.002", "module_m: 1.0e300"));
   EXPECT_NE(e.find(".yaml:4:"), std::string::npos) << e;
   EXPECT_NE(e.find("gears.pinion.module_m: expected a module in [1e-05, 0.1] m, got 1e+300"), std::string::npos) << e;

@@ -52,7 +52,7 @@ json with(const std::string& at, const json& value) {
 TEST(RunRecordCheck, TheSummaryARunWritesPasses) { EXPECT_EQ(error_of(good_summary()), ""); }
 
 TEST(RunRecordCheck, SimulatedSecondsMustBeADurationNumber) {
-  // "abc" once ended report with a JSON type error (exit 1 or 3).
+  // Unchecked, "abc" ends report with a JSON type error (exit 1 or 3) instead of naming the key.
   EXPECT_REFUSED(with("/sim_seconds", "abc"), "sim_seconds: expected a number, got \"abc\"");
   EXPECT_REFUSED(with("/sim_seconds", 0), "sim_seconds: expected a duration in (0, 10000] s, got 0");
   EXPECT_REFUSED(with("/sim_seconds", 1e300), "sim_seconds: expected a duration in (0, 10000] s, got 1e+300");

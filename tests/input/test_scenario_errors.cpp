@@ -241,8 +241,8 @@ std::string pair_error(const std::string& extra, bool meshes) {
 }
 
 TEST(ScenarioErrors, ACentreDistanceOfZeroOrLessIsRefusedNotDerived) {
-  // A mesh pair's −1 or 0 was once replaced by the derived distance while the run recorded it as
-  // given (centre_distance_derived: false).
+  // involute_pair() reads a distance ≤ 0 as "derive it": unchecked, a mesh pair would run at the
+  // derived distance while its record says the distance was given (centre_distance_derived: false).
   for (const bool meshes : {true, false}) {
     EXPECT_EQ(pair_error("", meshes), "");
     for (const std::string d : {"-1", "0"}) {
@@ -258,7 +258,7 @@ TEST(ScenarioErrors, AnImpulseOutsideTheRunIsRefused) {
   const auto with_at = [&](const std::string& at) { return kGood + std::string(pulse).replace(pulse.find("AT"), 2, at); };
   EXPECT_EQ(error_for(with_at("0.05")), "");
   EXPECT_EQ(error_for(with_at("0.099")), "");  // ends at the run's end
-  // 9999 s in a 0.1 s run was once skipped without a word.
+  // Unchecked, the run would skip a pulse at 9999 s in a 0.1 s run without a word.
   EXPECT_NAMES(error_for(with_at("9999")), "bad.yaml:12:", "impulses[0].at_s",
                "the pulse from 9999 s to 9999.001 s ends after the run's end at 0.1 s: expected a pulse within [0, 0.1] s (the run would skip it)");
   EXPECT_NAMES(error_for(with_at("0.0995")), "bad.yaml:12:", "impulses[0].at_s", "ends after the run's end at 0.1 s",
@@ -267,7 +267,7 @@ TEST(ScenarioErrors, AnImpulseOutsideTheRunIsRefused) {
 }
 
 TEST(ScenarioErrors, AScenarioNameThatIsNotUtf8IsRefusedNamingTheKey) {
-  // Such a name once reached scenario.json, whose writer then failed half-way (a 0-byte record).
+  // Unchecked, such a name reaches scenario.json, which JSON cannot hold (a 0-byte record).
   const std::string e = error_for(edited("name: t", "name: \"gear\xe9\""));
   EXPECT_NAMES(e, "bad.yaml:1:", "name: expected UTF-8 text, got 'gear\\xE9' (invalid byte 0xE9 at byte 5)");
 }

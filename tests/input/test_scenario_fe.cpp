@@ -53,7 +53,14 @@ TEST(ScenarioFe, DefaultsAndAGivenTorque) {
 }
 
 TEST(ScenarioFe, BadValuesNameTheKey) {
-  EXPECT_HAS(error_for(kPaper, {"fe.flank_size_m=0"}), "paper_te_loaded.yaml", "fe.flank_size_m", "expected a length > 0");
+  EXPECT_HAS(error_for(kPaper, {"fe.flank_size_m=0"}), "paper_te_loaded.yaml", "fe.flank_size_m",
+             "expected an element size in [1e-05, 0.1] m, got 0");
+  // Each length of the FE model is bounded (1e-300 m elements would never finish meshing).
+  EXPECT_HAS(error_for(kPaper, {"fe.flank_size_m=1e-300"}), "fe.flank_size_m", "expected an element size in [1e-05, 0.1] m, got 1e-300");
+  EXPECT_HAS(error_for(kPaper, {"fe.transition_m=1e300"}), "fe.transition_m", "expected a size transition in [0, 1] m, got 1e+300");
+  EXPECT_HAS(error_for(kPaper, {"fe.max_sagitta_m=1e300"}), "fe.max_sagitta_m", "expected a sagitta in [0, 0.001] m, got 1e+300");
+  EXPECT_HAS(error_for(kPaper, {"fe.thinning_per_flank_m=1e300"}), "fe.thinning_per_flank_m",
+             "expected a thinning per flank in [0, 0.001] m, got 1e+300");
   EXPECT_HAS(error_for(kPaper, {"fe.core_size_m=1e-4"}), "fe.core_size_m", "at least flank_size_m");
   EXPECT_HAS(error_for(kPaper, {"fe.friction=-0.1"}), "fe.friction");
   EXPECT_HAS(error_for(kPaper, {"fe.element_type=C3D8"}), "fe.element_type");

@@ -2,9 +2,12 @@
 // sequence is found at its first byte, and messages quote invalid bytes as \xHH.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/errors.hpp"
+#include "input/scenario_file.hpp"
 #include "input/utf8_text.hpp"
 #include "input/yaml_reader.hpp"
 
@@ -48,6 +51,20 @@ TEST(Utf8Text, TheFirstKeyOrValueThatIsNotUtf8IsNamedWithItsLine) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("f.yaml:3:6: bodies[0]: expected UTF-8 text, got 'k\\xFE'"), std::string::npos) << e.what();
   }
+}
+
+TEST(Utf8Text, AnOverrideThatIsNotUtf8IsRefusedBeforeItIsApplied) {
+  // A YAML comment drops the bytes from the tree, but summary.json records the override whole.
+  const std::filesystem::path p = std::filesystem::temp_directory_path() / "gearsim_utf8_override.yaml";
+  std::ofstream(p) << "name: t\nduration_s: 0.1\n";
+  try {
+    load_scenario(p, {"name=t # \xff"});
+    ADD_FAILURE() << "an override with invalid UTF-8 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("gearsim_utf8_override.yaml: --set 'name=t # \\xFF': expected UTF-8 text"), std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove(p);
 }
 
 }  // namespace test_utf8_text
