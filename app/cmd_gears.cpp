@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/gear_report.hpp"
+#include "input/input_limits.hpp"
 #include "input/safe_name.hpp"
 #include "core/errors.hpp"
 #include "geometry/mesh_io.hpp"
@@ -76,7 +77,7 @@ void register_gears(CLI::App& app) {
   sub->add_option("--hausdorff-spacing", o->hausdorff_spacing_mm,
                   "Sample spacing, in mm, of the Hausdorff measurement between each mesh and the union of "
                   "its convex pieces. Every outline vertex is sampled; edges and faces at this spacing. Default 0.5.")
-      ->check(CLI::PositiveNumber);
+      ->check(input::cli_within(input::limits::kSampleSpacing_mm));
   sub->add_flag("--json", o->json_only, "Print the analysis as JSON (lengths in m) instead of tables.");
   sub->callback([o] { run(*o); });
 }

@@ -7,6 +7,7 @@
 
 #include "app/commands.hpp"
 #include "app/mesh_inspection.hpp"
+#include "input/input_limits.hpp"
 
 namespace gearsim::app {
 namespace {
@@ -38,17 +39,19 @@ void register_inspect(CLI::App& app) {
       "the departure of the contact's flank table from it.");
   sub->add_option("mesh", o->mesh, "Mesh file.")->required()->check(CLI::ExistingFile);
   sub->add_option("--unit", o->unit, "Length unit of the file's coordinates: m, cm, mm, um, in, ft. Default mm (CAD).");
+  using namespace input::limits;
   sub->add_option("--density", o->density_kg_m3, "Density in kg/m³ for the mass properties. Default 7580 (the paper's steel).")
-      ->check(CLI::PositiveNumber);
+      ->check(input::cli_within(kDensity_kg_m3));
   sub->add_option("--teeth", o->teeth, "Number of teeth: cut the decomposition into per-tooth sectors (tooth index per piece).")
-      ->check(CLI::Range(3, 100000));
-  sub->add_option("--tooth0-deg", o->tooth0_deg, "Polar angle of tooth 0's centre line, in degrees. Default 0.");
+      ->check(input::cli_within(kTeeth));
+  sub->add_option("--tooth0-deg", o->tooth0_deg, "Polar angle of tooth 0's centre line, in degrees. Default 0.")
+      ->check(input::cli_within(input::limit_in_degrees(kAngle_rad)));
   sub->add_option("--prism-tolerance", o->prism_tolerance_um,
                   "How far, in µm, a vertex may lie off the two cap planes and still count as a prism. Default 2, "
                   "as for scenario meshes (STL stores float32: ~0.003 µm at gear scale; CAD noise ~1 µm).")
-      ->check(CLI::PositiveNumber);
+      ->check(input::cli_within(kPrismTolerance_um));
   sub->add_option("--hausdorff-spacing", o->spacing_mm, "Sample spacing, in mm, of the deviation measurement (every vertex is sampled; edges and faces at this spacing). Default 0.5.")
-      ->check(CLI::PositiveNumber);
+      ->check(input::cli_within(kSampleSpacing_mm));
   sub->add_flag("--json", o->json_only, "Print JSON instead of a list.");
   sub->callback([o] {
     const json j = inspect_mesh(*o);

@@ -10,6 +10,7 @@
 #include "app/modes_analysis.hpp"
 #include "app/modes_outputs.hpp"
 #include "core/errors.hpp"
+#include "input/input_limits.hpp"
 #include "input/scenario_file.hpp"
 #include "linear/campbell.hpp"
 #include "linear/lumped_model.hpp"
@@ -93,9 +94,12 @@ void register_modes(CLI::App& app) {
   sub->add_option("--drive", o->drive, "The gear whose torque drives the train and its sense, BODY=ccw|cw (default: the motor's body, "
                                        "else the transmission input's load).");
   sub->add_flag("--json", o->json_only, "Print the JSON (modes.json) instead of the table.");
-  sub->add_option("--harmonics", o->harmonics, "Mesh harmonics in the Campbell table (default 3).")->check(CLI::Range(1, 50));
-  sub->add_option("--phases", o->phases, "Mesh positions per pitch the mean mesh stiffness is taken over (default 64).")->check(CLI::Range(4, 4096));
-  sub->add_option("--max-speed", o->max_speed_rad_s, "Leave out crossings above this drive speed, rad/s.")->check(CLI::PositiveNumber);
+  sub->add_option("--harmonics", o->harmonics, "Mesh harmonics in the Campbell table (default 3).")
+      ->check(input::cli_within(input::limits::kModeHarmonics));
+  sub->add_option("--phases", o->phases, "Mesh positions per pitch the mean mesh stiffness is taken over (default 64).")
+      ->check(input::cli_within(input::limits::kModePhases));
+  sub->add_option("--max-speed", o->max_speed_rad_s, "Leave out crossings above this drive speed, rad/s (default: none).")
+      ->check(input::cli_within(input::limits::kDriveSpeed_rad_s));
   sub->add_option("--pictured", o->pictured, "Elastic natural frequencies drawn in modes.svg (default 6).")->check(CLI::Range(1, 60));
   sub->callback([o] { modes(*o); });
 }

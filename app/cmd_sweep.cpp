@@ -14,6 +14,7 @@
 #include "app/exit_codes.hpp"
 #include "app/sweep_metrics.hpp"
 #include "core/errors.hpp"
+#include "input/input_limits.hpp"
 #include "sweep/process.hpp"
 #include "sweep/sweep_runner.hpp"
 
@@ -123,7 +124,7 @@ void register_sweep(CLI::App& app) {
       ->check(CLI::ExistingFile);
   sub->add_option("--out", o->out, "Output folder (created if missing); run again into it to resume.")->required();
   sub->add_option("--jobs", o->jobs, "Cases run at once on this machine (default: the number of cores); not under mpirun.")
-      ->check(CLI::Range(1, 1024));
+      ->check(input::cli_within(input::limits::kJobs));
   sub->add_flag("--fresh", o->fresh, "Remove the folder's sweep outputs (cases/, sweep.json, the table) and start over.");
   sub->callback([o] { run_sweep_cli(*o); });
 }

@@ -14,6 +14,7 @@
 #include "app/tolerance_report.hpp"
 #include "contact/flank_table.hpp"
 #include "core/errors.hpp"
+#include "input/input_limits.hpp"
 #include "python/py_arrays.hpp"
 #include "python/py_json.hpp"
 
@@ -130,12 +131,13 @@ py::object gear(const fs::path& spec, std::optional<std::string> name) {
 
 py::object inspect(const fs::path& mesh, const std::string& unit, std::optional<int> teeth, double tooth0_deg,
                    double density_kg_m3, double prism_tolerance_um, double hausdorff_spacing_mm) {
-  // The CLI's option checks, with the argument's name.
-  if (teeth && (*teeth < 3 || *teeth > 100000)) throw InputError("teeth: " + std::to_string(*teeth) + " is not in [3, 100000]");
-  if (!(density_kg_m3 > 0)) throw InputError("density_kg_m3: expected a positive density");
-  if (!(prism_tolerance_um > 0)) throw InputError("prism_tolerance_um: expected a positive tolerance");
-  if (!(hausdorff_spacing_mm > 0)) throw InputError("hausdorff_spacing_mm: expected a positive spacing");
-  if (!std::isfinite(tooth0_deg)) throw InputError("tooth0_deg: expected a finite angle");
+  // The CLI's option checks (cmd_inspect.cpp), with the argument's name.
+  using namespace input::limits;
+  if (teeth) input::require_within("teeth", *teeth, kTeeth);
+  input::require_within("tooth0_deg", tooth0_deg, input::limit_in_degrees(kAngle_rad));
+  input::require_within("density_kg_m3", density_kg_m3, kDensity_kg_m3);
+  input::require_within("prism_tolerance_um", prism_tolerance_um, kPrismTolerance_um);
+  input::require_within("hausdorff_spacing_mm", hausdorff_spacing_mm, kSampleSpacing_mm);
   app::InspectOptions o;
   o.mesh = mesh.string();
   o.unit = unit;

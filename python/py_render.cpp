@@ -11,25 +11,21 @@
 #include "app/render_run.hpp"
 #include "app/run_dir.hpp"
 #include "core/errors.hpp"
+#include "input/input_limits.hpp"
 
 namespace gearsim::python {
 namespace {
 
-// The CLI's bounds on --width/--height, px, and on --msaa.
-constexpr int kMinFrameSize_px = 16, kMaxFrameSize_px = 4096, kMaxMsaa = 16;
-
-void require_size(const char* key, int px) {
-  if (px < kMinFrameSize_px || px > kMaxFrameSize_px)
-    throw InputError(std::string(key) + ": " + std::to_string(px) + " px is not in [" + std::to_string(kMinFrameSize_px) +
-                     ", " + std::to_string(kMaxFrameSize_px) + "]");
-}
+// The CLI's bound on --msaa.
+constexpr int kMaxMsaa = 16;
 
 py::array_t<std::uint8_t> render_frame(const std::filesystem::path& run_dir, double t_s, const std::string& camera,
                                        int width_px, int height_px, int msaa) {
   if (camera != "overview" && camera != "tilted" && camera != "sun_mesh" && camera != "ring_mesh")
     throw InputError("camera: '" + camera + "' is none of overview, tilted, sun_mesh, ring_mesh");
-  require_size("width_px", width_px);
-  require_size("height_px", height_px);
+  input::require_within("t_s", t_s, input::limits::kRunTime_s);
+  input::require_within("width_px", width_px, input::limits::kFrameSize_px);
+  input::require_within("height_px", height_px, input::limits::kFrameSize_px);
   if (msaa < 0 || msaa == 1 || msaa > kMaxMsaa)
     throw InputError("msaa: " + std::to_string(msaa) + " samples; expected 0 (edge anti-aliasing) or 2 to 16");
   physics::RenderDef def;

@@ -12,6 +12,7 @@
 #include "app/run_scenario.hpp"
 #include "core/errors.hpp"
 #include "input/csv_table.hpp"
+#include "input/input_limits.hpp"
 #include "python/py_json.hpp"
 #include "python/py_pending.hpp"
 #include "python/py_scenario.hpp"
@@ -112,17 +113,22 @@ sim::SimOptions poll_options(PendingError& pending, bool progress, const std::st
 
 PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double> duration_s, bool progress) {
   physics::Scenario s = scenario.scenario;
-  if (duration_s) app::set_duration(s, *duration_s);
+  if (duration_s) {
+    input::require_within("duration", *duration_s, input::limits::kDuration_s);  // the CLI's --duration check
+    app::set_duration(s, *duration_s);
+  }
   std::optional<TempDir> temp;
   const fs::path dir = out.is_none() ? temp.emplace().path()
                                      : fs::path(py::module_::import("os").attr("fspath")(out).cast<std::string>());
-  app::prepare_run_dir(dir);
+  // Held as the CLI holds it: locked, the previous run's outputs (its manifest's) removed.
+  app::OutputFolder folder(dir, "gearsim.run (Python)");
+  folder.clear_for_run(false);
   PendingError pending;
   const sim::SimOptions options = poll_options(pending, progress, s.name);
   app::DirRun r;
   {
     py::gil_scoped_release released;
-    r = app::run_into_dir(s, app::RunSource{scenario.file, scenario.overrides}, dir, options);
+    r = app::run_into_dir(s, app::RunSource{scenario.file, scenario.overrides}, folder, options);
   }
   if (pending.set()) pending.raise();
   PyRunResult result;

@@ -17,6 +17,7 @@
 
 #include "app/sweep_metrics.hpp"
 #include "core/errors.hpp"
+#include "input/input_limits.hpp"
 #include "python/py_arrays.hpp"
 #include "python/py_pending.hpp"
 #include "sweep/process.hpp"
@@ -26,9 +27,6 @@ namespace gearsim::python {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The CLI's bound on --jobs.
-constexpr int kMaxJobs = 1024;
 
 // gearsim.SweepCasesFailed, created by bind_sweep; a reference kept for the process's life.
 PyObject* g_cases_failed = nullptr;
@@ -97,8 +95,7 @@ void print_progress(const sweep::Progress& p) {
 
 py::dict sweep_cases(const fs::path& sweep_path, const fs::path& out, std::optional<int> jobs, bool fresh,
                    std::optional<fs::path> executable, bool check, bool progress) {
-  if (jobs && (*jobs < 1 || *jobs > kMaxJobs))
-    throw InputError("jobs: " + std::to_string(*jobs) + " is not in [1, " + std::to_string(kMaxJobs) + "]");
+  if (jobs) input::require_within("jobs", *jobs, input::limits::kJobs);  // the CLI's --jobs check
   if (!fs::is_regular_file(sweep_path)) throw InputError(sweep_path.string() + ": sweep file not found");
   const int parallel = jobs.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   std::atomic<int> stop{0};

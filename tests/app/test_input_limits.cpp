@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 #include "input/scenario_file.hpp"
 #include "core/errors.hpp"
@@ -142,6 +143,51 @@ TEST(InputLimits, TheRunDurationOptionIsCheckedLikeTheKey) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("--duration 0.000100: shorter than one output interval"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
+TEST(InputLimits, InspectsNumericOptionsAreCheckedLikeKeys) {
+  const std::string mesh = kSource + "/assets/gears/spur_pair/pinion.stl";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--density=nan", "expected a density in [1, 100000] kg/m³, got nan"},  // CLI::PositiveNumber lets NaN through
+      {"--tooth0-deg=inf", "expected an angle in [-360, 360] °, got inf"},    // an angle like any other
+      {"--teeth=5000", "expected a number of teeth in [3, 1000], got 5000"},
+      {"--prism-tolerance=inf", "expected a prism tolerance in (0, 1000] µm, got inf"},
+      {"--hausdorff-spacing=1e-300", "expected a sample spacing in [0.01, 100] mm, got 1e-300"},
+  };
+  for (const auto& [option, message] : cases) {
+    const test::CliRun r = test::gearsim("inspect " + mesh + " " + option);
+    EXPECT_EQ(r.exit_code, 2) << option << ": " << r.output;
+    EXPECT_NE(r.output.find(option.substr(0, option.find('='))), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+  }
+}
+
+TEST(InputLimits, TheModesAndGearsOptionsAreCheckedLikeKeys) {
+  const std::string scenario = kSource + "/assets/scenarios/lin_parker_1999.yaml";
+  test::CliRun r = test::gearsim("modes " + scenario + " --max-speed=nan");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("expected a drive speed in (0, 100000] rad/s, got nan"), std::string::npos) << r.output;
+  r = test::gearsim("gears " + kSource + "/assets/specs/spur_pair_gearset.yaml --hausdorff-spacing=inf");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("expected a sample spacing in [0.01, 100] mm, got inf"), std::string::npos) << r.output;
+}
+
+TEST(InputLimits, AGearSpecsModuleOf1e300ExitsWithTwoNotThree) {
+  const fs::path spec = test::fresh_test_dir() / "spec.yaml";
+  std::ofstream(spec) << "name: t\ndensity_kg_m3: 7850\ngears:\n"
+                         "  pinion: {kind: external, teeth: 20, module_m: 1.0e300, face_width_m: 0.01}\n";
+  const test::CliRun r = test::gearsim("gears " + spec.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;  // not an internal error (3) in the tessellation
+  EXPECT_NE(r.output.find("spec.yaml:4:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("gears.pinion.module_m: expected a module in [1e-05, 0.1] m, got 1e+300"), std::string::npos) << r.output;
+}
+
+TEST(InputLimits, AScenarioNameThatIsNotUtf8ExitsWithTwoAndWritesNoRecord) {
+  const fs::path scenario = write_scenario(with("name: t", "name: \"gear\xe9\"")), out = scenario.parent_path() / "out";
+  const test::CliRun r = test::gearsim("run " + scenario.string() + " --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;  // not exit 1 and a 0-byte scenario.json
+  EXPECT_NE(r.output.find("bad.yaml:1:7: name: expected UTF-8 text, got 'gear\\xE9'"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out / "scenario.json"));
 }
 
 TEST(InputLimits, ABadCommandLineExitsWithTwo) {
