@@ -13,13 +13,6 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-std::ofstream open_csv(const std::filesystem::path& path) {
-  std::ofstream f = open_output_file(path);
-  if (!f) throw InputError(path.string() + ": cannot write");
-  f << std::setprecision(10);
-  return f;
-}
-
 bool contains(const std::vector<int>& list, int k) { return std::find(list.begin(), list.end(), k) != list.end(); }
 
 // The summary's faulty_teeth: every flagged tooth of the step-log tooth loads.
@@ -38,40 +31,46 @@ json faulty_teeth(const RunAnalysis& a) {
 }  // namespace
 
 void write_spectrum_csv(const std::filesystem::path& path, const RunAnalysis& a, double top_hz) {
-  std::ofstream f = open_csv(path);
-  f << "frequency_hz";
-  for (const PairForceAnalysis& p : a.pairs) f << ',' << pair_name(p.pair) << "_amplitude_N";
-  f << '\n';
-  if (a.pairs.empty()) return;
-  const Spectrum& first = a.pairs.front().spectrum;
-  for (std::size_t k = 0; k < first.frequency_hz.size() && first.frequency_hz[k] <= top_hz; ++k) {
-    f << first.frequency_hz[k];
-    for (const PairForceAnalysis& p : a.pairs) f << ',' << p.spectrum.amplitude.at(k);
+  write_output(path, [&](std::ostream& f) {
+    f << std::setprecision(10);
+    f << "frequency_hz";
+    for (const PairForceAnalysis& p : a.pairs) f << ',' << pair_name(p.pair) << "_amplitude_N";
     f << '\n';
-  }
+    if (a.pairs.empty()) return;
+    const Spectrum& first = a.pairs.front().spectrum;
+    for (std::size_t k = 0; k < first.frequency_hz.size() && first.frequency_hz[k] <= top_hz; ++k) {
+      f << first.frequency_hz[k];
+      for (const PairForceAnalysis& p : a.pairs) f << ',' << p.spectrum.amplitude.at(k);
+      f << '\n';
+    }
+  });
 }
 
 void write_sidebands_csv(const std::filesystem::path& path, const RunAnalysis& a) {
-  std::ofstream f = open_csv(path);
-  f << "pair,harmonic_order,around_hz,offset_hz,frequency_hz,amplitude_N,amplitude_db_re_harmonic,over_floor_db,matched\n";
-  for (const PairForceAnalysis& p : a.pairs)
-    for (const MeshHarmonic& h : p.mesh.harmonics) {
-      if (!h.peak) continue;
-      for (const Sideband& b : h.sidebands)
-        f << pair_name(p.pair) << ',' << h.order << ',' << h.peak->frequency_hz << ',' << b.offset_hz << ','
-          << b.peak.frequency_hz << ',' << b.peak.amplitude << ',' << b.level_db_re_harmonic << ','
-          << b.height_over_floor_db << ',' << (b.match ? match_label(*b.match) : "") << '\n';
-    }
+  write_output(path, [&](std::ostream& f) {
+    f << std::setprecision(10);
+    f << "pair,harmonic_order,around_hz,offset_hz,frequency_hz,amplitude_N,amplitude_db_re_harmonic,over_floor_db,matched\n";
+    for (const PairForceAnalysis& p : a.pairs)
+      for (const MeshHarmonic& h : p.mesh.harmonics) {
+        if (!h.peak) continue;
+        for (const Sideband& b : h.sidebands)
+          f << pair_name(p.pair) << ',' << h.order << ',' << h.peak->frequency_hz << ',' << b.offset_hz << ','
+            << b.peak.frequency_hz << ',' << b.peak.amplitude << ',' << b.level_db_re_harmonic << ','
+            << b.height_over_floor_db << ',' << (b.match ? match_label(*b.match) : "") << '\n';
+      }
+  });
 }
 
 void write_teeth_csv(const std::filesystem::path& path, const RunAnalysis& a) {
-  std::ofstream f = open_csv(path);
-  f << "pair,gear,tooth,mean_force_N,z_score,flagged\n";
-  if (!a.tooth_loads) return;
-  for (const ToothLoads& t : *a.tooth_loads)
-    for (std::size_t k = 0; k < t.mean_force_N.size(); ++k)
-      f << pair_name(t.pair) << ',' << t.gear << ',' << k << ',' << t.mean_force_N[k] << ',' << t.z_score[k] << ','
-        << (contains(t.flagged, static_cast<int>(k)) ? 1 : 0) << '\n';
+  write_output(path, [&](std::ostream& f) {
+    f << std::setprecision(10);
+    f << "pair,gear,tooth,mean_force_N,z_score,flagged\n";
+    if (!a.tooth_loads) return;
+    for (const ToothLoads& t : *a.tooth_loads)
+      for (std::size_t k = 0; k < t.mean_force_N.size(); ++k)
+        f << pair_name(t.pair) << ',' << t.gear << ',' << k << ',' << t.mean_force_N[k] << ',' << t.z_score[k] << ','
+          << (contains(t.flagged, static_cast<int>(k)) ? 1 : 0) << '\n';
+  });
 }
 
 void add_to_summary(json& summary, const RunAnalysis& a, double mesh_hz) {

@@ -5,6 +5,7 @@
 
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
+#include "app/output_folder.hpp"
 #include "input/input_limits.hpp"
 #include "app/run_analysis.hpp"
 #include "app/run_dir.hpp"
@@ -53,6 +54,7 @@ void register_analyze(CLI::App& app) {
   sub->add_option("--from", *from, "Start of the analysed window, s (default: the end of the motors' ramp).")
       ->check(input::cli_within(input::limits::kRunTime_s));
   sub->callback([dir, from] {
+    const OutputFolder folder(*dir, "gearsim analyze");
     const RunDir run = open_run_dir(*dir);
     print_analysis(analyze_run(run, {*from}), std::cout);
     std::cout << "written: " << (run.dir / "analysis.json").string() << "\n";

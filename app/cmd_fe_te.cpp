@@ -18,6 +18,7 @@
 #include <numeric>
 
 #include "app/commands.hpp"
+#include "app/exit_codes.hpp"
 #include "app/gnuplot.hpp"
 #include "app/run_dir.hpp"
 #include "input/scenario_file.hpp"
@@ -57,10 +58,12 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                    json& summary, bool plots) {
   const int n = def.spec.planets;
   const double mesh_period = 2.0 * M_PI / def.spec.sun.teeth;
-  std::ofstream te = open_output(dir / "te_loaded.csv", 12);
+  OutputFile te(dir / "te_loaded.csv", Durability::Record);
+  te << std::setprecision(12);
   te << "position,sun_turn_rad,mesh_phase,te_geometric_rad,te_elastic_rad,te_loaded_rad,te_loaded_urad,"
         "te_loaded_base_um,te_fe_low_rad,te_fe_full_rad,sun_mesh_torque_low_N_m,sun_mesh_torque_N_m,ccx_wall_s\n";
-  std::ofstream ms = open_output(dir / "mesh_stiffness.csv", 12);
+  OutputFile ms(dir / "mesh_stiffness.csv", Durability::Record);
+  ms << std::setprecision(12);
   ms << "position,sun_turn_rad,mesh_phase";
   for (int k = 0; k < n; ++k) {
     const std::string p = "planet_" + std::to_string(k);
@@ -69,9 +72,11 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   }
   ms << '\n';
   // The tracked tooth (the faulty one, else planet 0's tooth 0): its sun-side force and root stresses.
-  std::ofstream tf = open_output(dir / "tooth_forces.csv", 12);
+  OutputFile tf(dir / "tooth_forces.csv", Durability::Record);
+  tf << std::setprecision(12);
   tf << "position,sun_turn_rad,mesh_phase,planet,tooth,force_N\n";
-  std::ofstream rs = open_output(dir / "root_stress.csv", 12);
+  OutputFile rs(dir / "root_stress.csv", Durability::Record);
+  rs << std::setprecision(12);
   rs << "position,sun_turn_rad,mesh_phase,planet,tooth,side,tooth_force_N,sigma1_max_Pa,sigma2_min_Pa,"
         "von_mises_max_Pa,sigma1_max_low_load_Pa,elements\n";
   // Largest root σ1 (either side), MPa, of teeth t−1, t, t+1 of the tracked planet, per position.
@@ -141,6 +146,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     share_max.push_back(smax);
     ms << '\n';
   }
+  for (OutputFile* f : {&te, &ms, &tf, &rs}) f->commit();
   auto range = [&](const std::vector<double>& v) {
     if (v.empty()) return json{{"count", 0}};
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
@@ -247,25 +253,24 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     }
     info["stiffness_N_per_m_per_m"] = c;
     const GearDimensions d = gear_dimensions(a);
-    std::ofstream t = open_output(dir / file, 12);
-    t << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
+    OutputFile t(dir / file);
+    t << std::setprecision(12) << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
+    t.commit();
     summary["stiffness_tables"][file] = info;
   };
   table("fe_stiffness_sun_planet.csv", "sun", "planet", def.spec.sun, def.spec.planet, k_sp, n_sp, "FE: teeth carrying > 2 % of the mesh force");
   table("fe_stiffness_planet_ring.csv", "planet", "ring", def.spec.planet, def.spec.ring, k_pr, {}, "softer/stiffer half of the sampled range");
   if (plots && te_loaded.size() >= 2) {
-    open_output_file(dir / "te_loaded.svg")
-        << gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
+    write_output_file(dir / "te_loaded.svg", gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
                        "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'TE, µrad'; set grid\n"
                        "set y2label 'elastic part, µrad'; set y2tics; set ytics nomirror\n"
                        "plot $d using 1:2 with linespoints title 'loaded TE (θ_s − i θ_c)', "
-                       "$d using 1:3 axes x1y2 with linespoints title 'elastic part'\n");
+                       "$d using 1:3 axes x1y2 with linespoints title 'elastic part'\n"));
     if (root_by_tooth.size() == 3) {
       const fe::TrackedTooth t = fe::tracked_tooth(def);
       const int z = def.planet_gears.empty() ? def.spec.planet.teeth : def.planet_gears[0].teeth;
       const int before = (t.tooth + z - 1) % z, after = (t.tooth + 1) % z;
-      open_output_file(dir / "root_stress.svg")
-          << gnuplot_svg(data_block("d", {phase_col, root_by_tooth[before], root_by_tooth[t.tooth], root_by_tooth[after],
+      write_output_file(dir / "root_stress.svg", gnuplot_svg(data_block("d", {phase_col, root_by_tooth[before], root_by_tooth[t.tooth], root_by_tooth[after],
                                           tracked_force}) +
                          "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'largest root σ1, MPa'; set grid\n"
                          "set y2label 'sun force on the tracked tooth, N'; set y2tics; set ytics nomirror\n"
@@ -273,12 +278,11 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
                          "', $d using 1:3 with linespoints title 'tooth " + std::to_string(t.tooth) +
                          (t.faulty ? " (faulty)" : "") + "', $d using 1:4 with linespoints title 'tooth " +
                          std::to_string(after) + "', $d using 1:5 axes x1y2 with linespoints title 'force on tooth " +
-                         std::to_string(t.tooth) + "'\n");
+                         std::to_string(t.tooth) + "'\n"));
     }
-    open_output_file(dir / "mesh_stiffness.svg")
-        << gnuplot_svg(data_block("d", {phase_col, kcol}) +
+    write_output_file(dir / "mesh_stiffness.svg", gnuplot_svg(data_block("d", {phase_col, kcol}) +
                        "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"
-                       "plot $d using 1:2 with linespoints title 'sun–planet 0 secant mesh stiffness'\n");
+                       "plot $d using 1:2 with linespoints title 'sun–planet 0 secant mesh stiffness'\n"));
   }
 }
 
@@ -364,10 +368,10 @@ void fe_te(const FeTeOptions& o) {
   summary["mesh_wall_seconds"] = mesh_wall;
   summary["ccx_seconds_total"] = ccx_total;
   write_outputs(dir, def, done, rbs, summary, !o.no_plots && status == "completed");
-  open_output_file(dir / "summary.json") << summary.dump(2) << '\n';
+  write_output_file(dir / "summary.json", summary.dump(2) + "\n", Durability::Record);
   if (status != "completed")
-    throw std::runtime_error("fe-te stopped after " + std::to_string(finished) + " of " + std::to_string(turns.size()) +
-                             " positions (kept in " + dir.string() + "/te_loaded.csv): " + error);
+    throw RunStopped(kExitToolFailed, "fe-te stopped after " + std::to_string(finished) + " of " + std::to_string(turns.size()) +
+                                          " positions (kept in " + dir.string() + "/te_loaded.csv): " + error);
   const json& t = summary["te_loaded"];
   std::cout << s.name << ": loaded TE " << std::setprecision(3) << t["min_rad"].get<double>() * 1e6 << " … "
             << t["max_rad"].get<double>() * 1e6 << " µrad, peak-to-peak " << t["p2p_urad"].get<double>() << " µrad ("

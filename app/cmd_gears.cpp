@@ -43,9 +43,7 @@ void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
   }
   json doc = a.doc;
   doc["mesh_files"] = {{"folder", dir.string()}, {"unit", "mm"}, {"formats", o.formats}};
-  std::ofstream js = open_output_file(dir / "gearset.json");
-  if (!js) throw InputError((dir / "gearset.json").string() + ": cannot write");
-  js << doc.dump(2) << "\n";
+  write_output_file(dir / "gearset.json", doc.dump(2) + "\n");
 }
 
 void run(const GearsOptions& o) {

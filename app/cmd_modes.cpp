@@ -72,11 +72,7 @@ void modes(const ModesOptions& o) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
-  {
-    std::ofstream out = open_output_file(dir / "modes.json");
-    if (!out) throw InputError((dir / "modes.json").string() + ": cannot write");
-    out << j.dump(2) << "\n";
-  }
+  write_output_file(dir / "modes.json", j.dump(2) + "\n");
   write_mode_shapes_csv(dir / "mode_shapes.csv", model, a);
   write_campbell_csv(dir / "campbell.csv", model, c);
   write_modes_svg(dir / "modes.svg", model, a, o.pictured);

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/output_folder.hpp"
 #include "input/input_limits.hpp"
 #include "app/render_run.hpp"
 #include "app/stop_signals.hpp"
@@ -44,6 +45,7 @@ void register_render(CLI::App& app) {
     if (o->to_s >= 0) def.to_s = o->to_s;
     // SIGINT or SIGTERM stops the render between two frames: no video is left half written.
     const StopSignals stop_signals;
+    const OutputFolder folder(o->dir, "gearsim render");
     const RenderResult r = render_run(open_run_dir(o->dir), def, stop_signal);
     throw_if_render_stopped(r, o->dir);
     std::cout << "rendered " << r.frames << " frames of " << r.from_s << "–" << r.to_s << " s: " << r.video.string() << "\n";

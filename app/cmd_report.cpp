@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "app/commands.hpp"
+#include "app/output_folder.hpp"
 #include "app/report.hpp"
 #include "app/run_analysis.hpp"
 #include "core/errors.hpp"
@@ -23,9 +24,8 @@ RunDir analysed(const std::string& dir) {
 }
 
 void write_report_html(const std::filesystem::path& out, const std::string& html) {
-  std::ofstream f = open_output_file(out);
-  if (!f) throw InputError(out.string() + ": cannot write");
-  f << html;
+  declare_outputs(out.parent_path(), {out.filename().string()});
+  write_output_file(out, html);
   std::cout << "written: " << out.string() << "\n";
 }
 
@@ -39,14 +39,21 @@ void register_report(CLI::App& app) {
   sub->add_option("--compare", *compare, "A second run folder (e.g. the healthy twin) overlaid on spectra and tooth loads.")
       ->check(CLI::ExistingDirectory);
   sub->callback([dir, compare] {
+    const OutputFolder folder(*dir, "gearsim report");
     if (sweep::is_sweep_dir(*dir)) {
       if (!compare->empty()) throw InputError("--compare: takes run folders; " + *dir + " is a sweep folder (sweep.json)");
       write_report_html(std::filesystem::path(*dir) / "report.html", build_sweep_report(*dir));
       return;
     }
     const RunDir run = analysed(*dir);
+    // The compared folder is read only, as its own analyze wrote it.
     std::optional<RunDir> other;
-    if (!compare->empty()) other = analysed(*compare);
+    if (!compare->empty()) {
+      if (!std::filesystem::exists(std::filesystem::path(*compare) / "analysis.json"))
+        throw InputError("--compare " + *compare + ": no analysis.json (run `gearsim analyze " + *compare +
+                         "` first: the compared folder is only read)");
+      other = open_run_dir(*compare);
+    }
     write_report_html(run.dir / "report.html", build_report(run, other));
   });
 }

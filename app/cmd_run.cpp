@@ -13,6 +13,7 @@
 #include "app/analyze.hpp"
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
+#include "app/output_folder.hpp"
 #include "input/input_limits.hpp"
 #include "app/render_run.hpp"
 #include "app/run_analysis.hpp"
@@ -34,10 +35,17 @@ struct RunOptions {
   std::vector<std::string> sets;
   double duration_s = 0;
   bool no_analyze = false;
+  bool force = false;
 };
 
 // Ends a run that stopped early with its exit code, after its outputs were written.
 void throw_if_stopped(const sim::RunSummary& r, const std::filesystem::path& dir) {
+  if (r.status == sim::RunStatus::OutputFailed) {
+    std::string what;
+    for (const std::string& w : r.not_written) what += (what.empty() ? "" : "; ") + w;
+    throw OutputError("the run stopped at t = " + std::to_string(r.sim_seconds) + " s: " + what +
+                      " (summary.json in " + dir.string() + " says what was written)");
+  }
   if (const auto& d = r.divergence)
     throw RunStopped(kExitDiverged, "diverged at t = " + std::to_string(d->time_s) + " s (step " +
                                         std::to_string(d->step) + "): " + d->message +
@@ -53,7 +61,9 @@ void run(const RunOptions& o) {
   physics::Scenario s = input::load_scenario(o.scenario, o.sets);
   if (o.duration_s > 0) set_duration(s, o.duration_s);
   const std::filesystem::path dir(o.out_dir);
-  if (const int n = prepare_run_dir(dir); n > 0)
+  // Held until the command ends: the run, its analysis and its renders write into it.
+  OutputFolder folder(dir, "gearsim run");
+  if (const int n = folder.clear_for_run(o.force); n > 0)
     std::cout << "removed " << n << " outputs of a previous run in " << dir.string() << "\n";
   const bool tty = isatty(STDERR_FILENO);
   int last_percent = -1;
@@ -68,7 +78,7 @@ void run(const RunOptions& o) {
   // SIGINT and SIGTERM stop the run between two steps, and its render between two frames, until
   // the command ends.
   const StopSignals stop_signals;
-  const DirRun run = run_into_dir(s, RunSource{o.scenario, o.sets}, dir, options);
+  const DirRun run = run_into_dir(s, RunSource{o.scenario, o.sets}, folder, options);
   if (tty) std::cerr << "\n";
   const sim::RunSummary& r = run.result;
   std::cout << s.name << ": " << sim::status_name(r.status) << ", " << r.sim_seconds << " s simulated in "
@@ -114,6 +124,9 @@ void register_run(CLI::App& app) {
   sub->add_option("--duration", o->duration_s, "Simulated seconds, overriding the scenario's duration_s (at most 1e4 s).")
       ->check(input::cli_within(input::limits::kDuration_s));
   sub->add_flag("--no-analyze", o->no_analyze, "Do not analyse the run at the end (see `gearsim analyze`).");
+  sub->add_flag("--force", o->force,
+                "Write into a folder that holds files gearsim did not write (none of them is removed; one named as an "
+                "output is replaced). Without it such a folder is refused.");
   sub->callback([o] { run(*o); });
 }
 

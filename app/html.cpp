@@ -4,6 +4,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "core/input_file.hpp"
 #include "core/errors.hpp"
 
 namespace gearsim::app {
@@ -36,9 +37,8 @@ std::string html_table(const std::vector<std::string>& header, const std::vector
 }
 
 std::string html_png(const std::filesystem::path& png, const std::string& alt, int width_px) {
-  std::ifstream f(png, std::ios::binary);
-  if (!f) throw InputError(png.string() + ": cannot read");
-  const std::string bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  // A frame or a plot this command drew: a few MB at most.
+  const std::string bytes = read_input_file(png, std::size_t{256} << 20, "a PNG image");
   static const char* kB64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string b64;
   std::size_t i = 0;

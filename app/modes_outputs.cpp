@@ -14,12 +14,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::ofstream open_out(const std::filesystem::path& file) {
-  std::ofstream out = open_output_file(file);
-  if (!out) throw InputError(file.string() + ": cannot write");
-  out << std::setprecision(10);
-  return out;
-}
 
 Json shape_json(const linear::LumpedModel& m, const Eigen::VectorXd& phi) {
   Json j = Json::object();
@@ -106,8 +100,8 @@ nlohmann::json modes_json(const std::string& scenario, const linear::LumpedModel
 }
 
 void write_mode_shapes_csv(const std::filesystem::path& file, const linear::LumpedModel& m, const linear::ModalAnalysis& a) {
-  std::ofstream out = open_out(file);
-  out << "mode,frequency_hz,body,x_m,y_m,theta_rad\n";
+  OutputFile out(file);
+  out << std::setprecision(10) << "mode,frequency_hz,body,x_m,y_m,theta_rad\n";
   for (std::size_t i = 0; i < a.modes.size(); ++i)
     for (const linear::BodyInfo& b : m.bodies)
       if (b.first_dof >= 0) {
@@ -115,15 +109,17 @@ void write_mode_shapes_csv(const std::filesystem::path& file, const linear::Lump
         out << i << ',' << a.modes[i].frequency_hz << ',' << b.name << ',' << p(b.first_dof) << ',' << p(b.first_dof + 1) << ','
             << p(b.first_dof + 2) << '\n';
       }
+  out.commit();
 }
 
 void write_campbell_csv(const std::filesystem::path& file, const linear::LumpedModel& m, const linear::Campbell& c) {
-  std::ofstream out = open_out(file);
-  out << "mode,natural_frequency_hz,harmonic,gear_a,gear_b,mesh_frequency_hz,drive_speed_rad_s,drive_speed_rpm\n";
+  OutputFile out(file);
+  out << std::setprecision(10) << "mode,natural_frequency_hz,harmonic,gear_a,gear_b,mesh_frequency_hz,drive_speed_rad_s,drive_speed_rpm\n";
   for (const linear::Crossing& x : c.crossings)
     out << x.group << ',' << x.natural_frequency_hz << ',' << x.harmonic << ',' << m.bodies[m.meshes[x.mesh].a].name << ','
         << m.bodies[m.meshes[x.mesh].b].name << ',' << x.natural_frequency_hz / x.harmonic << ',' << x.drive_speed_rad_s << ','
         << x.drive_speed_rad_s * 60 / (2 * M_PI) << '\n';
+  out.commit();
 }
 
 void write_modes_svg(const std::filesystem::path& file, const linear::LumpedModel& m, const linear::ModalAnalysis& a, int groups) {
@@ -165,8 +161,7 @@ void write_modes_svg(const std::filesystem::path& file, const linear::LumpedMode
     }
   }
   svg << "</svg>\n";
-  std::ofstream out = open_out(file);
-  out << svg.str();
+  write_output_file(file, svg.str());
 }
 
 }  // namespace gearsim::app

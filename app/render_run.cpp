@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/output_folder.hpp"
 #include "app/pose_replay.hpp"
 #include "app/run_scene.hpp"
 #include "core/errors.hpp"
@@ -54,6 +55,13 @@ render::Image draw_frame(render::Renderer& renderer, const RunMeshes& meshes, co
 
 }  // namespace
 
+// frames/CAMERA_NNNNN.png of frame k.
+static std::string frame_name(const std::string& camera, long k) {
+  char name[64];
+  std::snprintf(name, sizeof name, "_%05ld.png", k);
+  return camera + name;
+}
+
 render::Image render_run_frame(const RunDir& run, const physics::RenderDef& o, double t_s) {
   const PoseReplay replay(run.scenario, input::read_csv(run.dir / "state.csv"));
   if (!(t_s >= replay.start_s() && t_s <= replay.end_s()))
@@ -79,22 +87,16 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
   const RunMeshes meshes = run_meshes(run.scenario);
   render::Renderer renderer(frame_settings(o));
   r.video = run.dir / (o.camera == "overview" ? std::string("video.mp4") : "video_" + o.camera + ".mp4");
-  // Written under another name until complete; removed on the way out otherwise (an earlier
-  // video of the same name goes first: it would no longer match the frames; so does a stale
-  // partial file, which as a link could lead the writer out of the folder).
-  const std::filesystem::path part = r.video.string() + ".part";
+  // Every frame file and the video in the folder's manifest before they are written.
+  std::vector<std::string> names{r.video.filename().string()};
+  for (long k = 0; o.png_every > 0 && k < r.frames; k += o.png_every) names.push_back("frames/" + frame_name(o.camera, k));
+  if (o.png_every > 0) names.push_back("frames/" + o.camera + "_sheet.png");
+  declare_outputs(run.dir, names);
+  // Written under a temporary name until complete (core/output_file.hpp); removed on the way
+  // out otherwise, the earlier video of the same name left as it was until the new one replaces it.
+  StagedPath part(r.video);
   std::error_code ec;
-  std::filesystem::remove(r.video, ec);
-  std::filesystem::remove(part, ec);
-  struct PartGuard {
-    const std::filesystem::path& path;
-    bool keep = false;
-    ~PartGuard() {
-      std::error_code e;
-      if (!keep) std::filesystem::remove(path, e);
-    }
-  } guard{part};
-  auto writer = std::make_unique<render::VideoWriter>(part, render::VideoSettings{o.width_px, o.height_px, o.fps});
+  auto writer = std::make_unique<render::VideoWriter>(part.temp(), render::VideoSettings{o.width_px, o.height_px, o.fps});
   if (o.png_every > 0) {
     make_output_dir(run.dir / "frames", ec);
     if (ec) throw InputError((run.dir / "frames").string() + ": cannot create: " + ec.message());
@@ -106,7 +108,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
       if (const int sig = stop_requested(); sig != 0) {
         r.stopped_by = sig;
         r.frames_drawn = k;
-        writer.reset();  // closes the partial file, which the guard then removes
+        writer.reset();  // closes the partial file, which `part` then removes
         return r;
       }
     }
@@ -114,9 +116,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
     const render::Image image = draw_frame(renderer, meshes, replay, run, o, t);
     writer->add_frame(image);
     if (o.png_every > 0 && k % o.png_every == 0) {
-      char name[64];
-      std::snprintf(name, sizeof name, "%s_%05ld.png", o.camera.c_str(), k);
-      render::write_png(image, run.dir / "frames" / name);
+      render::write_png(image, run.dir / "frames" / frame_name(o.camera, k));
       if (sheet.size() < kSheetFrames && o.width_px % 4 == 0 && o.height_px % 4 == 0) {
         sheet.push_back(image);
         char label[32];
@@ -127,8 +127,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
   }
   writer->finish();
   writer.reset();
-  std::filesystem::rename(part, r.video);
-  guard.keep = true;
+  part.commit();
   r.frames_drawn = r.frames;
   if (!sheet.empty())
     render::write_png(render::contact_sheet(sheet, {4, 4, 4, {255, 255, 255}, 1}, labels),

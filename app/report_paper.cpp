@@ -12,8 +12,7 @@ namespace gearsim::app {
 using json = nlohmann::ordered_json;
 
 std::string report_paper_section(const RunDir& run) {
-  std::ifstream f(run.dir / "analysis.json");
-  const json a = json::parse(f);
+  const json a = read_json_record(run.dir / "analysis.json");
   std::vector<std::vector<std::string>> rows;
   // 43 µm: the planet's single flank error at class 8 by the paper's equations.
   const ToleranceResult din = paper_tolerances({1.0, 36, 36.0, 8, {}}, ToleranceStandard::Din3961);

@@ -131,8 +131,7 @@ std::string report_sampling_section(const RunDir& run) {
   const std::filesystem::path analysis = run.dir / "analysis.json";
   if (!run.summary.contains("force_filter") || !std::filesystem::exists(analysis))
     return h + "<p class=\"note\">This run logged point samples only (no force_filter in summary.json).</p>\n";
-  std::ifstream in(analysis);
-  const json a = json::parse(in);
+  const json a = read_json_record(analysis);
   const json& ff = run.summary["force_filter"];
   const double fs = ff["output_rate_hz"].get<double>(), stop = ff["stopband_edge_hz"].get<double>();
   h += "<p>The paper kept the contact force every 25th step (2 kHz) of a 50 kHz simulation. Everything the force "

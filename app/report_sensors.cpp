@@ -19,8 +19,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 json analysis_of(const RunDir& r) {
-  std::ifstream f(r.dir / "analysis.json");
-  return f ? json::parse(f) : json();
+  return std::filesystem::exists(r.dir / "analysis.json") ? read_json_record(r.dir / "analysis.json") : json();
 }
 
 const json* sensor_in(const json& a, const std::string& name) {

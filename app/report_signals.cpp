@@ -16,8 +16,7 @@ using json = nlohmann::ordered_json;
 namespace {
 
 json read_analysis(const RunDir& r) {
-  std::ifstream f(r.dir / "analysis.json");
-  return json::parse(f);
+  return read_json_record(r.dir / "analysis.json");
 }
 
 std::string first_force_pair(const json& a) { return a["pairs"].begin().key(); }

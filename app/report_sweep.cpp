@@ -12,6 +12,8 @@
 #include <optional>
 
 #include "app/gnuplot.hpp"
+#include "core/input_file.hpp"
+#include "input/input_limits.hpp"
 #include "app/html.hpp"
 #include "app/report.hpp"
 #include "core/errors.hpp"
@@ -43,12 +45,12 @@ std::optional<double> number_of(const std::string& text) {
 // frequency_hz. Nothing when the file is absent; InputError when it is damaged.
 ModeLines natural_frequencies(const fs::path& dir) {
   const fs::path p = dir / "modes.json";
-  std::ifstream in(p);
-  if (!in) return {};
+  if (!std::filesystem::exists(std::filesystem::symlink_status(p))) return {};
+  const std::string text = read_input_file(p, input::limits::kMaxRecordBytes, "a modes record");
   std::vector<double> f;
   ModeLines lines;
   try {
-    const json j = json::parse(in);
+    const json j = json::parse(text);
     if (j.contains("campbell") && j.at("campbell").contains("crossings"))
       for (const json& c : j.at("campbell").at("crossings")) lines.harmonics = std::max(lines.harmonics, c.at("harmonic").get<int>());
     if (j.contains("natural_frequencies_hz")) f = j.at("natural_frequencies_hz").get<std::vector<double>>();

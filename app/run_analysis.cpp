@@ -13,6 +13,7 @@
 #include "input/csv_table.hpp"
 #include "input/gear_train.hpp"
 #include "sim/step_log_reader.hpp"
+#include "app/output_folder.hpp"
 #include "core/output_file.hpp"
 
 namespace gearsim::app {
@@ -191,8 +192,10 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
   for (const PlanetGear& p : train.planets)
     if (std::none_of(s.angles.begin(), s.angles.end(), [&](const BodyAngle& a) { return a.body == p.body; }))
       s.angles.push_back({p.body, state.column(p.body + "_angle_rad")});
-  if (std::filesystem::exists(run.dir / "steps.h5")) s.tooth_contacts = tooth_contacts(run.dir / "steps.h5", pairs);
-  if (!run.scenario.sensors.empty() && std::filesystem::exists(run.dir / "sensors.csv")) {
+  // The logs the run's scenario says it wrote are read (a missing one is refused by its reader,
+  // naming it), never skipped.
+  if (run.scenario.output.per_step_log) s.tooth_contacts = tooth_contacts(run.dir / "steps.h5", pairs);
+  if (!run.scenario.sensors.empty()) {
     const input::CsvTable sensors = input::read_csv(run.dir / "sensors.csv");
     for (const physics::SensorDef& d : run.scenario.sensors)
       s.sensors.push_back({d.name, d.angle_rad, d.window_width_rad, d.resonance_hz, sensors.column("time_s"),
@@ -248,7 +251,8 @@ json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
   const input::GearTrain train = input::gear_train_of(s);
   const RunAnalysis a = analyse_run_dir(run, o);
   const json j = analysis_json(a, train, s.name);
-  open_output_file(run.dir / "analysis.json") << j.dump(2) << "\n";
+  declare_outputs(run.dir, {"analysis.json", "spectrum.csv", "sidebands.csv", "teeth.csv", "summary.json"});
+  write_output_file(run.dir / "analysis.json", j.dump(2) + "\n", Durability::Record);
   write_spectrum_csv(run.dir / "spectrum.csv", a, analysis_constants::kRunFloorBandTop_hz);
   write_sidebands_csv(run.dir / "sidebands.csv", a);
   write_teeth_csv(run.dir / "teeth.csv", a);

@@ -25,11 +25,12 @@ struct RunDir {
 // not a run folder, the record is damaged, or a mesh it names changed since the run.
 RunDir open_run_dir(const std::filesystem::path& dir);
 
-// Writes DIR/summary.json back (2-space JSON), e.g. after analyze added its keys.
-void save_summary(const RunDir& run);
+// A JSON record of an output folder (analysis.json, summary.json) read through the bounded
+// reader; InputError naming the file when it is missing, too large or not JSON.
+nlohmann::ordered_json read_json_record(const std::filesystem::path& file);
 
-// An output file of a run folder, opened for writing with `precision` significant digits;
-// InputError naming the path when it cannot be written.
-std::ofstream open_output(const std::filesystem::path& p, int precision);
+// Writes DIR/summary.json back (2-space JSON), e.g. after analyze added its keys: a new file
+// renamed over the old (core/output_file.hpp), so a failed write leaves the record as it was.
+void save_summary(const RunDir& run);
 
 }  // namespace gearsim::app

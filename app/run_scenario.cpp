@@ -10,36 +10,12 @@
 #include "sim/sensor_log.hpp"
 #include "sim/step_log.hpp"
 #include "core/output_file.hpp"
+#include "app/output_folder.hpp"
 
 namespace gearsim::app {
 namespace {
 
 using json = nlohmann::ordered_json;
-
-// The files a run, its analysis, report and renders write into the run folder. A run into a
-// folder that holds them from an earlier run removes them first, so that no summary or analysis
-// of the old run sits beside the new logs. Returns how many were removed; other files stay.
-int clear_previous_outputs(const std::filesystem::path& dir) {
-  namespace fs = std::filesystem;
-  static const char* const kFiles[] = {"summary.json",  "scenario.json", "gearset.yaml",  "state.csv",
-                                       "contacts.csv",  "steps.h5",      "analysis.json", "spectrum.csv",
-                                       "sidebands.csv", "teeth.csv",     "report.html",   "sensors.csv"};
-  int removed = 0;
-  std::error_code ec;
-  // A file, or a link under an output's name (removed itself, never what it points to).
-  auto stale = [](const fs::file_status& st) { return fs::is_regular_file(st) || fs::is_symlink(st); };
-  for (const char* f : kFiles)
-    if (stale(fs::symlink_status(dir / f))) removed += fs::remove(dir / f, ec) ? 1 : 0;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
-    const std::string n = e.path().filename().string();
-    if (stale(e.symlink_status(ec)) && n.starts_with("video") && (n.ends_with(".mp4") || n.ends_with(".mp4.part")))
-      removed += fs::remove(e.path(), ec) ? 1 : 0;
-  }
-  const fs::file_status frames = fs::symlink_status(dir / "frames");
-  if (fs::is_symlink(frames)) removed += fs::remove(dir / "frames", ec) ? 1 : 0;
-  else if (fs::is_directory(frames)) removed += fs::remove_all(dir / "frames", ec) > 0 ? 1 : 0;
-  return removed;
-}
 
 // summary.json's description of the anti-aliasing filter of contacts.csv's force columns.
 json force_filter_json(const DecimationFilter& f) {
@@ -68,19 +44,13 @@ void set_duration(physics::Scenario& s, double duration_s) {
                      std::to_string(s.output.sample_rate_hz) + " Hz in " + s.source.string() + ")");
 }
 
-int prepare_run_dir(const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
-  return clear_previous_outputs(dir);
-}
-
 json summary_json(const RunSource& source, const physics::Scenario& s, const sim::RunSummary& r) {
   json j;
   j["scenario"] = s.name;
   j["scenario_file"] = std::filesystem::absolute(source.scenario_file).lexically_normal().string();
   j["overrides"] = source.overrides;
   j["status"] = sim::status_name(r.status);
+  if (!r.not_written.empty()) j["not_written"] = r.not_written;
   if (r.status == sim::RunStatus::Interrupted) j["signal"] = r.stop_signal == SIGTERM ? "SIGTERM" : "SIGINT";
   if (const auto& d = r.divergence)
     j["divergence"] = {{"what", d->what}, {"where", d->where}, {"message", d->message}, {"time_s", d->time_s},
@@ -140,8 +110,17 @@ json summary_json(const RunSource& source, const physics::Scenario& s, const sim
   return j;
 }
 
-DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, const std::filesystem::path& dir,
+DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, OutputFolder& folder,
                     const sim::SimOptions& options) {
+  const std::filesystem::path& dir = folder.dir();
+  // Every name this run may write, in the manifest before any is written.
+  std::vector<std::string> logs{"state.csv", "contacts.csv"};
+  if (!s.sensors.empty()) logs.push_back("sensors.csv");
+  if (s.output.per_step_log) logs.push_back("steps.h5");
+  std::vector<std::string> names = logs;
+  names.insert(names.end(), {"scenario.json", "summary.json"});
+  if (!s.gearset_spec.empty()) names.push_back("gearset.yaml");
+  folder.declare(names);
   input::write_scenario_record(s, dir);  // what analyze, report and render read back
   sim::CsvLogs csv(dir, s);
   sim::StepLogObserver step_log(dir / "steps.h5", s.name, s.solver.time_step_s);
@@ -157,17 +136,18 @@ DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, const s
   const sim::RunSummary& r = run.result;
   json& summary = run.summary;
   summary = summary_json(source, s, r);
-  json outputs = {"state.csv", "contacts.csv"};
-  if (!s.sensors.empty()) outputs.push_back("sensors.csv");
-  if (s.output.per_step_log) {
-    outputs.push_back("steps.h5");
+  // The logs in place (those not written are named in not_written).
+  json outputs = json::array();
+  for (const std::string& f : logs)
+    if (std::filesystem::is_regular_file(std::filesystem::symlink_status(dir / f))) outputs.push_back(f);
+  if (s.output.per_step_log && r.status != sim::RunStatus::OutputFailed) {
     const double bytes = static_cast<double>(step_log.bytes_on_disk());
     summary["step_log_bytes"] = bytes;
     summary["step_log_bytes_per_sim_second"] = r.sim_seconds > 0 ? bytes / r.sim_seconds : 0.0;
   }
   summary["outputs"] = outputs;
   if (const auto& f = csv.force_filter()) summary["force_filter"] = force_filter_json(*f);
-  open_output_file(dir / "summary.json") << summary.dump(2) << "\n";
+  write_output_file(dir / "summary.json", summary.dump(2) + "\n", Durability::Record);
   return run;
 }
 

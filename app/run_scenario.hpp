@@ -1,8 +1,9 @@
 // A scenario run into a folder, as `gearsim run` does it, callable as a library function: the
 // CLI (cmd_run.cpp) and the Python module (python/) both call it, so both write the same files.
-// prepare_run_dir clears a previous run's outputs; run_into_dir writes the scenario record
-// (scenario.json, gearset.yaml), the logs through sim::simulate's observers (state.csv,
-// contacts.csv, sensors.csv, steps.h5) and summary.json. Prints nothing, installs no signal
+// The caller holds the folder (output_folder.hpp: locked, a previous run's outputs cleared);
+// run_into_dir writes the scenario record (scenario.json, gearset.yaml), the logs through
+// sim::simulate's observers (state.csv, contacts.csv, sensors.csv, steps.h5) and summary.json,
+// each named in the folder's manifest before it is written. Prints nothing, installs no signal
 // handler (the caller's SimOptions::stop_requested decides when to stop), analyses nothing.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "app/output_folder.hpp"
 #include "physics/scenario.hpp"
 #include "sim/simulate.hpp"
 
@@ -32,17 +34,14 @@ struct DirRun {
 // least one output row. InputError naming the scenario file otherwise.
 void set_duration(physics::Scenario& s, double duration_s);
 
-// Creates DIR when missing and removes a previous run's outputs from it (summary, record, logs,
-// analysis files, report, videos, frames; other files stay). Returns how many were removed.
-// InputError naming DIR when it cannot be created.
-int prepare_run_dir(const std::filesystem::path& dir);
-
 // summary.json of a run: what simulate() measured, in SI, with the scenario's pair tables.
 nlohmann::ordered_json summary_json(const RunSource& source, const physics::Scenario& s, const sim::RunSummary& r);
 
-// Runs the scenario into DIR (prepared by prepare_run_dir) and writes summary.json. InputError as
-// sim::simulate and the log writers throw it.
-DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, const std::filesystem::path& dir,
+// Runs the scenario into the folder and writes summary.json. InputError as sim::simulate throws
+// it; OutputError when the record cannot be written. A log that could not be written ends the run
+// with status OutputFailed, summary.json naming it under not_written (and leaving it out of
+// outputs).
+DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, OutputFolder& folder,
                     const sim::SimOptions& options);
 
 }  // namespace gearsim::app

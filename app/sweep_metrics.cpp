@@ -4,6 +4,8 @@
 #include <fstream>
 #include <optional>
 
+#include "core/input_file.hpp"
+#include "input/input_limits.hpp"
 #include "analysis/run_analysis.hpp"
 #include "app/analysis_json.hpp"
 #include "app/run_analysis.hpp"
@@ -19,10 +21,11 @@ using json = nlohmann::ordered_json;
 namespace {
 
 json read_json(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  if (!in) throw InputError(p.string() + ": cannot read (the case was not analysed?)");
+  if (!std::filesystem::exists(std::filesystem::symlink_status(p)))
+    throw InputError(p.string() + ": not found (the case was not analysed?)");
+  const std::string text = read_input_file(p, input::limits::kMaxRecordBytes, "a case's JSON record");
   try {
-    return json::parse(in);
+    return json::parse(text);
   } catch (const json::exception& e) {
     throw InputError(p.string() + ": not valid JSON: " + e.what());
   }

@@ -1,6 +1,8 @@
 // Error tiers shared by every Gearsim library.
 //  - InputError: bad user input (a spec file, a mesh, a CLI value). The message names the file,
 //    key or line and what was expected. Thrown, caught and printed by app/.
+//  - OutputError: an output that could not be written (a full disk, a lost permission). The
+//    message names the file and the system's reason. Nothing half-written is left in its place.
 //  - GEARSIM_CHECK: a broken internal invariant (a bug, not bad input). Always on, also in Release.
 #pragma once
 
@@ -10,6 +12,11 @@
 namespace gearsim {
 
 class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };

@@ -54,9 +54,9 @@ CcxRunResult solved_or_reused(const PlanetaryFeDef& def, const Deck& d, const st
   }
   if (!reused) {
     std::filesystem::remove(work_dir / "position.done");
-    open_output_file(work_dir / "position.inp") << d.text;
+    write_output_file(work_dir / "position.inp", d.text);
     run = run_ccx({def.ccx, work_dir, "position"});
-    open_output_file(work_dir / "position.done") << std::setprecision(17) << run.wall_time_s << '\n';
+    write_output(work_dir / "position.done", [&](std::ostream& f) { f << std::setprecision(17) << run.wall_time_s << '\n'; });
   }
   return run;
 }

@@ -102,7 +102,7 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
 
   // Solve.
   std::filesystem::create_directories(work_dir);
-  open_output_file(work_dir / "position.inp") << d.text;
+  write_output_file(work_dir / "position.inp", d.text);
   const CcxRunResult run = run_ccx({def.ccx, work_dir, "position"});
 
   // Results at the end of the low (time 2) and full (time 3) load stages.
@@ -168,7 +168,7 @@ GearBodyTorsion solve_gear_body_torsion(const SpurPairFeDef& def, const SpurPair
   deck.load_fractions = {1.0};
   const Deck d = write_deck(deck);
   std::filesystem::create_directories(work_dir);
-  open_output_file(work_dir / "torsion.inp") << d.text;
+  write_output_file(work_dir / "torsion.inp", d.text);
   const CcxRunResult run = run_ccx({def.ccx, work_dir, "torsion"});
   GearBodyTorsion out;
   out.rotation_per_torque_rad_per_N_m = rotation_at(read_dat(run.dat_path), d.layout[0].rotation_node, 2.0, run.dat_path) / torque;

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -13,6 +14,7 @@
 #include <unordered_map>
 
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 #include "core/output_file.hpp"
 
 namespace gearsim {
@@ -20,6 +22,22 @@ namespace {
 
 // "<path>: ", the start of every message about a file.
 std::string where(const std::filesystem::path& path) { return path.string() + ": "; }
+
+// Assimp's file access with the bounded reader's checks on every file it opens to read; the
+// first refusal is kept for the error (Assimp itself only sees a file it cannot open).
+class BoundedIoSystem : public Assimp::DefaultIOSystem {
+ public:
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (mode && mode[0] == 'r') try {
+        check_input_file(file, kMaxMeshFileBytes, "a mesh file");
+      } catch (const InputError& e) {
+        if (refusal.empty()) refusal = e.what();
+        return nullptr;
+      }
+    return Assimp::DefaultIOSystem::Open(file, mode);
+  }
+  std::string refusal;
+};
 
 // --- Units ------------------------------------------------------------------------------------
 
@@ -239,18 +257,19 @@ std::optional<LengthUnit> parse_length_unit(std::string_view text) {
 
 TriMesh import_mesh(const std::filesystem::path& path, LengthUnit unit) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(where(path) + "file not found");
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    throw InputError(where(path) + "not a regular file, expected a mesh file");
-  }
-  if (std::filesystem::file_size(path, ec) == 0) {
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec))) throw InputError(where(path) + "file not found");
+  // The file and every file it refers to (an OBJ's materials, a glTF's buffers) through the
+  // bounded reader's checks: a FIFO, a device, a folder, a link loop or an oversized file is
+  // refused naming it, before Assimp opens it.
+  if (check_input_file(path, kMaxMeshFileBytes, "a mesh file") == 0)
     throw InputError(where(path) + "file is empty, expected a mesh (e.g. STL, OBJ, PLY)");
-  }
-
   Assimp::Importer importer;
+  auto* io = new BoundedIoSystem();  // owned by the importer
+  importer.SetIOHandler(io);
   const unsigned flags =
       aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = importer.ReadFile(path.string(), flags);
+  if (!io->refusal.empty()) throw InputError(io->refusal);
   if (scene == nullptr) {
     const std::string ext = path.extension().string();
     const std::string assimp = importer.GetErrorString();
@@ -281,14 +300,7 @@ void export_mesh(const TriMesh& mesh, const std::filesystem::path& path, MeshFor
   const std::string bytes = format == MeshFormat::StlBinary  ? stl_binary(mesh, unit)
                             : format == MeshFormat::StlAscii ? stl_ascii(mesh, unit)
                                                              : obj(mesh, unit);
-  std::ofstream out = open_output_file(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    throw InputError(where(path) +
-                     "cannot open for writing (does the directory exist and is it writable?)");
-  }
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) throw InputError(where(path) + "write failed");
+  write_output_file(path, bytes);
 }
 
 }  // namespace gearsim

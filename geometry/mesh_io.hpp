@@ -38,6 +38,10 @@ std::optional<LengthUnit> parse_length_unit(std::string_view text);
 // Formats export_mesh writes.
 enum class MeshFormat { StlBinary, StlAscii, Obj };
 
+// Bytes of a mesh file: a binary STL holds 50 bytes a triangle, so 512 MiB is 1e7 triangles,
+// about 100 times the finest gear export of the CAD corpora; more is not a gear's mesh.
+constexpr std::size_t kMaxMeshFileBytes = std::size_t{512} << 20;
+
 // Reads every triangle of every mesh in the file's scene, node transforms applied, coordinates
 // multiplied by metres_per(unit), vertices welded exactly (see constants::kImportWeldTolerance_m).
 // Polygons are triangulated; point and line primitives carry no surface and are dropped.

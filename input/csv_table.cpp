@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
+#include "input/input_limits.hpp"
 
 namespace gearsim::input {
 
@@ -20,8 +22,7 @@ const std::vector<double>& CsvTable::column(const std::string& name) const {
 }
 
 CsvTable read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot read");
+  InputFile in(path, limits::kMaxCsvLogBytes, "a run's CSV log");
   CsvTable t;
   t.path = path;
   std::string line;

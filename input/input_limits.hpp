@@ -34,6 +34,18 @@ constexpr std::size_t kMaxYamlBytes = 4u << 20;
 // Values in one YAML file, aliases counted each time they are met: a file of 4 MiB holds at most
 // ~1e6 values; more means aliases multiplying a list ("billion laughs").
 constexpr std::size_t kMaxYamlValues = 1'000'000;
+// Nesting levels of one YAML file: the deepest scenario key path is 5 levels; every reader walks
+// the tree recursively, so a bound keeps the stack small (an alias inside its own anchor,
+// `&r [1, *r]`, is an endless nesting that this bound ends).
+constexpr std::size_t kMaxYamlDepth = 64;
+// A JSON record a command reads back from an output folder (scenario.json, summary.json,
+// analysis.json, a sweep's case.json): the paper run's largest is ~60 kB; nlohmann's tree holds
+// about 10× the text, so 64 MiB stays under 1 GB.
+constexpr std::size_t kMaxRecordBytes = std::size_t{64} << 20;
+// A run's CSV log read back whole (state.csv, contacts.csv, sensors.csv): the paper run writes
+// ~1 MB per simulated second at its 10 kHz output rate; 4 GiB is over an hour of it, and about
+// the memory its columns then take as numbers.
+constexpr std::size_t kMaxCsvLogBytes = std::size_t{4} << 30;
 
 // Simulated time, s: the paper's set costs ~4 s wall per simulated second at dt 2e-5 s, so 1e4 s
 // is about 11 h and 5e8 steps; more is a typo (--duration 1e300 gave 0 steps).

@@ -104,12 +104,20 @@ void apply_overrides(YAML::Node& root, const std::vector<std::string>& overrides
     if (eq == std::string::npos) bad(file, text, "expected key.path=value");
     const std::string path = text.substr(0, eq);
     const std::vector<Step> steps = parse_path(path, file, text);
-    YAML::Node value;
+    YAML::Node parsed;
     try {
-      value = unmarked(YAML::Load(text.substr(eq + 1)));
+      parsed = YAML::Load(text.substr(eq + 1));
     } catch (const YAML::Exception& e) {
       bad(file, text, "the value is not valid YAML: " + e.msg);
     }
+    // Its keys, size and depth checked as a file's are, before unmarked() copies (and so would
+    // expand) its aliases.
+    try {
+      check_yaml_tree(parsed, "the value");
+    } catch (const InputError& e) {
+      bad(file, text, e.what());
+    }
+    const YAML::Node value = unmarked(parsed);
     set_path(root, steps, 0, value, file, text);
   }
 }

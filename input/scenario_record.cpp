@@ -10,7 +10,9 @@
 #include "core/errors.hpp"
 #include "geometry/mesh_gear.hpp"
 #include "input/input_limits.hpp"
+#include "core/input_file.hpp"
 #include "core/output_file.hpp"
+#include "geometry/mesh_io.hpp"
 
 namespace gearsim::input {
 namespace {
@@ -307,7 +309,7 @@ void read_rest(const Node& r, physics::Scenario& s) {
 }  // namespace
 
 std::string file_fnv1a64(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
+  InputFile in(file, kMaxMeshFileBytes, "a mesh file");
   std::uint64_t h = 14695981039346656037ull;
   char buf[65536];
   while (in.read(buf, sizeof buf) || in.gcount() > 0) {
@@ -371,26 +373,23 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
 void write_scenario_record(const physics::Scenario& s, const fs::path& dir) {
   physics::Scenario recorded = s;
   if (!s.gearset_spec.empty()) {
-    std::error_code ec;
-    unlink_output(dir / "gearset.yaml");
-    fs::copy_file(s.gearset_spec, dir / "gearset.yaml", fs::copy_options::overwrite_existing, ec);
-    if (ec) throw InputError((dir / "gearset.yaml").string() + ": cannot copy " + s.gearset_spec.string() + ": " + ec.message());
+    write_output_file(dir / "gearset.yaml",
+                      read_input_file(s.gearset_spec, limits::kMaxYamlBytes, "a gear-set spec"), Durability::Record);
     recorded.gearset_spec = "gearset.yaml";  // relative to the run folder
   }
-  std::ofstream out = open_output_file(dir / "scenario.json");
-  if (!out) throw InputError((dir / "scenario.json").string() + ": cannot write");
   nlohmann::ordered_json j = scenario_json(recorded);
   if (!s.gearset_spec.empty()) j["gearset_spec_original"] = s.gearset_spec.string();
-  out << j.dump(1) << "\n";
+  write_output_file(dir / "scenario.json", j.dump(1) + "\n", Durability::Record);
 }
 
 physics::Scenario read_scenario_record(const fs::path& dir) {
   const fs::path file = dir / "scenario.json";
-  std::ifstream in(file);
-  if (!in) throw InputError(file.string() + ": cannot read (a run folder of gearsim run holds it)");
+  if (!fs::exists(fs::symlink_status(file)))
+    throw InputError(file.string() + ": not found (a run folder of gearsim run holds it)");
+  const std::string text = read_input_file(file, limits::kMaxRecordBytes, "a run's scenario record");
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(text);
   } catch (const json::exception& e) {
     throw InputError(file.string() + ": not valid JSON: " + e.what());
   }

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/input_file.hpp"
 #include "core/errors.hpp"
 #include "input/input_limits.hpp"
 #include "input/safe_name.hpp"
@@ -164,17 +165,7 @@ std::vector<std::string> read_set(const YamlMap& top) {
 }
 
 std::string read_text(const std::filesystem::path& file) {
-  std::error_code ec;
-  const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError(file.string() + ": cannot read the sweep file: " + ec.message());
-  if (bytes > limits::kMaxYamlBytes)
-    throw InputError(file.string() + ": " + std::to_string(bytes) + " bytes: larger than the " +
-                     std::to_string(limits::kMaxYamlBytes) + " bytes a sweep file may have");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the sweep file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return read_input_file(file, limits::kMaxYamlBytes, "a sweep file");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "input/input_limits.hpp"
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 
 namespace gearsim::input {
 
@@ -17,17 +18,23 @@ YamlMap::YamlMap(YAML::Node node, std::string path, std::shared_ptr<const std::s
 namespace {
 
 // Every mapping key below `node` is text and appears once in its mapping; at most
-// kMaxYamlValues values are visited (an alias counts each time it is met).
+// kMaxYamlValues values are visited (an alias counts each time it is met) and no value lies
+// deeper than kMaxYamlDepth — checked on yaml-cpp's tree, where an alias is a shared node, so
+// nothing is expanded before it is counted and an alias inside its own anchor (`&r [1, *r]`,
+// a cycle) ends at the depth limit instead of the stack.
 class KeyCheck {
  public:
   explicit KeyCheck(const std::string& source) : source_(source) {}
 
-  void walk(const YAML::Node& node, const std::string& path) {
+  void walk(const YAML::Node& node, const std::string& path, std::size_t depth = 0) {
     if (++visited_ > limits::kMaxYamlValues)
       throw InputError(source_ + ": more than " + std::to_string(limits::kMaxYamlValues) +
                        " values (aliases repeating a list?): not a scenario or gear-set file");
+    if (depth > limits::kMaxYamlDepth)
+      throw InputError(at(node) + ": " + (path.size() > 48 ? path.substr(0, 48) + "…" : path) + ": nested deeper than " + std::to_string(limits::kMaxYamlDepth) +
+                       " levels (an alias inside its own anchor?): not a scenario or gear-set file");
     if (node.IsSequence())
-      for (std::size_t i = 0; i < node.size(); ++i) walk(node[i], path + "[" + std::to_string(i) + "]");
+      for (std::size_t i = 0; i < node.size(); ++i) walk(node[i], path + "[" + std::to_string(i) + "]", depth + 1);
     if (!node.IsMap()) return;
     std::map<std::string, int> lines;
     for (const auto& kv : node) {
@@ -40,7 +47,7 @@ class KeyCheck {
       if (!fresh)
         throw InputError(at(kv.first) + ": " + key_path + ": the key appears twice in one mapping (first at line " +
                          std::to_string(first->second) + "): give it once");
-      walk(kv.second, key_path);
+      walk(kv.second, key_path, depth + 1);
     }
   }
 
@@ -54,6 +61,8 @@ class KeyCheck {
 };
 
 }  // namespace
+
+void check_yaml_tree(const YAML::Node& node, const std::string& source_name) { KeyCheck(source_name).walk(node, ""); }
 
 YAML::Node parse_yaml_mapping(const std::string& text, const std::string& source_name) {
   if (text.size() > limits::kMaxYamlBytes)
@@ -72,16 +81,7 @@ YAML::Node parse_yaml_mapping(const std::string& text, const std::string& source
 }
 
 YAML::Node load_yaml_mapping(const std::filesystem::path& path) {
-  std::error_code ec;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-  if (!ec && bytes > limits::kMaxYamlBytes)
-    throw InputError(path.string() + ": " + std::to_string(bytes) + " bytes: larger than the " +
-                     std::to_string(limits::kMaxYamlBytes) + " bytes a scenario or gear-set file may have");
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot open the file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_yaml_mapping(text.str(), path.string());
+  return parse_yaml_mapping(read_input_file(path, limits::kMaxYamlBytes, "a scenario or gear-set file"), path.string());
 }
 
 YamlMap YamlMap::load_file(const std::filesystem::path& path) {

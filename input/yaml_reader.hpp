@@ -19,6 +19,11 @@ namespace gearsim::input {
 // holds more than limits::kMaxYamlValues values (aliases included), a mapping key that is not
 // text (`[a]: 1`), or a key twice in one mapping (yaml-cpp would keep the first silently).
 YAML::Node parse_yaml_mapping(const std::string& text, const std::string& source_name);
+// The checks parse_yaml_mapping() makes of a parsed tree, for a value parsed elsewhere (a --set
+// value): text keys, each once per mapping, at most limits::kMaxYamlValues values and
+// limits::kMaxYamlDepth levels (aliases counted where they are met, never expanded first).
+// InputError naming `source_name` and the key path otherwise.
+void check_yaml_tree(const YAML::Node& node, const std::string& source_name);
 // The same for a file: InputError naming it when it cannot be read or is too large.
 YAML::Node load_yaml_mapping(const std::filesystem::path& path);
 

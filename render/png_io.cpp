@@ -132,13 +132,7 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
 }
 
 void write_file(const std::vector<std::uint8_t>& bytes, const std::filesystem::path& path) {
-  unlink_output(path);  // never written through a link (core/output_file.hpp)
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) throw InputError("cannot write '" + path.string() + "': " + std::strerror(errno));
-  const std::size_t written = std::fwrite(bytes.data(), 1, bytes.size(), f);
-  const int write_errno = errno;
-  if (std::fclose(f) != 0 || written != bytes.size())
-    throw InputError("cannot write '" + path.string() + "': " + std::strerror(write_errno ? write_errno : errno));
+  write_output_file(path, std::string(bytes.begin(), bytes.end()));
 }
 
 void write_png(const Image& image, const std::filesystem::path& path) { write_file(encode_png(image), path); }

@@ -14,14 +14,15 @@ namespace gearsim::render {
 // The PNG bytes of an image. Throws InputError for an empty image.
 std::vector<std::uint8_t> encode_png(const Image& image);
 
-// Writes encode_png(image) to `path`. Throws InputError naming the path and the reason when it
-// cannot be written (missing folder, not a folder, no permission, disk full).
+// Writes encode_png(image) to `path`, whole or not at all (core/output_file.hpp). Throws
+// OutputError naming the path and the reason when it cannot be written (missing folder, not a
+// folder, no permission, disk full).
 void write_png(const Image& image, const std::filesystem::path& path);
 
 // Throws InputError naming the path when it is missing or not a PNG libpng can decode.
 Image read_png(const std::filesystem::path& path);
 
-// Writes `bytes` to `path` (binary), or throws InputError naming the path and the reason.
+// Writes `bytes` to `path` (binary), or throws OutputError naming the path and the reason.
 void write_file(const std::vector<std::uint8_t>& bytes, const std::filesystem::path& path);
 
 }  // namespace gearsim::render

@@ -3,13 +3,18 @@
 # input file). Builds build-fuzz/ with clang (GEARSIM_FUZZ: the libraries with ASan + UBSan and
 # libFuzzer's coverage hooks), assembles the seed corpus from the repository, runs the target and
 # prints executions, exec/s and the crashes found.
-# Usage: scripts/fuzz.sh fuzz_scenario|fuzz_mesh SECONDS [JOBS]
+# Usage: scripts/fuzz.sh fuzz_scenario|fuzz_mesh|fuzz_run_record|fuzz_set SECONDS [JOBS]
 #   fuzz_scenario  the bytes as a scenario file (load_scenario); seeds: assets/scenarios/*.yaml
 #                  and small scenarios like the tests' (a wheel, MCAD pairs, gear_from, tables)
 #   fuzz_mesh      byte 0 picks STL or OBJ and the unit, the rest is the file (read_mesh_gear:
 #                  import, validation, prism, gear recognition); seeds: the MCAD meshes of
 #                  tests/data/mcad (35–154 kB binary STL), the z 12 one as ASCII STL and OBJ, and
 #                  a cube; assets/gears/ (0.36–1.4 MB) are larger than -max_len and left out
+#   fuzz_run_record  byte 0 picks scenario.json, summary.json or the manifest, the rest is the
+#                  record (the readers of analyze/report/render); seeds: a short spur-pair run's
+#                  records (made with build/bin/gearsim when it is built) and two damaged ones
+#   fuzz_set       the bytes as --set overrides, one a line, on a small scenario; seeds: a few
+#                  overrides, recursive and multiplying aliases among them
 #   JOBS           fuzzing processes side by side, default 1
 # Outputs in out/fuzz/TARGET/: crash-*, leak-*, timeout-*, oom-* (reproducers: run
 # `build-fuzz/bin/TARGET FILE`), corpus/ (grows, kept between runs), seeds/, fuzz-JOB.RUN.log.
@@ -26,6 +31,8 @@ target=$1 seconds=$2 jobs=${3:-1}
 case $target in
   fuzz_scenario) max_len=65536 timeout=30 ;;  # 64 KiB: the largest shipped scenario is 5 kB
   fuzz_mesh) max_len=262144 timeout=10 ;;     # 256 KiB: the MCAD ring (154 kB) fits
+  fuzz_run_record) max_len=131072 timeout=10 ;;  # 128 KiB: a paper run's summary is ~10 kB
+  fuzz_set) max_len=4096 timeout=10 ;;
   *) usage ;;
 esac
 
@@ -102,6 +109,23 @@ planetary:
   ring: ring_relieved
   carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}
 EOF
+elif [[ $target == fuzz_run_record ]]; then
+  rec=$(mktemp -d)
+  if [[ -x build/bin/gearsim ]]; then
+    build/bin/gearsim run assets/scenarios/spur_pair.yaml --out "$rec/r" --duration 0.2 >/dev/null
+    { printf '\x00'; cat "$rec/r/scenario.json"; } >"$seeds/scenario.json"
+    { printf '\x01'; cat "$rec/r/summary.json"; } >"$seeds/summary.json"
+    { printf '\x02'; cat "$rec/r/.gearsim-manifest"; } >"$seeds/manifest"
+  fi
+  printf '\x01{"sim_seconds": "abc"}' >"$seeds/bad_summary.json"
+  printf '\x02state.csv\n../../etc/passwd\n' >"$seeds/bad_manifest"
+  rm -rf "$rec"
+elif [[ $target == fuzz_set ]]; then
+  printf 'solver.time_step_s=1e-5' >"$seeds/step"
+  printf 'x=&r [1, *r]' >"$seeds/recursive"
+  printf 'bodies[0].mass_kg=2\nduration_s=0.2' >"$seeds/two"
+  printf 'solver={time_step_s: 1e-4, time_step_s: 1e-5}' >"$seeds/twice"
+  printf 'x={a: &a [1, 1, 1], b: &b [*a, *a, *a], c: [*b, *b, *b]}' >"$seeds/aliases"
 else
   # Byte 0: bit 0 = OBJ, (byte >> 1) % 3 = unit (mm, m, in); \x00 is a mm STL, \x01 a mm OBJ.
   for f in tests/data/mcad/*.stl; do

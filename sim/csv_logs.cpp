@@ -14,10 +14,9 @@
 namespace gearsim::sim {
 namespace {
 
-std::ofstream open_log(const std::filesystem::path& p) {
-  std::ofstream f = open_output_file(p);
-  if (!f) throw InputError(p.string() + ": cannot write");
-  f << std::setprecision(17);
+std::unique_ptr<OutputFile> open_log(const std::filesystem::path& p) {
+  auto f = std::make_unique<OutputFile>(p, Durability::Record);
+  *f << std::setprecision(17);
   return f;
 }
 
@@ -51,9 +50,9 @@ void CsvLogs::on_start(const physics::World& world) {
   state_ = open_log(dir_ / "state.csv");
   contacts_ = open_log(dir_ / "contacts.csv");
   pairs_ = world.gear_pairs().size();
-  state_ << "time_s";
-  for (const physics::BodyState& b : world.bodies()) state_ << ',' << b.name << "_angle_rad," << b.name << "_speed_rad_s";
-  if (scenario_.transmission) state_ << ",te_rad,te_point_rad";
+  *state_ << "time_s";
+  for (const physics::BodyState& b : world.bodies()) *state_ << ',' << b.name << "_angle_rad," << b.name << "_speed_rad_s";
+  if (scenario_.transmission) *state_ << ",te_rad,te_point_rad";
   // Bodies on a bearing to the ground: their centre's displacement from its start (what a
   // sensor on the housing at that bearing sees), after every other column.
   moving_.clear();
@@ -62,7 +61,7 @@ void CsvLogs::on_start(const physics::World& world) {
       for (std::size_t i = 0; i < world.bodies().size(); ++i)
         if (world.bodies()[i].name == j.body) {
           moving_.push_back({i, world.bodies()[i].position_m});
-          state_ << ',' << j.body << "_dx_m," << j.body << "_dy_m";
+          *state_ << ',' << j.body << "_dx_m," << j.body << "_dy_m";
         }
   // Bodies on a bearing on a body that turns about the ground (planets on their carrier): the
   // centre's displacement from its pin, radial and tangential in the carrier's frame.
@@ -81,15 +80,15 @@ void CsvLogs::on_start(const physics::World& world) {
     const auto bi = static_cast<std::size_t>(b), pi = static_cast<std::size_t>(p);
     carried_.push_back({bi, pi, world.bodies()[pi].angle_rad, world.bodies()[bi].position_m - world.bodies()[pi].position_m,
                         world.bodies()[pi].position_m});
-    state_ << ',' << j.body << "_dr_m," << j.body << "_dt_m";
+    *state_ << ',' << j.body << "_dr_m," << j.body << "_dt_m";
   }
-  state_ << '\n';
-  contacts_ << "time_s";
+  *state_ << '\n';
+  *contacts_ << "time_s";
   for (const physics::GearPairInfo& p : world.gear_pairs()) {
     const std::string n = p.body_a + "__" + p.body_b;
-    contacts_ << ',' << n << "_force_N," << n << "_force_point_N," << n << "_tooth_pairs," << n << "_max_depth_um";
+    *contacts_ << ',' << n << "_force_N," << n << "_force_point_N," << n << "_tooth_pairs," << n << "_max_depth_um";
   }
-  contacts_ << '\n';
+  *contacts_ << '\n';
   // The filter's input starts at t = 0 (the world at rest, before the first step), so that its
   // outputs fall on the sample times j/f_out; output 0 (t = 0) is not a row.
   const std::size_t channels = pairs_ + (scenario_.transmission ? 1 : 0);
@@ -173,7 +172,7 @@ void CsvLogs::write_row(const PointRow& row, const std::vector<double>& filtered
   }
   text += row.state_tail;
   text += '\n';
-  state_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  state_->write(text.data(), static_cast<std::streamsize>(text.size()));
   text.clear();
   append_number(text, row.time_s);
   for (std::size_t p = 0; p < pairs_; ++p) {
@@ -187,7 +186,7 @@ void CsvLogs::write_row(const PointRow& row, const std::vector<double>& filtered
     append_number(text, row.depth_um[p]);
   }
   text += '\n';
-  contacts_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  contacts_->write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 void CsvLogs::on_stop(const physics::World&) {
@@ -200,8 +199,9 @@ void CsvLogs::on_stop(const physics::World&) {
     }
     pending_.clear();
   }
-  state_.flush();
-  contacts_.flush();
+  commit_all({state_.get(), contacts_.get()});
 }
+
+bool CsvLogs::write_failed() const { return (state_ && state_->failed()) || (contacts_ && contacts_->failed()); }
 
 }  // namespace gearsim::sim

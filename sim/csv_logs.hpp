@@ -21,11 +21,12 @@
 
 #include <deque>
 #include <filesystem>
-#include <fstream>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "analysis/decimator.hpp"
+#include "core/output_file.hpp"
 #include "physics/scenario.hpp"
 #include "sim/observer.hpp"
 
@@ -34,13 +35,16 @@ namespace gearsim::sim {
 class CsvLogs : public Observer {
  public:
   // DIR/state.csv and DIR/contacts.csv, created when the run starts (a scenario the world refuses
-  // leaves no empty logs); InputError naming the file when one cannot be written. The scenario
+  // leaves no empty logs) under temporary names; OutputError naming the file when one cannot be. The scenario
   // must outlive the observer.
   CsvLogs(const std::filesystem::path& dir, const physics::Scenario& scenario);
   void on_start(const physics::World& world) override;
   void on_step(const physics::World& world) override;
   void on_sample(const physics::World& world) override;
+  // Writes the last rows and puts both files in place (core/output_file.hpp); OutputError naming
+  // each that could not be written (that one is not put in place).
   void on_stop(const physics::World& world) override;
+  bool write_failed() const override;
   // The anti-aliasing filter of the force and TE columns; none when every step is a sample.
   const std::optional<DecimationFilter>& force_filter() const { return filter_; }
 
@@ -63,7 +67,7 @@ class CsvLogs : public Observer {
 
   std::filesystem::path dir_;
   const physics::Scenario& scenario_;
-  std::ofstream state_, contacts_;
+  std::unique_ptr<OutputFile> state_, contacts_;
   std::vector<std::pair<std::size_t, Eigen::Vector3d>> moving_;  // bodies on a ground bearing, start position
   struct Carried {  // a body on a bearing on a body that turns about the ground (a planet on its carrier)
     std::size_t body = 0, parent = 0;

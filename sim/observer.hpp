@@ -18,8 +18,12 @@ class Observer {
   // step a run stops early on (diverged or interrupted) when that step is not a sample already:
   // every output file then ends at the same time.
   virtual void on_sample(const physics::World& /*world*/) {}
-  // Once, when the run ends for whatever reason: flush and close. Outputs stay valid up to here.
+  // Once, when the run ends for whatever reason: flush, close and put the outputs in place
+  // (core/output_file.hpp); OutputError naming each output that could not be written.
   virtual void on_stop(const physics::World& /*world*/) {}
+  // True once a write of this observer's outputs has failed (a full disk): simulate() stops the
+  // run at the next output sample, status OutputFailed, and on_stop() says which and why.
+  virtual bool write_failed() const { return false; }
 };
 
 }  // namespace gearsim::sim

@@ -38,16 +38,14 @@ SensorLog::SensorLog(const std::filesystem::path& dir, const physics::Scenario& 
 }
 
 void SensorLog::on_start(const physics::World& world) {
-  unlink_output(file_);  // never written through a link (core/output_file.hpp)
-  out_.open(file_);
-  if (!out_) throw InputError(file_.string() + ": cannot write");
-  out_ << std::setprecision(17) << "time_s";
+  out_ = std::make_unique<OutputFile>(file_, Durability::Record);
+  *out_ << std::setprecision(17) << "time_s";
   for (Channel& c : channels_) {
-    out_ << ',' << c.def->name << "_acceleration_m_s2";
+    *out_ << ',' << c.def->name << "_acceleration_m_s2";
     c.on_body.clear();
     for (const physics::GearPairInfo& p : world.gear_pairs()) c.on_body.push_back(p.body_a == c.def->body || p.body_b == c.def->body);
   }
-  out_ << '\n';
+  *out_ << '\n';
   const long every = steps_per_sample(scenario_);
   const double fs_step = 1.0 / scenario_.solver.time_step_s;
   if (every >= 2) decimator_.emplace(design_decimation_filter(fs_step, fs_step / static_cast<double>(every)), channels_.size(), 0.0);
@@ -95,13 +93,15 @@ void SensorLog::write(const DecimatedRow& row) {
     append_number(text, row.values[s] + noise);
   }
   text += '\n';
-  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out_->write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 void SensorLog::on_stop(const physics::World&) {
   if (decimator_)
     for (const DecimatedRow& out : decimator_->finish()) write(out);
-  out_.flush();
+  out_->commit();
 }
+
+bool SensorLog::write_failed() const { return out_ && out_->failed(); }
 
 }  // namespace gearsim::sim

@@ -6,6 +6,10 @@
 // time_s,<sensor>_acceleration_m_s2,… docs/condition-monitoring.md.
 #pragma once
 
+#include <memory>
+
+#include "core/output_file.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -31,6 +35,7 @@ class SensorLog : public Observer {
   void on_start(const physics::World& world) override;
   void on_step(const physics::World& world) override;
   void on_stop(const physics::World& world) override;
+  bool write_failed() const override;
   // Each sensor's acceleration at the last step, before the acquisition's anti-aliasing filter,
   // decimation and noise, m/s² (what the per-step log records), and the sensors' names.
   const std::vector<double>& step_acceleration_m_s2() const { return row_; }
@@ -47,7 +52,7 @@ class SensorLog : public Observer {
   void write(const DecimatedRow& row);
   std::filesystem::path file_;
   const physics::Scenario& scenario_;
-  std::ofstream out_;
+  std::unique_ptr<OutputFile> out_;
   std::vector<Channel> channels_;
   std::optional<Decimator> decimator_;
   std::vector<double> row_;

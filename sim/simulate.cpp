@@ -98,6 +98,7 @@ const char* status_name(RunStatus s) {
     case RunStatus::Completed: return "completed";
     case RunStatus::Diverged: return "diverged";
     case RunStatus::Interrupted: return "interrupted";
+    case RunStatus::OutputFailed: return "output_failed";
   }
   return "unknown";
 }
@@ -129,29 +130,53 @@ RunSummary simulate(const physics::Scenario& s, const std::vector<Observer*>& ob
   const auto sample = [&] {
     for (Observer* o : observers) o->on_sample(world);
   };
-  for (long i = 1; i <= total; ++i) {
-    world.step();
-    for (Observer* o : observers) o->on_step(world);
-    r.max_penetration_m = std::max(r.max_penetration_m, world.max_penetration_m());
-    // A run out of its physical bounds stops at this step, its last sample taken.
-    r.divergence = bounds.check(world);
-    if (r.divergence) {
-      r.status = RunStatus::Diverged;
-      if (i % every != 0) sample();
+  // An observer whose writes failed ends the run here: nothing after it could be kept.
+  const auto write_failed = [&] {
+    return std::any_of(observers.begin(), observers.end(), [](const Observer* o) { return o->write_failed(); });
+  };
+  try {
+    for (long i = 1; i <= total; ++i) {
+      world.step();
+      for (Observer* o : observers) o->on_step(world);
+      r.max_penetration_m = std::max(r.max_penetration_m, world.max_penetration_m());
+      // A run out of its physical bounds stops at this step, its last sample taken.
+      r.divergence = bounds.check(world);
+      if (r.divergence) {
+        r.status = RunStatus::Diverged;
+        if (i % every != 0) sample();
+      }
+      if (!r.divergence && world.time_s() >= r.steady_from_s) steady.add(world);
+      else if (steady.steps == 0) steady.track(world);
+      if (i % every == 0) {
+        sample();
+        if (write_failed()) {
+          r.status = RunStatus::OutputFailed;
+          break;
+        }
+      }
+      if (r.divergence) break;
+      if (options.progress) options.progress(i, total, world.time_s());
+      if (const int stop = options.stop_requested ? options.stop_requested() : 0; stop != 0) {
+        r.status = RunStatus::Interrupted;
+        r.stop_signal = stop;
+        if (i % every != 0) sample();
+        break;
+      }
     }
-    if (!r.divergence && world.time_s() >= r.steady_from_s) steady.add(world);
-    else if (steady.steps == 0) steady.track(world);
-    if (i % every == 0) sample();
-    if (r.divergence) break;
-    if (options.progress) options.progress(i, total, world.time_s());
-    if (const int stop = options.stop_requested ? options.stop_requested() : 0; stop != 0) {
-      r.status = RunStatus::Interrupted;
-      r.stop_signal = stop;
-      if (i % every != 0) sample();
-      break;
-    }
+  } catch (...) {
+    // An exception out of a step (a bug, or the world refusing a state) keeps the logs up to it.
+    for (Observer* o : observers) try {
+        o->on_stop(world);
+      } catch (const std::exception&) {
+      }
+    throw;
   }
-  for (Observer* o : observers) o->on_stop(world);
+  for (Observer* o : observers) try {
+      o->on_stop(world);
+    } catch (const OutputError& e) {
+      r.status = RunStatus::OutputFailed;
+      r.not_written.push_back(e.what());
+    }
   r.wall_seconds = seconds_since(wall0);
   r.created_energy_J = bounds.created_energy_J();
   fill_results(s, world, steady, r);

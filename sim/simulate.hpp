@@ -19,8 +19,10 @@
 
 namespace gearsim::sim {
 
-enum class RunStatus { Completed, Diverged, Interrupted };
-const char* status_name(RunStatus s);  // "completed", "diverged", "interrupted"
+// OutputFailed: an observer could not write its outputs (a full disk); the run stopped at the
+// next output sample and RunSummary::not_written says which and why.
+enum class RunStatus { Completed, Diverged, Interrupted, OutputFailed };
+const char* status_name(RunStatus s);  // "completed", "diverged", "interrupted", "output_failed"
 
 struct SimOptions {
   // Polled after every step: a nonzero value (e.g. the signal that asked) stops the run there,
@@ -66,6 +68,7 @@ struct RunSummary {
   long dropped_contacts = 0;
   long stiffness_table_misses = 0;
   std::vector<std::string> warnings;  // numerical trouble counted over the run
+  std::vector<std::string> not_written;  // OutputFailed: each output not written, with the reason
 };
 
 // Index into World::bodies() of the body a joint turns; InputError naming the scenario when no

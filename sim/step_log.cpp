@@ -3,6 +3,8 @@
 #include <hdf5.h>
 
 #include <array>
+#include <cerrno>
+#include <cstring>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -67,10 +69,11 @@ struct Column {
     GEARSIM_CHECK(dataset >= 0, std::string("HDF5 dataset creation failed: ") + name);
   }
 
-  // Writes the buffered rows at the end of the dataset and empties the buffer.
-  void write() {
+  // Writes the buffered rows at the end of the dataset and empties the buffer; false when HDF5
+  // could not (errno then says why, e.g. ENOSPC).
+  bool write() {
     const hsize_t new_rows = buffer.size() / width;
-    if (new_rows == 0) return;
+    if (new_rows == 0) return true;
     const int rank = width == 1 ? 1 : 2;
     const hsize_t size[2] = {rows + new_rows, width};
     H5Dset_extent(dataset, size);
@@ -81,9 +84,10 @@ struct Column {
     const herr_t status = H5Dwrite(dataset, native_type<T>(), mem_space, file_space, H5P_DEFAULT, buffer.data());
     H5Sclose(mem_space);
     H5Sclose(file_space);
-    GEARSIM_CHECK(status >= 0, "HDF5 write failed");
-    rows += new_rows;
     buffer.clear();
+    if (status < 0) return false;
+    rows += new_rows;
+    return true;
   }
 
   void close() {
@@ -125,6 +129,8 @@ T narrow(long long v, const char* what) {
 
 struct StepLog::Impl {
   std::filesystem::path path;
+  std::unique_ptr<StagedPath> staged;  // written under a temporary name, renamed by close()
+  int error = 0;                       // errno of the first failed write (0: none)
   hid_t file = -1, contacts_group = -1;
   double dt = 0;
   std::size_t buffered_steps = 0;
@@ -146,12 +152,28 @@ struct StepLog::Impl {
     for (Column<float>& c : floats) f(c);
   }
 
+  // Writes every buffered row; after a failed write nothing more is written (the file is not
+  // kept), so a full disk costs no more time.
   void flush() {
-    state.write();
-    if (sensor_count) sensors.write();
-    each_contact_column([](auto& c) { c.write(); });
     buffered_steps = 0;
-    H5Fflush(file, H5F_SCOPE_GLOBAL);
+    if (error) {
+      state.buffer.clear(), sensors.buffer.clear();
+      each_contact_column([](auto& c) { c.buffer.clear(); });
+      return;
+    }
+    bool ok = state.write();
+    if (sensor_count) ok = sensors.write() && ok;
+    each_contact_column([&ok](auto& c) { ok = c.write() && ok; });
+    if (ok && H5Fflush(file, H5F_SCOPE_GLOBAL) < 0) ok = false;
+    if (!ok) fail(errno ? errno : EIO);
+  }
+
+  // The first failed write: nothing more goes to the file, and HDF5's own writes from here on
+  // (its metadata, when it closes the file) go nowhere, so that it closes cleanly.
+  void fail(int err) {
+    error = err;
+    void* handle = nullptr;
+    if (H5Fget_vfd_handle(file, H5P_DEFAULT, &handle) >= 0 && handle) divert_to_null(*static_cast<int*>(handle));
   }
 };
 
@@ -162,9 +184,10 @@ StepLog::StepLog(const std::filesystem::path& path, const physics::World& world,
   m.path = path;
   m.dt = dt;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through our exceptions
-  unlink_output(path);  // never written through a link (core/output_file.hpp)
-  m.file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (m.file < 0) throw InputError(path.string() + ": cannot create the HDF5 step log");
+  m.staged = std::make_unique<StagedPath>(path, Durability::Record);
+  // H5F_ACC_EXCL: a fresh file under the temporary's name, never one (or a link) already there.
+  m.file = H5Fcreate(m.staged->temp().c_str(), H5F_ACC_EXCL, H5P_DEFAULT, H5P_DEFAULT);
+  if (m.file < 0) throw OutputError(path.string() + ": cannot create the HDF5 step log: " + std::strerror(errno));
   string_attribute(m.file, "scenario", scenario_name);
   string_attribute(m.file, "units",
                    "SI: s, m, rad, rad/s, N·s (impulses per step; force = impulse / time_step_s); "
@@ -241,13 +264,23 @@ void StepLog::close() {
   if (m.sensor_count) m.sensors.close();
   m.each_contact_column([](auto& c) { c.close(); });
   H5Gclose(m.contacts_group);
-  H5Fclose(m.file);
+  if (!m.error && H5Fflush(m.file, H5F_SCOPE_GLOBAL) < 0) m.fail(errno ? errno : EIO);
+  if (H5Fclose(m.file) < 0 && !m.error) m.error = errno ? errno : EIO;
   m.file = -1;
+  if (m.error) {
+    std::error_code ec;
+    std::filesystem::remove(m.staged->temp(), ec);
+    throw OutputError(m.path.string() + ": cannot write the HDF5 step log: " + std::strerror(m.error));
+  }
+  m.staged->commit();
 }
+
+bool StepLog::write_failed() const { return impl_->error != 0; }
 
 std::uintmax_t StepLog::bytes_on_disk() const {
   std::error_code ec;
-  const auto size = std::filesystem::file_size(impl_->path, ec);
+  const Impl& m = *impl_;
+  const auto size = std::filesystem::file_size(m.staged->committed() ? m.path : m.staged->temp(), ec);
   return ec ? 0 : size;
 }
 

@@ -4,9 +4,10 @@
 // tooth-pair contact per step, column by column (step, pair, tooth_a, tooth_b, flank_a as narrow
 // ints; point_x_m, point_y_m, normal_x, normal_y, depth_m, friction_impulse_N_s as float32;
 // normal_impulse_N_s as float64). Time is stored once, as the attribute time_step_s: step k ends
-// at k·time_step_s. Rows are buffered and written every few thousand steps; close() (or the
-// destructor, while an exception unwinds) leaves a valid file holding every appended step. Not a
-// CSV writer and not a reader (step_log_reader.hpp).
+// at k·time_step_s. Rows are buffered and written every few thousand steps, into a temporary
+// file beside the target; close() (or the destructor, while an exception unwinds) puts a valid
+// file holding every appended step in place (core/output_file.hpp) — or, when a write failed (a
+// full disk), removes it and says so. Not a CSV writer and not a reader (step_log_reader.hpp).
 #pragma once
 
 #include <filesystem>
@@ -22,7 +23,7 @@ namespace gearsim::sim {
 
 class StepLog {
  public:
-  // Creates (truncates) the file. Throws InputError naming the path when it cannot. With sensor
+  // Creates the file (under a temporary name). Throws OutputError naming the path when it cannot. With sensor
   // names, a dataset /sensors holds one value per sensor and step (docs/hdf5-log.md).
   StepLog(const std::filesystem::path& path, const physics::World& world, const std::string& scenario_name,
           double time_step_s, const std::vector<std::string>& sensor_names = {});
@@ -33,8 +34,11 @@ class StepLog {
   // Appends the world's state and contacts of its last step, and the sensors' values then (one
   // per sensor name given at construction, m/s²).
   void append(const physics::World& world, const std::vector<double>& sensor_values_m_s2 = {});
-  // Writes what is buffered and closes the file; further appends are errors.
+  // Writes what is buffered, closes the file and puts it in place; further appends are errors.
+  // OutputError naming the file and the reason when a write failed (nothing is put in place).
   void close();
+  // True once a write failed (the rest of the run is not written).
+  bool write_failed() const;
   // Bytes written so far (after the last flush), for the log-size report.
   std::uintmax_t bytes_on_disk() const;
 
@@ -63,6 +67,7 @@ class StepLogObserver : public Observer {
   void on_stop(const physics::World&) override {
     if (log_) log_->close();
   }
+  bool write_failed() const override { return log_ && log_->write_failed(); }
   std::uintmax_t bytes_on_disk() const { return log_ ? log_->bytes_on_disk() : 0; }
 
  private:

@@ -2,9 +2,12 @@
 
 #include <hdf5.h>
 
+#include <limits>
+
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 
 namespace gearsim::sim {
 namespace {
@@ -60,6 +63,9 @@ std::vector<double> step_times(const std::vector<std::int64_t>& step, double dt,
 
 StepLogContacts read_step_log_contacts(const std::filesystem::path& path) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through our exceptions
+  // Any size a run can write (≈ 50 MB per simulated second), but a regular file: a FIFO or a
+  // device under the log's name would block HDF5's open or feed it without end.
+  check_input_file(path, std::numeric_limits<std::size_t>::max(), "an HDF5 step log");
   File f;
   f.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (f.id < 0) throw InputError(path.string() + ": cannot open as HDF5");

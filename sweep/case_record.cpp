@@ -3,7 +3,9 @@
 #include <fstream>
 
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
 #include "core/output_file.hpp"
+#include "input/input_limits.hpp"
 
 namespace gearsim::sweep {
 
@@ -67,23 +69,23 @@ CaseRecord case_record_from_json(const json& j, const std::string& where) {
 }
 
 void write_case_record(const std::filesystem::path& case_dir, const CaseRecord& r) {
-  const std::filesystem::path tmp = case_dir / "case.json.tmp", final_path = case_dir / "case.json";
-  {
-    std::ofstream out = open_output_file(tmp);
-    if (!out) throw InputError(tmp.string() + ": cannot write");
-    out << case_record_json(r).dump(2) << "\n";
-    if (!out) throw InputError(tmp.string() + ": cannot write");
-  }
-  std::filesystem::rename(tmp, final_path);
+  write_output_file(case_dir / "case.json", case_record_json(r).dump(2) + "\n", Durability::Record);
 }
 
 std::optional<CaseRecord> read_case_record(const std::filesystem::path& case_dir) {
-  const std::filesystem::path p = case_dir / "case.json";
-  std::ifstream in(p);
-  if (!in) return std::nullopt;
+  namespace fs = std::filesystem;
+  const fs::path p = case_dir / "case.json";
+  std::error_code ec;
+  // Only a record inside a case folder of its own: a link where the folder or record belongs is
+  // not followed (the case is then rerun, or named in the table, by the caller).
+  if (!fs::is_directory(fs::symlink_status(case_dir, ec))) return std::nullopt;
+  const fs::file_status st = fs::symlink_status(p, ec);
+  if (!fs::exists(st)) return std::nullopt;
+  if (!fs::is_regular_file(st)) throw InputError(p.string() + ": expected a case record (a regular file)");
+  const std::string text = read_input_file(p, input::limits::kMaxRecordBytes, "a case record");
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(text);
   } catch (const json::exception& e) {
     throw InputError(p.string() + ": not valid JSON: " + e.what());
   }

@@ -41,6 +41,24 @@ void collect_metrics(const CaseJob& job, const CaseContext& ctx, CaseRecord& r) 
 
 }  // namespace
 
+std::string make_case_folder(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto kind = [](const fs::file_status& st) {
+    return fs::is_symlink(st) ? "a link" : fs::is_regular_file(st) ? "a file" : "something else";
+  };
+  const fs::file_status parent = fs::symlink_status(dir.parent_path(), ec);
+  if (!fs::is_directory(parent))
+    return dir.parent_path().string() + ": expected the sweep's cases folder, found " + kind(parent) + " (left as it is)";
+  const fs::file_status own = fs::symlink_status(dir, ec);
+  if (!fs::exists(own)) {
+    if (!fs::create_directory(dir, ec) && ec) return dir.string() + ": cannot create the case folder: " + ec.message();
+    return "";
+  }
+  if (!fs::is_directory(own)) return dir.string() + ": expected a case folder, found " + kind(own) + " (left as it is)";
+  return "";
+}
+
 json case_job_json(const CaseJob& job) {
   json params = json::array();
   for (const auto& [k, v] : job.parameters) params.push_back({k, v});
@@ -72,10 +90,17 @@ CaseJob case_job_from_json(const json& j) {
 CaseRecord run_case(const CaseJob& job, const CaseContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   CaseRecord r{job.index, job.parameters, job.overrides, CaseStatus::Failed, 0, "", json::object(), 0};
-  std::filesystem::create_directories(job.dir);
-  std::filesystem::remove(job.dir / "case.json");
+  // A link or a file where the case folder belongs: the case fails, named, and nothing there is
+  // touched (its record is the sweep table's row, not a case.json written through the link).
+  if (const std::string problem = make_case_folder(job.dir); !problem.empty()) {
+    r.error = problem;
+    return r;
+  }
+  std::error_code ec;
+  std::filesystem::remove(job.dir / "case.json", ec);
   // The run: every override as one --set=key=value argument (never an option of its own).
-  std::vector<std::string> args{"run", job.scenario.string(), "--out", job.dir.string(), "--no-analyze"};
+  // --force: the case folder holds the sweep's own logs of this run beside it.
+  std::vector<std::string> args{"run", job.scenario.string(), "--out", job.dir.string(), "--no-analyze", "--force"};
   for (const std::string& o : job.overrides) args.push_back("--set=" + o);
   ProcessOutcome o = step(job, ctx, "run", args, r.error);
   r.exit_code = o.exit_code;

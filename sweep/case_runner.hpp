@@ -46,6 +46,11 @@ struct CaseContext {
 // Runs the job and writes its case.json; returns the record written.
 CaseRecord run_case(const CaseJob& job, const CaseContext& context);
 
+// Makes the case folder DIR where it is absent; "" when DIR is then a folder of its own, else
+// what stands there instead (a link, a file; also where the cases folder should be), named, for
+// the case's failure. Never follows a link and never removes anything.
+std::string make_case_folder(const std::filesystem::path& dir);
+
 // How much of a failing step's stderr a record keeps, bytes.
 constexpr std::size_t kErrorTailBytes = 2000;
 

@@ -12,6 +12,8 @@
 #include <sstream>
 #include <thread>
 
+#include "core/output_file.hpp"
+
 extern char** environ;
 
 namespace gearsim::sweep {
@@ -38,6 +40,12 @@ int wait_polling(pid_t pid, const std::function<int()>& stop) {
   }
 }
 
+// A child's log file, created (truncated) for writing; -1 (errno set) when it cannot be.
+int open_log(const std::filesystem::path& p) {
+  unlink_output(p);
+  return ::open(p.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
+}
+
 }  // namespace
 
 ProcessOutcome run_process(const std::vector<std::string>& argv, const std::filesystem::path& stdout_file,
@@ -46,14 +54,26 @@ ProcessOutcome run_process(const std::vector<std::string>& argv, const std::file
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  // The logs opened here, never through a link: one planted under a log's name is removed
+  // (the link, not its target) and the log made afresh with O_NOFOLLOW.
+  const int out_fd = open_log(stdout_file), err_fd = out_fd < 0 ? -1 : open_log(stderr_file);
+  if (out_fd < 0 || err_fd < 0) {
+    const int e = errno;
+    if (out_fd >= 0) ::close(out_fd);
+    out.exit_code = 127;
+    out.failure = "cannot write " + (out_fd < 0 ? stdout_file : stderr_file).string() + ": " + std::strerror(e);
+    return out;
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, stdout_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderr_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, out_fd, STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, err_fd, STDERR_FILENO);
   pid_t pid = 0;
   const int err = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  ::close(out_fd);
+  ::close(err_fd);
   if (err != 0) {
     out.exit_code = 127;
     out.failure = "cannot start " + argv[0] + ": " + std::strerror(err);
@@ -74,6 +94,9 @@ ProcessOutcome run_process(const std::vector<std::string>& argv, const std::file
 std::filesystem::path self_executable() { return std::filesystem::read_symlink("/proc/self/exe"); }
 
 std::string file_tail(const std::filesystem::path& file, std::size_t max_bytes) {
+  // Only a log this sweep wrote: a link under its name is not followed.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(file, ec))) return "";
   std::ifstream in(file, std::ios::binary);
   if (!in) return "";
   std::stringstream all;

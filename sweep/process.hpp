@@ -20,7 +20,8 @@ struct ProcessOutcome {
 
 // Runs argv (argv[0] the program's path) to its end. `stop` is polled every 20 ms while it runs:
 // when it returns a signal number > 0 that signal is sent to the child once (a child that was
-// asked to stop still gets waited for).
+// asked to stop still gets waited for). The log files are made afresh, never through a link
+// (failure names the one that could not be).
 ProcessOutcome run_process(const std::vector<std::string>& argv, const std::filesystem::path& stdout_file,
                            const std::filesystem::path& stderr_file, const std::function<int()>& stop);
 

@@ -4,7 +4,9 @@
 
 #include "core/errors.hpp"
 #include "sweep/case_list.hpp"
+#include "core/input_file.hpp"
 #include "core/output_file.hpp"
+#include "input/input_limits.hpp"
 
 namespace gearsim::sweep {
 
@@ -51,10 +53,11 @@ bool is_sweep_dir(const fs::path& dir) { return fs::is_regular_file(dir / "sweep
 
 json read_sweep_json(const fs::path& dir) {
   const fs::path p = dir / "sweep.json";
-  std::ifstream in(p);
-  if (!in) throw InputError(p.string() + ": cannot read (is " + dir.string() + " the --out folder of a `gearsim sweep`?)");
+  if (!fs::exists(fs::symlink_status(p)))
+    throw InputError(p.string() + ": not found (is " + dir.string() + " the --out folder of a `gearsim sweep`?)");
+  const std::string text = read_input_file(p, input::limits::kMaxRecordBytes, "a sweep record");
   try {
-    json j = json::parse(in);
+    json j = json::parse(text);
     if (!j.is_object() || !j.contains("content_hash") || !j["content_hash"].is_string() || !j.contains("parameters") ||
         !j["parameters"].is_array() || !j.contains("case_count") || !j["case_count"].is_number_unsigned())
       throw InputError(p.string() + ": expected the object gearsim sweep writes (content_hash, parameters, case_count)");
@@ -77,11 +80,12 @@ int prepare_sweep_dir(const fs::path& dir, const input::SweepFile& f, bool fresh
                        old.value("sweep_file", std::string("?")) + " with hash " + old["content_hash"].get<std::string>() +
                        ", now " + f.content_hash + "): resuming would mix two sweeps; use --fresh to start over, or another --out");
   }
-  fs::create_directories(dir / "cases", ec);
+  fs::create_directory(dir / "cases", ec);
   if (ec) throw InputError((dir / "cases").string() + ": cannot create: " + ec.message());
-  std::ofstream out = open_output_file(dir / "sweep.json");
-  if (!out) throw InputError((dir / "sweep.json").string() + ": cannot write");
-  out << sweep_json(f).dump(2) << "\n";
+  if (!fs::is_directory(fs::symlink_status(dir / "cases", ec)))
+    throw InputError((dir / "cases").string() + ": expected the sweep's cases folder, found a link or a file "
+                     "(left as it is): remove it or choose another --out");
+  write_output_file(dir / "sweep.json", sweep_json(f).dump(2) + "\n", Durability::Record);
   return removed;
 }
 

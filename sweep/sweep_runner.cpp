@@ -1,5 +1,7 @@
 #include "sweep/sweep_runner.hpp"
 
+#include "core/errors.hpp"
+#include "core/folder_lock.hpp"
 #include "input/sweep_file.hpp"
 #include "sweep/case_list.hpp"
 #include "sweep/sweep_dir.hpp"
@@ -25,11 +27,20 @@ SweepOutcome run_sweep(const SweepOptions& o, const Scheduler& schedule, const S
   const fs::path dir = fs::absolute(o.out_dir).lexically_normal();
   SweepOutcome out;
   out.cases = cases.size();
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
+  const FolderLock lock(dir, "gearsim sweep");  // one sweep (or report) at a time in the folder
   out.removed_outputs = prepare_sweep_dir(dir, f, o.fresh);
-  // Resume: a case whose case.json holds a final status has run; the others (re)run.
+  // Resume: a case whose case.json holds a final status has run; the others (re)run, also one
+  // whose folder or record is damaged (its run says what is wrong).
   std::vector<CaseJob> jobs;
   for (const Case& c : cases) {
-    const std::optional<CaseRecord> r = read_case_record(case_dir(dir, c.index));
+    std::optional<CaseRecord> r;
+    try {
+      r = read_case_record(case_dir(dir, c.index));
+    } catch (const InputError&) {
+    }
     if (r && is_final(r->status)) ++out.skipped;
     else jobs.push_back(job_of(f, c, dir));
   }

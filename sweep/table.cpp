@@ -29,13 +29,29 @@ std::string csv_cell(const std::string& s) {
 
 }  // namespace
 
+// "" when the case folder DIR is absent or a folder of its own; else what stands there instead.
+static std::string folder_problem(const std::filesystem::path& dir) {
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::symlink_status(dir, ec);
+  if (!std::filesystem::exists(st) || std::filesystem::is_directory(st)) return "";
+  return dir.string() + ": expected a case folder, found " +
+         (std::filesystem::is_symlink(st) ? "a link" : "a file") + " (left as it is)";
+}
+
 SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std::string>& parameter_columns,
                         std::size_t case_count) {
   SweepTable t;
   t.parameter_columns = parameter_columns;
   std::vector<std::optional<CaseRecord>> records;
+  std::vector<std::string> problems(case_count);  // a case whose folder or record is damaged
   for (std::size_t i = 0; i < case_count; ++i) {
-    records.push_back(read_case_record(case_dir(dir, i)));
+    try {
+      problems[i] = folder_problem(case_dir(dir, i));
+      records.push_back(problems[i].empty() ? read_case_record(case_dir(dir, i)) : std::nullopt);
+    } catch (const InputError& e) {
+      problems[i] = e.what();
+      records.push_back(std::nullopt);
+    }
     if (!records.back()) continue;
     if (records.back()->index != i)
       throw InputError((case_dir(dir, i) / "case.json").string() + ": key index: " + std::to_string(records.back()->index) +
@@ -45,7 +61,7 @@ SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std:
   for (std::size_t i = 0; i < case_count; ++i) {
     TableRow row;
     row.index = i;
-    row.status = records[i] ? status_name(records[i]->status) : "not run";
+    row.status = records[i] ? status_name(records[i]->status) : problems[i].empty() ? "not run" : "failed";
     for (const std::string& key : parameter_columns) {
       std::string value;
       if (records[i])
@@ -64,6 +80,7 @@ SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std:
       row.metrics.push_back(v);
     }
     if (records[i]) row.error = records[i]->error;
+    else row.error = problems[i];
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -77,8 +94,7 @@ std::string metric_text(const std::optional<double>& v) {
 }
 
 void write_table_csv(const SweepTable& t, const std::filesystem::path& file) {
-  std::ofstream out = open_output_file(file);
-  if (!out) throw InputError(file.string() + ": cannot write");
+  OutputFile out(file, Durability::Record);
   out << "index";
   for (const std::string& c : t.parameter_columns) out << "," << csv_cell(c);
   out << ",status";
@@ -91,7 +107,7 @@ void write_table_csv(const SweepTable& t, const std::filesystem::path& file) {
     for (const auto& m : r.metrics) out << "," << metric_text(m);
     out << "\n";
   }
-  if (!out) throw InputError(file.string() + ": cannot write");
+  out.commit();
 }
 
 StatusCounts count_statuses(const SweepTable& t) {

@@ -1,6 +1,9 @@
 // sweep.h5: the gathered table in HDF5 (table.hpp).
 #include <hdf5.h>
 
+#include <cerrno>
+#include <cstring>
+
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -14,6 +17,14 @@ namespace gearsim::sweep {
 namespace {
 
 // A 1-D dataset of `n` values of `type` (no timestamps: the same table gives the same bytes).
+// Closes a file whose writes failed without writing more (HDF5 would flush its metadata, and
+// crash at exit when that fails); its StagedPath removes it.
+void close_unwritten(hid_t h5) {
+  void* handle = nullptr;
+  if (H5Fget_vfd_handle(h5, H5P_DEFAULT, &handle) >= 0 && handle) divert_to_null(*static_cast<int*>(handle));
+  H5Fclose(h5);
+}
+
 void write_dataset(hid_t group, const std::string& name, hid_t type, std::size_t n, const void* data,
                    const std::filesystem::path& file) {
   const hsize_t dims[1] = {n};
@@ -25,7 +36,7 @@ void write_dataset(hid_t group, const std::string& name, hid_t type, std::size_t
   if (set >= 0) H5Dclose(set);
   H5Pclose(props);
   H5Sclose(space);
-  if (status < 0) throw InputError(file.string() + ": cannot write the dataset '" + name + "'");
+  if (status < 0) throw OutputError(file.string() + ": cannot write the dataset '" + name + "': " + std::strerror(errno ? errno : EIO));
 }
 
 void write_strings(hid_t group, const std::string& name, const std::vector<std::string>& values,
@@ -65,10 +76,10 @@ void write_parameter(hid_t group, const SweepTable& t, std::size_t k, const std:
 void write_table_h5(const SweepTable& t, const std::filesystem::path& file) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported through our exceptions
   const hid_t props = H5Pcreate(H5P_FILE_CREATE);
-  unlink_output(file);  // never written through a link (core/output_file.hpp)
-  const hid_t h5 = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, props, H5P_DEFAULT);
+  StagedPath staged(file, Durability::Record);  // put in place whole (core/output_file.hpp)
+  const hid_t h5 = H5Fcreate(staged.temp().c_str(), H5F_ACC_EXCL, props, H5P_DEFAULT);
   H5Pclose(props);
-  if (h5 < 0) throw InputError(file.string() + ": cannot create the HDF5 file");
+  if (h5 < 0) throw OutputError(file.string() + ": cannot create the HDF5 file: " + std::strerror(errno));
   const hid_t group_props = H5Pcreate(H5P_GROUP_CREATE);
   H5Pset_obj_track_times(group_props, false);
   const hid_t group = H5Gcreate2(h5, "table", H5P_DEFAULT, group_props, H5P_DEFAULT);
@@ -94,11 +105,17 @@ void write_table_h5(const SweepTable& t, const std::filesystem::path& file) {
     write_strings(group, "columns", columns, file);
   } catch (...) {
     H5Gclose(group);
-    H5Fclose(h5);
+    close_unwritten(h5);
     throw;
   }
   H5Gclose(group);
-  H5Fclose(h5);
+  if (H5Fflush(h5, H5F_SCOPE_GLOBAL) < 0) {
+    const int err = errno ? errno : EIO;
+    close_unwritten(h5);
+    throw OutputError(file.string() + ": cannot write the HDF5 file: " + std::strerror(err));
+  }
+  if (H5Fclose(h5) < 0) throw OutputError(file.string() + ": cannot write the HDF5 file: " + std::strerror(errno ? errno : EIO));
+  staged.commit();
 }
 
 }  // namespace gearsim::sweep

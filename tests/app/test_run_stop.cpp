@@ -1,6 +1,7 @@
 // A run stopped from outside (SIGTERM, SIGINT) ends at one step with every log complete up to it,
 // status "interrupted" and the signal's exit code (128 + signal); a run into a folder that holds an
-// earlier run's outputs removes them first, so no stale summary or analysis sits beside new logs.
+// earlier run's outputs removes them first (those its manifest lists), so no stale summary or
+// analysis sits beside new logs, and refuses a folder of files gearsim did not write.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -70,10 +71,18 @@ int run_and_signal(const fs::path& dir, int sig) {
           static_cast<char*>(nullptr));
     _exit(127);
   }
-  // Wait for a few rows past the header (the run logs at 2 kHz), at most 5 minutes.
+  // Wait for a few rows past the header (the run logs at 2 kHz), at most 5 minutes. Until the
+  // run ends, state.csv is written under its temporary name (.state.csv.partial-PID-N).
+  const auto logged_bytes = [&] {
+    std::error_code ec;
+    std::uintmax_t bytes = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
+      if (e.path().filename().string().starts_with(".state.csv.partial-")) bytes += e.file_size(ec);
+    return bytes;
+  };
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
   while (std::chrono::steady_clock::now() < deadline) {
-    if (fs::exists(dir / "state.csv") && fs::file_size(dir / "state.csv") > 4096) break;
+    if (logged_bytes() > 4096) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   kill(pid, sig);
@@ -167,39 +176,65 @@ TEST(RunStop, ASignalDuringTheAnalysisEndsTheCommandWithItsCodeOnceTheAnalysisIs
 }
 
 TEST(RunStop, ARunIntoAUsedFolderRemovesTheEarlierRunsOutputsOnly) {
+  // The earlier run's outputs are the ones its manifest lists (run, analysis, report); a file the
+  // user put beside them, also one named like a render's frame, stays.
   const fs::path dir = fs::temp_directory_path() / "gearsim_stop_reused";
   fs::remove_all(dir);
-  fs::create_directories(dir / "frames");
-  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "video_sun_mesh.mp4.part", "frames/f_000001.png"})
-    std::ofstream(dir / f) << "from an earlier run\n";
+  const std::string run = std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/spur_pair.yaml --out " +
+                          dir.string() + " --duration 0.3";
+  ASSERT_EQ(gearsim::test::gearsim(run).exit_code, 0);
+  ASSERT_EQ(gearsim::test::gearsim("report " + dir.string()).exit_code, 0);
   std::ofstream(dir / "notes.txt") << "the user's own file\n";
-  const gearsim::test::CliRun r = gearsim::test::gearsim(
-      std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
-      " --duration 0.002 --no-analyze");
+  fs::create_directories(dir / "frames");
+  std::ofstream(dir / "frames" / "f_000001.png") << "the user's own picture\n";
+  const gearsim::test::CliRun r = gearsim::test::gearsim(run + " --no-analyze");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("removed 6 outputs of a previous run"), std::string::npos) << r.output;
-  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "video.mp4", "video_sun_mesh.mp4.part", "frames"})
+  // state, contacts, steps, scenario, summary; analysis, spectrum, sidebands, teeth; report.
+  EXPECT_NE(r.output.find("removed 10 outputs of a previous run"), std::string::npos) << r.output;
+  for (const char* f : {"analysis.json", "report.html", "spectrum.csv", "sidebands.csv", "teeth.csv"})
     EXPECT_FALSE(fs::exists(dir / f)) << f;
   EXPECT_TRUE(fs::exists(dir / "notes.txt"));
+  EXPECT_TRUE(fs::exists(dir / "frames" / "f_000001.png"));
   EXPECT_TRUE(fs::exists(dir / "summary.json"));
   EXPECT_TRUE(fs::exists(dir / "state.csv"));
 }
 
+TEST(RunStop, AFolderOfTheUsersFilesIsRefusedAndNothingInItRemoved) {
+  // The audit's case: a folder that never held a run, with files named like a run's outputs.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_stop_users_folder";
+  fs::remove_all(dir);
+  fs::create_directories(dir / "frames");
+  for (const char* f : {"frames/holiday.png", "video_of_my_cat.mp4", "state.csv"}) std::ofstream(dir / f) << "mine\n";
+  const std::string run = std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/spur_pair.yaml --out " +
+                          dir.string() + " --duration 0.1 --no-analyze";
+  const gearsim::test::CliRun r = gearsim::test::gearsim(run);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find(dir.string() + ": the folder holds files that gearsim did not write"), std::string::npos)
+      << r.output;
+  for (const char* f : {"frames/holiday.png", "video_of_my_cat.mp4", "state.csv"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
+  // --force writes beside them: nothing of the user's is removed; state.csv, an output's name, is replaced.
+  const gearsim::test::CliRun forced = gearsim::test::gearsim(run + " --force");
+  EXPECT_EQ(forced.exit_code, 0) << forced.output;
+  EXPECT_TRUE(fs::exists(dir / "frames/holiday.png"));
+  EXPECT_TRUE(fs::exists(dir / "video_of_my_cat.mp4"));
+  EXPECT_GT(fs::file_size(dir / "state.csv"), 100u);
+}
+
 TEST(RunStop, LinksNamedLikeOutputsAreReplacedNotFollowed) {
   // Outputs go only inside the chosen folder: a symbolic link planted under an output's name is
-  // removed (as an earlier run's output is) and a regular file written in its place where the run
-  // writes one; the file it pointed to is left as it was.
+  // replaced by the output (a rename over it, never a write through it); the file it pointed to
+  // is left as it was. The folder holds files gearsim did not write, hence --force.
   const fs::path dir = fs::temp_directory_path() / "gearsim_stop_links";
   const fs::path outside = fs::temp_directory_path() / "gearsim_stop_links_outside.txt";
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(outside) << "not the run's\n";
   const std::vector<std::string> names = {"state.csv", "contacts.csv", "steps.h5", "summary.json", "scenario.json",
-                                          "gearset.yaml", "sensors.csv", "analysis.json", "spectrum.csv"};
+                                          "gearset.yaml", "analysis.json", "spectrum.csv"};
   for (const std::string& n : names) fs::create_symlink(outside, dir / n);
   const gearsim::test::CliRun r = gearsim::test::gearsim(std::string("run ") + GEARSIM_SOURCE_DIR +
                                                          "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
-                                                         " --duration 0.2");
+                                                         " --duration 0.2 --force");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   std::ifstream f(outside);
   std::stringstream text;

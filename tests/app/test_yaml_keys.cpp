@@ -96,6 +96,62 @@ TEST(YamlKeys, AnAliasBombIsRefusedBeforeItIsWalked) {
   EXPECT_NE(e.find("more than 1000000 values"), std::string::npos) << e;
 }
 
+TEST(YamlKeys, AnAliasInsideItsOwnAnchorIsRefusedNotACrash) {
+  // yaml-cpp builds `&r [1, *r]` as a list holding itself: every walk of it is endless.
+  const std::string e = scenario_error(kWheel + "x: &r [1, *r]\n");
+  EXPECT_NE(e.find("bad.yaml:"), std::string::npos) << e;
+  EXPECT_NE(e.find("nested deeper than 64 levels"), std::string::npos) << e;
+}
+
+TEST(YamlKeys, ARecursiveSetValueIsRefusedNamingTheSet) {
+  try {
+    input::load_scenario(write_file("ok.yaml", kWheel), {"x=&r [1, *r]"});
+    FAIL() << "a recursive --set value was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("--set 'x=&r [1, *r]'"), std::string::npos) << m;
+    EXPECT_NE(m.find("nested deeper than 64 levels"), std::string::npos) << m;
+  }
+}
+
+TEST(YamlKeys, AnAliasBombInASetValueIsCountedBeforeItIsCopied) {
+  // The same nine levels of nine aliases as a file's bomb, as one flow mapping on the command line.
+  std::string value = "{x0: &x0 [1, 1, 1, 1, 1, 1, 1, 1, 1]";
+  for (int k = 1; k <= 9; ++k) {
+    const std::string p = "*x" + std::to_string(k - 1);
+    value += ", x" + std::to_string(k) + ": &x" + std::to_string(k) + " [" + p;
+    for (int i = 1; i < 9; ++i) value += ", " + p;
+    value += "]";
+  }
+  value += "}";
+  try {
+    input::load_scenario(write_file("ok.yaml", kWheel), {"x=" + value});
+    FAIL() << "an alias bomb in --set was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 1000000 values"), std::string::npos) << e.what();
+  }
+}
+
+TEST(YamlKeys, AKeyGivenTwiceInASetMappingIsRefusedAsInAFile) {
+  try {
+    input::load_scenario(write_file("ok.yaml", kWheel), {"solver={time_step_s: 1e-4, time_step_s: 1e-5}"});
+    FAIL() << "a --set mapping with a key twice was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("time_step_s: the key appears twice in one mapping"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(YamlKeys, TheCliRefusesARecursiveFileWithTwoInEveryCommandThatReadsOne) {
+  const fs::path p = write_file("r.yaml", "duration_s: 0.1\nx: &r [1, *r]\n");
+  const fs::path out = p.parent_path() / "out";
+  for (const std::string& cmd : {"run " + p.string() + " --out " + out.string(), "gears " + p.string()}) {
+    const test::CliRun r = test::gearsim(cmd);
+    EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
+    EXPECT_NE(r.output.find("nested deeper than 64 levels"), std::string::npos) << cmd << "\n" << r.output;
+  }
+}
+
 TEST(YamlKeys, AnOversizedFileIsRefusedBeforeParsing) {
   const std::string e = scenario_error(kWheel + "# " + std::string(5 << 20, 'x') + "\n");
   EXPECT_NE(e.find("bad.yaml: "), std::string::npos) << e;

@@ -1,0 +1,39 @@
+#include "app/output_folder.hpp"
+
+#include "core/errors.hpp"
+#include "core/output_file.hpp"
+
+namespace gearsim::app {
+namespace {
+
+// DIR created where missing; InputError naming it otherwise (or when it is not a folder).
+const std::filesystem::path& made(const std::filesystem::path& dir) {
+  std::error_code ec;
+  make_output_dir(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
+  if (!std::filesystem::is_directory(std::filesystem::symlink_status(dir)))
+    throw InputError(dir.string() + ": expected a folder for the outputs");
+  return dir;
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(const std::filesystem::path& dir, const std::string& command)
+    : dir_(dir), lock_(made(dir), command), manifest_(FolderManifest::read(dir)) {}
+
+void OutputFolder::declare(const std::vector<std::string>& names) { manifest_.add_and_write(dir_, names); }
+
+int OutputFolder::clear_for_run(bool force) {
+  if (manifest_.exists()) return manifest_.remove_listed(dir_);
+  if (holds_other_files(dir_) && !force)
+    throw InputError(dir_.string() + ": the folder holds files that gearsim did not write (it has no " +
+                     FolderManifest::kFileName +
+                     "): choose an empty or new folder, or give --force to write beside them (none is removed)");
+  return 0;
+}
+
+void declare_outputs(const std::filesystem::path& dir, const std::vector<std::string>& names) {
+  FolderManifest::read(dir).add_and_write(dir, names);
+}
+
+}  // namespace gearsim::app
