@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/errors.hpp"
+#include "input/scenario_events.hpp"
 #include "input/scenario_record.hpp"
 #include "sim/csv_logs.hpp"
 #include "sim/sensor_log.hpp"
@@ -42,6 +43,8 @@ void set_duration(physics::Scenario& s, double duration_s) {
   if (s.output.sample_rate_hz * duration_s < 1)
     throw InputError("--duration " + std::to_string(duration_s) + ": shorter than one output interval (1/" +
                      std::to_string(s.output.sample_rate_hz) + " Hz in " + s.source.string() + ")");
+  // An impulse the shorter run would never reach is refused, as in the file.
+  input::check_events_within_duration(s, "--duration " + std::to_string(duration_s));
 }
 
 json summary_json(const RunSource& source, const physics::Scenario& s, const sim::RunSummary& r) {

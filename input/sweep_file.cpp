@@ -9,6 +9,7 @@
 #include "core/errors.hpp"
 #include "input/input_limits.hpp"
 #include "input/safe_name.hpp"
+#include "input/utf8_text.hpp"
 #include "input/yaml_reader.hpp"
 
 namespace gearsim::input {
@@ -186,7 +187,9 @@ SweepFile load_sweep_file(const std::filesystem::path& path) {
   f.file = std::filesystem::absolute(path).lexically_normal();
   const std::string text = read_text(f.file);
   f.content_hash = fnv1a_hex(text);
-  const YamlMap top = YamlMap::from_string(text, path.string());
+  const YAML::Node root = parse_yaml_mapping(text, path.string());
+  require_utf8_tree(root, path.string());  // names and values reach sweep.json and the case records
+  const YamlMap top = YamlMap::from_node(root, path.string());
   f.name = top.string("name");
   require_label(top, "name", f.name);
   const std::filesystem::path scenario = top.string("scenario");

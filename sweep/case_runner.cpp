@@ -114,7 +114,13 @@ CaseRecord run_case(const CaseJob& job, const CaseContext& ctx) {
   }
   if (r.status == CaseStatus::Completed) collect_metrics(job, ctx, r);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_case_record(job.dir, r);
+  // A record that cannot be written (a full disk) fails the case, named; the sweep goes on.
+  try {
+    write_case_record(job.dir, r);
+  } catch (const OutputError& e) {
+    r.status = CaseStatus::Failed;
+    r.error = std::string("its record was not written: ") + e.what() + (r.error.empty() ? "" : "; " + r.error);
+  }
   return r;
 }
 

@@ -196,5 +196,19 @@ TEST(InputLimits, ABadCommandLineExitsWithTwo) {
   EXPECT_EQ(test::gearsim("run --help").exit_code, 0);
 }
 
+TEST(InputLimits, AnImpulseADurationCutsOffIsRefusedNamingTheDuration) {
+  // The impulse lies within the file's 0.1 s; --duration 0.04 would end the run before it.
+  const std::filesystem::path p = test::fresh_test_dir() / "struck.yaml";
+  std::ofstream(p) << "name: t\nduration_s: 0.1\n"
+                      "bodies:\n  - {name: wheel, mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]}\n"
+                      "joints:\n  - {name: hinge, body: wheel}\n"
+                      "impulses:\n  - {body: wheel, at_s: 0.05, duration_s: 0.001, torque_N_m: [0, 0, 1]}\n";
+  const test::CliRun r = test::gearsim("run " + p.string() + " --out " + (p.parent_path() / "out").string() +
+                                       " --duration 0.04");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("impulses[0]"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("--duration 0.04"), std::string::npos) << r.output;
+}
+
 }  // namespace test_input_limits
 }  // namespace gearsim::app
