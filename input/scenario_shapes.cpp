@@ -8,6 +8,8 @@
 #include "input/input_limits.hpp"
 #include "input/scenario_parts.hpp"
 #include "core/errors.hpp"
+#include "core/input_file.hpp"
+#include "geometry/mesh_io.hpp"
 #include "geometry/mesh_gear.hpp"
 
 namespace gearsim::input::scenario_detail {
@@ -66,7 +68,12 @@ GearSpec gear_from(const YamlMap& m, const fs::path& dir, double& density_kg_m3)
 // with the mesh, when the mesh is no recognisable gear, or when its size says the unit is wrong.
 void check_gear_mesh(const YamlMap& m, physics::MeshSource& src) {
   const std::string file = src.path.string();
-  const MeshGearFile f = read_mesh_gear(src.path, src.unit);
+  MeshGearFile f;
+  try {
+    f = read_mesh_gear(src.path, src.unit);
+  } catch (const InputError& e) {
+    m.fail("file", e.what());  // the mesh's own refusal, at the scenario's key
+  }
   if (!f.gear) m.fail("file", file + " is not a prism (" + f.prism.reason() + "): a gear must be a spur-gear extrusion; give `teeth: none` for a toothless body");
   if (!f.gear->recognition)
     m.fail(src.teeth ? "teeth" : "file", file + " is not recognised as a spur gear: " + f.gear->recognition.reason() +
@@ -94,7 +101,13 @@ physics::MeshSource mesh_source(const YamlMap& m, const fs::path& dir) {
   src.path = resolve(dir, m.string("file"));
   // The error_code overload: a path the system refuses (a name past NAME_MAX) is not found,
   // not a filesystem_error.
-  if (std::error_code ec; !fs::is_regular_file(src.path, ec)) m.fail("file", "mesh file not found: " + src.path.string());
+  if (std::error_code ec; !fs::exists(fs::symlink_status(src.path, ec))) m.fail("file", "mesh file not found: " + src.path.string());
+  // A FIFO, a device, a folder, a link loop or an oversized file: refused here, naming the key.
+  try {
+    check_input_file(src.path, kMaxMeshFileBytes, "a mesh file");
+  } catch (const InputError& e) {
+    m.fail("file", e.what());
+  }
   const std::string unit = m.string("unit");
   const std::optional<LengthUnit> u = parse_length_unit(unit);
   if (!u) m.fail("unit", "expected a length unit (m, cm, mm, um, in, ft), got '" + unit + "'");

@@ -1,6 +1,7 @@
 // Scenario files: every kind of bad input is refused with a message naming the file, the key
 // path and what was expected. One test per kind; each edits one line of a small valid scenario.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -191,6 +192,24 @@ TEST(ScenarioErrors, MeshFileNameTooLongForTheSystemIsRefusedAsNotFound) {
   const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
                                          "density_kg_m3: 7850, mesh: {file: " + name + ", unit: mm}"));
   EXPECT_NAMES(e, "bodies[0].mesh.file", "mesh file not found");
+}
+
+TEST(ScenarioErrors, AMeshThatIsAFifoOrADeviceIsRefusedAtItsKeyNotWaitedOn) {
+  fs::create_directories(test_dir() / "parts");
+  ::mkfifo((test_dir() / "parts/fifo.stl").c_str(), 0600);
+  for (const std::string& file : {std::string("parts/fifo.stl"), std::string("/dev/zero")}) {
+    const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+                                           "density_kg_m3: 7850, mesh: {file: " + file + ", unit: mm}"));
+    EXPECT_NAMES(e, "bad.yaml:", "bodies[0].mesh.file", "expected a mesh file (a regular file), got a");
+  }
+}
+
+TEST(ScenarioErrors, AMeshAssimpCannotReadIsRefusedAtItsKey) {
+  fs::create_directories(test_dir() / "parts");
+  std::ofstream(test_dir() / "parts/empty_solid.stl") << "solid x\nendsolid x\n";
+  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+                                         "density_kg_m3: 7850, mesh: {file: parts/empty_solid.stl, unit: mm}"));
+  EXPECT_NAMES(e, "bad.yaml:", "bodies[0].mesh.file", "empty_solid.stl: cannot parse mesh");
 }
 
 TEST(ScenarioErrors, NegativeMass) {
