@@ -11,8 +11,10 @@ build/bin/gearsim gears assets/specs/paper_gearset.yaml --out out/paper
 echo
 build/bin/gearsim tolerance --module 1 --teeth 36 --diameter 36 --quality 8
 echo
-build/bin/gearsim run assets/scenarios/paper_dynamics_healthy.yaml --out out/paper_dynamics_healthy
+# --force: out/paper_dynamics*/ are this script's own folders, also when an earlier gearsim (before
+# folder manifests, docs/output-folders.md) wrote them; their outputs are replaced.
+build/bin/gearsim run assets/scenarios/paper_dynamics_healthy.yaml --out out/paper_dynamics_healthy --force
 echo
-build/bin/gearsim run assets/scenarios/paper_dynamics.yaml --out out/paper_dynamics
+build/bin/gearsim run assets/scenarios/paper_dynamics.yaml --out out/paper_dynamics --force
 echo
 build/bin/gearsim report out/paper_dynamics --compare out/paper_dynamics_healthy
