@@ -27,7 +27,10 @@ namespace fs = std::filesystem;
 fs::path hand_made_run(const std::string& contacts_header, double state_to_s,
                        const std::string& gear_pairs = R"(, "gear_pairs": [{"a": "sun", "b": "planet_0"}])") {
   const fs::path dir = gearsim::test::fresh_test_dir();
-  std::ofstream(dir / "summary.json") << "{\"status\": \"completed\", \"sim_seconds\": 0.3" << gear_pairs << "}\n";
+  // The record's required keys as gearsim run writes them (input/run_record_check.hpp checks them first).
+  std::ofstream(dir / "summary.json") << "{\"status\": \"completed\", \"sim_seconds\": 0.3, \"time_step_s\": 2e-5, "
+                                         "\"steps\": 15000"
+                                      << gear_pairs << "}\n";
   gearsim::input::write_scenario_record(
       gearsim::input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_healthy.yaml"), dir);
   std::ofstream contacts(dir / "contacts.csv"), state(dir / "state.csv");
@@ -97,8 +100,9 @@ TEST(AnalyzeRefusals, ASummaryWithoutGearPairsIsRefused) {
   // The pairs come from the summary, never from the column names.
   const std::string header = "time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um";
   expect_refused(hand_made_run(header, 0.3, ""), "summary.json", "gear_pairs: missing");
+  // Checked when the record is read (input/run_record_check.hpp), before the analysis looks at it.
   expect_refused(hand_made_run(header, 0.3, R"(, "gear_pairs": [{"a": "sun"}])"), "summary.json",
-                 "gear_pairs[0]: expected {\"a\": body name, \"b\": body name}");
+                 "key gear_pairs[0].b: missing");
 }
 
 TEST(AnalyzeRefusals, ARunReadsItsOwnScenarioRecordNotTheEditedOriginal) {
