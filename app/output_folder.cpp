@@ -1,18 +1,17 @@
 #include "app/output_folder.hpp"
 
 #include "core/errors.hpp"
-#include "core/output_file.hpp"
 
 namespace gearsim::app {
 namespace {
 
-// DIR created where missing; InputError naming it otherwise (or when it is not a folder).
+// DIR created where missing; InputError naming it otherwise (or when it is not a folder). A link
+// the user gives as DIR is theirs: its target folder is used, the link is left as it is.
 const std::filesystem::path& made(const std::filesystem::path& dir) {
   std::error_code ec;
-  make_output_dir(dir, ec);
+  std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
-  if (!std::filesystem::is_directory(std::filesystem::symlink_status(dir)))
-    throw InputError(dir.string() + ": expected a folder for the outputs");
+  if (!std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": expected a folder for the outputs");
   return dir;
 }
 

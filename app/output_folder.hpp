@@ -1,5 +1,5 @@
-// An output folder as a command holds it while it writes: created where missing (never through
-// a link under its name), locked against a second gearsim command (core/folder_lock.hpp), and
+// An output folder as a command holds it while it writes: created where missing (a link given as
+// the folder is followed to the folder it names, and left as it is), locked against a second gearsim command (core/folder_lock.hpp), and
 // with its manifest (core/folder_manifest.hpp) of what gearsim wrote there, to which the command
 // adds each output's name before writing it. Not the writer of the outputs themselves
 // (core/output_file.hpp) and not a reader of a run's record (run_dir.hpp).
@@ -16,7 +16,8 @@ namespace gearsim::app {
 
 class OutputFolder {
  public:
-  // DIR held for `command` ("gearsim run"): created where missing, locked. FolderBusy naming
+  // DIR held for `command` ("gearsim run"): created where missing, locked (in the folder a link
+  // given as DIR names). FolderBusy naming
   // the holder when another command writes there; InputError when DIR cannot be created or
   // its manifest is damaged.
   OutputFolder(const std::filesystem::path& dir, const std::string& command);

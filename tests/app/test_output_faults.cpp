@@ -164,6 +164,19 @@ TEST(OutputFolderLock, AnalyzeIntoAFolderARunIsWritingIsRefused) {
   EXPECT_EQ(r.exit_code, 7) << r.output;
 }
 
+TEST(OutputFolderLock, AFolderGivenAsALinkIsTheFolderItNamesAndTheLinkStays) {
+  // A user's `latest -> runs/today`: run, analyze and report use runs/today; the link is theirs.
+  const fs::path dir = test::fresh_test_dir(), target = dir / "runs" / "today", link = dir / "latest";
+  fs::create_directories(target);
+  fs::create_symlink(target, link);
+  EXPECT_EQ(test::gearsim("run " + kSpur + " --out " + link.string() + " --duration 0.3").exit_code, 0);
+  EXPECT_EQ(test::gearsim("analyze " + link.string()).exit_code, 0);
+  EXPECT_EQ(test::gearsim("report " + link.string()).exit_code, 0);
+  EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+  for (const char* f : {"summary.json", "analysis.json", "report.html", ".gearsim-manifest"})
+    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(target / f))) << f;
+}
+
 TEST(InputBounds, AFifoOrADeviceAsAScenarioIsRefusedAtOnce) {
   const fs::path dir = test::fresh_test_dir();
   ASSERT_EQ(::mkfifo((dir / "s.yaml").c_str(), 0600), 0);
