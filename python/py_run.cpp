@@ -131,6 +131,12 @@ PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double
     r = app::run_into_dir(s, app::RunSource{scenario.file, scenario.overrides}, folder, options);
   }
   if (pending.set()) pending.raise();
+  // A log that could not be written (a full disk): gearsim.OutputError, as the CLI's exit code 6.
+  if (r.result.status == sim::RunStatus::OutputFailed) {
+    std::string what;
+    for (const std::string& w : r.result.not_written) what += (what.empty() ? "" : "; ") + w;
+    throw OutputError("the run stopped at t = " + std::to_string(r.result.sim_seconds) + " s: " + what);
+  }
   PyRunResult result;
   result.state = read_csv_columns(dir / "state.csv");
   result.contacts = read_csv_columns(dir / "contacts.csv");

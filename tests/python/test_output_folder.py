@@ -41,3 +41,22 @@ def test_a_second_run_removes_the_first_runs_outputs_only(tmp_path):
     assert not (tmp_path / "analysis.json").exists()
     assert (tmp_path / "notes.txt").read_text() == "mine\n"
     assert (tmp_path / "state.csv").exists()
+
+
+def test_a_run_whose_writes_fail_raises_output_error(tmp_path):
+    # The tests' failing writer (tests/support/fail_writes.cpp) preloaded into a fresh interpreter:
+    # from the 5th write to a file on, every write fails with ENOSPC, as on a full disk.
+    import os
+    import subprocess
+    import sys
+    from conftest import BINARY
+    script = ("import gearsim, sys\n"
+              f"s = gearsim.load_scenario({str(scenario_path('spur_pair.yaml'))!r})\n"
+              "try:\n"
+              f"    gearsim.run(s, out={str(tmp_path / 'out')!r}, duration=0.3)\n"
+              "except gearsim.OutputError as e:\n"
+              "    print('OutputError:', e)\n")
+    env = dict(os.environ, LD_PRELOAD=str(BINARY / "tests" / "libgearsim_fail_writes.so"), GEARSIM_FAIL_WRITES_FROM="5")
+    r = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert "OutputError:" in r.stdout and "No space left on device" in r.stdout, r.stdout + r.stderr
