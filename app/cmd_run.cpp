@@ -62,8 +62,8 @@ void run(const RunOptions& o) {
   if (o.duration_s > 0) set_duration(s, o.duration_s);
   const std::filesystem::path dir(o.out_dir);
   // Held until the command ends: the run, its analysis and its renders write into it.
-  OutputFolder folder(dir, "gearsim run");
-  if (const int n = folder.clear_for_run(o.force); n > 0)
+  OutputFolder folder(dir, "gearsim run", OutputFolder::ForNewRun{o.force});
+  if (const int n = folder.removed(); n > 0)
     std::cout << "removed " << n << " outputs of a previous run in " << dir.string() << "\n";
   const bool tty = isatty(STDERR_FILENO);
   int last_percent = -1;

@@ -22,13 +22,29 @@ OutputFolder::OutputFolder(const std::filesystem::path& dir, const std::string& 
 
 void OutputFolder::declare(const std::vector<std::string>& names) { manifest_.add_and_write(dir_, names); }
 
-int OutputFolder::clear_for_run(bool force) {
-  if (manifest_.exists()) return manifest_.remove_listed(dir_);
-  if (holds_other_files(dir_) && !force)
-    throw InputError(dir_.string() + ": the folder holds files that gearsim did not write (it has no " +
-                     FolderManifest::kFileName +
-                     "): choose an empty or new folder, or give --force to write beside them (none is removed)");
-  return 0;
+namespace {
+
+// InputError when DIR holds files but no manifest and `force` is not given.
+void refuse_foreign(const std::filesystem::path& dir, bool force) {
+  std::error_code ec;
+  if (force || !std::filesystem::is_directory(dir, ec) || FolderManifest::read(dir).exists() || !holds_other_files(dir))
+    return;
+  throw InputError(dir.string() + ": the folder holds files that gearsim did not write (it has no " +
+                   FolderManifest::kFileName +
+                   "): choose an empty or new folder, or give --force to write beside them (none is removed)");
+}
+
+const std::filesystem::path& checked(const std::filesystem::path& dir, bool force) {
+  refuse_foreign(dir, force);  // before the lock file is made in a folder that is not gearsim's
+  return dir;
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(const std::filesystem::path& dir, const std::string& command, ForNewRun new_run)
+    : OutputFolder(checked(dir, new_run.force), command) {
+  refuse_foreign(dir, new_run.force);  // again under the lock: the folder may have changed
+  if (manifest_.exists()) removed_ = manifest_.remove_listed(dir_);
 }
 
 void declare_outputs(const std::filesystem::path& dir, const std::vector<std::string>& names) {

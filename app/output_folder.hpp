@@ -21,19 +21,26 @@ class OutputFolder {
   // the holder when another command writes there; InputError when DIR cannot be created or
   // its manifest is damaged.
   OutputFolder(const std::filesystem::path& dir, const std::string& command);
+  // The same for a new run into DIR: a folder that holds files but no manifest (not made by
+  // gearsim, or by a gearsim before manifests) is refused with InputError before anything is
+  // made in it, unless `force`, which keeps every file that is there; then, under the lock, the
+  // outputs the manifest lists are removed (removed() says how many).
+  struct ForNewRun {
+    bool force = false;
+  };
+  OutputFolder(const std::filesystem::path& dir, const std::string& command, ForNewRun new_run);
 
   const std::filesystem::path& dir() const { return dir_; }
   // Adds the names (relative to DIR) to the manifest before they are written.
   void declare(const std::vector<std::string>& names);
-  // For a new run: removes the outputs the manifest lists and returns how many. A folder that
-  // holds files but no manifest (not made by gearsim, or by a gearsim before manifests) is
-  // refused with InputError unless `force`, which keeps every file that is there.
-  int clear_for_run(bool force);
+  // Outputs of a previous run removed by the ForNewRun constructor.
+  int removed() const { return removed_; }
 
  private:
   std::filesystem::path dir_;
   FolderLock lock_;
   FolderManifest manifest_;
+  int removed_ = 0;
 };
 
 // Adds the names to DIR's manifest before they are written, for code that writes into a folder

@@ -121,8 +121,7 @@ PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double
   const fs::path dir = out.is_none() ? temp.emplace().path()
                                      : fs::path(py::module_::import("os").attr("fspath")(out).cast<std::string>());
   // Held as the CLI holds it: locked, the previous run's outputs (its manifest's) removed.
-  app::OutputFolder folder(dir, "gearsim.run (Python)");
-  folder.clear_for_run(false);
+  app::OutputFolder folder(dir, "gearsim.run (Python)", app::OutputFolder::ForNewRun{});
   PendingError pending;
   const sim::SimOptions options = poll_options(pending, progress, s.name);
   app::DirRun r;

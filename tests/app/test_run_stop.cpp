@@ -212,6 +212,7 @@ TEST(RunStop, AFolderOfTheUsersFilesIsRefusedAndNothingInItRemoved) {
   EXPECT_NE(r.output.find(dir.string() + ": the folder holds files that gearsim did not write"), std::string::npos)
       << r.output;
   for (const char* f : {"frames/holiday.png", "video_of_my_cat.mp4", "state.csv"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
+  EXPECT_FALSE(fs::exists(dir / ".gearsim.lock"));  // refused before anything was made there
   // --force writes beside them: nothing of the user's is removed; state.csv, an output's name, is replaced.
   const gearsim::test::CliRun forced = gearsim::test::gearsim(run + " --force");
   EXPECT_EQ(forced.exit_code, 0) << forced.output;
