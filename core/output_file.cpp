@@ -24,8 +24,13 @@ namespace {
 // leftover of a killed command (core/folder_manifest.hpp removes those of its own outputs).
 fs::path temp_beside(const fs::path& target) {
   static std::atomic<unsigned> counter{0};
-  const std::string name = "." + target.filename().string() + ".partial-" + std::to_string(::getpid()) + "-" +
-                           std::to_string(counter++);
+  // Appended piece by piece: GCC 12's -Wrestrict misreads `"." + std::string&&` (a false positive).
+  std::string name(".");
+  name += target.filename().string();
+  name += ".partial-";
+  name += std::to_string(::getpid());
+  name += '-';
+  name += std::to_string(counter++);
   return target.parent_path() / name;
 }
 
