@@ -23,8 +23,9 @@ namespace {
 // "<path>: ", the start of every message about a file.
 std::string where(const std::filesystem::path& path) { return path.string() + ": "; }
 
-// Assimp's file access with the bounded reader's checks on every file it opens to read; the
-// first refusal is kept for the error (Assimp itself only sees a file it cannot open).
+// Assimp's file access with the bounded reader's checks on every file it opens to read: a file
+// refused (a FIFO, a device, an oversized file) is one Assimp cannot open, and the first refusal
+// is kept for the error when the import then fails.
 class BoundedIoSystem : public Assimp::DefaultIOSystem {
  public:
   Assimp::IOStream* Open(const char* file, const char* mode) override {
@@ -35,6 +36,11 @@ class BoundedIoSystem : public Assimp::DefaultIOSystem {
         return nullptr;
       }
     return Assimp::DefaultIOSystem::Open(file, mode);
+  }
+  // Assimp's own Exists() opens the file (fopen), which blocks on a FIFO: a regular file only.
+  bool Exists(const char* file) const override {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(file, ec);
   }
   std::string refusal;
 };
@@ -269,7 +275,9 @@ TriMesh import_mesh(const std::filesystem::path& path, LengthUnit unit) {
   const unsigned flags =
       aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = importer.ReadFile(path.string(), flags);
-  if (!io->refusal.empty()) throw InputError(io->refusal);
+  // A refused file the mesh needed: its reason (one it could do without, e.g. an OBJ's missing
+  // or FIFO material library, was skipped as Assimp skips a file it cannot open).
+  if (scene == nullptr && !io->refusal.empty()) throw InputError(io->refusal);
   if (scene == nullptr) {
     const std::string ext = path.extension().string();
     const std::string assimp = importer.GetErrorString();

@@ -2,6 +2,7 @@
 // merging with node transforms, determinism, and the InputError of each bad file.
 // Every file is generated into a fresh temp directory.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -160,6 +161,22 @@ TEST_F(MeshIo, ObjRoundTripKeepsTrianglesAndVerticesToFloat32) {
   const TriMesh m = hex_prism();
   export_mesh(m, dir_ / "p.obj", MeshFormat::Obj);
   expect_same_mesh(m, import_mesh(dir_ / "p.obj"), float32_tolerance_m(m));
+}
+
+TEST_F(MeshIo, AnObjsMaterialLibraryThatIsMissingOrAFifoIsSkippedNotWaitedOn) {
+  // The geometry is all a gear needs: a material library Assimp cannot open is skipped (a FIFO
+  // under its name is refused by the bounded reader's checks, so the import does not block).
+  const std::string obj = "mtllib gone.mtl\nmtllib pipe.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.mtl").c_str(), 0600), 0);
+  const TriMesh m = import_mesh(file("tet.obj", obj), LengthUnit::Metre);
+  EXPECT_EQ(m.triangles.size(), 4u);
+}
+
+TEST_F(MeshIo, AMeshThatIsAFifoIsRefusedByKindNotWaitedOn) {
+  ASSERT_EQ(::mkfifo((dir_ / "gear.stl").c_str(), 0600), 0);
+  const std::string msg = input_error([&] { import_mesh(dir_ / "gear.stl"); });
+  EXPECT_CONTAINS(msg, "gear.stl: expected a mesh file (a regular file), got a FIFO");
 }
 
 TEST_F(MeshIo, AsciiPlyCubeImportsAsAClosedTenMillimetreCube) {
