@@ -24,18 +24,18 @@ void OutputFolder::declare(const std::vector<std::string>& names) { manifest_.ad
 
 namespace {
 
-// InputError when DIR holds files but no manifest and `force` is not given.
-void refuse_foreign(const std::filesystem::path& dir, bool force) {
-  std::error_code ec;
-  if (force || !std::filesystem::is_directory(dir, ec) || FolderManifest::read(dir).exists() || !holds_other_files(dir))
-    return;
+// InputError when DIR holds files but no manifest (`has_manifest`) and `force` is not given.
+void refuse_foreign(const std::filesystem::path& dir, bool has_manifest, bool force) {
+  if (force || has_manifest || !holds_other_files(dir)) return;
   throw InputError(dir.string() + ": the folder holds files that gearsim did not write (it has no " +
                    FolderManifest::kFileName +
                    "): choose an empty or new folder, or give --force to write beside them (none is removed)");
 }
 
+// DIR, refused before the lock file is made in a folder that is not gearsim's.
 const std::filesystem::path& checked(const std::filesystem::path& dir, bool force) {
-  refuse_foreign(dir, force);  // before the lock file is made in a folder that is not gearsim's
+  std::error_code ec;
+  if (!force && std::filesystem::is_directory(dir, ec)) refuse_foreign(dir, FolderManifest::read(dir).exists(), force);
   return dir;
 }
 
@@ -43,7 +43,7 @@ const std::filesystem::path& checked(const std::filesystem::path& dir, bool forc
 
 OutputFolder::OutputFolder(const std::filesystem::path& dir, const std::string& command, ForNewRun new_run)
     : OutputFolder(checked(dir, new_run.force), command) {
-  refuse_foreign(dir, new_run.force);  // again under the lock: the folder may have changed
+  refuse_foreign(dir_, manifest_.exists(), new_run.force);  // again under the lock: it may have changed
   if (manifest_.exists()) removed_ = manifest_.remove_listed(dir_);
 }
 

@@ -91,6 +91,17 @@ std::vector<std::string> warnings_of(const RunSummary& r) {
   return w;
 }
 
+// Every observer's on_stop(), also after one fails: an output not written makes the run
+// OutputFailed and is named in not_written.
+void stop_observers(const std::vector<Observer*>& observers, const physics::World& world, RunSummary& r) {
+  for (Observer* o : observers) try {
+      o->on_stop(world);
+    } catch (const OutputError& e) {
+      r.status = RunStatus::OutputFailed;
+      r.not_written.push_back(e.what());
+    }
+}
+
 }  // namespace
 
 const char* status_name(RunStatus s) {
@@ -165,18 +176,10 @@ RunSummary simulate(const physics::Scenario& s, const std::vector<Observer*>& ob
     }
   } catch (...) {
     // An exception out of a step (a bug, or the world refusing a state) keeps the logs up to it.
-    for (Observer* o : observers) try {
-        o->on_stop(world);
-      } catch (const std::exception&) {
-      }
+    stop_observers(observers, world, r);
     throw;
   }
-  for (Observer* o : observers) try {
-      o->on_stop(world);
-    } catch (const OutputError& e) {
-      r.status = RunStatus::OutputFailed;
-      r.not_written.push_back(e.what());
-    }
+  stop_observers(observers, world, r);
   r.wall_seconds = seconds_since(wall0);
   r.created_energy_J = bounds.created_energy_J();
   fill_results(s, world, steady, r);

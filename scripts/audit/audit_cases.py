@@ -82,31 +82,28 @@ def make_kind(path, kind, victim):
         path.write_text(text, errors="surrogateescape")
 
 
-def scenario_value_cases(gearsim, quick):
-    tree = absolute_paths(yaml.safe_load((SCENARIOS / "spur_pair.yaml").read_text()), SCENARIOS)
-    tree["duration_s"] = 0.06
+def value_cases(family, tree, file_name, command, quick):
+    """Every scalar leaf of `tree` replaced by each of MUTATIONS, written as file_name and run."""
     paths = list(scalar_paths(tree))
     for i, path in enumerate(paths[:4] if quick else paths):
         for m in MUTATIONS[:3] if quick else MUTATIONS:
             text = with_value(tree, path, m)
 
             def prepare(folder, text=text):
-                (folder / "s.yaml").write_text(text)
-                return ["run", "s.yaml", "--out", "out", "--no-analyze"]
-            yield Case("scenario values", f"leaf{i}_{MUTATIONS.index(m)}", prepare)
+                (folder / file_name).write_text(text)
+                return command
+            yield Case(family, f"leaf{i}_{MUTATIONS.index(m)}", prepare)
+
+
+def scenario_value_cases(gearsim, quick):
+    tree = absolute_paths(yaml.safe_load((SCENARIOS / "spur_pair.yaml").read_text()), SCENARIOS)
+    tree["duration_s"] = 0.06
+    return value_cases("scenario values", tree, "s.yaml", ["run", "s.yaml", "--out", "out", "--no-analyze"], quick)
 
 
 def spec_value_cases(gearsim, quick):
     tree = yaml.safe_load((SPECS / "spur_pair_gearset.yaml").read_text())
-    paths = list(scalar_paths(tree))
-    for i, path in enumerate(paths[:4] if quick else paths):
-        for m in MUTATIONS[:3] if quick else MUTATIONS:
-            text = with_value(tree, path, m)
-
-            def prepare(folder, text=text):
-                (folder / "spec.yaml").write_text(text)
-                return ["gears", "spec.yaml", "--out", "out"]
-            yield Case("gear-set spec values", f"leaf{i}_{MUTATIONS.index(m)}", prepare)
+    return value_cases("gear-set spec values", tree, "spec.yaml", ["gears", "spec.yaml", "--out", "out"], quick)
 
 
 def recursion_cases(gearsim, base_run, quick):
