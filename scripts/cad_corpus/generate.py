@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generates the third-party CAD gear corpus and its manifest (corpus.json).
 
-Usage: generate.py OUTDIR [--small] [--gearsim PATH] [--openscad PATH]
+Usage: generate.py OUTDIR [--small] [--gearsim PATH] [--openscad PATH] [--freecad PATH [--only-freecad]]
 
 Meshes (all in mm, plain spur prisms):
   - OpenSCAD MCAD external gears (Debian openscad-mcad, involute_gears.scad `gear(..., flat=true)`,
@@ -15,14 +15,22 @@ Meshes (all in mm, plain spur prisms):
     20°) ASCII STL, module 1–4, up to 80 teeth, plus gearsim rings (h_a* 1 and 0.8);
   - noisy copies: ±0.5 µm uniform noise per coordinate, in-plane (one draw per outline vertex,
     shared by its top and bottom copies: still a prism) or 3D (one draw per vertex and axis).
+  - with --freecad PATH (freecadcmd, Debian `freecad`): FreeCAD PartDesign involute gears
+    (freecad_gears.py), external (padded, with a bore) and internal (pocketed from a disc),
+    14.5|20|25°, module 1–3, face 4·m, each written at 4 tessellations: MeshPart.meshFromShape at
+    0.002 mm/3°, 0.02 mm/10°, 0.1 mm/0.5 rad and Mesh.export's default; external pairs, pinions
+    in rings and planetary sets (sun, planets, ring; corpus.json `planetary`). Skipped with a
+    message when freecadcmd is absent; --only-freecad writes the FreeCAD family alone.
 --small writes 8 meshes (MCAD z17/z24 binary and ASCII, gearsim z18/z24, a noisy MCAD pair) and
 4 pairs, for a ctest slice. Deterministic: same inputs, same files (noise seeded per mesh name).
 """
 import json
 import math
 import os
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 import zlib
 
@@ -39,6 +47,14 @@ MODULE_PA = [(1, 14.5), (1, 20), (1, 25), (4, 14.5), (4, 20), (4, 25)]        # 
 FACETS_FMT = [(f, fmt) for f in (5, 24, 48) for fmt in ('stl-binary', 'stl-ascii')]  # columns
 FMT_TAG = {'stl-binary': 'bin', 'stl-ascii': 'asc', 'obj': 'obj'}
 SCAD_FMT = {'stl-binary': 'binstl', 'stl-ascii': 'asciistl'}
+FC_FACE_PER_MODULE = 4.0        # FreeCAD family: face width = 4·m
+FC_DISC_PER_MODULE = 5.0        # FreeCAD rings: disc radius = pitch radius + 5·m (root at + 1.25·m)
+# FreeCAD tessellations: (tag, method, linear deflection mm, angular deflection deg). 0.5 rad is
+# MeshPart.meshFromShape's default angle; `export` is Mesh.export with no tolerance: FreeCAD 0.20's
+# MaxDeviationExport preference, 0.1 mm (its files equal meshFromShape's at 0.1 mm / 0.1 rad).
+FC_TESSELLATIONS = [('l0p002a3', 'meshFromShape', 0.002, 3.0), ('l0p02a10', 'meshFromShape', 0.02, 10.0),
+                    ('l0p1r0p5', 'meshFromShape', 0.1, math.degrees(0.5)), ('export', 'export', None, None)]
+FC_ALL = [t[0] for t in FC_TESSELLATIONS]
 
 
 def tag(x):
@@ -48,10 +64,11 @@ def tag(x):
 
 
 class Corpus:
-    def __init__(self, outdir, openscad, gearsim):
-        self.outdir, self.openscad, self.gearsim = outdir, openscad, gearsim
+    def __init__(self, outdir, openscad, gearsim, freecad=None):
+        self.outdir, self.openscad, self.gearsim, self.freecad = outdir, openscad, gearsim, freecad
         self.meshes, self.pairs, self.by_name = [], [], {}
         self.pair_keys = set()
+        self.planetary, self.fc_jobs, self.fc_version = [], {}, None
 
     def add_mesh(self, rec):
         self.meshes.append(rec)
@@ -76,7 +93,9 @@ class Corpus:
             'centre_distance_m': centre,
             # Circular backlash at the pitch circle: each mesh's tooth is thinned by backlash/2.
             'backlash_m': (a['backlash_m'] + b['backlash_m']) / 2,
-            'family': a['family'] if not internal else ('mcad-ring' if a['tool'] == b['tool'] == 'openscad-mcad' else 'gearsim-ring'),
+            'family': a['family'] if not internal else (
+                'freecad-ring' if a['tool'] == b['tool'] == 'freecad' else
+                'mcad-ring' if a['tool'] == b['tool'] == 'openscad-mcad' else 'gearsim-ring'),
             'note': note,
         })
 
@@ -204,6 +223,103 @@ class Corpus:
                                            chordal_deviation_m=g['mesh']['chordal_deviation_m']),
                 })
 
+    # --- FreeCAD -----------------------------------------------------------------------------
+    def fc_gear(self, m, pa, z, internal, tess, high_precision=True):
+        """A FreeCAD PartDesign involute gear at tessellation `tess` (a tag of FC_TESSELLATIONS);
+        its file is written by run_freecad(). Returns its mesh name."""
+        name = '%s_m%s_z%d_a%s_%s%s' % ('fcring' if internal else 'fc', tag(m), z, tag(pa), tess,
+                                       '' if high_precision else '_lp')
+        if name in self.by_name:
+            return name
+        r = m * z / 2.0
+        face = FC_FACE_PER_MODULE * m
+        args = {'NumberOfTeeth': z, 'Modules_mm': m, 'PressureAngle_deg': pa, 'HighPrecision': high_precision,
+                'ExternalGear': not internal, 'face_mm': face}
+        if internal:
+            args['disc_radius_mm'] = r + FC_DISC_PER_MODULE * m
+            # FreeCAD's internal gear (fcgear/involute.py): tip r − 0.6·m, root r + 1.25·m.
+            tip, root = r - 0.6 * m, r + 1.25 * m
+        else:
+            args['bore_diameter_mm'] = max(1.0, round(0.25 * (2 * r - 2.5 * m) / m) * m)
+            tip, root = r + m, r - 1.25 * m
+        key = (m, pa, z, internal, high_precision)
+        job = self.fc_jobs.setdefault(key, {
+            'name': name.replace('_' + tess, ''), 'teeth': z, 'module_mm': m, 'pressure_angle_deg': pa,
+            'high_precision': high_precision, 'internal': internal, 'face_mm': face,
+            'bore_diameter_mm': args.get('bore_diameter_mm', 0.0), 'disc_radius_mm': args.get('disc_radius_mm', 0.0),
+            'meshes': []})
+        t = next(t for t in FC_TESSELLATIONS if t[0] == tess)
+        path = os.path.join(self.outdir, 'freecad', name + '.stl')
+        mesh_job = {'file': path, 'method': t[1]}
+        if t[1] == 'meshFromShape':
+            mesh_job.update(linear_deflection_mm=t[2], angular_deflection_rad=math.radians(t[3]))
+        job['meshes'].append(mesh_job)
+        self.add_mesh({
+            'name': name, 'file': os.path.relpath(path, self.outdir), 'family': 'freecad-ring' if internal else 'freecad',
+            'tool': 'freecad', 'teeth': z, 'module_m': m * 1e-3, 'pressure_angle_deg': pa, 'backlash_m': 0.0,
+            'facets': None, 'tessellation': tess,
+            'tessellation_params': {'method': t[1], 'linear_deflection_m': t[2] and t[2] * 1e-3,
+                                    'angular_deflection_deg': t[3]},
+            'high_precision': high_precision, 'internal': internal, 'format': 'stl-binary', 'unit': 'mm',
+            'face_width_m': face * 1e-3,
+            **({'outer_radius_m': args['disc_radius_mm'] * 1e-3} if internal else
+               {'bore_diameter_m': args['bore_diameter_mm'] * 1e-3}),
+            'base_radius_m': r * math.cos(math.radians(pa)) * 1e-3, 'tip_radius_m': tip * 1e-3,
+            'root_radius_m': root * 1e-3,
+            # The profile puts tooth 0 (an external tooth, or a ring's tooth pointing inward) on +x:
+            # fcgear/involute.py rotates each flank's pitch point to ∓pitch/4 and draws the tip arc
+            # across +x; `gearsim inspect` finds it there within 0.001° on every mesh.
+            'tooth0_deg': 0.0, 'noise': None, 'generator_args': args,
+        })
+        return name
+
+    def fc_planetary(self, m, pa, zs, zp, zr, planets, tess, high_precision=True):
+        """A planetary set of FreeCAD gears (z_r = z_s + 2·z_p, (z_s + z_r)/planets whole), plus
+        its sun–planet and planet–ring meshes as pairs."""
+        assert zr == zs + 2 * zp and (zs + zr) % planets == 0
+        sun, planet = self.fc_gear(m, pa, zs, False, tess, high_precision), self.fc_gear(m, pa, zp, False, tess, high_precision)
+        ring = self.fc_gear(m, pa, zr, True, tess, high_precision)
+        self.add_pair(sun, planet, 'planetary set member')
+        self.add_pair(planet, ring, 'planetary set member')
+        self.planetary.append({
+            'id': 'S%03d_%s_%dx%s_%s' % (len(self.planetary), sun, planets, planet.split('_')[2], ring.split('_')[2]),
+            'sun': sun, 'planet': planet, 'ring': ring, 'planets': planets, 'family': 'freecad-planetary',
+            'centre_distance_m': m * (zs + zp) / 2 * 1e-3, 'ratio_nominal': 1 + zr / zs,
+        })
+
+    def run_freecad(self):
+        """Runs freecad_gears.py under freecadcmd on every gear asked for; fills in the meshes'
+        triangle counts. A private HOME keeps the user's FreeCAD preferences out."""
+        if not self.fc_jobs:
+            return
+        d = os.path.join(self.outdir, 'freecad')
+        os.makedirs(d, exist_ok=True)
+        jobs_file, results_file = os.path.join(d, 'jobs.json'), os.path.join(d, 'freecad_results.json')
+        if os.path.exists(results_file):
+            os.remove(results_file)
+        with open(jobs_file, 'w') as f:
+            json.dump({'results': results_file, 'jobs': list(self.fc_jobs.values())}, f, indent=1)
+        home = tempfile.mkdtemp(prefix='gearsim_freecad_')
+        try:
+            r = subprocess.run([self.freecad, os.path.join(HERE, 'freecad_gears.py')], capture_output=True, text=True,
+                               env=dict(os.environ, GEARSIM_FC_JOBS=jobs_file, HOME=home), cwd=home)
+        finally:
+            shutil.rmtree(home, ignore_errors=True)
+        if r.returncode != 0 or not os.path.exists(results_file):
+            raise SystemExit('freecadcmd failed (exit %d) on %s:\n%s' % (r.returncode, jobs_file, (r.stdout + r.stderr)[-3000:]))
+        with open(results_file) as f:
+            results = json.load(f)
+        self.fc_version = '.'.join(results['freecad_version'][:3])
+        counts = {}
+        for job in results['jobs']:
+            if not job['valid'] or job['solids'] != 1:
+                raise SystemExit('FreeCAD made an invalid shape for %s: %r' % (job['name'], job))
+            for mesh in job['meshes']:
+                counts[os.path.relpath(mesh['file'], self.outdir)] = mesh['triangles']
+        for rec in self.meshes:
+            if rec['tool'] == 'freecad':
+                rec['triangles'] = counts[rec['file']]
+
     # --- noise --------------------------------------------------------------------------------
     def noisy(self, base, mode):
         src = self.by_name[base]
@@ -284,6 +400,30 @@ def build_full(c):
     c.noisy_pair('gs_m1_a20_z18_bin', 'gs_m1_a20_z24_bin', '3d')
 
 
+def build_freecad(c):
+    """The FreeCAD family: every gear at every tessellation of FC_TESSELLATIONS; pairs of the same
+    tessellation, plus the finest driver with the default export's driven gear."""
+    externals = [(20, 1, 18, 40), (20, 2, 24, 56), (20, 3, 17, 30), (14.5, 1, 32, 48), (14.5, 2, 36, 64),
+                 (14.5, 3, 32, 40), (25, 1, 12, 30), (25, 2, 14, 45), (25, 3, 16, 24)]
+    internals = [(14.5, 1, 30, 80), (20, 1, 17, 40), (20, 2, 24, 60), (25, 3, 18, 45)]  # (α, m, z_pinion, z_ring)
+    planetary = [(20, 1, 20, 30, 80, 4), (14.5, 2, 32, 32, 96, 4), (25, 3, 14, 19, 52, 3)]  # α, m, z_s, z_p, z_r, N
+    for pa, m, z1, z2 in externals:
+        for tess in FC_ALL:
+            c.add_pair(c.fc_gear(m, pa, z1, False, tess), c.fc_gear(m, pa, z2, False, tess))
+        c.add_pair(c.fc_gear(m, pa, z1, False, 'l0p002a3'), c.fc_gear(m, pa, z2, False, 'export'), 'mixed tessellations')
+    for pa, m, zp, zr in internals:
+        for tess in FC_ALL:
+            c.add_pair(c.fc_gear(m, pa, zp, False, tess), c.fc_gear(m, pa, zr, True, tess))
+    for pa, m, zs, zp, zr, n in planetary:
+        for tess in FC_ALL:
+            c.fc_planetary(m, pa, zs, zp, zr, n, tess)
+    # HighPrecision = False: one quartic Bézier per flank instead of two cubics.
+    for tess in ('l0p002a3', 'export'):
+        c.add_pair(c.fc_gear(1, 20, 18, False, tess, False), c.fc_gear(1, 20, 40, False, tess, False))
+        c.fc_planetary(1, 20, 20, 30, 80, 4, tess, False)
+    c.run_freecad()
+
+
 def build_small(c):
     a, b = c.mcad_gear(1, 20, 24, 'stl-binary', 17, 0.05), c.mcad_gear(1, 20, 24, 'stl-binary', 24, 0.05)
     c.add_pair(a, b)
@@ -302,17 +442,46 @@ def main(argv):
     opt = lambda k, d: args[args.index(k) + 1] if k in args else d  # noqa: E731
     outdir = os.path.abspath(args[0])
     gearsim = os.path.abspath(opt('--gearsim', os.path.join(REPO, 'build', 'bin', 'gearsim')))
-    c = Corpus(outdir, opt('--openscad', 'openscad'), gearsim)
+    freecad = opt('--freecad', None)
+    only_freecad = '--only-freecad' in args
+    if freecad is not None and shutil.which(freecad) is None:
+        print('FreeCAD family skipped: no freecadcmd at %r (Debian: apt-get install freecad)' % freecad)
+        if only_freecad:
+            return 2
+        freecad = None
+    if only_freecad and freecad is None:
+        print('--only-freecad needs --freecad PATH')
+        return 2
+    c = Corpus(outdir, opt('--openscad', 'openscad'), gearsim, freecad and shutil.which(freecad))
     os.makedirs(outdir, exist_ok=True)
     t0 = time.monotonic()
-    (build_small if '--small' in args else build_full)(c)
+    if not only_freecad:
+        (build_small if '--small' in args else build_full)(c)
+    if freecad:
+        build_freecad(c)
     wall = time.monotonic() - t0
-    ver = subprocess.run([c.openscad, '--version'], capture_output=True, text=True)
     manifest = {
         'description': 'cad_corpus: third-party (OpenSCAD MCAD) and gearsim gear meshes, in mm, and the pairs to run',
         'generator': 'scripts/cad_corpus/generate.py' + (' --small' if '--small' in args else ''),
-        'openscad_version': (ver.stdout + ver.stderr).strip(),
-        'mcad_library': '/usr/share/openscad/libraries/MCAD/involute_gears.scad (Debian openscad-mcad)',
+    }
+    if not only_freecad:
+        ver = subprocess.run([c.openscad, '--version'], capture_output=True, text=True)
+        manifest['openscad_version'] = (ver.stdout + ver.stderr).strip()
+        manifest['mcad_library'] = '/usr/share/openscad/libraries/MCAD/involute_gears.scad (Debian openscad-mcad)'
+    if freecad:
+        manifest['description'] = manifest['description'].replace(
+            '(OpenSCAD MCAD) and gearsim', 'FreeCAD' if only_freecad else '(OpenSCAD MCAD, FreeCAD) and gearsim')
+        manifest['generator'] += ' --freecad' + (' --only-freecad' if only_freecad else '')
+        manifest['freecad'] = {
+            'version': c.fc_version, 'script': 'scripts/cad_corpus/freecad_gears.py (run by freecadcmd)',
+            'gears': 'PartDesign InvoluteGear (fcgear/involute.py): external addendum m, dedendum 1.25·m, fillet '
+                     '0.375·m; internal tip r − 0.6·m, root r + 1.25·m; no backlash; face 4·m; externals padded '
+                     'less a bore, rings a disc of radius r + 5·m less the internal profile',
+            'tessellations': {t[0]: ('Mesh.export, default tolerance' if t[1] == 'export' else
+                                     'MeshPart.meshFromShape(LinearDeflection=%g mm, AngularDeflection=%.4g deg, '
+                                     'Relative=False)' % (t[2], t[3])) for t in FC_TESSELLATIONS},
+        }
+    manifest.update({
         'conventions': {
             'units': 'keys ending _m are metres, _deg degrees; mesh files are in mm (unit "mm")',
             'backlash_m': 'mesh: circular backlash argument (each tooth thinned by backlash_m/2 at the pitch circle); '
@@ -324,10 +493,18 @@ def main(argv):
         'generation_wall_s': round(wall, 1),
         'meshes': c.meshes,
         'pairs': c.pairs,
-    }
+    })
+    if freecad:
+        manifest['conventions']['face_width_m'] += ' (FreeCAD family: %g·module)' % FC_FACE_PER_MODULE
+    if c.planetary:
+        manifest['conventions']['planetary'] = ('sun, planets equally spaced, ring fixed; centre_distance_m = '
+                                                'm·(z_s + z_p)/2; ratio_nominal = 1 + z_r/z_s (sun to carrier)')
+        manifest['planetary'] = c.planetary
     with open(os.path.join(outdir, 'corpus.json'), 'w') as f:
         json.dump(manifest, f, indent=1)
-    print('%d meshes, %d pairs in %s (%.1f s)' % (len(c.meshes), len(c.pairs), outdir, wall))
+    print('%d meshes, %d pairs%s in %s (%.1f s)' % (len(c.meshes), len(c.pairs),
+                                                     ', %d planetary sets' % len(c.planetary) if c.planetary else '',
+                                                     outdir, wall))
     return 0
 
 
