@@ -84,6 +84,8 @@ void run(const RunOptions& o) {
   std::cout << s.name << ": " << sim::status_name(r.status) << ", " << r.sim_seconds << " s simulated in "
             << std::setprecision(3) << r.wall_seconds << " s wall; logs in " << dir.string() << "\n";
   for (const std::string& w : r.warnings) std::cout << "warning: " << w << "\n";
+  for (const physics::PairTableDef& t : s.pair_tables)
+    if (!t.placement_note.empty()) std::cout << "note: " << t.placement_note << "\n";
   std::cout << std::flush;  // the run's outcome before its analysis starts, also through a pipe
   throw_if_stopped(r, dir);
   // The analysis and the scenario's renders of the finished run; a run too short (or of a train

@@ -106,7 +106,10 @@ json summary_json(const RunSource& source, const physics::Scenario& s, const sim
                       {"operating_pressure_angle_rad", t.figures.operating_pressure_angle_rad},
                       {"normal_backlash_m", t.figures.normal_backlash_m},
                       {"contact_ratio", t.figures.contact_ratio},
-                      {"base_pitch_mismatch_m", t.figures.base_pitch_mismatch_m}});
+                      {"base_pitch_mismatch_m", t.figures.base_pitch_mismatch_m},
+                      {"zero_backlash_tolerance_m", t.figures.zero_backlash_tolerance_m}});
+  for (std::size_t i = 0; i < s.pair_tables.size(); ++i)
+    if (!s.pair_tables[i].placement_note.empty()) tables[i]["placement_note"] = s.pair_tables[i].placement_note;
   if (!tables.empty()) j["pair_tables"] = tables;
   if (!s.contact.stiffness_tables.empty()) j["stiffness_table_misses"] = r.stiffness_table_misses;
   j["warnings"] = r.warnings;

@@ -22,6 +22,8 @@ InvoluteTeeth involute_teeth(const RecognisedGear& g) {
   t.base_half_angle_rad = 0.5 * (g.ccw.base_half_angle_rad + g.cw.base_half_angle_rad);
   t.tip_radius_m = g.internal ? std::max(g.ccw.active_from_m, g.cw.active_from_m)
                               : std::min(g.ccw.active_to_m, g.cw.active_to_m);
+  t.thickness_tolerance_m = g.ccw.rms_m + g.cw.rms_m;
+  t.standard_module_m = g.standard ? g.module_m : 0.0;
   return t;
 }
 
@@ -36,6 +38,7 @@ InvoluteTeeth involute_teeth(const GearSpec& spec) {
   const double inv_r = involute(spec.pressure_angle_rad);
   t.base_half_angle_rad = t.internal ? half_at_r - inv_r : half_at_r + inv_r;
   t.tip_radius_m = d.tip_radius_m;
+  t.standard_module_m = spec.module_m;
   return t;
 }
 
@@ -70,6 +73,8 @@ InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, doubl
         << rb_sum * 1e3 << " mm) leave no line of action";
     throw InputError(msg.str());
   }
+  p.zero_backlash_tolerance_m = (a.thickness_tolerance_m + b.thickness_tolerance_m) /
+                                (2 * std::sqrt(1 - std::pow(rb_sum / p.zero_backlash_centre_distance_m, 2)));
   const double alpha = std::acos(rb_sum / p.centre_distance_m), inv = involute(alpha);
   p.operating_pressure_angle_rad = alpha;
   // Normal backlash along the line of action: base pitch minus both teeth's base-circle arcs
@@ -81,6 +86,34 @@ InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, doubl
   const double gb = std::sqrt(std::max(0.0, b.tip_radius_m * b.tip_radius_m - b.base_radius_m * b.base_radius_m));
   p.contact_ratio = (ga + s * gb - s * p.centre_distance_m * std::sin(alpha)) / pb;
   return p;
+}
+
+double standard_centre_distance(const InvoluteTeeth& a, const InvoluteTeeth& b) {
+  const double ma = a.standard_module_m, mb = b.standard_module_m;
+  if (!(ma > 0) || !(mb > 0) || std::abs(ma - mb) > 1e-9 * ma) return 0.0;
+  const double zi = a.internal ? a.teeth : b.internal ? b.teeth : 0, ze = a.internal ? b.teeth : a.teeth;
+  return zi > 0 ? 0.5 * ma * (zi - ze) : 0.5 * ma * (a.teeth + b.teeth);
+}
+
+PairPlacement place_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, const std::string& who) {
+  const InvolutePair p = involute_pair(a, b, 0.0, who);
+  const double a0 = p.zero_backlash_centre_distance_m, u = p.zero_backlash_tolerance_m;
+  if (!(u > 0)) return {a0, ""};
+  std::ostringstream msg;
+  msg.precision(7);
+  const double standard = standard_centre_distance(a, b);
+  if (standard > 0 && std::abs(standard - a0) <= u) {
+    msg << who << ": placed at the standard distance " << standard * 1e3 << " mm; the flank fits put zero backlash at "
+        << a0 * 1e3 << " mm ± " << u * 1e6 << " um";
+    return {standard, msg.str()};
+  }
+  const bool internal = a.internal || b.internal;
+  const double placed = internal ? a0 - u : a0 + u;
+  msg << who << ": placed at " << placed * 1e3 << " mm, " << u * 1e6 << " um " << (internal ? "inside" : "outside")
+      << " the flank fits' zero-backlash distance " << a0 * 1e3
+      << " mm (their tolerance: the teeth's thicknesses are known to "
+      << (a.thickness_tolerance_m + b.thickness_tolerance_m) * 1e6 << " um), so that the teeth do not overlap";
+  return {placed, msg.str()};
 }
 
 }  // namespace gearsim

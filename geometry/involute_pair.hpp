@@ -20,6 +20,12 @@ struct InvoluteTeeth {
   // averaged): an external tooth narrows as inv(α_r) grows, an internal one widens.
   double base_half_angle_rad = 0;
   double tip_radius_m = 0;  // where the involute ends at the tip (its active end), m
+  // How well the teeth are known: a recognised gear's tooth thickness along the normal is
+  // uncertain by the rms of its two flank fits added (0 for a generated gear), m.
+  double thickness_tolerance_m = 0;
+  // The module when recognised as a standard one (ISO 54 / DIN 780 with a common pressure
+  // angle; a generated gear's own module), else 0, m.
+  double standard_module_m = 0;
 };
 
 InvoluteTeeth involute_teeth(const RecognisedGear& g);
@@ -32,6 +38,9 @@ struct InvolutePair {
   double normal_backlash_m = 0;             // along the line of action; < 0: the teeth overlap
   double contact_ratio = 0;                 // transverse, from the active tip radii
   double base_pitch_mismatch_m = 0;         // |p_b1 − p_b2|
+  // The zero-backlash distance is known to ± this much: both teeth's thickness tolerances over
+  // |dj_n/da| = 2 sin α_w at that distance, m.
+  double zero_backlash_tolerance_m = 0;
 };
 
 // Base pitches may differ by this much and still mesh (conjugate action needs equal base pitch;
@@ -44,5 +53,20 @@ inline constexpr double kMaxBasePitchMismatch_m = 5e-6;
 // which the involutes cannot act (closer than the base circles allow).
 InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, double centre_distance_m,
                            const std::string& who);
+
+// The distance m·(z_b ± z_a)/2 of two gears of one standard module (− for an internal pair), or
+// 0 when either is not recognised as standard or their modules differ.
+double standard_centre_distance(const InvoluteTeeth& a, const InvoluteTeeth& b);
+
+// Where a pair is placed when no centre distance is given, and why when it is not the fits'
+// zero-backlash distance a_0 itself. With teeth known to a tolerance (zero_backlash_tolerance_m
+// = u > 0), a_0 could be anywhere in a_0 ± u: the standard distance when it lies in that band
+// (the CAD tool's own distance, exact for unshifted zero-backlash gears), else the loose end of
+// the band (a_0 + u external, a_0 − u internal), never tighter than the fits can tell.
+struct PairPlacement {
+  double centre_distance_m = 0;
+  std::string note;  // empty at a_0 (teeth known exactly)
+};
+PairPlacement place_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, const std::string& who);
 
 }  // namespace gearsim

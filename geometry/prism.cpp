@@ -2,8 +2,10 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <sstream>
 #include <unordered_map>
@@ -18,10 +20,12 @@ namespace {
 using Vec2 = Eigen::Vector2d;
 using Vec3 = Eigen::Vector3d;
 
-// Faces whose unit normals are within this angle of a seed face (rad) join its cluster when
-// looking for candidate axes. Normally 1e-3: caps of an extrusion are parallel to rounding.
-constexpr double kAxisClusterAngle_rad = 1e-3;
-// At most this many face clusters are tried as the extrusion axis.
+// Face normals are binned on a grid of this pitch over the unit sphere (rad, chord); a face
+// counts toward the candidate axes of its own and the 26 neighbouring bins, so faces within
+// this angle of each other always share a candidate. Normally 1e-3: caps of an extrusion are
+// parallel to rounding (~1e-12 rad on gear meshes), and curved side walls spread over many bins.
+constexpr double kAxisBin_rad = 1e-3;
+// At most this many candidate axes are tried, largest face area first.
 constexpr int kMaxAxisCandidates = 64;
 
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
@@ -33,35 +37,104 @@ std::string fmt(double v) {
   return s.str();
 }
 
-// Area-weighted mean normals of clusters of near-parallel faces (either sense), largest first.
+// Candidate extrusion axes: the area-weighted mean normals of groups of near-parallel faces
+// (either sense), most area first, no two within 3 bins of each other. Linear in the faces:
+// every face normal, in both senses, goes to its bin of a grid of pitch kAxisBin_rad; a bin's
+// weight is the face area of its 3×3×3 neighbourhood, whatever the faces' sizes or order.
 std::vector<Vec3> candidate_axes(const std::vector<Vec3>& face_n) {
-  std::vector<int> order(face_n.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return face_n[a].squaredNorm() > face_n[b].squaredNorm(); });
-  std::vector<char> taken(face_n.size(), 0);
-  std::vector<std::pair<double, Vec3>> clusters;  // (area, mean normal)
-  const double cos_tol = std::cos(kAxisClusterAngle_rad);
-  for (int seed : order) {
-    if (taken[seed] || face_n[seed].norm() == 0.0) continue;
-    if (static_cast<int>(clusters.size()) == kMaxAxisCandidates) break;
-    const Vec3 s = face_n[seed].normalized();
-    Vec3 sum = Vec3::Zero();
-    for (std::size_t f = 0; f < face_n.size(); ++f) {
-      const double len = face_n[f].norm();
-      if (taken[f] || len == 0.0) continue;
-      const double c = face_n[f].dot(s) / len;
-      if (std::abs(c) < cos_tol) continue;
-      taken[f] = 1;
-      sum += c > 0 ? face_n[f] : Vec3(-face_n[f]);
+  struct Bin {
+    std::array<std::int64_t, 3> cell;
+    double area = 0;             // sum of |n| (twice the face areas)
+    Vec3 sum = Vec3::Zero();     // sum of the face normals in this bin's sense
+  };
+  std::vector<Bin> bins;
+  std::unordered_map<std::uint64_t, std::vector<int>> index;  // hashed cell -> bins
+  auto hash = [](const std::array<std::int64_t, 3>& c) {
+    return std::uint64_t(c[0]) * 73856093u ^ std::uint64_t(c[1]) * 19349663u ^ std::uint64_t(c[2]) * 83492791u;
+  };
+  auto find = [&](const std::array<std::int64_t, 3>& c) -> int {
+    const auto it = index.find(hash(c));
+    if (it != index.end())
+      for (int b : it->second)
+        if (bins[b].cell == c) return b;
+    return -1;
+  };
+  for (const Vec3& n : face_n) {
+    const double len = n.norm();
+    if (!(len > 0) || !std::isfinite(len)) continue;
+    for (const double sense : {1.0, -1.0}) {
+      const Vec3 u = sense * n / len;
+      const std::array<std::int64_t, 3> c{static_cast<std::int64_t>(std::floor(u.x() / kAxisBin_rad)),
+                                          static_cast<std::int64_t>(std::floor(u.y() / kAxisBin_rad)),
+                                          static_cast<std::int64_t>(std::floor(u.z() / kAxisBin_rad))};
+      int b = find(c);
+      if (b < 0) {
+        b = static_cast<int>(bins.size());
+        bins.push_back(Bin{c});
+        index[hash(c)].push_back(b);
+      }
+      bins[b].area += len;
+      bins[b].sum += sense * n;
     }
-    clusters.emplace_back(sum.norm(), sum.normalized());
   }
-  std::stable_sort(clusters.begin(), clusters.end(),
-                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  // Each bin with its neighbourhood's area and mean normal.
+  std::vector<std::pair<double, Vec3>> groups(bins.size());
+  for (std::size_t b = 0; b < bins.size(); ++b) {
+    double area = 0;
+    Vec3 sum = Vec3::Zero();
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto& c = bins[b].cell;
+          const int nb = find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (nb >= 0) area += bins[nb].area, sum += bins[nb].sum;
+        }
+    groups[b] = {area, sum};
+  }
+  std::vector<int> order(bins.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    if (groups[a].first != groups[b].first) return groups[a].first > groups[b].first;
+    return bins[a].cell < bins[b].cell;  // ties in a fixed order: deterministic
+  });
   std::vector<Vec3> axes;
-  for (const auto& c : clusters) axes.push_back(c.second);
+  const double cos_apart = std::cos(3 * kAxisBin_rad);
+  for (int b : order) {
+    if (static_cast<int>(axes.size()) == kMaxAxisCandidates) break;
+    if (!(groups[b].second.norm() > 0)) continue;
+    const Vec3 axis = groups[b].second.normalized();
+    if (std::none_of(axes.begin(), axes.end(),
+                     [&](const Vec3& a) { return std::abs(a.dot(axis)) >= cos_apart; }))
+      axes.push_back(axis);
+  }
   return axes;
+}
+
+// The axis refined from the caps a candidate finds: the faces with every corner within tol of
+// the lowest or the highest plane across it, their normals summed (each turned toward the
+// axis). A cap's summed normals depend on its boundary alone, not on how it is triangulated or
+// on noise inside it, so small noisy cap triangles tilted beyond the candidates' bins count as
+// much as the rest. Repeated while the axis moves (at most 4 times).
+Vec3 refined_axis(const TriMesh& mesh, const std::vector<Vec3>& face_n, Vec3 axis, double tol) {
+  for (int pass = 0; pass < 4; ++pass) {
+    double w_lo = std::numeric_limits<double>::infinity(), w_hi = -w_lo;
+    for (const Vec3& v : mesh.vertices) w_lo = std::min(w_lo, v.dot(axis)), w_hi = std::max(w_hi, v.dot(axis));
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+      int lo = 0, hi = 0;
+      for (std::uint32_t v : mesh.triangles[t]) {
+        const double w = mesh.vertices[v].dot(axis);
+        lo += w - w_lo <= tol, hi += w_hi - w <= tol;
+      }
+      if (lo == 3 || hi == 3) sum += face_n[t].dot(axis) >= 0 ? face_n[t] : Vec3(-face_n[t]);
+    }
+    if (!(sum.norm() > 0)) break;
+    const Vec3 next = sum.normalized();
+    const bool moved = (next - axis).norm() > 1e-15;
+    axis = next;
+    if (!moved) break;
+  }
+  return axis;
 }
 
 // Frame with the given axis: its largest component positive, x from world x (or y).
@@ -103,6 +176,66 @@ std::vector<Vec2> drop_collinear(const std::vector<Vec2>& pts) {
   return out;
 }
 
+// Distance from p to the segment ab.
+double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+// Every vertex between the caps lies within tol of the outline (a side wall), or the refusal
+// names the first that does not. Outline edges are binned on a grid whose cell (the mean edge
+// length, at least 4·tol and 1e-6 of the perimeter) bounds the work: each edge is walked in
+// steps of a cell and goes to the 3×3 cells around each step, so a vertex within tol of an edge
+// finds it in its own cell.
+Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>& uv, const std::vector<double>& w,
+                               const std::vector<std::size_t>& wall, double tol, double w_lo, double w_hi) {
+  if (wall.empty()) return {};
+  std::vector<std::pair<Vec2, Vec2>> edges;
+  double length = 0;
+  auto add = [&](const Polygon2& p) {
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      edges.emplace_back(p.points[i], p.points[(i + 1) % p.points.size()]);
+      length += (edges.back().second - edges.back().first).norm();
+    }
+  };
+  add(outline.outer);
+  for (const Polygon2& h : outline.holes) add(h);
+  const double cell = std::max({length / static_cast<double>(edges.size()), 4 * tol, 1e-6 * length});
+  auto key = [](std::int64_t x, std::int64_t y) {
+    return std::uint64_t(x) * 73856093u ^ std::uint64_t(y) * 19349663u;
+  };
+  auto to_cell = [&](double v) { return static_cast<std::int64_t>(std::floor(v / cell)); };
+  std::unordered_map<std::uint64_t, std::vector<int>> grid;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const auto& [a, b] = edges[e];
+    const auto steps = static_cast<std::int64_t>(std::ceil((b - a).norm() / cell));
+    for (std::int64_t k = 0; k <= steps; ++k) {
+      const Vec2 p = steps > 0 ? Vec2(a + (b - a) * (double(k) / double(steps))) : a;
+      const std::int64_t cx = to_cell(p.x()), cy = to_cell(p.y());
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          auto& list = grid[key(cx + dx, cy + dy)];
+          if (list.empty() || list.back() != static_cast<int>(e)) list.push_back(static_cast<int>(e));
+        }
+    }
+  }
+  for (std::size_t i : wall) {
+    double best = std::numeric_limits<double>::infinity();
+    const auto it = grid.find(key(to_cell(uv[i].x()), to_cell(uv[i].y())));
+    if (it != grid.end())
+      for (int e : it->second) best = std::min(best, segment_distance(uv[i], edges[e].first, edges[e].second));
+    if (best > tol) {
+      // Not near an edge of its own cell: the distance to the nearest edge, for the message.
+      for (const auto& [a, b] : edges) best = std::min(best, segment_distance(uv[i], a, b));
+      return Refusal{"vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) + " m above the bottom cap of a " +
+                     fmt(w_hi - w_lo) + " m prism and " + fmt(best) + " m off its side walls"};
+    }
+  }
+  return {};
+}
+
 // Tries `axis`: fills `prism`, or refuses saying why the mesh is not a prism along it.
 Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) {
   const std::size_t nv = mesh.vertices.size();
@@ -112,7 +245,10 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
   const double w_lo = *std::min_element(w.begin(), w.end()),
                w_hi = *std::max_element(w.begin(), w.end());
   if (w_hi - w_lo <= tol) return Refusal{"the mesh is flat along this axis"};
+  // Level 0: on the bottom cap, 1: on the top cap, 2: on a side wall between them (exporters
+  // put vertices there; each must lie on the outline within tol, checked below).
   std::vector<int> level(nv);
+  std::vector<std::size_t> wall_vertices;
   double sum_lo = 0, sum_hi = 0;
   int n_lo = 0, n_hi = 0;
   for (std::size_t i = 0; i < nv; ++i) {
@@ -122,8 +258,7 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     else if (w_hi - w[i] <= tol)
       level[i] = 1, sum_hi += w[i] - w_hi, ++n_hi;
     else
-      return Refusal{"vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) +
-             " m above the bottom cap of a " + fmt(w_hi - w_lo) + " m prism"};
+      level[i] = 2, wall_vertices.push_back(i);
   }
   const double bottom = w_lo + sum_lo / n_lo, top = w_hi + sum_hi / n_hi;
   f.origin_m = bottom * f.z;
@@ -139,7 +274,7 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     const auto& tri = mesh.triangles[t];
     const int l0 = level[tri[0]], l1 = level[tri[1]], l2 = level[tri[2]];
     const Vec2 &a = uv[tri[0]], &b = uv[tri[1]], &c = uv[tri[2]];
-    if (l0 == l1 && l1 == l2) {
+    if (l0 == l1 && l1 == l2 && l0 != 2) {
       const double area = 0.5 * cross2(b - a, c - a);
       (l0 ? top_area : bottom_area) += area;
       if (l0) top_faces.push_back(t);
@@ -234,6 +369,8 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     return Refusal{"the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) +
            " m^2"};
   if (const Check c = check_outline(prism.outline); !c) return Refusal{"the recovered outline is invalid: " + c.reason()};
+  if (const Check c = wall_vertices_on_outline(prism.outline, uv, w, wall_vertices, tol, w_lo, w_hi); !c)
+    return c;
   prism.frame = f;
   prism.height_m = top - bottom;
   return {};
@@ -256,7 +393,8 @@ Result<Prism> recover_prism(const TriMesh& mesh, double tol_m) {
     face_n.push_back((b - a).cross(c - a));
   }
   std::string reason;  // along the first candidate axis: the largest face cluster's normal
-  for (const Vec3& axis : candidate_axes(face_n)) {
+  for (const Vec3& candidate : candidate_axes(face_n)) {
+    const Vec3 axis = refined_axis(mesh, face_n, candidate, tol_m);
     Prism prism;
     const Check why = try_axis(mesh, axis, tol_m, prism);
     if (why) return prism;

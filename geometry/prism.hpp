@@ -39,10 +39,12 @@ struct Prism {
 };
 
 // Recovers the prism of `mesh` within tol_m (m), or refuses naming the offending face, vertex or
-// loop: every vertex lies within tol_m of one of two
-// parallel cap planes, every other face is perpendicular to them, and the top cap's boundary
-// forms one outer loop with holes. Candidate axes are the normals of the largest near-parallel
-// face clusters, largest first. The frame's origin is the world origin projected on the bottom
+// loop: the faces with every corner within tol_m of one of two parallel cap planes form the caps,
+// every other face is perpendicular to them, every vertex between the caps lies on the side
+// walls (within tol_m of the outline, as exporters that split the walls put them), and the top
+// cap's boundary forms one outer loop with holes. Candidate axes are the mean normals of the
+// groups of near-parallel faces with the most area, whatever the faces' sizes or order (time
+// linear in the mesh). The frame's origin is the world origin projected on the bottom
 // cap; x is world x (or y) projected on the cap, so a mesh built about the world z axis keeps
 // its coordinates. Throws InputError for an empty mesh, out-of-range indices or tol_m <= 0.
 Result<Prism> recover_prism(const TriMesh& mesh, double tol_m);

@@ -59,7 +59,7 @@ std::optional<InvoluteTeeth> involutes_of(const physics::BodyDef& b, std::string
 
 physics::PairTableDef checked_pair_table(const YamlMap& m, const std::string& a, const std::string& b, const InvoluteTeeth& ta,
                                          const InvoluteTeeth& tb, double centre_distance_m, bool derived, const std::string& key) {
-  physics::PairTableDef table{a, b, derived, {}};
+  physics::PairTableDef table{a, b, derived, {}, {}};
   try {
     table.figures = involute_pair(ta, tb, centre_distance_m, "pair '" + a + "'–'" + b + "'");
   } catch (const InputError& e) {

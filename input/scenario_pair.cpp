@@ -67,7 +67,17 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
     if (!ti && !m.has("centre_distance_m")) m.fail(in_key, why + ", so the centre distance cannot be derived: give centre_distance_m");
     centre_distance_m = number_within_or(m, "centre_distance_m", 0.0, limits::kCentreDistance_m);  // 0: derived
     if (te && ti) {
-      table = checked_pair_table(m, a.name, b.name, *te, *ti, centre_distance_m, !m.has("centre_distance_m"), "driven");
+      const bool derived = !m.has("centre_distance_m");
+      std::string note;
+      if (derived) try {
+          const PairPlacement placed = place_pair(*te, *ti, "pair '" + a.name + "'–'" + b.name + "'");
+          centre_distance_m = placed.centre_distance_m;
+          note = placed.note;
+        } catch (const InputError& e) {
+          m.fail("driven", e.what());
+        }
+      table = checked_pair_table(m, a.name, b.name, *te, *ti, centre_distance_m, derived, "driven");
+      table->placement_note = note;
       centre_distance_m = table->figures.centre_distance_m;
     }
   }

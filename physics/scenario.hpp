@@ -321,8 +321,9 @@ struct FeTeDef {
 // run summary reports of the mesh before any dynamics.
 struct PairTableDef {
   std::string driver, driven;
-  bool centre_distance_derived = false;  // the zero-backlash distance, not a given one
+  bool centre_distance_derived = false;  // placed from the teeth (place_pair), not given
   InvolutePair figures;
+  std::string placement_note;  // why a derived distance is not the fits' zero-backlash one
 };
 
 struct Scenario {

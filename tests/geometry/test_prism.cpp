@@ -4,6 +4,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "core/errors.hpp"
 #include "geometry/extrude.hpp"
@@ -114,6 +116,94 @@ TEST(Prism, MalformedInputThrows) {
   EXPECT_THROW(recover_prism(m, 0.0), InputError);
   m.triangles[0][1] = 999;
   EXPECT_THROW(recover_prism(m, 1e-9), InputError);
+}
+
+// Rebuilds the side walls of an extruded prism (vertices: the outline's points at z0, then at z1)
+// as an exporter that splits them does: each wall column gets a vertex between the caps, at a
+// height that varies along the loop, moved `off_m` out of the wall plane.
+TriMesh split_walls(const Outline2& o, double z0, double z1, double off_m) {
+  TriMesh m = extrude(o, z0, z1);
+  const auto n = static_cast<std::uint32_t>(m.vertices.size() / 2);
+  std::vector<std::array<std::uint32_t, 3>> caps;
+  for (const auto& t : m.triangles)
+    if (m.vertices[t[0]].z() == m.vertices[t[1]].z() && m.vertices[t[1]].z() == m.vertices[t[2]].z())
+      caps.push_back(t);
+  m.triangles = caps;
+  std::uint32_t first = 0;
+  std::vector<const Polygon2*> loops{&o.outer};
+  for (const Polygon2& h : o.holes) loops.push_back(&h);
+  for (const Polygon2* loop : loops) {
+    const auto k = static_cast<std::uint32_t>(loop->points.size());
+    const auto mid0 = static_cast<std::uint32_t>(m.vertices.size());
+    for (std::uint32_t i = 0; i < k; ++i) {
+      const Vec2 e = loop->points[(i + 1) % k] - loop->points[i];
+      const Vec2 out = Vec2(e.y(), -e.x()).normalized();  // outward for CCW outers and CW holes
+      const double h = z0 + (z1 - z0) * (0.3 + 0.4 * ((i * 7) % 11) / 10.0);
+      const Vec2 p = loop->points[i] + off_m * out;
+      m.vertices.emplace_back(p.x(), p.y(), h);
+    }
+    for (std::uint32_t i = 0; i < k; ++i) {
+      const std::uint32_t j = (i + 1) % k;
+      const std::uint32_t bi = first + i, bj = first + j, ti = bi + n, tj = bj + n, mi = mid0 + i, mj = mid0 + j;
+      m.triangles.push_back({bi, bj, mj});
+      m.triangles.push_back({bi, mj, mi});
+      m.triangles.push_back({mi, mj, tj});
+      m.triangles.push_back({mi, tj, ti});
+    }
+    first += k;
+  }
+  return m;
+}
+
+TEST(Prism, VerticesOnTheSideWallsBetweenTheCapsAreAccepted) {
+  // FreeCAD's fine export puts vertices on the walls between the caps, up to 0.79 µm out of the
+  // wall plane; within the 2 µm tolerance the mesh is the prism of its caps' outline.
+  Outline2 o = l_shape();
+  o.outer.points = {{0, 0}, {0.02, 0}, {0.02, 0.01}, {0.01, 0.01}, {0.01, 0.02}, {0, 0.02}};
+  o.holes.push_back(Polygon2{{{0.002, 0.002}, {0.002, 0.004}, {0.004, 0.004}, {0.004, 0.002}}});
+  const TriMesh m = split_walls(o, 0.0, 0.01, 0.79e-6);
+  const Result<Prism> r = recover_prism(m, 2e-6);
+  ASSERT_TRUE(r) << r.reason();
+  EXPECT_EQ(sorted(r->outline.outer.points), sorted(o.outer.points));  // the caps' points, exactly
+  ASSERT_EQ(r->outline.holes.size(), 1u);
+  EXPECT_NEAR(r->height_m, 0.01, 1e-18);
+  // Moved 5 µm out of the walls, the same vertices make it no prism within 2 µm.
+  const Result<Prism> off = recover_prism(split_walls(o, 0.0, 0.01, 5e-6), 2e-6);
+  EXPECT_FALSE(off);
+}
+
+TEST(Prism, TheCapIsFoundWhenEveryCapTriangleIsSmallerThanTheWalls) {
+  // A ring exported with a fine cap and coarse walls: its 400 wall directions (each shared by
+  // the outer and the inner wall) all have larger triangles than any cap triangle, so a search
+  // seeded by single triangles meets 64 wall directions before the cap. Shuffled: the axis must
+  // not depend on the triangles' order.
+  Outline2 ring;
+  const int k = 400;
+  for (int i = 0; i < k; ++i) {
+    const double a = 2 * M_PI * i / k;
+    ring.outer.points.emplace_back(0.030 * std::cos(a), 0.030 * std::sin(a));
+  }
+  for (int i = k; i-- > 0;) {
+    const double a = 2 * M_PI * i / k;
+    ring.holes.resize(1);
+    ring.holes[0].points.emplace_back(0.028 * std::cos(a), 0.028 * std::sin(a));
+  }
+  TriMesh m = extrude(ring, 0.0, 0.05);
+  double cap_max = 0, wall_min = 1;
+  for (const auto& t : m.triangles) {
+    const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    (a.z() == b.z() && b.z() == c.z() ? cap_max : wall_min) =
+        a.z() == b.z() && b.z() == c.z() ? std::max(cap_max, area) : std::min(wall_min, area);
+  }
+  ASSERT_LT(cap_max, wall_min);  // the case being tested
+  std::reverse(m.triangles.begin(), m.triangles.end());
+  for (std::size_t i = 0; i + 7 < m.triangles.size(); i += 7) std::swap(m.triangles[i], m.triangles[i + 5]);
+  const Result<Prism> r = recover_prism(m, 2e-6);
+  ASSERT_TRUE(r) << r.reason();
+  EXPECT_NEAR(std::abs(r->frame.z.z()), 1.0, 1e-15);
+  EXPECT_NEAR(r->height_m, 0.05, 1e-17);
+  EXPECT_NEAR(area(r->outline), M_PI * (0.030 * 0.030 - 0.028 * 0.028), 1e-6);  // the 400-gons' area
 }
 
 }  // namespace test_prism
