@@ -2,11 +2,11 @@
 #
 # Usage (generate.py does this): GEARSIM_FC_JOBS=/abs/jobs.json freecadcmd freecad_gears.py
 #
-# jobs.json (data only, nothing in it is evaluated):
-#   {"results": "/abs/results.json",
+# jobs.json (data only, nothing in it is evaluated; relative paths are from the jobs file's folder):
+#   {"results": "results.json" (optional),
 #    "jobs": [{"name", "teeth", "module_mm", "pressure_angle_deg", "high_precision", "internal",
 #              "face_mm", "bore_diameter_mm" (external, 0: none), "disc_radius_mm" (internal),
-#              "meshes": [{"file": "/abs/x.stl", "method": "export"},
+#              "meshes": [{"file": "x.stl", "method": "export"},
 #                         {"file": …, "method": "meshFromShape", "linear_deflection_mm": 0.002,
 #                          "angular_deflection_rad": 0.0524}]}]}
 #
@@ -86,14 +86,14 @@ def gear_body(doc, job):
     return body
 
 
-def export(body, job):
+def export(body, job, folder):
     """Writes the job's meshes; the default export first (see the file's head)."""
     out = []
     meshes = sorted(job['meshes'], key=lambda m: m['method'] != 'export')
     for m in meshes:
-        path = str(m['file'])
-        if not os.path.isabs(path) or not path.endswith('.stl'):
-            raise ValueError('mesh file %r: an absolute .stl path expected' % path)
+        path = os.path.join(folder, str(m['file']))
+        if not path.endswith('.stl'):
+            raise ValueError('mesh file %r: an .stl path expected' % path)
         t0 = time.monotonic()
         if m['method'] == 'export':
             Mesh.export([body], path)
@@ -112,7 +112,9 @@ def export(body, job):
 
 
 def main():
-    with open(os.environ['GEARSIM_FC_JOBS']) as f:
+    jobs_file = os.path.abspath(os.environ['GEARSIM_FC_JOBS'])
+    folder = os.path.dirname(jobs_file)
+    with open(jobs_file) as f:
         spec = json.load(f)
     results = {'freecad_version': FreeCAD.Version()[:4], 'jobs': []}
     for i, job in enumerate(spec['jobs']):
@@ -121,10 +123,11 @@ def main():
         shape = body.Shape
         results['jobs'].append({'name': str(job['name']), 'valid': shape.isValid(), 'solids': len(shape.Solids),
                                 'volume_mm3': shape.Volume, 'faces': len(shape.Faces),
-                                'meshes': export(body, job) if shape.isValid() and len(shape.Solids) == 1 else []})
+                                'meshes': export(body, job, folder) if shape.isValid() and len(shape.Solids) == 1 else []})
         FreeCAD.closeDocument(doc.Name)
-    with open(str(spec['results']), 'w') as f:
-        json.dump(results, f, indent=1)
+    if 'results' in spec:
+        with open(os.path.join(folder, str(spec['results'])), 'w') as f:
+            json.dump(results, f, indent=1)
 
 
 main()
