@@ -185,6 +185,68 @@ double refined_radius(FlankSamples& s, bool crossing_tried, Crossing& crossing) 
 namespace gearsim::contact {
 namespace {
 
+// How much y's flank (tooth j, g) turns about its foot at y-frame point q: 1 − cos of the angle
+// between its normals a distance d below and above the foot's radius (within the flank).
+double foot_turning(const FlankTable& yt, int j, Flank g, const Vector2d& q, double d) {
+  double lo, hi;
+  yt.flank_extent(j, g, &lo, &hi);
+  const double s = q.norm(), s0 = std::max(lo, s - d), s1 = std::min(hi, s + d);
+  FlankTable::FlankJet u, v;
+  if (!(s1 > s0) || !yt.flank_jet(j, g, s0, &u) || !yt.flank_jet(j, g, s1, &v)) return 2;
+  return 1 - FlankTable::outward_normal(g, u.d1).dot(FlankTable::outward_normal(g, v.d1));
+}
+
+// A maximum only the sampled refinement found (x's point at radius r, `probed`) lies where a
+// flank turns sharply: a corner of the outline, which the flank tables keep within a vertex
+// spacing (FreeCAD's ring tip lands meet the flanks so). Where the corner is y's, x's point found
+// by golden section faces it with y's normal at the foot, one side's of the corner, not the
+// direction the overlap grows along as the corner slides on x's flank: a ring's tip corner low
+// on a pinion's flank was measured along the tip land's normal (a lever of 2.7–5.8 mm about the
+// pinion, r_b 14.5 mm), and the contact row, taking the sliding for approach, pushed 5–20× its
+// spring. So the overlap is measured from y's side too — the deepest point of y's flank inside x
+// near the foot, by golden section, along x's normal at its foot — and kept where y's flank turns
+// by more than 20° about its foot (over half of y's probe spacing either side: a corner) and x's
+// less than a tenth as much about its own: a corner in a smooth flank is measured along the
+// smooth flank's normal. (The FreeCAD ring's corner turns by 70–80° there, the pinion's flank by
+// 5°; the facet corners of MCAD's flanks turn by 5° at most and keep the first measure.)
+constexpr double kCornerTurning = 0.0603;  // 1 − cos 20°: y's flank turns by more than 20° about its foot
+Hit sharper_side_hit(const XY& xy, int k, Flank f, const Hit& probed) {
+  if (!(probed.depth > 0) || probed.tooth_y < 0) return probed;
+  const FlankTable& yt = xy.y.table;
+  const Vector2d foot_y = xy.y.to_local(probed.point + probed.depth * probed.normal_into_x);
+  double lo, hi;
+  yt.flank_extent(probed.tooth_y, probed.flank_y, &lo, &hi);
+  const XY yx{xy.y, xy.x};
+  const double reach = 2 * yx.spacing_m, s = foot_y.norm();
+  const double from = std::max(lo, s - reach), to = std::min(hi, s + reach);
+  if (!(to > from)) return probed;
+  // Golden section twice: the maximum is at a corner, where the depth falls off linearly, so
+  // the first bracket's 6.6e-5 of the span (~30 nm of flank) would cost nanometres of depth.
+  int hint = k;
+  const double r_1 = golden_refine(yx, probed.tooth_y, probed.flank_y, from, to, hint), w = 1e-4 * (to - from);
+  const double r_y = golden_refine(yx, probed.tooth_y, probed.flank_y, std::max(from, r_1 - w), std::min(to, r_1 + w), hint);
+  Hit c = probe_at(yx, probed.tooth_y, probed.flank_y, r_y);
+  if (!(c.depth > 0) || c.tooth_y != k || c.flank_y != f) return probed;
+  // At an end of y's flank (its tip corner): that corner solved exactly on x's flank.
+  for (const bool high : {true, false}) {
+    const double end = high ? hi : lo;
+    if (!(std::abs(r_y - end) <= 2 * w)) continue;
+    const Hit e = corner_solve(yx, probed.tooth_y, probed.flank_y, end, high, k, f,
+                               xy.x.to_local(c.point + c.depth * c.normal_into_x).norm());
+    if (e.depth > c.depth && e.tooth_y == k && e.flank_y == f) c = e;
+  }
+  const Vector2d foot_x = xy.x.to_local(c.point + c.depth * c.normal_into_x);
+  const double d = 0.25 * reach;
+  const double turn_y = foot_turning(yt, probed.tooth_y, probed.flank_y, foot_y, d);
+  if (!(turn_y > kCornerTurning && 10 * foot_turning(xy.x.table, k, f, foot_x, d) < turn_y)) return probed;
+  // In x's terms: x's surface point is the foot on x, y's outward normal the opposite of x's.
+  Hit h = probed;
+  h.depth = c.depth;
+  h.normal_into_x = -c.normal_into_x;
+  h.point = c.point + c.depth * c.normal_into_x;
+  return h;
+}
+
 // The hit of a sampled refinement that ended at radius c.r: measured exactly there (at the best
 // sample where c.r has no material, or measures nothing). Where c.r is a crossing's maximum
 // (Crossing) and measured there, marked as one (Hit::kCrossing: r_x the crossing on x's flank,
@@ -264,7 +326,8 @@ Hit refined_hit(FlankSamples& s) {
   Crossing c;
   const double r = refined_radius(s, crossing_tried, c);
   c.r = r;
-  return crossing_hit_at(s, c);
+  const Hit h = crossing_hit_at(s, c);
+  return h.solved == Hit::kSampled ? sharper_side_hit(xy, k, f, h) : h;
 }
 
 // The deepest point of one flank of x's tooth k inside y: the flank's probe points tested to

@@ -1,7 +1,10 @@
 // Tooth contact between two spur gears with parallel axes: one contact per touching tooth pair,
 // found by probing each gear's flanks against the other's FlankTable. Pure geometry: no Bullet,
 // no forces. Depths resolve to the flank tables' accuracy (the outline's chordal deviation),
-// which is what an elastic contact of sub-µm deflections needs.
+// which is what an elastic contact of sub-µm deflections needs. A contact's normal is the common
+// normal of the two flanks, or where one of them has a corner (a tip corner, or an outline corner
+// the flank table keeps, such as where a ring's tip land meets its flank) the normal of the
+// smooth flank the corner is in: the direction its depth grows along as the corner slides.
 // Not a general collision detector: both gears must be star-shaped spur gears in one plane.
 #pragma once
 

@@ -110,6 +110,31 @@ TEST(MeshGear, CoarselyFacetedMcadInvolutesGiveTheirBaseCircles) {
   }
 }
 
+// FreeCAD 0.20's exports (tests/data/freecad, made there by FreeCAD): a z 6 gear whose flank faces
+// were meshed with 824 vertices between the caps (0.002 mm deflection), refused as "not a
+// prism" before side-wall vertices were accepted; a 12 mm ring whose largest cap triangle ranks
+// 211th by area, after 75 wall directions, refused along a wall's normal before the axis came
+// from the area of every face.
+TEST(MeshGear, FreecadExportsAreThePrismsOfTheirGears) {
+  const std::string dir = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/freecad/";
+  const MeshGearFile z6 = read_mesh_gear(dir + "fc_m1_z6_a25_face1_l0p002r0p5.stl", LengthUnit::Millimetre);
+  ASSERT_TRUE(z6.gear.has_value()) << z6.prism.reason();
+  EXPECT_NEAR(z6.gear->face_width_m, 1e-3, 1e-9);
+  ASSERT_TRUE(z6.gear->recognition.ok()) << z6.gear->recognition.reason();
+  EXPECT_EQ(z6.gear->recognition->teeth, 6);
+  EXPECT_FALSE(z6.gear->recognition->internal);
+  ASSERT_TRUE(z6.gear->recognition->involute);
+  // r_b = m·z·cos 25°/2 = 2.7189 mm; FreeCAD's Bézier flanks read 2.1 µm inside it.
+  EXPECT_NEAR(z6.gear->recognition->base_radius_m, 3e-3 * std::cos(25 * kPi / 180), 3e-6);
+  const MeshGearFile ring = read_mesh_gear(dir + "fcring_m1_z30_a25_face12_l0p1r0p5.stl", LengthUnit::Millimetre);
+  ASSERT_TRUE(ring.gear.has_value()) << ring.prism.reason();
+  EXPECT_NEAR(std::abs(ring.prism->frame.z.z()), 1.0, 1e-12);
+  EXPECT_NEAR(ring.gear->face_width_m, 12e-3, 1e-9);
+  ASSERT_TRUE(ring.gear->recognition.ok()) << ring.gear->recognition.reason();
+  EXPECT_EQ(ring.gear->recognition->teeth, 30);
+  EXPECT_TRUE(ring.gear->recognition->internal);
+}
+
 // CAD exports carry coordinate noise: ±0.5 µm drawn for every coordinate of every vertex (so
 // the caps are no longer planes and top and bottom outlines differ by up to 1 µm) still reads as
 // the prism of the 23-tooth gear, its base circle within the 2 µm of the acceptance.
