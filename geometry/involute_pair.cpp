@@ -24,6 +24,10 @@ InvoluteTeeth involute_teeth(const RecognisedGear& g) {
                               : std::min(g.ccw.active_to_m, g.cw.active_to_m);
   t.thickness_tolerance_m = g.ccw.rms_m + g.cw.rms_m;
   t.standard_module_m = g.standard ? g.module_m : 0.0;
+  t.base_radius_tolerance_m = 0.5 * std::abs(g.ccw.base_radius_m - g.cw.base_radius_m);
+  if (g.standard)
+    t.base_radius_tolerance_m = std::max(t.base_radius_tolerance_m,
+                                         std::abs(g.base_radius_m - 0.5 * g.module_m * g.teeth * std::cos(g.pressure_angle_rad)));
   return t;
 }
 
@@ -73,8 +77,9 @@ InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, doubl
         << rb_sum * 1e3 << " mm) leave no line of action";
     throw InputError(msg.str());
   }
-  p.zero_backlash_tolerance_m = (a.thickness_tolerance_m + b.thickness_tolerance_m) /
-                                (2 * std::sqrt(1 - std::pow(rb_sum / p.zero_backlash_centre_distance_m, 2)));
+  const double cos_w0 = rb_sum / p.zero_backlash_centre_distance_m;
+  p.zero_backlash_tolerance_m = (a.thickness_tolerance_m + b.thickness_tolerance_m) / (2 * std::sqrt(1 - cos_w0 * cos_w0)) +
+                                (a.base_radius_tolerance_m + b.base_radius_tolerance_m) / cos_w0;
   const double alpha = std::acos(rb_sum / p.centre_distance_m), inv = involute(alpha);
   p.operating_pressure_angle_rad = alpha;
   // Normal backlash along the line of action: base pitch minus both teeth's base-circle arcs
@@ -111,9 +116,39 @@ PairPlacement place_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, const s
   const double placed = internal ? a0 - u : a0 + u;
   msg << who << ": placed at " << placed * 1e3 << " mm, " << u * 1e6 << " um " << (internal ? "inside" : "outside")
       << " the flank fits' zero-backlash distance " << a0 * 1e3
-      << " mm (their tolerance: the teeth's thicknesses are known to "
-      << (a.thickness_tolerance_m + b.thickness_tolerance_m) * 1e6 << " um), so that the teeth do not overlap";
+      << " mm (its tolerance from the flank fits: the teeth's thicknesses known to "
+      << (a.thickness_tolerance_m + b.thickness_tolerance_m) * 1e6 << " um, their base radii to "
+      << (a.base_radius_tolerance_m + b.base_radius_tolerance_m) * 1e6 << " um), so that the teeth do not overlap";
   return {placed, msg.str()};
+}
+
+PairPlacement place_planetary(const InvoluteTeeth& sun, const InvoluteTeeth& planet, const InvoluteTeeth& ring) {
+  const InvolutePair sp = involute_pair(sun, planet, 0.0, "sun–planet");
+  const InvolutePair pr = involute_pair(planet, ring, 0.0, "planet–ring");
+  const double a_sp = sp.zero_backlash_centre_distance_m, a_pr = pr.zero_backlash_centre_distance_m;
+  const double u_sp = sp.zero_backlash_tolerance_m, u_pr = pr.zero_backlash_tolerance_m;
+  std::ostringstream both;
+  both.precision(7);
+  both << "sun–planet needs at least " << a_sp * 1e3 << " mm (zero backlash), planet–ring at most " << a_pr * 1e3 << " mm";
+  if (a_sp - a_pr > u_sp + u_pr + 1e-9) {
+    if (u_sp + u_pr > 0) both << ", a conflict of " << (a_sp - a_pr) * 1e6 << " um beyond the flank fits' " << (u_sp + u_pr) * 1e6 << " um";
+    throw InputError("no centre distance meshes both: " + both.str());
+  }
+  const double standard = standard_centre_distance(sun, planet);
+  const bool use_standard = u_sp + u_pr > 0 && standard > 0 && std::abs(standard - standard_centre_distance(planet, ring)) <= 1e-12 &&
+                            standard >= a_sp - u_sp && standard <= a_pr + u_pr;
+  const bool conflict = a_sp > a_pr + 1e-9;
+  PairPlacement p;
+  p.centre_distance_m = use_standard ? standard : conflict ? a_sp - u_sp * (a_sp - a_pr) / (u_sp + u_pr) : 0.5 * (a_sp + a_pr);
+  if (use_standard || conflict) {
+    std::ostringstream note;
+    note.precision(7);
+    note << "planetary: " << both.str() << " (flank fits' tolerances " << u_sp * 1e6 << " and " << u_pr * 1e6
+         << " um): placed at " << (use_standard ? "the standard distance " : "the distance equally far into both, ")
+         << p.centre_distance_m * 1e3 << " mm";
+    p.note = note.str();
+  }
+  return p;
 }
 
 }  // namespace gearsim

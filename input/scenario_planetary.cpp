@@ -29,44 +29,13 @@ PlanetaryGeometry shapes_geometry(const YamlMap& m, const PlanetaryMembers& s, s
   const bool derived = !m.has("centre_distance_m");
   double a = derived ? 0.0 : number_within(m, "centre_distance_m", limits::kCentreDistance_m);
   std::string note;
-  if (derived) {
-    InvolutePair sp, pr;
-    try {
-      sp = involute_pair(s.sun_teeth, s.planet_teeth, 0.0, "sun–planet");
-      pr = involute_pair(s.planet_teeth, s.ring_teeth, 0.0, "planet–ring");
+  if (derived) try {
+      const PairPlacement placed = place_planetary(s.sun_teeth, s.planet_teeth, s.ring_teeth);
+      a = placed.centre_distance_m;
+      note = placed.note;
     } catch (const InputError& e) {
       m.fail("ring", e.what());
     }
-    // Sun–planet backlash grows with the distance, planet–ring backlash shrinks: a distance
-    // meshes both from sun–planet's zero-backlash distance to planet–ring's. Known to ± u each
-    // (the flank fits), a conflict within u_sp + u_pr is no evidence that none does.
-    const double a_sp = sp.zero_backlash_centre_distance_m, a_pr = pr.zero_backlash_centre_distance_m;
-    const double u_sp = sp.zero_backlash_tolerance_m, u_pr = pr.zero_backlash_tolerance_m;
-    a = 0.5 * (a_sp + a_pr);
-    if (a_sp > a_pr + 1e-9) {
-      std::ostringstream msg;
-      msg.precision(7);
-      msg << "sun–planet needs at least " << a_sp * 1e3 << " mm (zero backlash), planet–ring at most " << a_pr * 1e3
-          << " mm";
-      if (a_sp - a_pr > u_sp + u_pr) {
-        if (u_sp + u_pr > 0) msg << ", a conflict of " << (a_sp - a_pr) * 1e6 << " um beyond the flank fits' "
-                                 << (u_sp + u_pr) * 1e6 << " um";
-        m.fail("ring", "no centre distance meshes both: " + msg.str());
-      }
-      // Within the fits' tolerance: the standard distance when both allow it, else the distance
-      // equally far into either tolerance.
-      const double standard = standard_centre_distance(s.sun_teeth, s.planet_teeth);
-      const bool use_standard = standard > 0 && std::abs(standard - standard_centre_distance(s.planet_teeth, s.ring_teeth)) <= 1e-12 &&
-                                standard >= a_sp - u_sp && standard <= a_pr + u_pr;
-      a = use_standard ? standard : a_sp - u_sp * (a_sp - a_pr) / (u_sp + u_pr);
-      std::ostringstream placed;
-      placed.precision(7);
-      placed << "planetary: " << msg.str() << ", " << (a_sp - a_pr) * 1e6 << " um apart, within the flank fits' tolerances ("
-             << u_sp * 1e6 << " and " << u_pr * 1e6 << " um): placed at " << (use_standard ? "the standard distance " : "")
-             << a * 1e3 << " mm";
-      note = placed.str();
-    }
-  }
   tables.push_back(checked_pair_table(m, "sun", "planet_0", s.sun_teeth, s.planet_teeth, a, derived, "ring"));
   tables.push_back(checked_pair_table(m, "planet_0", "ring", s.planet_teeth, s.ring_teeth, a, derived, "ring"));
   tables.front().placement_note = note;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/errors.hpp"
 #include "geometry/involute.hpp"
 #include "geometry/involute_pair.hpp"
 
@@ -44,6 +45,11 @@ TEST(InvolutePair, TheZeroBacklashToleranceIsTheThicknessTolerancesOverTwoSinAlp
   // first order: the operating angle changes by 1e-4 rad).
   const InvolutePair out = involute_pair(a, b, p.zero_backlash_centre_distance_m + p.zero_backlash_tolerance_m, "t");
   EXPECT_NEAR(out.normal_backlash_m, 2.88e-6, 0.005e-6);
+  // Base radii known to 0.9 and 0.8 µm add (0.9 + 0.8) µm / cos α_w: a = (r_b1 + r_b2)/cos α_w.
+  a.base_radius_tolerance_m = 0.9e-6, b.base_radius_tolerance_m = 0.8e-6;
+  EXPECT_NEAR(involute_pair(a, b, 0.0, "t").zero_backlash_tolerance_m,
+              2.88e-6 / (2 * std::sin(kAlpha)) + 1.7e-6 / std::cos(kAlpha), 1e-15);
+  a.base_radius_tolerance_m = b.base_radius_tolerance_m = 0;
   // Internal: the ring's side closes as the distance grows.
   InvoluteTeeth ring = teeth(80, true);
   ring.thickness_tolerance_m = 1.2e-6;
@@ -100,6 +106,52 @@ TEST(InvolutePair, AStandardDistanceBeyondTheToleranceIsNotUsed) {
   const PairPlacement pr = place_pair(a, ring, "t");
   EXPECT_NEAR(pr.centre_distance_m, fr.zero_backlash_centre_distance_m - fr.zero_backlash_tolerance_m, 1e-15);
   EXPECT_NE(pr.note.find("inside the flank fits' zero-backlash distance"), std::string::npos) << pr.note;
+}
+
+// FreeCAD 0.20's default exports of a sun z 12, planets z 18 and a ring z 48 (m 1 mm, 20°), as
+// their fits read: base radii 5.637244, 8.456415 and 22.552607 mm (0.91, 0.82 and 0.02 µm short
+// of m·z·cos α/2), flank rms ≤ 0.014 µm. The zero-backlash distances conflict by 0.62 µm
+// (sun–planet ≥ 15.00048 mm, planet–ring ≤ 14.99986 mm); the rms alone (0.06 µm) refused the set,
+// which runs at its standard 15 mm.
+TEST(InvolutePair, APlanetaryConflictWithinTheFitsToleranceIsMetAtTheStandardDistance) {
+  // The fits as `gearsim inspect` printed them (ccw and cw flanks): base radius (mm), base
+  // half-angle (°), rms (µm); involute_teeth(RecognisedGear) takes the means and the tolerances.
+  auto fitted = [](int z, bool internal, double rb_ccw, double rb_cw, double half_ccw, double half_cw, double rms_ccw,
+                   double rms_cw, double tip_mm) {
+    InvoluteTeeth t = teeth(z, internal);
+    t.base_radius_m = 0.5e-3 * (rb_ccw + rb_cw);
+    t.base_half_angle_rad = 0.5 * (half_ccw + half_cw) * M_PI / 180;
+    t.tip_radius_m = tip_mm * 1e-3;
+    t.thickness_tolerance_m = (rms_ccw + rms_cw) * 1e-6;
+    t.base_radius_tolerance_m = std::max(0.5e-3 * std::abs(rb_ccw - rb_cw), std::abs(t.base_radius_m - 0.5e-3 * z * std::cos(kAlpha)));
+    return t;
+  };
+  const InvoluteTeeth sun = fitted(12, false, 5.63718609130974, 5.637301107598253, 8.35877916074773, 8.358205293587213,
+                                   0.0071004, 0.0135565, 7.0013693);
+  const InvoluteTeeth planet = fitted(18, false, 8.456408760864623, 8.456421265714154, 5.856313774955483, 5.856296280616414,
+                                      0.0050494, 0.0036857, 10.0011339);
+  const InvoluteTeeth ring = fitted(48, true, 22.55260655124676, 22.552606622995672, 1.0210282713010004, 1.021028339618041,
+                                    0.0003793, 0.0003186, 23.3999992);
+  const InvolutePair sp = involute_pair(sun, planet, 0.0, "t"), pr = involute_pair(planet, ring, 0.0, "t");
+  EXPECT_NEAR(sp.zero_backlash_centre_distance_m - pr.zero_backlash_centre_distance_m, 0.62e-6, 0.01e-6);  // the conflict
+  const PairPlacement p = place_planetary(sun, planet, ring);
+  EXPECT_EQ(p.centre_distance_m, 15e-3);
+  EXPECT_NE(p.note.find("placed at the standard distance 15 mm"), std::string::npos) << p.note;
+  // The same conflict with the base radii taken as exact: refused, naming it.
+  InvoluteTeeth s2 = sun, p2 = planet, r2 = ring;
+  s2.base_radius_tolerance_m = p2.base_radius_tolerance_m = r2.base_radius_tolerance_m = 0;
+  try {
+    place_planetary(s2, p2, r2);
+    ADD_FAILURE() << "a conflict beyond the tolerances was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no centre distance meshes both"), std::string::npos) << e.what();
+  }
+  // Teeth known exactly (generated gears) with backlash: midway, no note.
+  const InvoluteTeeth ts = thinned(teeth(12), 20e-6), tp = thinned(teeth(18), 20e-6), tr = thinned(teeth(48, true), 20e-6);
+  const PairPlacement mid = place_planetary(ts, tp, tr);
+  EXPECT_EQ(mid.centre_distance_m, 0.5 * (involute_pair(ts, tp, 0.0, "t").zero_backlash_centre_distance_m +
+                                          involute_pair(tp, tr, 0.0, "t").zero_backlash_centre_distance_m));
+  EXPECT_EQ(mid.note, "");
 }
 
 TEST(InvolutePair, TheStandardDistanceNeedsOneStandardModule) {

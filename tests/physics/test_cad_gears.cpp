@@ -329,14 +329,13 @@ TEST(CadGears, MeshesWithoutTeethOrCentreDistanceSetThemselvesUp) {
                                           involute_teeth(*s.bodies[1].mesh->recognised), 18e-3, "test");
   EXPECT_NEAR(at18.normal_backlash_m, 0.05e-3 * std::cos(20 * M_PI / 180), 1e-6);
   EXPECT_NEAR(p.zero_backlash_centre_distance_m, 18e-3 - at18.normal_backlash_m / (2 * std::sin(20 * M_PI / 180)), 2e-6);
-  // Placed not tighter than the flank fits can tell (place_pair): their rms (MCAD's vertices lie
-  // on the involutes: ~0.01 µm per flank) left as backlash, the distance moved out by it.
-  const double tolerance_m = involute_teeth(*s.bodies[0].mesh->recognised).thickness_tolerance_m +
-                             involute_teeth(*s.bodies[1].mesh->recognised).thickness_tolerance_m;
-  EXPECT_GT(tolerance_m, 0.0);
-  EXPECT_LT(tolerance_m, 0.1e-6);
-  EXPECT_NEAR(p.normal_backlash_m, tolerance_m, 1e-9);
+  // Placed not tighter than the flank fits can tell (place_pair): their tolerance (MCAD's vertices
+  // lie on the involutes: ~0.01 µm per flank; base radii within 0.5 µm of m·z·cos α/2) left as
+  // backlash: 2 sin α_w times the distance moved out.
+  EXPECT_GT(p.zero_backlash_tolerance_m, 0.0);
+  EXPECT_LT(p.zero_backlash_tolerance_m, 1.5e-6);
   EXPECT_NEAR(p.centre_distance_m - p.zero_backlash_centre_distance_m, p.zero_backlash_tolerance_m, 1e-15);
+  EXPECT_NEAR(p.normal_backlash_m, 2 * std::sin(p.operating_pressure_angle_rad) * p.zero_backlash_tolerance_m, 1e-10);
   EXPECT_NE(s.pair_tables[0].placement_note.find("outside the flank fits' zero-backlash distance"), std::string::npos)
       << s.pair_tables[0].placement_note;
   // Transverse contact ratio at 18 mm from the nominal tip and base circles: 1.511.
