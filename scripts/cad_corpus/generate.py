@@ -405,7 +405,7 @@ def build_freecad(c):
     tessellation, plus the finest driver with the default export's driven gear."""
     externals = [(20, 1, 18, 40), (20, 2, 24, 56), (20, 3, 17, 30), (14.5, 1, 32, 48), (14.5, 2, 36, 64),
                  (14.5, 3, 32, 40), (25, 1, 12, 30), (25, 2, 14, 45), (25, 3, 16, 24)]
-    internals = [(14.5, 1, 30, 80), (20, 1, 17, 40), (20, 2, 24, 60), (25, 3, 18, 45)]  # (α, m, z_pinion, z_ring)
+    internals = [(14.5, 1, 30, 80), (20, 1, 17, 40), (20, 1, 12, 24), (20, 2, 24, 60), (25, 3, 18, 45)]  # α, m, z_p, z_r
     planetary = [(20, 1, 20, 30, 80, 4), (14.5, 2, 32, 32, 96, 4), (25, 3, 14, 19, 52, 3)]  # α, m, z_s, z_p, z_r, N
     for pa, m, z1, z2 in externals:
         for tess in FC_ALL:

@@ -92,12 +92,14 @@ def reason_kind(why):
     """A failure's reason with its figures replaced by #, to group them. A prism refusal is told
     apart by the axis gearsim tried: every corpus mesh is modelled about z, so a normal along z
     means a vertex between the caps, any other normal an axis not found."""
-    m = re.search(r"face cluster's normal \(([^)]*)\)", why)
+    figures = lambda text: re.sub(r'[-+]?\d+(\.\d+)?(e[-+]?\d+)?', '#', text)  # noqa: E731
+    m = re.search(r"face cluster's normal \(([^)]*)\):? ?(.*)", why)
     if m:
         n = [float(x) for x in m.group(1).split(',')]
-        return ('not a prism along z, the true axis: a vertex between the caps' if abs(n[2]) > 0.999 else
-                'not a prism along a wrong axis (normal off z): the caps not found')
-    return re.sub(r'[-+]?\d+(\.\d+)?(e[-+]?\d+)?', '#', why)[:140]
+        if abs(n[2]) > 0.999:
+            return 'not a prism along z, the true axis (a vertex between the caps): ' + figures(m.group(2))[:100]
+        return 'not a prism along a wrong axis (normal off z): the caps not found'
+    return figures(why)[:140]
 
 
 def main(argv):

@@ -18,7 +18,7 @@ with T_c = F·N·r_b,sun·(1 + z_r/z_s), so that each of the 2N meshes carries F
 sun–planet meshes' drive-flank minus back-flank forces sum to N·F within 3 %, the planet–ring
 meshes' too, the ratio is within 0.1 % of 1 + z_r/z_s, no contact dropped and the deepest
 contact is ≤ F/k + 2 µm. --recognise leaves out the meshes' teeth and tooth 0 and the set's
-centre_distance_m (gearsim places the planets midway between the two zero-backlash distances).
+centre_distance_m (gearsim places the planets from the two meshes' zero-backlash distances).
 --filter SUBSTR keeps the pairs and sets whose id holds SUBSTR, --family PREFIX those whose
 family starts with PREFIX (e.g. freecad).
 
@@ -379,7 +379,8 @@ def _num(s):
 def _message_kind(msg):
     """The message with its figures replaced by #: groups refusals of the same kind."""
     msg = re.sub(r'^\S*scenario\.yaml:\d+:\d+: ', '', msg.replace('gearsim: error: ', ''))
-    return re.sub(r'[-+]?\d+(\.\d+)?(e[-+]?\d+)?', '#', msg)[:160]
+    msg = re.sub(r'\S*\.(stl|obj|ply)\b', 'FILE', msg)
+    return re.sub(r'[-+]?\d+(\.\d+)?(e[-+]?\d+)?', '#', msg)[:200]
 
 
 def _table(rows, cols):
