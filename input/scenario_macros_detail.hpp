@@ -42,13 +42,16 @@ struct PlanetaryMembers {
   std::vector<physics::BodyDef> planets;        // planet_0..: the spec's faulty ones in their place
   std::optional<PlanetarySpec> spec;            // spec members
   std::filesystem::path spec_file;
-  InvoluteTeeth sun_teeth, planet_teeth, ring_teeth;  // shape members
+  // Shape members' involutes: all three, or none when a member's flanks are not recognised
+  // involutes (then centre_distance_m is required and the start checks alone judge the meshes).
+  std::optional<InvoluteTeeth> sun_teeth, planet_teeth, ring_teeth;
   int count = 0;
 };
 
 // From a gear-set spec: m["spec"] relative to dir, members named in it (defaulting to its planetary train).
 PlanetaryMembers members_from_spec(const YamlMap& m, const std::filesystem::path& dir);
-// From shapes: sun, planet and ring as mappings, each with teeth and recognised involutes.
+// From shapes: sun, planet and ring as mappings, each with teeth; their recognised involutes, or
+// without them a given centre_distance_m.
 PlanetaryMembers members_from_shapes(const YamlMap& m, const std::filesystem::path& dir);
 
 }  // namespace gearsim::input::scenario_detail

@@ -30,21 +30,23 @@ PlanetaryGeometry shapes_geometry(const YamlMap& m, const PlanetaryMembers& s, s
   double a = derived ? 0.0 : number_within(m, "centre_distance_m", limits::kCentreDistance_m);
   std::string note;
   if (derived) try {
-      const PairPlacement placed = place_planetary(s.sun_teeth, s.planet_teeth, s.ring_teeth);
+      const PairPlacement placed = place_planetary(*s.sun_teeth, *s.planet_teeth, *s.ring_teeth);
       a = placed.centre_distance_m;
       note = placed.note;
     } catch (const InputError& e) {
       m.fail("ring", e.what());
     }
-  tables.push_back(checked_pair_table(m, "sun", "planet_0", s.sun_teeth, s.planet_teeth, a, derived, "ring"));
-  tables.push_back(checked_pair_table(m, "planet_0", "ring", s.planet_teeth, s.ring_teeth, a, derived, "ring"));
-  tables.front().placement_note = note;
+  if (s.sun_teeth) {  // else the start checks alone judge the meshes (as the pair macro's)
+    tables.push_back(checked_pair_table(m, "sun", "planet_0", *s.sun_teeth, *s.planet_teeth, a, derived, "ring"));
+    tables.push_back(checked_pair_table(m, "planet_0", "ring", *s.planet_teeth, *s.ring_teeth, a, derived, "ring"));
+    tables.front().placement_note = note;
+  }
   PlanetaryGeometry g;
   g.centre_distance_m = a;
-  g.ratio_sun_to_carrier = 1.0 + static_cast<double>(s.ring_teeth.teeth) / s.sun_teeth.teeth;
+  g.ratio_sun_to_carrier = 1.0 + static_cast<double>(teeth_of(s.ring)) / teeth_of(s.sun);
   const double planet_tip_m = s.planet.gear ? gear_dimensions(*s.planet.gear).tip_radius_m : s.planet.mesh->recognised->tip_radius_m;
   g.adjacency_clearance_m = 2 * a * std::sin(kPi / s.count) - 2 * planet_tip_m;
-  phase_planetary({s.sun_teeth.teeth, s.planet_teeth.teeth, s.ring_teeth.teeth, s.count, tooth0_of_member(s.sun),
+  phase_planetary({teeth_of(s.sun), teeth_of(s.planet), teeth_of(s.ring), s.count, tooth0_of_member(s.sun),
                    tooth0_of_member(s.planet), tooth0_of_member(s.ring)},
                   g);
   return g;

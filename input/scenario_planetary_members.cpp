@@ -85,12 +85,13 @@ physics::BodyDef shape_member(const YamlMap& m, const std::string& key, bool int
   return b;
 }
 
-// The involutes of a member, refused naming it when its mesh shows none.
-InvoluteTeeth member_involutes(const YamlMap& m, const std::string& key, const physics::BodyDef& b) {
+// The involutes of a member; without them the set needs its centre distance, refused naming the
+// member when not given.
+std::optional<InvoluteTeeth> member_involutes(const YamlMap& m, const std::string& key, const physics::BodyDef& b) {
   std::string why;
   const std::optional<InvoluteTeeth> t = involutes_of(b, why);
-  if (!t) m.fail(key, why + ", so the set's meshes cannot be checked or placed");
-  return *t;
+  if (!t && !m.has("centre_distance_m")) m.fail(key, why + ", so the centre distance cannot be derived: give centre_distance_m");
+  return t;
 }
 
 }  // namespace
@@ -124,6 +125,7 @@ PlanetaryMembers members_from_shapes(const YamlMap& m, const fs::path& dir) {
   s.sun_teeth = member_involutes(m, "sun", s.sun);
   s.planet_teeth = member_involutes(m, "planet", s.planet);
   s.ring_teeth = member_involutes(m, "ring", s.ring);
+  if (!s.sun_teeth || !s.planet_teeth || !s.ring_teeth) s.sun_teeth = s.planet_teeth = s.ring_teeth = std::nullopt;
   for (int k = 0; k < s.count; ++k) {
     s.planets.push_back(s.planet);
     s.planets.back().name = "planet_" + std::to_string(k);
