@@ -144,7 +144,7 @@ std::size_t samples_from(const std::vector<double>& time_s, double from_s) {
   return static_cast<std::size_t>(std::count_if(time_s.begin(), time_s.end(), [&](double t) { return t >= from_s; }));
 }
 
-RunAnalysis analyse_run(const RunSignals& s, const TrainDescription& train) {
+RunAnalysis analyze_signals(const RunSignals& s, const TrainDescription& train) {
   check_signals(s);
   // The window and its sample rate.
   const std::vector<double> tw = window(s.time_s, s.time_s, s.from_s);

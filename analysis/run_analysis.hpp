@@ -51,6 +51,6 @@ std::size_t samples_from(const std::vector<double>& time_s, double from_s);
 // from_s on, a non-uniform time base, no gear pair, a series whose length differs from time_s,
 // the angle of a planet or counted gear not among the signals; and as analyse_pair_force,
 // synchronous_teeth and tooth_loads.
-RunAnalysis analyse_run(const RunSignals& signals, const TrainDescription& train);
+RunAnalysis analyze_signals(const RunSignals& signals, const TrainDescription& train);
 
 }  // namespace gearsim

@@ -56,7 +56,7 @@ void register_analyze(CLI::App& app) {
   sub->callback([dir, from] {
     const OutputFolder folder(*dir, "gearsim analyze");
     const RunDir run = open_run_dir(*dir);
-    print_analysis(analyze_run(run, {*from}), std::cout);
+    print_analysis(write_run_analysis(run, {*from}), std::cout);
     std::cout << "written: " << (run.dir / "analysis.json").string() << "\n";
   });
 }

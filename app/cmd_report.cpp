@@ -19,7 +19,7 @@ namespace {
 // The run folder, analysed afresh (about a second): the report always shows the analysis of
 // this build, never a stale one.
 RunDir analysed(const std::string& dir) {
-  analyze_run(open_run_dir(dir));
+  write_run_analysis(open_run_dir(dir));
   return open_run_dir(dir);
 }
 

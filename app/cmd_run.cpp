@@ -91,7 +91,7 @@ void run(const RunOptions& o) {
   // The analysis and the scenario's renders of the finished run; a run too short (or of a train
   // the analysis does not know) keeps its logs and says why it was not analysed or rendered.
   if (!o.no_analyze) try {
-      print_analysis(analyze_run(open_run_dir(dir)), std::cout);
+      print_analysis(write_run_analysis(open_run_dir(dir)), std::cout);
     } catch (const InputError& e) {
       std::cout << "not analysed: " << e.what() << "\n";
     }

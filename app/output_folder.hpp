@@ -44,7 +44,7 @@ class OutputFolder {
 };
 
 // Adds the names to DIR's manifest before they are written, for code that writes into a folder
-// its caller holds (analyze_run() inside run, report and the Python module).
+// its caller holds (write_run_analysis() inside run, report and the Python module).
 void declare_outputs(const std::filesystem::path& dir, const std::vector<std::string>& names);
 
 }  // namespace gearsim::app

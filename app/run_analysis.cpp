@@ -231,7 +231,7 @@ std::vector<TrainDescription::LoadedFlank> loaded_flanks(const RunDir& run) {
   return out;
 }
 
-RunAnalysis analyse_run_dir(const RunDir& run, const AnalyzeOptions& o) {
+RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
   TrainDescription description = train_description(input::gear_train_of(s), s);
   gear_pairs_of(run);  // checks the list's shape first
@@ -243,13 +243,13 @@ RunAnalysis analyse_run_dir(const RunDir& run, const AnalyzeOptions& o) {
     throw InputError("--from " + std::to_string(from_s) + ": the run's anti-aliased force holds its start value until t = " +
                      std::to_string(edge) + " s (summary.json force_filter.edge_held_s); expected a start at or after it");
   if (from_s < 0) from_s = std::max(physics::ramps_end_s(s), edge);
-  return analyse_run(run_signals(run, description, from_s), description);
+  return analyze_signals(run_signals(run, description, from_s), description);
 }
 
-json analyze_run(const RunDir& run, const AnalyzeOptions& o) {
+json write_run_analysis(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
   const input::GearTrain train = input::gear_train_of(s);
-  const RunAnalysis a = analyse_run_dir(run, o);
+  const RunAnalysis a = analyze_run_dir(run, o);
   const json j = analysis_json(a, train, s.name);
   declare_outputs(run.dir, {"analysis.json", "spectrum.csv", "sidebands.csv", "teeth.csv", "summary.json"});
   write_output_file(run.dir / "analysis.json", j.dump(2) + "\n", Durability::Record);

@@ -3,7 +3,8 @@
 // forces contacts.csv's a__b_force_N columns, the angles and TE state.csv's, the tooth contacts
 // steps.h5's. The result is written as DIR/analysis.json (analysis_json.hpp), spectrum.csv,
 // sidebands.csv, teeth.csv and the analysis keys of summary.json (analysis_outputs.hpp); returns
-// the JSON. Prints nothing.
+// the JSON. Prints nothing. (analyze_run_dir: the same analysis typed, nothing written;
+// analysis::analyze_signals: the analysis of signals already read.)
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -18,11 +19,11 @@ struct AnalyzeOptions {
   double from_s = -1;
 };
 
-nlohmann::ordered_json analyze_run(const RunDir& run, const AnalyzeOptions& options = {});
+nlohmann::ordered_json write_run_analysis(const RunDir& run, const AnalyzeOptions& options = {});
 
 // The same analysis as a typed result, writing nothing (e.g. for a sweep's metrics): the window
 // from the end of the ramps (or the force filter's edge, or options.from_s) to the end of the
-// record less the filter's edge, as analyze_run takes it. InputError as analyze_run.
-RunAnalysis analyse_run_dir(const RunDir& run, const AnalyzeOptions& options = {});
+// record less the filter's edge, as write_run_analysis takes it. InputError as write_run_analysis.
+RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& options = {});
 
 }  // namespace gearsim::app

@@ -65,7 +65,7 @@ json collect_case_metrics(const std::filesystem::path& case_dir, const input::Sw
   // Only mesh_frequency_hz needs no analysis of the logs.
   std::optional<RunAnalysis> a;
   for (const std::string& name : c.metrics) {
-    if (!a && name != "mesh_frequency_hz") a = analyse_run_dir(run);
+    if (!a && name != "mesh_frequency_hz") a = analyze_run_dir(run);
     add_named_metric(m, name, run, a ? *a : RunAnalysis{});
   }
   return m;

@@ -56,7 +56,7 @@ py::object analyze(const std::filesystem::path& run_dir, std::optional<double> f
     o.from_s = *from_s;
   }
   const app::OutputFolder folder(run_dir, "gearsim.analyze (Python)");
-  py::dict analysis = to_python(app::analyze_run(app::open_run_dir(run_dir), o)).cast<py::dict>();
+  py::dict analysis = to_python(app::write_run_analysis(app::open_run_dir(run_dir), o)).cast<py::dict>();
   analysis["spectrum"] = read_csv_columns(run_dir / "spectrum.csv");
   return analysis;
 }

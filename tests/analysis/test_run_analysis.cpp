@@ -83,7 +83,7 @@ const Sideband* sideband_at(const MeshHarmonic& h, double offset_hz) {
 }
 
 TEST(RunAnalysis, MeshHarmonicsReadTheirAmplitudesAtKTimesTheMeshFrequency) {
-  const RunAnalysis r = analyse_run(synthetic_run(), paper_like_train());
+  const RunAnalysis r = analyze_signals(synthetic_run(), paper_like_train());
   const PairForceAnalysis& p = r.pairs.at(0);
   const double amplitude[] = {10.0, 5.0, 2.0};
   ASSERT_EQ(p.mesh.harmonics.size(), 3u);
@@ -100,7 +100,7 @@ TEST(RunAnalysis, HarmonicsStandOverTheNoiseFloorByTheirRatioToIt) {
   // The 0–1000 Hz floor is the median Hann amplitude of the noise: Rayleigh, median
   // √(ln 2 · 6σ²/N) = 0.0451·σ for N = 2048. Its sample median over ~1000 independent bins is
   // good to a few percent: 1 dB.
-  const RunAnalysis r = analyse_run(synthetic_run(), paper_like_train());
+  const RunAnalysis r = analyze_signals(synthetic_run(), paper_like_train());
   const PairForceAnalysis& p = r.pairs.at(0);
   const double floor = std::sqrt(std::log(2.0) * 6.0 / kSamples) * kSigma;
   EXPECT_NEAR(20 * std::log10(p.floor_N / floor), 0.0, 1.0);
@@ -111,7 +111,7 @@ TEST(RunAnalysis, HarmonicsStandOverTheNoiseFloorByTheirRatioToIt) {
 TEST(RunAnalysis, SidebandsOfThePlanetFaultAreMatchedAndRead) {
   // (A + 2B·cos 2πf_f t)·cos 2πf_m t = A·cos 2πf_m t + B·cos 2π(f_m ± f_f)t: both sidebands at
   // B = 1 N, 20·log10(1/10) = −20 dB re the harmonic, matched to 1×planet_fault.
-  const RunAnalysis r = analyse_run(synthetic_run(), paper_like_train());
+  const RunAnalysis r = analyze_signals(synthetic_run(), paper_like_train());
   const MeshHarmonic& h = r.pairs.at(0).mesh.harmonics.at(0);
   for (const double offset : {-kFault, kFault}) {
     const Sideband* b = sideband_at(h, offset);
@@ -125,7 +125,7 @@ TEST(RunAnalysis, SidebandsOfThePlanetFaultAreMatchedAndRead) {
 }
 
 TEST(RunAnalysis, PlanetFaultFamilyReadsItsLinesAndNothingWhereThereIsNone) {
-  const RunAnalysis r = analyse_run(synthetic_run(), paper_like_train());
+  const RunAnalysis r = analyze_signals(synthetic_run(), paper_like_train());
   const std::vector<FaultLine>& family = r.pairs.at(0).planet_fault_family;
   ASSERT_EQ(family.size(), 5u);
   const double amplitude[] = {0.8, 0.4};
@@ -146,7 +146,7 @@ TEST(RunAnalysis, MeanForceAndZeroShareOfAPairOutOfContactAQuarterOfTheTime) {
   // 2 samples of every 8 carry no force, the others 100 N: share 1/4, mean 75 N, exactly.
   RunSignals s = synthetic_run();
   for (std::size_t n = 0; n < kSamples; ++n) s.pair_forces[1].force_N[n] = n % 8 < 2 ? 0.0 : 100.0;
-  const RunAnalysis r = analyse_run(s, paper_like_train());  // kept: p refers into it
+  const RunAnalysis r = analyze_signals(s, paper_like_train());  // kept: p refers into it
   const PairForceAnalysis& p = r.pairs.at(1);
   EXPECT_EQ(p.zero_force_share, 0.25);
   EXPECT_NEAR(p.mean_force_N, 75.0, 1e-12);
@@ -160,7 +160,7 @@ TEST(RunAnalysis, DynamicFactorIsPeakOverMeanOfTheWindow) {
   s.pair_forces[1].force_N[kSamples / 2] = 180.0;
   s.from_s = s.time_s[1];
   s.pair_forces[1].force_N[0] = 900.0;
-  const RunAnalysis r = analyse_run(s, paper_like_train());  // kept: p refers into it
+  const RunAnalysis r = analyze_signals(s, paper_like_train());  // kept: p refers into it
   const PairForceAnalysis& p = r.pairs.at(1);
   const double n = static_cast<double>(kSamples - 1), mean = (100.0 * (n - 1) + 180.0) / n;
   EXPECT_EQ(p.peak_force_N, 180.0);
@@ -177,13 +177,13 @@ TEST(RunAnalysis, ZeroShareIsCountedOnThePointSamplesWhenTheForceWasFiltered) {
     pf.point_force_N[n] = n % 4 == 0 ? 0.0 : 100.0;
     pf.force_N[n] = 75.0 + 1e-3 * std::sin(0.1 * static_cast<double>(n));
   }
-  const RunAnalysis r = analyse_run(s, paper_like_train());  // kept: p refers into it
+  const RunAnalysis r = analyze_signals(s, paper_like_train());  // kept: p refers into it
   const PairForceAnalysis& p = r.pairs.at(1);
   EXPECT_EQ(p.zero_force_share, 0.25);
   EXPECT_NEAR(p.mean_force_N, 75.0, 1e-3);
   pf.point_force_N.pop_back();  // a point series of another length is refused, naming the pair
   try {
-    analyse_run(s, paper_like_train());
+    analyze_signals(s, paper_like_train());
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("point-sampled force of pair planet_0–ring"), std::string::npos) << e.what();
@@ -192,12 +192,12 @@ TEST(RunAnalysis, ZeroShareIsCountedOnThePointSamplesWhenTheForceWasFiltered) {
 
 TEST(RunAnalysis, MeanForceIsTheForceAveragedOverTheWindow) {
   // 120 N plus whole periods of every tone (they average to zero) plus noise of mean σ/√N·ξ.
-  const RunAnalysis r = analyse_run(synthetic_run(), paper_like_train());
+  const RunAnalysis r = analyze_signals(synthetic_run(), paper_like_train());
   EXPECT_NEAR(r.pairs.at(0).mean_force_N, 120.0, 5 * kSigma / std::sqrt(kSamples));
 }
 
 TEST(RunAnalysis, PairsKeepTheirIdentityAndOrder) {
-  const RunAnalysis r = analyse_run(synthetic_run(), paper_like_train());
+  const RunAnalysis r = analyze_signals(synthetic_run(), paper_like_train());
   ASSERT_EQ(r.pairs.size(), 2u);
   EXPECT_EQ(r.pairs[0].pair, (PairId{"sun", "planet_0"}));
   EXPECT_EQ(r.pairs[1].pair, (PairId{"planet_0", "ring"}));
@@ -210,7 +210,7 @@ TEST(RunAnalysis, PairsKeepTheirIdentityAndOrder) {
 TEST(RunAnalysis, WindowStartsAtFromAndTheRateIsTheSamples) {
   RunSignals s = synthetic_run();
   s.from_s = 0.25;  // sample 512 exactly
-  const RunAnalysis r = analyse_run(s, paper_like_train());
+  const RunAnalysis r = analyze_signals(s, paper_like_train());
   EXPECT_EQ(r.from_s, 0.25);
   EXPECT_EQ(r.to_s, 2047.0 / kFs);
   EXPECT_NEAR(r.sample_rate_hz, kFs, 1e-9);
@@ -228,7 +228,7 @@ TEST(RunAnalysis, TransmissionErrorStatisticsCoverOnlyTheWindow) {
   for (std::size_t n = 0; n < kSamples; ++n)
     te[n] = n < 512 ? 1e-3 : kC + kA * std::sin(kTwoPi * 256.0 * s.time_s[n]);
   s.te = transmission_error_series(s.time_s, te, 5.0);
-  const RunAnalysis r = analyse_run(s, paper_like_train());
+  const RunAnalysis r = analyze_signals(s, paper_like_train());
   ASSERT_TRUE(r.te);
   EXPECT_NEAR(r.te->rad.mean, kC, 1e-15);
   EXPECT_NEAR(r.te->rad.min, kC - kA, 1e-15);
@@ -240,7 +240,7 @@ TEST(RunAnalysis, TransmissionErrorStatisticsCoverOnlyTheWindow) {
 TEST(RunAnalysis, AGearPairHasNoFaultFamilyAndNoSynchronousAverage) {
   TrainDescription pair;
   pair.frequencies = gear_pair_frequencies({24, 36, 12 * kTwoPi, 3});  // f_m = 24·12 = 288 Hz
-  const RunAnalysis r = analyse_run(synthetic_run(), pair);
+  const RunAnalysis r = analyze_signals(synthetic_run(), pair);
   EXPECT_TRUE(r.pairs.at(0).planet_fault_family.empty());
   EXPECT_FALSE(r.synchronous);
   EXPECT_FALSE(r.tooth_loads);
@@ -253,12 +253,12 @@ TEST(RunAnalysis, AGearPairHasNoFaultFamilyAndNoSynchronousAverage) {
 TEST(RunAnalysis, APlanetTurningLessThanOnceHasNoSynchronousAverageAndSaysWhy) {
   RunSignals s = synthetic_run();
   for (double& a : s.angles[0].angle_rad) a *= 0.1 / (kFault * s.time_s.back());  // 0.1 turn in the record
-  const RunAnalysis r = analyse_run(s, paper_like_train());
+  const RunAnalysis r = analyze_signals(s, paper_like_train());
   ASSERT_TRUE(r.synchronous);
   EXPECT_TRUE(r.synchronous->empty());
   EXPECT_NE(r.synchronous_note.find("less than one whole turn of planet_0"), std::string::npos) << r.synchronous_note;
   EXPECT_FALSE(r.pairs.at(0).mesh.harmonics.empty());
-  const RunAnalysis full = analyse_run(synthetic_run(), paper_like_train());
+  const RunAnalysis full = analyze_signals(synthetic_run(), paper_like_train());
   ASSERT_TRUE(full.synchronous);
   EXPECT_EQ(full.synchronous->size(), 1u);
   EXPECT_TRUE(full.synchronous_note.empty());
@@ -268,7 +268,7 @@ TEST(RunAnalysis, TooFewSamplesInTheWindowAreRefused) {
   RunSignals s = synthetic_run();
   s.from_s = 2000.0 / kFs;  // 48 samples left
   try {
-    analyse_run(s, paper_like_train());
+    analyze_signals(s, paper_like_train());
     FAIL() << "accepted 48 samples";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("only 48 output samples"), std::string::npos) << e.what();
@@ -278,14 +278,14 @@ TEST(RunAnalysis, TooFewSamplesInTheWindowAreRefused) {
 TEST(RunAnalysis, ARunWithoutGearPairsIsRefused) {
   RunSignals s = synthetic_run();
   s.pair_forces.clear();
-  EXPECT_THROW(analyse_run(s, paper_like_train()), InputError);
+  EXPECT_THROW(analyze_signals(s, paper_like_train()), InputError);
 }
 
 TEST(RunAnalysis, AMissingPlanetAngleIsNamed) {
   RunSignals s = synthetic_run();
   s.angles.clear();
   try {
-    analyse_run(s, paper_like_train());
+    analyze_signals(s, paper_like_train());
     FAIL() << "analysed a planet without its angle";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("'planet_0'"), std::string::npos) << e.what();
@@ -296,7 +296,7 @@ TEST(RunAnalysis, AForceOfTheWrongLengthIsNamedByItsPair) {
   RunSignals s = synthetic_run();
   s.pair_forces[1].force_N.pop_back();
   try {
-    analyse_run(s, paper_like_train());
+    analyze_signals(s, paper_like_train());
     FAIL() << "accepted a short force record";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("planet_0–ring"), std::string::npos) << e.what();

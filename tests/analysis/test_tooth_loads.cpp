@@ -119,7 +119,7 @@ TEST(RunAnalysisToothLoads, ThePlanetIsCountedInEachOfItsMeshesAndNothingElse) {
   TrainDescription train;
   train.frequencies = gear_pair_frequencies({24, 36, 10.0, 3});
   train.counted_gears = {{"planet_0", kTeeth}};
-  const RunAnalysis r = analyse_run(s, train);
+  const RunAnalysis r = analyze_signals(s, train);
   ASSERT_TRUE(r.tooth_loads);
   ASSERT_EQ(r.tooth_loads->size(), 2u);
   EXPECT_EQ(r.tooth_loads->at(0).pair, (PairId{"sun", "planet_0"}));
