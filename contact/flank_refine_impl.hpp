@@ -200,10 +200,10 @@ double foot_turning(const FlankTable& yt, int j, Flank g, const Vector2d& q, dou
 // flank turns sharply: a corner of the outline, which the flank tables keep within a vertex
 // spacing (FreeCAD's ring tip lands meet the flanks so). Where the corner is y's, x's point found
 // by golden section faces it with y's normal at the foot, one side's of the corner, not the
-// direction the overlap grows along as the corner slides on x's flank: a ring's tip corner low
-// on a pinion's flank was measured along the tip land's normal (a lever of 2.7–5.8 mm about the
-// pinion, r_b 14.5 mm), and the contact row, taking the sliding for approach, pushed 5–20× its
-// spring. So the overlap is measured from y's side too — the deepest point of y's flank inside x
+// direction the overlap grows along as the corner slides on x's flank (for a ring's tip corner
+// low on a pinion's flank, the tip land's normal has a lever of 2.7–5.8 mm about the pinion,
+// r_b 14.5 mm): a contact row on it takes the sliding for approach and pushes 5–20× its spring.
+// So the overlap is measured from y's side too — the deepest point of y's flank inside x
 // near the foot, by golden section, along x's normal at its foot — and kept where y's flank turns
 // by more than 20° about its foot (over half of y's probe spacing either side: a corner) and x's
 // less than a tenth as much about its own: a corner in a smooth flank is measured along the

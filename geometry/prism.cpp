@@ -28,6 +28,9 @@ constexpr double kAxisBin_rad = 1e-3;
 // At most this many candidate axes are tried, largest face area first.
 constexpr int kMaxAxisCandidates = 64;
 
+// Hash of a cell of a 2D grid (welding and the wall-vertex grid).
+std::uint64_t key(std::int64_t x, std::int64_t y) { return std::uint64_t(x) * 73856093u ^ std::uint64_t(y) * 19349663u; }
+
 double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 std::string fmt(double v) {
@@ -203,9 +206,6 @@ Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>&
   add(outline.outer);
   for (const Polygon2& h : outline.holes) add(h);
   const double cell = std::max({length / static_cast<double>(edges.size()), 4 * tol, 1e-6 * length});
-  auto key = [](std::int64_t x, std::int64_t y) {
-    return std::uint64_t(x) * 73856093u ^ std::uint64_t(y) * 19349663u;
-  };
   auto to_cell = [&](double v) { return static_cast<std::int64_t>(std::floor(v / cell)); };
   std::unordered_map<std::uint64_t, std::vector<int>> grid;
   for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -296,9 +296,6 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
   std::unordered_map<std::uint64_t, std::vector<int>> cells;
   std::vector<int> weld(nv, -1);
   std::vector<Vec2> welded;
-  auto key = [](std::int64_t x, std::int64_t y) {
-    return std::uint64_t(x) * 73856093u ^ std::uint64_t(y) * 19349663u;
-  };
   auto weld_id = [&](std::uint32_t v) {
     if (weld[v] >= 0) return weld[v];
     const auto cx = static_cast<std::int64_t>(std::floor(uv[v].x() / tol));
