@@ -33,8 +33,11 @@ void read_as_scenario_does(const std::filesystem::path& file, LengthUnit unit) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const fuzz::InputFolder folder("mesh");
   if (size < 1) return 0;
-  const bool obj = data[0] & 1;
-  const LengthUnit unit = kUnits[(data[0] >> 1) % 3];
+  // One input in eight is OBJ (low bits 001): Assimp's OBJ importer allocates and fills a 16 MiB
+  // line buffer per file (IOStreamBuffer), which costs ~80 ms a file under ASan here (5 800 page
+  // faults) against ~7 ms for an STL; the meshes' own checks downstream are the same for both.
+  const bool obj = (data[0] & 7) == 1;
+  const LengthUnit unit = kUnits[(data[0] >> 3) % 3];
   const std::filesystem::path file = folder.write(obj ? "input.obj" : "input.stl", data + 1, size - 1);
   try {
     read_as_scenario_does(file, unit);

@@ -131,6 +131,47 @@ constexpr Limit kMass_kg{1e-9, 1e6, false, "kg", "a mass"};
 // Principal moment of inertia, kg·m²: 1e-18 is 1 µg at 1 µm; 1e9 is 1e6 kg at a 30 m radius.
 constexpr Limit kInertia_kg_m2{1e-18, 1e9, false, "kg·m²", "a moment of inertia"};
 
+// Drives, loads, contact and supports: the physics a run is set up with. Each bound sits where a
+// value beyond it would leave the run's own physical bounds (sim/run_bounds.hpp) at the first steps
+// or is beyond any gearbox built.
+// Motor target speed, rad/s (either sense): a run stops as diverged above 2e4 rad/s (RunBoundsDef).
+constexpr Limit kMotorSpeed_rad_s{-2e4, 2e4, false, "rad/s", "a motor speed"};
+// Torques, N·m (either sense): a 15 MW wind turbine's main shaft carries ~2e7 N·m; 1e8 is five
+// times that.
+constexpr Limit kTorque_N_m{-1e8, 1e8, false, "N·m", "a torque"};
+// A motor's torque limit, N·m: positive, up to the largest torque (kTorque_N_m).
+constexpr Limit kMaxTorque_N_m{0, 1e8, true, "N·m", "a torque limit"};
+// Viscous load coefficient, N·m·s/rad: 1e8 opposes the largest torque at 1 rad/s.
+constexpr Limit kViscous_N_m_s_per_rad{0, 1e8, false, "N·m·s/rad", "a viscous coefficient"};
+// Impulse forces, N (each component, either sense): 1e9 N is far past any blow a gearbox takes.
+constexpr Limit kImpulseForce_N{-1e9, 1e9, false, "N", "a force component"};
+// Tooth contact stiffness per metre of face, N/m per m: ISO 6336's c' for steel is ~1.4e10; 1e13
+// is 700 times that (an ever stiffer spring only shortens the stable step).
+constexpr Limit kContactStiffness_N_per_m_per_m{0, 1e13, true, "N/m per m", "a contact stiffness"};
+// Stiffnesses of a whole mesh or gear body, and radial bearing stiffness, N/m: a large roller
+// bearing or mesh is 1e9–1e10 N/m; 1e13 is a thousand times that.
+constexpr Limit kStiffness_N_per_m{0, 1e13, true, "N/m", "a stiffness"};
+// Translational damping, N·s/m: critical damping of 1e6 kg on 1e13 N/m is ~6e9.
+constexpr Limit kDamping_N_s_per_m{0, 1e10, false, "N·s/m", "a damping"};
+// Torsional support stiffness, N·m/rad (0: free to turn): a 1 m steel shaft of 1 m diameter is ~8e9.
+constexpr Limit kTorsionalStiffness_N_m_per_rad{0, 1e12, false, "N·m/rad", "a torsional stiffness"};
+// Torsional damping, N·m·s/rad.
+constexpr Limit kTorsionalDamping_N_m_s_per_rad{0, 1e10, false, "N·m·s/rad", "a torsional damping"};
+// Damping ratios ζ: 1 is critical; 10 stops any vibration within a fraction of a period.
+constexpr Limit kDampingRatio{0, 10, false, "", "a damping ratio"};
+// Coulomb friction coefficient: dry steel on steel is 0.6–0.8; 2 is past any metal pair.
+constexpr Limit kFriction{0, 2, false, "", "a friction coefficient"};
+// How far a contact may lie off a tabulated flank and still count, m: a module-1 tooth is 2.25 mm
+// high; 10 mm is past any tooth's own height at module 4.
+constexpr Limit kFlankDeparture_m{0, 1e-2, true, "m", "a flank departure"};
+// A transmission's nominal ratio θ_input/θ_output, in magnitude (either sign, never 0): 1e6 is
+// past any train of gears.
+constexpr Limit kRatioMagnitude{1e-6, 1e6, false, "", "a ratio's magnitude"};
+// A sensor's path gain of the other meshes, relative to the nearest (1 = as loud).
+constexpr Limit kPathGain{0, 100, false, "", "a path gain"};
+// Measurement noise rms, m/s²: 1e6 m/s² is 1e5 g.
+constexpr Limit kNoise_m_s2{0, 1e6, false, "m/s²", "a noise rms"};
+
 // Rates and frequencies a run records, Hz (output and filter rates, band edges): none exceeds the
 // step rate at the shortest time step, 1/kTimeStep_s.min = 1e7 Hz.
 constexpr Limit kRate_Hz{0, 1e7, true, "Hz", "a rate"};

@@ -33,7 +33,8 @@ physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& s) {
 
   // Torque: given, or the carrier's constant load reflected to the sun through the ratio.
   if (const auto t = m.optional_number("sun_torque_N_m")) {
-    if (!(*t > 0)) m.fail("sun_torque_N_m", "expected a positive input torque on the sun in N·m (it drives, +z)");
+    if (!(*t > 0) || !within(*t, limits::kTorque_N_m))
+      m.fail("sun_torque_N_m", "expected a positive input torque on the sun (it drives, +z): " + limit_message(limits::kMaxTorque_N_m, *t));
     f.sun_torque_N_m = *t;
     f.torque_source = "fe.sun_torque_N_m";
   } else {

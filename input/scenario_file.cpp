@@ -67,15 +67,6 @@ physics::BodyDef parse_body(const YamlMap& m, const fs::path& dir) {
   return b;
 }
 
-double positive_or(const YamlMap& m, const std::string& key, double fallback, const std::string& what) {
-  return m.has(key) ? positive(m, key, what) : m.number_or(key, fallback);
-}
-double non_negative_or(const YamlMap& m, const std::string& key, double fallback, const std::string& what) {
-  const double v = m.number_or(key, fallback);
-  if (v < 0) m.fail(key, "expected " + what + " ≥ 0, got " + m.string(key));
-  return v;
-}
-
 // Every name the scenario defines so far, for duplicate and reference checks.
 struct Names {
   std::map<std::string, const physics::BodyDef*> bodies;
@@ -137,7 +128,12 @@ physics::ImpulseDef parse_impulse(const YamlMap& m, const Names& names, const ph
     m.fail("duration_s", "a pulse shorter than one time step (" + std::to_string(s.solver.time_step_s) + " s) would be missed or taken whole");
   i.force_N = vec3_or(m, "force_N", Eigen::Vector3d::Zero());
   i.torque_N_m = vec3_or(m, "torque_N_m", Eigen::Vector3d::Zero());
-  if (!i.force_N.allFinite() || !i.torque_N_m.allFinite()) m.fail_here("expected finite force_N and torque_N_m");
+  for (int k = 0; k < 3; ++k) {
+    if (!within(i.force_N[k], limits::kImpulseForce_N))
+      m.fail("force_N", std::string(1, "xyz"[k]) + ": " + limit_message(limits::kImpulseForce_N, i.force_N[k]));
+    if (!within(i.torque_N_m[k], limits::kTorque_N_m))
+      m.fail("torque_N_m", std::string(1, "xyz"[k]) + ": " + limit_message(limits::kTorque_N_m, i.torque_N_m[k]));
+  }
   if (i.force_N.isZero(0) && i.torque_N_m.isZero(0)) m.fail_here("a pulse needs force_N or torque_N_m");
   m.reject_unknown_keys();
   return i;
@@ -195,7 +191,7 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
   }
   if (given(top, "output")) {
     const YamlMap m = top.map("output");
-    s.output.sample_rate_hz = positive_or(m, "sample_rate_hz", s.output.sample_rate_hz, "rate in Hz");
+    s.output.sample_rate_hz = number_within_or(m, "sample_rate_hz", s.output.sample_rate_hz, limits::kRate_Hz);
     if (s.output.sample_rate_hz * s.solver.time_step_s > 1 + 1e-9) {
       std::ostringstream msg;
       msg << "sample rate " << s.output.sample_rate_hz << " Hz is above the step rate 1/time_step_s = "
@@ -239,9 +235,9 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
   if (given(top, "contact")) {
     const YamlMap m = top.map("contact");
     physics::ContactDef& c = s.contact;
-    c.stiffness_N_per_m_per_m = positive_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, "stiffness in N/m per m");
-    c.damping_ratio = non_negative_or(m, "damping_ratio", c.damping_ratio, "a damping ratio");
-    c.friction = non_negative_or(m, "friction", c.friction, "a friction coefficient");
+    c.stiffness_N_per_m_per_m = number_within_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, limits::kContactStiffness_N_per_m_per_m);
+    c.damping_ratio = number_within_or(m, "damping_ratio", c.damping_ratio, limits::kDampingRatio);
+    c.friction = number_within_or(m, "friction", c.friction, limits::kFriction);
     if (given(m, "friction_model")) {
       c.friction_model = m.choice_or("friction_model", {"sliding", "stick_slip"}, "sliding") == "stick_slip" ? physics::ContactDef::FrictionModel::stick_slip
                                                                                                           : physics::ContactDef::FrictionModel::sliding;
@@ -251,7 +247,7 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     // rigid_bodies runs Bullet's friction, a box of ±μ·λ_n: stick_slip, as its record says.
     if (s.solver.engine == physics::SolverEngine::rigid_bodies) c.friction_model = physics::ContactDef::FrictionModel::stick_slip;
     c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
-    c.max_flank_departure_m = positive_or(m, "max_flank_departure_m", c.max_flank_departure_m, "length in m");
+    c.max_flank_departure_m = number_within_or(m, "max_flank_departure_m", c.max_flank_departure_m, limits::kFlankDeparture_m);
     c.coherent_search = m.boolean_or("coherent_search", c.coherent_search);
     // A search option that is part of another (`parent`): off with it unless asked for, and then
     // refused.
@@ -323,9 +319,9 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       physics::MotorDef d;
       d.joint = joint_ref(m, "joint", names);
       if (!driven.insert(d.joint).second) m.fail("joint", "joint '" + d.joint + "' already has a motor");
-      d.target_speed_rad_s = m.number("target_speed_rad_s");
+      d.target_speed_rad_s = number_within(m, "target_speed_rad_s", limits::kMotorSpeed_rad_s);
       d.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
-      d.max_torque_N_m = positive(m, "max_torque_N_m", "torque limit in N·m");
+      d.max_torque_N_m = number_within(m, "max_torque_N_m", limits::kMaxTorque_N_m);
       m.reject_unknown_keys();
       s.motors.push_back(d);
     }
@@ -334,8 +330,8 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
     for (const YamlMap& m : top.list_of_maps("loads")) {
       physics::LoadDef l;
       l.joint = joint_ref(m, "joint", names);
-      l.constant_torque_N_m = m.number_or("constant_torque_N_m", 0.0);
-      l.viscous_N_m_s_per_rad = non_negative_or(m, "viscous_N_m_s_per_rad", 0.0, "a viscous coefficient in N·m·s/rad");
+      l.constant_torque_N_m = number_within_or(m, "constant_torque_N_m", 0.0, limits::kTorque_N_m);
+      l.viscous_N_m_s_per_rad = number_within_or(m, "viscous_N_m_s_per_rad", 0.0, limits::kViscous_N_m_s_per_rad);
       l.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
       m.reject_unknown_keys();
       s.loads.push_back(l);
@@ -358,7 +354,8 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
     if (!proposed || m.has("output_joint")) t.output_joint = joint_ref(m, "output_joint", names);
     if (t.input_joint == t.output_joint) m.fail("output_joint", "input and output are the same joint");
     t.ratio = proposed ? m.number_or("ratio", t.ratio) : m.number("ratio");
-    if (t.ratio == 0) m.fail("ratio", "expected a non-zero ratio θ_input/θ_output");
+    if (!within(std::abs(t.ratio), limits::kRatioMagnitude))
+      m.fail("ratio", "a ratio θ_input/θ_output of either sign: " + limit_message(limits::kRatioMagnitude, std::abs(t.ratio)));
     m.reject_unknown_keys();
     proposed = t;
   }

@@ -26,16 +26,13 @@ physics::JointDef hinge(const std::string& name, const std::string& parent, cons
 }
 
 physics::BearingDef parse_bearing(const YamlMap& m) {
-  auto non_negative = [&](const std::string& key, const std::string& what) {
-    const double v = m.number_or(key, 0.0);
-    if (!(v >= 0) || !std::isfinite(v)) m.fail(key, "expected " + what + " ≥ 0");
-    return v;
-  };
+  using namespace limits;
   physics::BearingDef b;
-  b.radial_stiffness_N_per_m = positive(m, "radial_stiffness_N_per_m", "stiffness in N/m");
-  b.radial_damping_N_s_per_m = non_negative("radial_damping_N_s_per_m", "a damping in N·s/m");
-  b.torsional_stiffness_N_m_per_rad = non_negative("torsional_stiffness_N_m_per_rad", "a torsional stiffness in N·m/rad (0: free to turn)");
-  b.torsional_damping_N_m_s_per_rad = non_negative("torsional_damping_N_m_s_per_rad", "a torsional damping in N·m·s/rad");
+  b.radial_stiffness_N_per_m = number_within(m, "radial_stiffness_N_per_m", kStiffness_N_per_m);
+  b.radial_damping_N_s_per_m = number_within_or(m, "radial_damping_N_s_per_m", 0.0, kDamping_N_s_per_m);
+  // 0: free to turn.
+  b.torsional_stiffness_N_m_per_rad = number_within_or(m, "torsional_stiffness_N_m_per_rad", 0.0, kTorsionalStiffness_N_m_per_rad);
+  b.torsional_damping_N_m_s_per_rad = number_within_or(m, "torsional_damping_N_m_s_per_rad", 0.0, kTorsionalDamping_N_m_s_per_rad);
   m.reject_unknown_keys();
   return b;
 }

@@ -97,9 +97,8 @@ Supports parse_supports(const YamlMap& m) {
   Supports s;
   if (given(m, "floating_sun")) {
     const YamlMap b = m.map("floating_sun");
-    s.sun = physics::BearingDef{positive(b, "radial_stiffness_N_per_m", "stiffness in N/m"),
-                                b.number_or("radial_damping_N_s_per_m", 0.0), 0, 0};
-    if (s.sun->radial_damping_N_s_per_m < 0) b.fail("radial_damping_N_s_per_m", "expected a damping ≥ 0 in N·s/m");
+    s.sun = physics::BearingDef{number_within(b, "radial_stiffness_N_per_m", limits::kStiffness_N_per_m),
+                                number_within_or(b, "radial_damping_N_s_per_m", 0.0, limits::kDamping_N_s_per_m), 0, 0};
     b.reject_unknown_keys();
   }
   if (!given(m, "supports")) return s;

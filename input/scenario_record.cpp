@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,8 @@ class Node {
 
 constexpr Limit kAny{-1e30, 1e30, true, "", "a value"};
 constexpr Limit kCount{0, 1e6, false, "", "a count"};
+// A stiffness table's gear-body stiffness, N/m: 0 records rigid gear bodies (the key left out).
+constexpr Limit kBodyStiffness_N_per_m{0, limits::kStiffness_N_per_m.max, false, "N/m", "a body stiffness"};
 
 Flank flank_of(const Node& n, const std::string& key) {
   const std::string f = n.string(key);
@@ -189,19 +192,22 @@ physics::JointDef joint_of(const Node& n) {
                       n.vec3_within("axis", {-1, 1, false, "", "a unit axis component"}), {}};
   if (n.has("bearing")) {
     const Node b = n.object("bearing");
-    j.bearing = physics::BearingDef{b.number("radial_stiffness_N_per_m"), b.number("radial_damping_N_s_per_m"), 0, 0};
+    j.bearing = physics::BearingDef{b.number_within("radial_stiffness_N_per_m", limits::kStiffness_N_per_m),
+                                    b.number_within("radial_damping_N_s_per_m", limits::kDamping_N_s_per_m), 0, 0};
     // Records written before torsional supports existed have neither key (a torsionally free bearing).
-    if (b.has("torsional_stiffness_N_m_per_rad")) j.bearing->torsional_stiffness_N_m_per_rad = b.number("torsional_stiffness_N_m_per_rad");
-    if (b.has("torsional_damping_N_m_s_per_rad")) j.bearing->torsional_damping_N_m_s_per_rad = b.number("torsional_damping_N_m_s_per_rad");
+    if (b.has("torsional_stiffness_N_m_per_rad"))
+      j.bearing->torsional_stiffness_N_m_per_rad = b.number_within("torsional_stiffness_N_m_per_rad", limits::kTorsionalStiffness_N_m_per_rad);
+    if (b.has("torsional_damping_N_m_s_per_rad"))
+      j.bearing->torsional_damping_N_m_s_per_rad = b.number_within("torsional_damping_N_m_s_per_rad", limits::kTorsionalDamping_N_m_s_per_rad);
   }
   return j;
 }
 
 physics::ContactDef contact_of(const Node& n) {
   physics::ContactDef c;
-  c.stiffness_N_per_m_per_m = n.number("stiffness_N_per_m_per_m");
-  c.damping_ratio = n.number("damping_ratio");
-  c.friction = n.number("friction");
+  c.stiffness_N_per_m_per_m = n.number_within("stiffness_N_per_m_per_m", limits::kContactStiffness_N_per_m_per_m);
+  c.damping_ratio = n.number_within("damping_ratio", limits::kDampingRatio);
+  c.friction = n.number_within("friction", limits::kFriction);
   // Records written before the key existed ran the stick–slip rows.
   c.friction_model = physics::ContactDef::FrictionModel::stick_slip;
   if (n.has("friction_model")) {
@@ -210,7 +216,7 @@ physics::ContactDef contact_of(const Node& n) {
     c.friction_model = fm == "sliding" ? physics::ContactDef::FrictionModel::sliding : physics::ContactDef::FrictionModel::stick_slip;
   }
   c.chordal_deviation_m = n.number_within("chordal_deviation_m", limits::kChordalDeviation_m);
-  c.max_flank_departure_m = n.number("max_flank_departure_m");
+  c.max_flank_departure_m = n.number_within("max_flank_departure_m", limits::kFlankDeparture_m);
   // Records written before the key existed ran the stateless search.
   c.coherent_search = n.has("coherent_search") ? n.boolean("coherent_search") : false;
   c.continued_search = n.has("continued_search") ? n.boolean("continued_search") : false;
@@ -219,13 +225,13 @@ physics::ContactDef contact_of(const Node& n) {
     for (const Node& t : n.list("stiffness_tables")) {
       physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),
                                   {t.string("file"), t.numbers("radius_a_m"), t.numbers("stiffness_N_per_m_per_m")},
-                                  t.number("body_stiffness_N_per_m")};
+                                  t.number_within("body_stiffness_N_per_m", kBodyStiffness_N_per_m)};
       if (const Check ok = contact::check_stiffness_table(d.table); !ok) t.fail("radius_a_m", ok.reason());
       c.stiffness_tables.push_back(std::move(d));
     }
   if (n.has("mesh_stiffnesses"))
     for (const Node& m : n.list("mesh_stiffnesses"))
-      c.mesh_stiffnesses.push_back({m.string("body_a"), m.string("body_b"), m.number("stiffness_N_per_m")});
+      c.mesh_stiffnesses.push_back({m.string("body_a"), m.string("body_b"), m.number_within("stiffness_N_per_m", limits::kStiffness_N_per_m)});
   return c;
 }
 
@@ -280,24 +286,29 @@ physics::PairTableDef pair_table_of(const Node& n) {
 // The parts after the bodies and joints: drives, render, transmission and the macros' records.
 void read_rest(const Node& r, physics::Scenario& s) {
   for (const Node& m : r.list("motors"))
-    s.motors.push_back({m.string("joint"), m.number("target_speed_rad_s"), m.number_within("ramp_time_s", limits::kRampTime_s),
-                        m.number("max_torque_N_m")});
+    s.motors.push_back({m.string("joint"), m.number_within("target_speed_rad_s", limits::kMotorSpeed_rad_s),
+                        m.number_within("ramp_time_s", limits::kRampTime_s), m.number_within("max_torque_N_m", limits::kMaxTorque_N_m)});
   for (const Node& l : r.list("loads"))
-    s.loads.push_back({l.string("joint"), l.number("constant_torque_N_m"), l.number("viscous_N_m_s_per_rad"),
+    s.loads.push_back({l.string("joint"), l.number_within("constant_torque_N_m", limits::kTorque_N_m),
+                       l.number_within("viscous_N_m_s_per_rad", limits::kViscous_N_m_s_per_rad),
                        l.number_within("ramp_time_s", limits::kRampTime_s)});
   if (r.has("sensors"))
     for (const Node& d : r.list("sensors"))
-      s.sensors.push_back({d.string("name"), d.string("body"), d.number("angle_rad"), d.number("window_width_rad"),
-                           d.number("other_meshes_weight"), d.number("resonance_hz"), d.number("damping_ratio"),
-                           d.number("effective_mass_kg"), d.number("noise_rms_m_s2"), d.number("sample_rate_hz")});
+      s.sensors.push_back({d.string("name"), d.string("body"), d.number_within("angle_rad", limits::kAngle_rad),
+                           d.number_within("window_width_rad", {0, 2 * std::numbers::pi, true, "rad", "a window width"}),
+                           d.number_within("other_meshes_weight", limits::kPathGain), d.number_within("resonance_hz", limits::kRate_Hz),
+                           d.number_within("damping_ratio", limits::kDampingRatio), d.number_within("effective_mass_kg", limits::kMass_kg),
+                           d.number_within("noise_rms_m_s2", limits::kNoise_m_s2), d.number_within("sample_rate_hz", limits::kRate_Hz)});
   if (r.has("impulses"))
     for (const Node& i : r.list("impulses"))
       s.impulses.push_back({i.string("body"), i.number_within("at_s", limits::kRunTime_s), i.number_within("duration_s", limits::kDuration_s),
-                            i.vec3("force_N"), i.vec3("torque_N_m")});
+                            i.vec3_within("force_N", limits::kImpulseForce_N), i.vec3_within("torque_N_m", limits::kTorque_N_m)});
   if (r.has("render")) s.render = render_of(r.object("render"));
   if (r.has("transmission")) {
     const Node t = r.object("transmission");
     s.transmission = physics::TransmissionDef{t.string("input_joint"), t.string("output_joint"), t.number("ratio")};
+    if (!within(std::abs(s.transmission->ratio), limits::kRatioMagnitude))
+      t.fail("ratio", limit_message(limits::kRatioMagnitude, std::abs(s.transmission->ratio)));
   }
   if (r.has("gearset_spec")) s.gearset_spec = r.string("gearset_spec");
   if (r.has("planetary")) s.planetary = planetary_of(r.object("planetary"));

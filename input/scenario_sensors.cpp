@@ -29,10 +29,8 @@ void parse_sensors(const std::vector<YamlMap>& entries, physics::Scenario& s) {
     d.window_width_rad = angle_rad_or(m, "window_width", 0.0);
     if (!(d.window_width_rad > 0 && d.window_width_rad <= 2 * std::numbers::pi + 1e-12))
       m.fail(m.has("window_width_deg") ? "window_width_deg" : "window_width_rad", "expected a width in (0°, 360°]");
-    d.other_meshes_weight = m.number_or("other_meshes_weight", 0.0);
-    if (!(d.other_meshes_weight >= 0) || !std::isfinite(d.other_meshes_weight))
-      m.fail("other_meshes_weight", "expected a path gain ≥ 0");
-    d.resonance_hz = positive(m, "resonance_hz", "resonance frequency in Hz");
+    d.other_meshes_weight = number_within_or(m, "other_meshes_weight", 0.0, limits::kPathGain);
+    d.resonance_hz = number_within(m, "resonance_hz", limits::kRate_Hz);
     if (!(d.resonance_hz < step_rate / 2)) {
       std::ostringstream msg;
       msg << "resonance " << d.resonance_hz << " Hz lies above the simulation's Nyquist frequency " << step_rate / 2
@@ -40,10 +38,10 @@ void parse_sensors(const std::vector<YamlMap>& entries, physics::Scenario& s) {
       m.fail("resonance_hz", msg.str());
     }
     d.damping_ratio = m.has("damping_ratio") ? positive(m, "damping_ratio", "damping ratio") : d.damping_ratio;
-    d.effective_mass_kg = positive(m, "effective_mass_kg", "modal mass in kg");
-    d.noise_rms_m_s2 = m.number_or("noise_rms_m_s2", 0.0);
-    if (!(d.noise_rms_m_s2 >= 0) || !std::isfinite(d.noise_rms_m_s2)) m.fail("noise_rms_m_s2", "expected a noise rms ≥ 0 in m/s²");
-    d.sample_rate_hz = positive(m, "sample_rate_hz", "sample rate in Hz");
+    if (!within(d.damping_ratio, limits::kDampingRatio)) m.fail("damping_ratio", limit_message(limits::kDampingRatio, d.damping_ratio));
+    d.effective_mass_kg = number_within(m, "effective_mass_kg", limits::kMass_kg);
+    d.noise_rms_m_s2 = number_within_or(m, "noise_rms_m_s2", 0.0, limits::kNoise_m_s2);
+    d.sample_rate_hz = number_within(m, "sample_rate_hz", limits::kRate_Hz);
     const double steps = step_rate / d.sample_rate_hz;
     if (!(std::abs(steps - std::round(steps)) <= 1e-9 * steps && std::round(steps) >= 1)) {
       std::ostringstream msg;

@@ -123,8 +123,8 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
     double body = 0;
     if (given(m, "body_stiffness_N_per_m")) {
       body = m.number("body_stiffness_N_per_m");
-      if (!(body > 0) || !std::isfinite(body))
-        m.fail("body_stiffness_N_per_m", "expected a stiffness > 0 in N/m (omit the key for rigid gear bodies)");
+      if (!within(body, limits::kStiffness_N_per_m))
+        m.fail("body_stiffness_N_per_m", limit_message(limits::kStiffness_N_per_m, body) + " (omit the key for rigid gear bodies)");
     }
     m.reject_unknown_keys();
     for (const auto& [pa, pb, d] : meshing_pairs(m, names, s)) {
@@ -158,8 +158,7 @@ void parse_mesh_stiffnesses(const std::vector<YamlMap>& entries, physics::Scenar
     taken[std::minmax(t.body_a, t.body_b)] = "a stiffness table (" + t.table.source + ")";
   for (const YamlMap& m : entries) {
     const std::vector<std::string> names = m.strings("gears", 2);
-    const double k = positive(m, "stiffness_N_per_m", "mesh stiffness in N/m");
-    if (!std::isfinite(k)) m.fail("stiffness_N_per_m", "expected a finite mesh stiffness in N/m");
+    const double k = number_within(m, "stiffness_N_per_m", limits::kStiffness_N_per_m);
     m.reject_unknown_keys();
     for (const auto& [a, b, d] : meshing_pairs(m, names, s)) {
       if (const auto [it, fresh] = taken.emplace(std::minmax(a->name, b->name), "a mesh stiffness"); !fresh)

@@ -6,7 +6,7 @@
 # Usage: scripts/fuzz.sh fuzz_scenario|fuzz_mesh|fuzz_run_record|fuzz_set SECONDS [JOBS]
 #   fuzz_scenario  the bytes as a scenario file (load_scenario); seeds: assets/scenarios/*.yaml
 #                  and small scenarios like the tests' (a wheel, MCAD pairs, gear_from, tables)
-#   fuzz_mesh      byte 0 picks STL or OBJ and the unit, the rest is the file (read_mesh_gear:
+#   fuzz_mesh      byte 0 picks STL or OBJ (one in eight) and the unit, the rest is the file (read_mesh_gear:
 #                  import, validation, prism, gear recognition); seeds: the MCAD meshes of
 #                  tests/data/mcad (35–154 kB binary STL), the z 12 one as ASCII STL and OBJ, and
 #                  a cube; assets/gears/ (0.36–1.4 MB) are larger than -max_len and left out
@@ -127,7 +127,8 @@ elif [[ $target == fuzz_set ]]; then
   printf 'solver={time_step_s: 1e-4, time_step_s: 1e-5}' >"$seeds/twice"
   printf 'x={a: &a [1, 1, 1], b: &b [*a, *a, *a], c: [*b, *b, *b]}' >"$seeds/aliases"
 else
-  # Byte 0: bit 0 = OBJ, (byte >> 1) % 3 = unit (mm, m, in); \x00 is a mm STL, \x01 a mm OBJ.
+  # Byte 0: low three bits 001 = OBJ (else STL), (byte >> 3) % 3 = unit (mm, m, in); \x00 is a
+  # mm STL, \x01 a mm OBJ.
   for f in tests/data/mcad/*.stl; do
     { printf '\x00'; cat "$f"; } >"$seeds/$(basename "$f")"
   done

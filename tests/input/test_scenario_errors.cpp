@@ -240,6 +240,30 @@ TEST(ScenarioErrors, MassPropertiesAndPosesOf1e300AreRefused) {
                "expected a direction of finite length");
 }
 
+TEST(ScenarioErrors, DriveLoadContactAndSupportNumbersOf1e300AreRefused) {
+  // A motor torque limit of 1e300 ran to exit 0 before; the others diverged at the first step.
+  EXPECT_NAMES(error_for(edited("max_torque_N_m: 1", "max_torque_N_m: 1.0e300")), "bad.yaml:8:", "motors[0].max_torque_N_m",
+               "expected a torque limit in (0, 1e+08] N·m, got 1e+300");
+  EXPECT_NAMES(error_for(edited("target_speed_rad_s: 1", "target_speed_rad_s: -1.0e300")), "bad.yaml:8:",
+               "motors[0].target_speed_rad_s", "expected a motor speed in [-20000, 20000] rad/s");
+  EXPECT_NAMES(error_for(edited("constant_torque_N_m: -0.1", "constant_torque_N_m: -1.0e300")), "bad.yaml:10:",
+               "loads[0].constant_torque_N_m", "expected a torque in [-1e+08, 1e+08] N·m");
+  EXPECT_NAMES(error_for(edited("constant_torque_N_m: -0.1", "constant_torque_N_m: -0.1, viscous_N_m_s_per_rad: 1.0e300")),
+               "loads[0].viscous_N_m_s_per_rad", "expected a viscous coefficient in [0, 1e+08] N·m·s/rad");
+  EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]", "axis: [0, 0, 1], bearing: {radial_stiffness_N_per_m: 1.0e300}")),
+               "bad.yaml:6:", "joints[0].bearing.radial_stiffness_N_per_m", "expected a stiffness in (0, 1e+13] N/m");
+  EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]", "axis: [0, 0, 1], bearing: {radial_stiffness_N_per_m: 1e8, torsional_damping_N_m_s_per_rad: 1.0e300}")),
+               "joints[0].bearing.torsional_damping_N_m_s_per_rad", "expected a torsional damping in [0, 1e+10] N·m·s/rad");
+  for (const auto& [line, key, what] : {std::tuple{"stiffness_N_per_m_per_m: 1.0e300", "contact.stiffness_N_per_m_per_m", "a contact stiffness in (0, 1e+13] N/m per m"},
+                                        {"damping_ratio: 1.0e300", "contact.damping_ratio", "a damping ratio in [0, 10]"},
+                                        {"friction: 1.0e300", "contact.friction", "a friction coefficient in [0, 2]"},
+                                        {"max_flank_departure_m: 1.0e300", "contact.max_flank_departure_m", "a flank departure in (0, 0.01] m"}})
+    EXPECT_NAMES(error_for(kGood + "contact: {" + line + "}\n"), "bad.yaml:11:", key, what);
+  EXPECT_NAMES(error_for(kGood + "impulses: [{body: wheel, duration_s: 0.01, torque_N_m: [0, 0, 1.0e300]}]\n"), "bad.yaml:11:",
+               "impulses[0].torque_N_m", "z: expected a torque in [-1e+08, 1e+08] N·m");
+  EXPECT_NAMES(error_for(kGood + "output: {sample_rate_hz: 1.0e300}\n"), "output.sample_rate_hz", "expected a rate in (0, 1e+07] Hz");
+}
+
 TEST(ScenarioErrors, AnInlineGearsModuleOf1e300IsRefused) {
   const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
                                          "density_kg_m3: 7850, gear: {kind: external, teeth: 20, module_m: 1.0e300, "

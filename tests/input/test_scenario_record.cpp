@@ -197,6 +197,24 @@ TEST(ScenarioRecord, ARecordsGearAndBodyNumbersAreCheckedAgainstTheReadersLimits
   EXPECT_NE(error_of(j).find("key bodies[0].position_m: y: expected a coordinate in [-1000, 1000] m"), std::string::npos) << error_of(j);
 }
 
+TEST(ScenarioRecord, ARecordsDrivesContactAndSupportsAreCheckedAgainstTheReadersLimits) {
+  const nlohmann::json good = nlohmann::json::parse(scenario_json(load_scenario(asset("paper_dynamics.yaml"))).dump());
+  const auto error_with = [&](const nlohmann::json::json_pointer& at, double value) {
+    nlohmann::json j = good;
+    j[at] = value;
+    return error_of(j);
+  };
+  using P = nlohmann::json::json_pointer;
+  EXPECT_NE(error_with(P("/motors/0/max_torque_N_m"), 1e300).find("key motors[0].max_torque_N_m: expected a torque limit"), std::string::npos)
+      << error_with(P("/motors/0/max_torque_N_m"), 1e300);
+  EXPECT_NE(error_with(P("/loads/0/constant_torque_N_m"), -1e300).find("key loads[0].constant_torque_N_m: expected a torque"), std::string::npos);
+  EXPECT_NE(error_with(P("/contact/friction"), 1e300).find("key contact.friction: expected a friction coefficient in [0, 2]"), std::string::npos);
+  EXPECT_NE(error_with(P("/contact/stiffness_N_per_m_per_m"), 1e300).find("key contact.stiffness_N_per_m_per_m: expected a contact stiffness"),
+            std::string::npos);
+  EXPECT_NE(error_with(P("/transmission/ratio"), 1e300).find("key transmission.ratio: expected a ratio's magnitude"), std::string::npos)
+      << error_with(P("/transmission/ratio"), 1e300);
+}
+
 TEST(ScenarioRecord, TheRunFoldersGearSetCopyIsCheckedAsTheOriginal) {
   const fs::path dir = test::fresh_test_dir();
   write_scenario_record(load_scenario(asset("paper_dynamics.yaml")), dir);

@@ -128,7 +128,7 @@ TEST(ScenarioStiffnessTables, BodyStiffnessIsReadAndMustBePositive) {
   ASSERT_FALSE(s.contact.stiffness_tables.empty());
   EXPECT_DOUBLE_EQ(s.contact.stiffness_tables[0].body_stiffness_N_per_m, 1.35e8);
   EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: sun.csv, body_stiffness_N_per_m: 0}\n")),
-             "bad.yaml:5:", "contact.stiffness_tables[0].body_stiffness_N_per_m", "expected a stiffness > 0");
+             "bad.yaml:5:", "contact.stiffness_tables[0].body_stiffness_N_per_m", "expected a stiffness in (0, 1e+13] N/m, got 0 (omit the key for rigid gear bodies)");
 }
 
 TEST(ScenarioStiffnessTables, GearsThatDoNotMesh) {
