@@ -20,6 +20,7 @@
 #include "app/commands.hpp"
 #include "app/exit_codes.hpp"
 #include "app/gnuplot.hpp"
+#include "app/output_folder.hpp"
 #include "app/run_dir.hpp"
 #include "input/scenario_file.hpp"
 #include "core/errors.hpp"
@@ -294,6 +295,12 @@ void fe_te(const FeTeOptions& o) {
     throw InputError("CalculiX solver '" + o.ccx + "' not found on PATH (Debian package calculix-ccx; or give --ccx PATH)");
   const physics::FeTeDef& f = *s.fe;
   const fs::path dir(o.out_dir);
+  // The outputs in the manifest; ccx/ is CalculiX's work folder (a deck, log and results per
+  // position, written by ccx itself), kept for inspection and not listed.
+  OutputFolder folder(dir, "gearsim fe-te");
+  folder.declare({"te_loaded.csv", "mesh_stiffness.csv", "tooth_forces.csv", "root_stress.csv", "te_loaded.svg",
+                  "root_stress.svg", "mesh_stiffness.svg", "fe_stiffness_sun_planet.csv", "fe_stiffness_planet_ring.csv",
+                  "summary.json"});
   std::error_code ec;
   fs::create_directories(dir / "ccx", ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());

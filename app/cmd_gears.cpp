@@ -8,6 +8,7 @@
 
 #include "app/commands.hpp"
 #include "app/gear_report.hpp"
+#include "app/output_folder.hpp"
 #include "input/input_limits.hpp"
 #include "input/safe_name.hpp"
 #include "core/errors.hpp"
@@ -27,14 +28,17 @@ struct GearsOptions {
 
 void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
   const std::filesystem::path dir(o.out_dir);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
+  OutputFolder folder(dir, "gearsim gears");
+  std::vector<std::string> names{"gearset.json"};
   for (const auto& [name, body] : a.bodies) {
     // Files only inside DIR: the spec reader refuses other names; this guards every other source.
     if (!input::is_safe_name(name, input::NameUse::File))
       throw InputError("gear '" + input::shown_name(name) + "': expected " + input::safe_name_rule(input::NameUse::File) +
                        " (it names a file in " + dir.string() + ")");
+    for (const std::string& f : o.formats) names.push_back(name + (f == "obj" ? ".obj" : f == "stl-ascii" ? ".ascii.stl" : ".stl"));
+  }
+  folder.declare(names);
+  for (const auto& [name, body] : a.bodies) {
     for (const std::string& f : o.formats) {
       const MeshFormat fmt = f == "obj" ? MeshFormat::Obj : f == "stl-ascii" ? MeshFormat::StlAscii : MeshFormat::StlBinary;
       const std::string ext = f == "obj" ? ".obj" : f == "stl-ascii" ? ".ascii.stl" : ".stl";

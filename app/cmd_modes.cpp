@@ -9,6 +9,7 @@
 #include "app/commands.hpp"
 #include "app/modes_analysis.hpp"
 #include "app/modes_outputs.hpp"
+#include "app/output_folder.hpp"
 #include "core/errors.hpp"
 #include "input/input_limits.hpp"
 #include "input/scenario_file.hpp"
@@ -69,9 +70,8 @@ void modes(const ModesOptions& o) {
   else print_table(model, a, c);
   if (o.out_dir.empty()) return;
   const std::filesystem::path dir(o.out_dir);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
+  OutputFolder folder(dir, "gearsim modes");
+  folder.declare({"modes.json", "mode_shapes.csv", "campbell.csv", "modes.svg"});
   write_output_file(dir / "modes.json", j.dump(2) + "\n");
   write_mode_shapes_csv(dir / "mode_shapes.csv", model, a);
   write_campbell_csv(dir / "campbell.csv", model, c);

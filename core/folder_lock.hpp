@@ -1,5 +1,5 @@
 // One writer per output folder: a command that writes into a folder (run, analyze, report,
-// render, sweep) holds an exclusive flock on DIR/.gearsim.lock for as long as it writes. A second
+// render, sweep, gears, modes, fe-te) holds an exclusive flock on DIR/.gearsim.lock for as long as it writes. A second
 // command is refused at once, naming the holder (its command, process id and start time, which
 // the holder writes into the lock file). The lock goes with the process (the kernel releases it,
 // also after a crash or SIGKILL); the file stays, harmless. Not a guard against other programs

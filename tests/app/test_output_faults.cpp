@@ -16,6 +16,7 @@
 #include <string>
 #include <thread>
 
+#include "core/folder_lock.hpp"
 #include "tests/support/asset_scenario.hpp"
 #include "tests/support/cli_run.hpp"
 
@@ -175,6 +176,40 @@ TEST(OutputFolderLock, AFolderGivenAsALinkIsTheFolderItNamesAndTheLinkStays) {
   EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
   for (const char* f : {"summary.json", "analysis.json", "report.html", ".gearsim-manifest"})
     EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(target / f))) << f;
+}
+
+TEST(OutputFolderLock, GearsAndModesIntoAFolderAnotherCommandHoldsAreRefused) {
+  const fs::path dir = test::fresh_test_dir() / "held";
+  fs::create_directories(dir);
+  const FolderLock held(dir, "a test");
+  const std::string spec = std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/spur_pair_gearset.yaml";
+  const test::CliRun gears = test::gearsim("gears " + spec + " --out " + dir.string());
+  EXPECT_EQ(gears.exit_code, 7) << gears.output;
+  EXPECT_NE(gears.output.find(dir.string() + ": in use by a test (pid "), std::string::npos) << gears.output;
+  const test::CliRun modes = test::gearsim("modes " + kSpur + " --out " + dir.string());
+  EXPECT_EQ(modes.exit_code, 7) << modes.output;
+  EXPECT_FALSE(fs::exists(dir / "gearset.json"));
+  EXPECT_FALSE(fs::exists(dir / "modes.json"));
+}
+
+TEST(OutputFolderManifest, GearsAndModesListWhatTheyWroteAndANewRunRemovesOnlyThat) {
+  const fs::path dir = test::fresh_test_dir() / "gears";
+  const std::string spec = std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/spur_pair_gearset.yaml";
+  ASSERT_EQ(test::gearsim("gears " + spec + " --out " + dir.string() + " --formats stl").exit_code, 0);
+  ASSERT_EQ(test::gearsim("modes " + kSpur + " --out " + dir.string()).exit_code, 0);
+  std::ofstream(dir / "notes.txt") << "mine\n";
+  const std::string manifest = text_of(dir / ".gearsim-manifest");
+  for (const char* f : {"gearset.json", "pinion.stl", "wheel.stl", "modes.json", "mode_shapes.csv", "campbell.csv", "modes.svg"}) {
+    EXPECT_NE(manifest.find(std::string(f) + "\n"), std::string::npos) << f << " not in the manifest:\n" << manifest;
+    EXPECT_TRUE(fs::is_regular_file(dir / f)) << f;
+  }
+  // A run into the folder removes the outputs gearsim listed there, and nothing else.
+  const test::CliRun run = test::gearsim("run " + kSpur + " --out " + dir.string() + " --duration 0.05 --no-analyze");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("removed 7 outputs of a previous run"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(dir / "pinion.stl"));
+  EXPECT_FALSE(fs::exists(dir / "modes.json"));
+  EXPECT_EQ(text_of(dir / "notes.txt"), "mine\n");
 }
 
 TEST(InputBounds, AFifoOrADeviceAsAScenarioIsRefusedAtOnce) {
