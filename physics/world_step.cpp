@@ -294,7 +294,7 @@ double World::Impl::kinetic_energy_J() const {
   double kinetic = 0;
   if (mb && mb->planar_mass) {
     // The planar tree's links turn about z: ½·m·|v|² + ½·I_zz·ω² each, from this pose's link
-    // velocities (the bodies' world inertia tensors are not kept on this path).
+    // velocities (this path holds no world inertia tensors of the bodies).
     const MultibodyEngine& e = *mb;
     for (std::size_t l = 0; l < e.link_w.size(); ++l)
       kinetic += 0.5 * e.link_mass_kg[l] * (e.link_vx[l] * e.link_vx[l] + e.link_vy[l] * e.link_vy[l]) + 0.5 * e.link_izz_kg_m2[l] * e.link_w[l] * e.link_w[l];

@@ -35,9 +35,9 @@ TEST(FlankConvexity, IsTheInvolutesCurvatureOnTheActiveFlanks) {
   // External teeth bend away from their outward normal (convexity +1/ρ), the ring's internal
   // ones toward it (−1/ρ). Radii: the involute part of each flank, from just past the form
   // circles where it meets the fillet (11.338, 17.221 and, on the ring, 49.018 mm) to below the
-  // tips (since stop 42, with the cubic beside a fillet on one side of it: docs/tooth-contact.md,
-  // "The cubic beside a fillet"; before, the ring's range had to end at 48.85 mm, short of a
-  // kink at its knot at 48.889 mm). The interpolant's curvature follows
+  // tips (the cubic beside a fillet takes its knots on one side of it: docs/tooth-contact.md,
+  // "The cubic beside a fillet", so the ring's range reaches past its knot at 48.889 mm). The
+  // interpolant's curvature follows
   // the involute to ≈ 0.1–1 % (C¹ cubics over samples 0.55 µm apart); where the cubic's second
   // derivative jumps between intervals it spikes (docs/tooth-contact.md: ρ off by up to 2.3 mm
   // at 17.82 and 18.04 mm on the planets) — a few radii of the 2 × 201 per gear.
