@@ -19,20 +19,6 @@
 namespace gearsim::input {
 namespace {
 
-// Output samples are taken at whole steps: 1/(sample_rate_hz · time_step_s) must be a whole
-// number (to 1e-9 of it), else the rows would not be at the rate asked for (and the logs'
-// anti-aliasing filter needs the whole ratio). "" when it is, else what to give instead.
-std::string whole_steps_problem(const physics::Scenario& s) {
-  const double steps = 1.0 / (s.output.sample_rate_hz * s.solver.time_step_s);
-  const double whole = std::round(steps);
-  if (whole >= 1 && std::abs(steps - whole) <= 1e-9 * steps) return "";
-  std::ostringstream msg;
-  msg << "sample rate " << s.output.sample_rate_hz << " Hz is " << steps << " time steps of " << s.solver.time_step_s
-      << " s, not a whole number: samples are taken at whole steps; expected e.g. "
-      << 1 / (std::floor(steps) * s.solver.time_step_s) << " Hz or " << 1 / (std::ceil(steps) * s.solver.time_step_s) << " Hz";
-  return msg.str();
-}
-
 using namespace scenario_detail;
 namespace fs = std::filesystem;
 constexpr const char* kGround = "ground";
@@ -139,134 +125,59 @@ physics::ImpulseDef parse_impulse(const YamlMap& m, const Names& names, const ph
   return i;
 }
 
-void parse_settings(const YamlMap& top, physics::Scenario& s) {
-  if (given(top, "solver")) {
-    const YamlMap m = top.map("solver");
-    s.solver.time_step_s = number_within_or(m, "time_step_s", s.solver.time_step_s, limits::kTimeStep_s);
-    s.solver.iterations = integer_within_or(m, "iterations", s.solver.iterations, limits::kSolverIterations);
-    s.solver.engine = m.choice_or("engine", {"rigid_bodies", "multibody"}, physics::engine_name(s.solver.engine)) == "multibody"
-                          ? physics::SolverEngine::multibody
-                          : physics::SolverEngine::rigid_bodies;
-    s.solver.theta = number_within_or(m, "theta", s.solver.theta, limits::kSolverTheta);
-    if (s.solver.engine == physics::SolverEngine::rigid_bodies && given(m, "theta"))
-      m.fail("theta", "only engine multibody has the θ-method (rigid_bodies integrates its contacts by implicit Euler)");
-    if (given(m, "theta") && !given(m, "integrator")) s.solver.integrator = physics::SolverDef::Integrator::theta;
-    if (given(m, "integrator")) {
-      const std::string i = m.choice_or("integrator", {"theta", "bdf2", "trapezoid_closed"}, "trapezoid_closed");
-      s.solver.integrator = i == "bdf2" ? physics::SolverDef::Integrator::bdf2
-                            : i == "trapezoid_closed" ? physics::SolverDef::Integrator::trapezoid_closed
-                                                      : physics::SolverDef::Integrator::theta;
-      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
-        m.fail("integrator", "only engine multibody has a choice of integrator (rigid_bodies integrates its contacts by implicit Euler)");
-      if (s.solver.integrator != physics::SolverDef::Integrator::theta && given(m, "theta"))
-        m.fail("theta", std::string("integrator ") + physics::integrator_name(s.solver.integrator) + " has no θ: remove theta or set integrator: theta");
+// motors, loads and impulses, on the joints and bodies the scenario names.
+void parse_drives(const YamlMap& top, const Names& names, physics::Scenario& s) {
+  if (given(top, "motors")) {
+    std::set<std::string> driven;
+    for (const YamlMap& m : top.list_of_maps("motors")) {
+      physics::MotorDef d;
+      d.joint = joint_ref(m, "joint", names);
+      if (!driven.insert(d.joint).second) m.fail("joint", "joint '" + d.joint + "' already has a motor");
+      d.target_speed_rad_s = number_within(m, "target_speed_rad_s", limits::kMotorSpeed_rad_s);
+      d.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
+      d.max_torque_N_m = number_within(m, "max_torque_N_m", limits::kMaxTorque_N_m);
+      m.reject_unknown_keys();
+      s.motors.push_back(d);
     }
-    if (given(m, "row_solver")) {
-      s.solver.row_solver = m.choice_or("row_solver", {"active_set", "dantzig"}, "active_set") == "dantzig" ? physics::SolverDef::RowSolver::dantzig
-                                                                                                     : physics::SolverDef::RowSolver::active_set;
-      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
-        m.fail("row_solver", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
-    }
-    if (given(m, "mass_matrix")) {
-      s.solver.mass_matrix = m.choice_or("mass_matrix", {"planar", "articulated"}, "planar") == "articulated" ? physics::SolverDef::MassMatrix::articulated
-                                                                                                 : physics::SolverDef::MassMatrix::planar;
-      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
-        m.fail("mass_matrix", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
-    }
-    if (given(m, "locate_contact_onset")) {
-      s.solver.locate_contact_onset = m.boolean_or("locate_contact_onset", s.solver.locate_contact_onset);
-      if (s.solver.locate_contact_onset && s.solver.engine == physics::SolverEngine::rigid_bodies)
-        m.fail("locate_contact_onset", "only engine multibody splits a step at a contact's onset (rigid_bodies steps Bullet's world whole)");
-      if (s.solver.locate_contact_onset && s.solver.integrator == physics::SolverDef::Integrator::bdf2)
-        m.fail("locate_contact_onset", "integrator bdf2 needs equal steps: set locate_contact_onset: false or another integrator");
-    }
-    // rigid_bodies integrates its rows by implicit Euler: the θ-method at θ = 1, as its record says.
-    if (s.solver.engine == physics::SolverEngine::rigid_bodies) s.solver.integrator = physics::SolverDef::Integrator::theta;
-    // What runs, as the record says: rigid_bodies and BDF2 never split a step.
-    if (s.solver.engine == physics::SolverEngine::rigid_bodies || s.solver.integrator == physics::SolverDef::Integrator::bdf2)
-      s.solver.locate_contact_onset = false;
-    if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
-      m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
-    m.reject_unknown_keys();
   }
-  if (given(top, "output")) {
-    const YamlMap m = top.map("output");
-    s.output.sample_rate_hz = number_within_or(m, "sample_rate_hz", s.output.sample_rate_hz, limits::kRate_Hz);
-    if (s.output.sample_rate_hz * s.solver.time_step_s > 1 + 1e-9) {
-      std::ostringstream msg;
-      msg << "sample rate " << s.output.sample_rate_hz << " Hz is above the step rate 1/time_step_s = "
-          << 1 / s.solver.time_step_s << " Hz";
-      m.fail("sample_rate_hz", msg.str());
+  if (given(top, "loads"))
+    for (const YamlMap& m : top.list_of_maps("loads")) {
+      physics::LoadDef l;
+      l.joint = joint_ref(m, "joint", names);
+      l.constant_torque_N_m = number_within_or(m, "constant_torque_N_m", 0.0, limits::kTorque_N_m);
+      l.viscous_N_m_s_per_rad = number_within_or(m, "viscous_N_m_s_per_rad", 0.0, limits::kViscous_N_m_s_per_rad);
+      l.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
+      m.reject_unknown_keys();
+      s.loads.push_back(l);
     }
-    if (const std::string w = whole_steps_problem(s); !w.empty()) m.fail("sample_rate_hz", w);
-    if (s.output.sample_rate_hz * s.duration_s < 1)
-      m.fail("sample_rate_hz", "expected at least one output row in duration_s: a rate ≥ 1/duration_s = " +
-                                   std::to_string(1 / s.duration_s) + " Hz");
-    s.output.per_step_log = m.boolean_or("per_step_log", s.output.per_step_log);
-    m.reject_unknown_keys();
-  }
-  if (!given(top, "output"))
-    if (const std::string w = whole_steps_problem(s); !w.empty()) top.fail("solver", w + " (output.sample_rate_hz defaults to 2000 Hz)");
-  if (given(top, "render")) {
-    const YamlMap m = top.map("render");
-    physics::RenderDef r;
-    r.camera = m.choice_or("camera", {"overview", "tilted", "sun_mesh", "ring_mesh"}, r.camera);
-    r.fps = m.integer_or("fps", r.fps);
-    if (r.fps < 1 || r.fps > 240) m.fail("fps", "expected 1 to 240 frames per second");
-    r.slowmo = number_within_or(m, "slowmo", r.slowmo, limits::kSlowMotion);
-    r.from_s = m.optional_number("from_s");
-    r.to_s = m.optional_number("to_s");
-    if (r.from_s && !within(*r.from_s, limits::kRunTime_s)) m.fail("from_s", limit_message(limits::kRunTime_s, *r.from_s));
-    if (r.to_s && !within(*r.to_s, limits::kRunTime_s)) m.fail("to_s", limit_message(limits::kRunTime_s, *r.to_s));
-    if (r.from_s && r.to_s && !(*r.to_s > *r.from_s)) m.fail("to_s", "expected a time after from_s");
-    r.width_px = m.integer_or("width_px", r.width_px);
-    r.height_px = m.integer_or("height_px", r.height_px);
-    for (const char* key : {"width_px", "height_px"}) {
-      const int v = std::string(key) == "width_px" ? r.width_px : r.height_px;
-      if (v < 16 || v > 4096 || v % 2) m.fail(key, "expected an even size of 16 to 4096 px (H.264 halves the chroma)");
+  if (given(top, "impulses"))
+    for (const YamlMap& m : top.list_of_maps("impulses")) s.impulses.push_back(parse_impulse(m, names, s));
+
+}
+
+// The transmission: the explicit block, each key defaulting to the macros' proposal.
+std::optional<physics::TransmissionDef> parse_transmission(const YamlMap& top, const std::vector<std::pair<Expansion, std::string>>& macros,
+                                                           const Names& names) {
+  std::optional<physics::TransmissionDef> proposed;
+  for (const auto& [e, key] : macros)
+    if (e.transmission) {
+      if (proposed && !top.has("transmission"))
+        top.fail(key, "two macros each define a transmission: give transmission {input_joint, output_joint, ratio}");
+      proposed = e.transmission;
     }
-    r.msaa = m.integer_or("msaa", r.msaa);
-    if (r.msaa < 0 || r.msaa == 1 || r.msaa > 16) m.fail("msaa", "expected 0 (edge anti-aliasing) or 2 to 16 samples");
-    r.png_every = m.integer_or("png_every", r.png_every);
-    if (r.png_every < 0) m.fail("png_every", "expected 0 (no PNG) or a positive frame interval");
+  if (given(top, "transmission")) {
+    const YamlMap m = top.map("transmission");
+    physics::TransmissionDef t = proposed.value_or(physics::TransmissionDef{});
+    if (!proposed || m.has("input_joint")) t.input_joint = joint_ref(m, "input_joint", names);
+    if (!proposed || m.has("output_joint")) t.output_joint = joint_ref(m, "output_joint", names);
+    if (t.input_joint == t.output_joint) m.fail("output_joint", "input and output are the same joint");
+    t.ratio = proposed ? m.number_or("ratio", t.ratio) : m.number("ratio");
+    if (!within(std::abs(t.ratio), limits::kRatioMagnitude))
+      m.fail("ratio", "a ratio θ_input/θ_output of either sign: " + limit_message(limits::kRatioMagnitude, std::abs(t.ratio)));
     m.reject_unknown_keys();
-    s.render = r;
+    proposed = t;
   }
-  if (given(top, "contact")) {
-    const YamlMap m = top.map("contact");
-    physics::ContactDef& c = s.contact;
-    c.stiffness_N_per_m_per_m = number_within_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, limits::kContactStiffness_N_per_m_per_m);
-    c.damping_ratio = number_within_or(m, "damping_ratio", c.damping_ratio, limits::kDampingRatio);
-    c.friction = number_within_or(m, "friction", c.friction, limits::kFriction);
-    if (given(m, "friction_model")) {
-      c.friction_model = m.choice_or("friction_model", {"sliding", "stick_slip"}, "sliding") == "stick_slip" ? physics::ContactDef::FrictionModel::stick_slip
-                                                                                                          : physics::ContactDef::FrictionModel::sliding;
-      if (s.solver.engine == physics::SolverEngine::rigid_bodies)
-        m.fail("friction_model", "only engine multibody has a choice of friction model (rigid_bodies uses Bullet's friction: stick_slip)");
-    }
-    // rigid_bodies runs Bullet's friction, a box of ±μ·λ_n: stick_slip, as its record says.
-    if (s.solver.engine == physics::SolverEngine::rigid_bodies) c.friction_model = physics::ContactDef::FrictionModel::stick_slip;
-    c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
-    c.max_flank_departure_m = number_within_or(m, "max_flank_departure_m", c.max_flank_departure_m, limits::kFlankDeparture_m);
-    c.coherent_search = m.boolean_or("coherent_search", c.coherent_search);
-    // A search option that is part of another (`parent`): off with it unless asked for, and then
-    // refused.
-    auto part_of = [&](const char* key, bool& flag, bool parent, const char* why) {
-      if (given(m, key)) {
-        flag = m.boolean_or(key, flag);
-        if (flag && !parent) m.fail(key, std::string(key) + ": true needs " + why);
-      } else if (!parent) {
-        flag = false;
-      }
-    };
-    part_of("continued_search", c.continued_search, c.coherent_search,
-            "coherent_search: true (the continuation is part of the coherent search)");
-    part_of("park_near_pairs", c.park_near_pairs, c.continued_search, "continued_search: true (near pairs are parked continued solutions)");
-    // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
-    if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
-    if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");
-    m.reject_unknown_keys();
-  }
+  return proposed;
 }
 
 physics::Scenario parse(const YamlMap& top, const fs::path& file) {
@@ -313,53 +224,8 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       add_joint(names, s.joints.back(), m, "name");
     }
 
-  if (given(top, "motors")) {
-    std::set<std::string> driven;
-    for (const YamlMap& m : top.list_of_maps("motors")) {
-      physics::MotorDef d;
-      d.joint = joint_ref(m, "joint", names);
-      if (!driven.insert(d.joint).second) m.fail("joint", "joint '" + d.joint + "' already has a motor");
-      d.target_speed_rad_s = number_within(m, "target_speed_rad_s", limits::kMotorSpeed_rad_s);
-      d.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
-      d.max_torque_N_m = number_within(m, "max_torque_N_m", limits::kMaxTorque_N_m);
-      m.reject_unknown_keys();
-      s.motors.push_back(d);
-    }
-  }
-  if (given(top, "loads"))
-    for (const YamlMap& m : top.list_of_maps("loads")) {
-      physics::LoadDef l;
-      l.joint = joint_ref(m, "joint", names);
-      l.constant_torque_N_m = number_within_or(m, "constant_torque_N_m", 0.0, limits::kTorque_N_m);
-      l.viscous_N_m_s_per_rad = number_within_or(m, "viscous_N_m_s_per_rad", 0.0, limits::kViscous_N_m_s_per_rad);
-      l.ramp_time_s = number_within_or(m, "ramp_time_s", 0.0, limits::kRampTime_s);
-      m.reject_unknown_keys();
-      s.loads.push_back(l);
-    }
-  if (given(top, "impulses"))
-    for (const YamlMap& m : top.list_of_maps("impulses")) s.impulses.push_back(parse_impulse(m, names, s));
-
-  // Transmission: the explicit block, each key defaulting to the macro's proposal.
-  std::optional<physics::TransmissionDef> proposed;
-  for (const auto& [e, key] : macros)
-    if (e.transmission) {
-      if (proposed && !top.has("transmission"))
-        top.fail(key, "two macros each define a transmission: give transmission {input_joint, output_joint, ratio}");
-      proposed = e.transmission;
-    }
-  if (given(top, "transmission")) {
-    const YamlMap m = top.map("transmission");
-    physics::TransmissionDef t = proposed.value_or(physics::TransmissionDef{});
-    if (!proposed || m.has("input_joint")) t.input_joint = joint_ref(m, "input_joint", names);
-    if (!proposed || m.has("output_joint")) t.output_joint = joint_ref(m, "output_joint", names);
-    if (t.input_joint == t.output_joint) m.fail("output_joint", "input and output are the same joint");
-    t.ratio = proposed ? m.number_or("ratio", t.ratio) : m.number("ratio");
-    if (!within(std::abs(t.ratio), limits::kRatioMagnitude))
-      m.fail("ratio", "a ratio θ_input/θ_output of either sign: " + limit_message(limits::kRatioMagnitude, std::abs(t.ratio)));
-    m.reject_unknown_keys();
-    proposed = t;
-  }
-  s.transmission = proposed;
+  parse_drives(top, names, s);
+  s.transmission = parse_transmission(top, macros, names);
   if (given(top, "contact")) {
     const YamlMap c = top.map("contact");
     if (given(c, "stiffness_tables")) parse_stiffness_tables(c.list_of_maps("stiffness_tables"), s, dir);

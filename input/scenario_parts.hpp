@@ -49,6 +49,10 @@ void parse_shape_and_mass(const YamlMap& m, physics::BodyDef& body, const std::f
 // (≥ 0, default 0: free to turn); unknown keys refused.
 physics::BearingDef parse_bearing(const YamlMap& m);
 
+// The settings blocks of a scenario's top level (solver, output, render, contact) into `s`,
+// before the bodies are read (scenario_settings.cpp).
+void parse_settings(const YamlMap& top, physics::Scenario& s);
+
 // The `planetary:` macro: sun, planet_0..planet_{N−1}, ring, carrier and their hinges.
 Expansion expand_planetary(const YamlMap& m, const std::filesystem::path& dir);
 // The `pair:` macro: two gears on hinges, meshing. External: driver at the origin, driven on
