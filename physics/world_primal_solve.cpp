@@ -88,20 +88,189 @@ void World::Impl::planar_soft_rows_n() {
 // N > 0: the tree has N coordinates, known when compiling (solve_rows_primal() dispatches on the
 // count): the short loops over them unroll; the same arithmetic in the same order.
 namespace {
+
+// The step's rows as primal_solve() reads them: Jacobians, bounds, right-hand sides,
+// compliances, friction links, bound states and impulses.
+template <int N>
+struct PrimalRows {
+  explicit PrimalRows(MultibodyEngine& e)
+      : n(e.rows.size()), ud(N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(e.dofs)), jrows(e.jrows.data()),
+        state(e.row_states.data()), lo(e.lo.data()), hi(e.hi.data()), b(e.b.data()), d(e.compliance.data()),
+        findex(e.findex.data()), x(e.x.data()) {}
+  const double* j(std::size_t i) const { return jrows + i * ud; }
+  // Friction whose normal sits at a zero lower bound: its impulse is 0.
+  bool pinned(std::size_t i) const { return findex[i] >= 0 && state[findex[i]] == RowBound::lower && lo[findex[i]] == 0; }
+  // Friction held at a multiple of its normal's impulse (an empty box).
+  bool held(std::size_t i) const { return findex[i] >= 0 && !(hi[i] > lo[i]); }
+  std::size_t n, ud;
+  const double* jrows;
+  RowBound* state;
+  const double *lo, *hi, *b, *d;
+  const int* findex;
+  double* x;
+};
+
+// Unknowns: the free rows (not pinned, not held), the stiff ones among them apart.
+template <int N>
+void primal_unknowns(MultibodyEngine& e, const PrimalRows<N>& r) {
+  e.primal_rows.clear();
+  e.primal_stiff.clear();
+  for (std::size_t i = 0; i < r.n; ++i) {
+    e.primal_unknown[i] = -1;
+    if (r.state[i] == RowBound::free && !r.pinned(i) && !r.held(i)) {
+      e.primal_unknown[i] = static_cast<int>(e.primal_rows.size());
+      e.primal_rows.push_back(static_cast<int>(i));
+      if (!e.primal_soft[i]) e.primal_stiff.push_back(static_cast<int>(i));
+    }
+  }
+}
+
+// Columns: each unknown's J, with the friction held at a multiple c of it (held rows, box
+// friction on a bound) folded in; the constants' impulses into f₀ (e.primal_const).
+template <int N>
+void primal_columns(MultibodyEngine& e, const PrimalRows<N>& r) {
+  const std::size_t m = e.primal_rows.size(), ud = r.ud;
+  double* x = r.x;
+  e.primal_cols.resize(m * ud);
+  for (std::size_t u = 0; u < m; ++u) std::copy(r.j(static_cast<std::size_t>(e.primal_rows[u])), r.j(static_cast<std::size_t>(e.primal_rows[u])) + ud, e.primal_cols.begin() + static_cast<std::ptrdiff_t>(u * ud));
+  double* f0 = e.primal_const.data();
+  std::fill(f0, f0 + ud, 0.0);
+  for (std::size_t i = 0; i < r.n; ++i) {
+    if (e.primal_unknown[i] >= 0 || r.findex[i] >= 0) continue;
+    x[i] = r.state[i] == RowBound::lower ? r.lo[i] : r.hi[i];  // a row on a bound
+    if (x[i] != 0)
+      for (std::size_t k = 0; k < ud; ++k) f0[k] += r.j(i)[k] * x[i];
+  }
+  for (std::size_t i = 0; i < r.n; ++i) {
+    if (e.primal_unknown[i] >= 0 || r.findex[i] < 0) continue;
+    if (r.pinned(i)) {
+      x[i] = 0;
+      continue;
+    }
+    const double c = r.held(i) || r.state[i] == RowBound::lower ? r.lo[i] : r.hi[i];
+    const std::size_t f = static_cast<std::size_t>(r.findex[i]);
+    if (e.primal_unknown[f] >= 0) {
+      double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[f]) * ud;
+      for (std::size_t k = 0; k < ud; ++k) col[k] += c * r.j(i)[k];
+    } else {
+      x[i] = c * x[f];
+      if (x[i] != 0)
+        for (std::size_t k = 0; k < ud; ++k) f0[k] += r.j(i)[k] * x[i];
+    }
+  }
+}
+
+// K = M + Σ_springs J_f,u·J_uᵀ/D_u (e.primal_k) and its right-hand side f₀ + Σ_springs
+// J_f,u·b_u/D_u (e.primal_rhs).
+template <int N>
+void primal_k(MultibodyEngine& e, const PrimalRows<N>& r) {
+  const std::size_t m = e.primal_rows.size(), ud = r.ud;
+  double* kk = e.primal_k.data();
+  double* rhs = e.primal_rhs.data();
+  for (std::size_t a = 0; a < ud; ++a)
+    for (std::size_t c = 0; c < ud; ++c) kk[a * ud + c] = c <= a ? e.mass[a * ud + c] : e.mass[c * ud + a];
+  std::copy(e.primal_const.data(), e.primal_const.data() + ud, rhs);
+  for (std::size_t u = 0; u < m; ++u) {
+    const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
+    if (!e.primal_soft[i]) continue;
+    const double inv_d = 1 / r.d[i];
+    const double* col = e.primal_cols.data() + u * ud;
+    const double* ji = r.j(i);
+    for (std::size_t a = 0; a < ud; ++a) {
+      const double ca = col[a] * inv_d;
+      if (ca == 0) continue;
+      rhs[a] += ca * r.b[i];
+      double* row = kk + a * ud;
+      for (std::size_t c = 0; c < ud; ++c) row[c] += ca * ji[c];
+    }
+  }
+}
+
+// The stiff rows, with K factorised and dv₀ in e.primal_dv: Y = K⁻¹·J_f,R, then
+// (D_R + J_R·Y)·λ_R = b_R − J_R·dv₀; λ_R into x and Y·λ_R added to dv. False where the Schur
+// matrix does not factorise.
+template <int N>
+bool primal_stiff_rows(MultibodyEngine& e, const PrimalRows<N>& r) {
+  const std::size_t ms = e.primal_stiff.size(), ud = r.ud;
+  const int dofs = static_cast<int>(ud);
+  double* dv = e.primal_dv.data();
+  e.primal_y.resize(ms * ud);
+  e.primal_s.resize(ms * ms);
+  e.primal_t.resize(ms);
+  for (std::size_t q = 0; q < ms; ++q) {
+    const std::size_t i = static_cast<std::size_t>(e.primal_stiff[q]);
+    double* y = e.primal_y.data() + q * ud;
+    const double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[i]) * ud;
+    std::copy(col, col + ud, y);
+    lu_solve<N>(dofs, e.primal_k.data(), e.primal_pivots.data(), y);
+  }
+  for (std::size_t q = 0; q < ms; ++q) {
+    const std::size_t i = static_cast<std::size_t>(e.primal_stiff[q]);
+    for (std::size_t c = 0; c < ms; ++c) e.primal_s[q * ms + c] = dot(r.j(i), e.primal_y.data() + c * ud, ud) + (q == c ? r.d[i] : 0.0);
+    e.primal_t[q] = r.b[i] - dot(r.j(i), dv, ud);
+  }
+  std::vector<int>& piv = e.primal_stiff_pivots;
+  piv.resize(ms);
+  if (!lu_factor(static_cast<int>(ms), e.primal_s.data(), piv.data())) return false;
+  lu_solve(static_cast<int>(ms), e.primal_s.data(), piv.data(), e.primal_t.data());
+  for (std::size_t q = 0; q < ms; ++q) {
+    r.x[static_cast<std::size_t>(e.primal_stiff[q])] = e.primal_t[q];
+    const double* y = e.primal_y.data() + q * ud;
+    for (std::size_t k = 0; k < ud; ++k) dv[k] += y[k] * e.primal_t[q];
+  }
+  return true;
+}
+
+// The springs' impulses from dv, then the folded friction from its normal. True when a row has
+// conditions on w (one on a bound, not held).
+template <int N>
+bool primal_impulses(MultibodyEngine& e, const PrimalRows<N>& r) {
+  const double* dv = e.primal_dv.data();
+  double* x = r.x;
+  for (std::size_t u = 0; u < e.primal_rows.size(); ++u) {
+    const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
+    if (e.primal_soft[i]) x[i] = (r.b[i] - dot(r.j(i), dv, r.ud)) / r.d[i];
+  }
+  bool on_bound = false;
+  for (std::size_t i = 0; i < r.n; ++i) {
+    if (e.primal_unknown[i] >= 0) continue;
+    if (!r.held(i) && !r.pinned(i)) on_bound = true;
+    if (r.findex[i] < 0 || r.pinned(i)) continue;
+    const std::size_t f = static_cast<std::size_t>(r.findex[i]);
+    if (e.primal_unknown[f] >= 0) x[i] = (r.held(i) || r.state[i] == RowBound::lower ? r.lo[i] : r.hi[i]) * x[f];
+  }
+  return on_bound;
+}
+
+// The conditions' scales over the rows that have conditions (held friction has none: it is not
+// a row of the folded problem); w = A·x − b = J·dv + D·x − b where a row sits on a bound (a free
+// row's w is 0: it has none to meet) into e.primal_w. False where a value is not finite.
+template <int N>
+bool primal_scales(MultibodyEngine& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale) {
+  const double* dv = e.primal_dv.data();
+  x_scale = 0, w_scale = 0;
+  for (std::size_t i = 0; i < r.n; ++i) {
+    if (!std::isfinite(r.x[i])) return false;
+    if (r.held(i)) continue;
+    x_scale = std::max(x_scale, std::abs(r.x[i]));
+  }
+  if (on_bound) {
+    for (std::size_t i = 0; i < r.n; ++i) {
+      const double ax = dot(r.j(i), dv, r.ud) + r.d[i] * r.x[i];
+      e.primal_w[i] = ax - r.b[i];
+      if (!std::isfinite(ax)) return false;
+      if (r.held(i)) continue;
+      w_scale = std::max({w_scale, std::abs(r.b[i]), std::abs(ax)});
+    }
+  }
+  return true;
+}
+
 template <int N>
 int primal_solve(MultibodyEngine& e) {
-  const std::size_t n = e.rows.size(), ud = N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(e.dofs);
+  const PrimalRows<N> r(e);
+  const std::size_t n = r.n, ud = r.ud;
   const int dofs = static_cast<int>(ud);
-  const double* jrows = e.jrows.data();
-  const auto j = [&](std::size_t i) { return jrows + i * ud; };
-  RowBound* state = e.row_states.data();
-  const double *lo = e.lo.data(), *hi = e.hi.data(), *b = e.b.data(), *d = e.compliance.data();
-  const int* findex = e.findex.data();
-  double* x = e.x.data();
-  const auto pinned = [&](std::size_t i) {
-    return findex[i] >= 0 && state[findex[i]] == RowBound::lower && lo[findex[i]] == 0;
-  };
-  const auto held = [&](std::size_t i) { return findex[i] >= 0 && !(hi[i] > lo[i]); };
   e.primal_unknown.resize(n);
   e.primal_w.resize(n);
   e.primal_dv.resize(ud);
@@ -110,133 +279,22 @@ int primal_solve(MultibodyEngine& e) {
   e.primal_k.resize(ud * ud);
   e.primal_pivots.resize(ud);
   for (int solves = 1; solves <= kMaxSolves; ++solves) {
-    // Unknowns: the free rows (not pinned, not held); the others are constants or folded.
-    e.primal_rows.clear();
-    e.primal_stiff.clear();
-    for (std::size_t i = 0; i < n; ++i) {
-      e.primal_unknown[i] = -1;
-      if (state[i] == RowBound::free && !pinned(i) && !held(i)) {
-        e.primal_unknown[i] = static_cast<int>(e.primal_rows.size());
-        e.primal_rows.push_back(static_cast<int>(i));
-        if (!e.primal_soft[i]) e.primal_stiff.push_back(static_cast<int>(i));
-      }
-    }
-    const std::size_t m = e.primal_rows.size(), ms = e.primal_stiff.size();
-    // Columns: each unknown's J, with the friction held at a multiple c of it (held rows, box
-    // friction on a bound) folded in; the constants' impulses into f₀.
-    e.primal_cols.resize(m * ud);
-    for (std::size_t u = 0; u < m; ++u) std::copy(j(static_cast<std::size_t>(e.primal_rows[u])), j(static_cast<std::size_t>(e.primal_rows[u])) + ud, e.primal_cols.begin() + static_cast<std::ptrdiff_t>(u * ud));
-    double* f0 = e.primal_const.data();
-    std::fill(f0, f0 + ud, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (e.primal_unknown[i] >= 0 || findex[i] >= 0) continue;
-      x[i] = state[i] == RowBound::lower ? lo[i] : hi[i];  // a row on a bound
-      if (x[i] != 0)
-        for (std::size_t k = 0; k < ud; ++k) f0[k] += j(i)[k] * x[i];
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      if (e.primal_unknown[i] >= 0 || findex[i] < 0) continue;
-      if (pinned(i)) {
-        x[i] = 0;
-        continue;
-      }
-      const double c = held(i) || state[i] == RowBound::lower ? lo[i] : hi[i];
-      const std::size_t f = static_cast<std::size_t>(findex[i]);
-      if (e.primal_unknown[f] >= 0) {
-        double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[f]) * ud;
-        for (std::size_t k = 0; k < ud; ++k) col[k] += c * j(i)[k];
-      } else {
-        x[i] = c * x[f];
-        if (x[i] != 0)
-          for (std::size_t k = 0; k < ud; ++k) f0[k] += j(i)[k] * x[i];
-      }
-    }
-    // K = M + Σ_springs J_f,u·J_uᵀ/D_u and its right-hand side.
+    primal_unknowns(e, r);
+    primal_columns(e, r);
+    primal_k(e, r);
     double* kk = e.primal_k.data();
     double* rhs = e.primal_rhs.data();
-    for (std::size_t a = 0; a < ud; ++a)
-      for (std::size_t c = 0; c < ud; ++c) kk[a * ud + c] = c <= a ? e.mass[a * ud + c] : e.mass[c * ud + a];
-    std::copy(f0, f0 + ud, rhs);
-    for (std::size_t u = 0; u < m; ++u) {
-      const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
-      if (!e.primal_soft[i]) continue;
-      const double inv_d = 1 / d[i];
-      const double* col = e.primal_cols.data() + u * ud;
-      const double* ji = j(i);
-      for (std::size_t a = 0; a < ud; ++a) {
-        const double ca = col[a] * inv_d;
-        if (ca == 0) continue;
-        rhs[a] += ca * b[i];
-        double* row = kk + a * ud;
-        for (std::size_t c = 0; c < ud; ++c) row[c] += ca * ji[c];
-      }
-    }
     if (!lu_factor<N>(dofs, kk, e.primal_pivots.data())) return 0;
     lu_solve<N>(dofs, kk, e.primal_pivots.data(), rhs);  // dv of the springs and constants alone
-    double* dv = e.primal_dv.data();
-    std::copy(rhs, rhs + ud, dv);
-    if (ms > 0) {
-      // The stiff rows: Y = K⁻¹·J_f,R, then (D_R + J_R·Y)·λ_R = b_R − J_R·dv₀.
-      e.primal_y.resize(ms * ud);
-      e.primal_s.resize(ms * ms);
-      e.primal_t.resize(ms);
-      for (std::size_t r = 0; r < ms; ++r) {
-        const std::size_t i = static_cast<std::size_t>(e.primal_stiff[r]);
-        double* y = e.primal_y.data() + r * ud;
-        const double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[i]) * ud;
-        std::copy(col, col + ud, y);
-        lu_solve<N>(dofs, kk, e.primal_pivots.data(), y);
-      }
-      for (std::size_t r = 0; r < ms; ++r) {
-        const std::size_t i = static_cast<std::size_t>(e.primal_stiff[r]);
-        for (std::size_t c = 0; c < ms; ++c) e.primal_s[r * ms + c] = dot(j(i), e.primal_y.data() + c * ud, ud) + (r == c ? d[i] : 0.0);
-        e.primal_t[r] = b[i] - dot(j(i), dv, ud);
-      }
-      std::vector<int>& piv = e.primal_stiff_pivots;
-      piv.resize(ms);
-      if (!lu_factor(static_cast<int>(ms), e.primal_s.data(), piv.data())) return 0;
-      lu_solve(static_cast<int>(ms), e.primal_s.data(), piv.data(), e.primal_t.data());
-      for (std::size_t r = 0; r < ms; ++r) {
-        x[static_cast<std::size_t>(e.primal_stiff[r])] = e.primal_t[r];
-        const double* y = e.primal_y.data() + r * ud;
-        for (std::size_t k = 0; k < ud; ++k) dv[k] += y[k] * e.primal_t[r];
-      }
-    }
-    // The springs' impulses from dv, then the folded friction from its normal.
-    for (std::size_t u = 0; u < m; ++u) {
-      const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
-      if (e.primal_soft[i]) x[i] = (b[i] - dot(j(i), dv, ud)) / d[i];
-    }
-    bool on_bound = false;  // a row with conditions on w (one on a bound, not held)
-    for (std::size_t i = 0; i < n; ++i) {
-      if (e.primal_unknown[i] >= 0) continue;
-      if (!held(i) && !pinned(i)) on_bound = true;
-      if (findex[i] < 0 || pinned(i)) continue;
-      const std::size_t f = static_cast<std::size_t>(findex[i]);
-      if (e.primal_unknown[f] >= 0) x[i] = (held(i) || state[i] == RowBound::lower ? lo[i] : hi[i]) * x[f];
-    }
-    // The conditions' scales over the rows that have conditions (held friction has none: it is
-    // not a row of the folded problem); w = A·x − b = J·dv + D·x − b where a row sits on a bound
-    // (a free row's w is 0: it has none to meet).
-    double x_scale = 0, w_scale = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!std::isfinite(x[i])) return 0;
-      if (held(i)) continue;
-      x_scale = std::max(x_scale, std::abs(x[i]));
-    }
-    if (on_bound) {
-      for (std::size_t i = 0; i < n; ++i) {
-        const double ax = dot(j(i), dv, ud) + d[i] * x[i];
-        e.primal_w[i] = ax - b[i];
-        if (!std::isfinite(ax)) return 0;
-        if (held(i)) continue;
-        w_scale = std::max({w_scale, std::abs(b[i]), std::abs(ax)});
-      }
-    }
-    if (settle_row_states(static_cast<int>(n), x, on_bound ? e.primal_w.data() : nullptr, lo, hi, findex, state, solves,
+    std::copy(rhs, rhs + ud, e.primal_dv.data());
+    if (!e.primal_stiff.empty() && !primal_stiff_rows(e, r)) return 0;
+    const bool on_bound = primal_impulses(e, r);
+    double x_scale, w_scale;
+    if (!primal_scales(e, r, on_bound, x_scale, w_scale)) return 0;
+    if (settle_row_states(static_cast<int>(n), r.x, on_bound ? e.primal_w.data() : nullptr, r.lo, r.hi, r.findex, r.state, solves,
                           kRelativeTolerance * x_scale, kRelativeTolerance * w_scale)) {
       for (std::size_t i = 0; i < n; ++i)
-        if (held(i)) state[i] = RowBound::lower;
+        if (r.held(i)) r.state[i] = RowBound::lower;
       return solves;
     }
   }
