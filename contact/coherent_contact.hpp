@@ -158,15 +158,8 @@ class CoherentToothSearch {
     double margin_m = -1;
   };
 
- private:
-  const FlankTable* tables_[2] = {nullptr, nullptr};
-  std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
-  std::vector<ToothRecord> tooth_records_[2];  // per pass, per tooth
-  std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
-  std::vector<SampleTravels> travels_[2];  // per pass, indexed as records_
-  // Per pass, indexed as records_: a call's solution (flank_search_impl.hpp's
-  // Hit::solved, r_x, s_y, tooth_y, flank_y), kept when continuation is on; continued only by
-  // the next call.
+  // A flank's solution of a call (flank_search_impl.hpp's Hit::solved, r_x, s_y, tooth_y,
+  // flank_y), kept per pass and flank when continuation is on; continued only by the next call.
   struct Solution {
     signed char solved = 0;  // Hit::Solved; 0: none to continue
     int tooth_y = -1;
@@ -179,6 +172,16 @@ class CoherentToothSearch {
     FaceReference face;
     bool parked = false;  // left unsolved by the call `call` (its radii are older)
   };
+
+ private:
+  // The records sized for a new pair of tables.
+  void adopt_tables(const FlankTable& a, const FlankTable& b);
+
+  const FlankTable* tables_[2] = {nullptr, nullptr};
+  std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
+  std::vector<ToothRecord> tooth_records_[2];  // per pass, per tooth
+  std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
+  std::vector<SampleTravels> travels_[2];  // per pass, indexed as records_
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
   // Per pass, indexed as records_: a near pair's last solve, for parking it (valid where the
   // flank's solution is one; apart from Solution, whose copies it would lengthen).
