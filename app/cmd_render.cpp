@@ -31,8 +31,8 @@ void register_render(CLI::App& app) {
   sub->add_option("--from", o->from_s, "First simulated time, s (default: the first logged sample).")
       ->check(input::cli_within(input::limits::kRunTime_s));
   sub->add_option("--to", o->to_s, "Last simulated time, s (default: the last logged sample).")->check(input::cli_within(input::limits::kRunTime_s));
-  sub->add_option("--width", o->def.width_px, "Frame width, px (even).")->check(CLI::Range(16, 4096));
-  sub->add_option("--height", o->def.height_px, "Frame height, px (even).")->check(CLI::Range(16, 4096));
+  sub->add_option("--width", o->def.width_px, "Frame width, px (even).")->check(input::cli_within(input::limits::kFrameSize_px));
+  sub->add_option("--height", o->def.height_px, "Frame height, px (even).")->check(input::cli_within(input::limits::kFrameSize_px));
   sub->add_option("--msaa", o->def.msaa,
                   "Multisampling with this many samples (2 to 16) instead of the default edge anti-aliasing (0).")
       ->check(CLI::Range(0, 16))
