@@ -3,13 +3,15 @@
 # input file). Builds build-fuzz/ with clang (GEARSIM_FUZZ: the libraries with ASan + UBSan and
 # libFuzzer's coverage hooks), assembles the seed corpus from the repository, runs the target and
 # prints executions, exec/s and the crashes found.
-# Usage: scripts/fuzz.sh fuzz_scenario|fuzz_mesh|fuzz_run_record|fuzz_set SECONDS [JOBS]
+# Usage: scripts/fuzz.sh fuzz_scenario|fuzz_mesh|fuzz_mesh_obj|fuzz_run_record|fuzz_set SECONDS [JOBS]
 #   fuzz_scenario  the bytes as a scenario file (load_scenario); seeds: assets/scenarios/*.yaml
 #                  and small scenarios like the tests' (a wheel, MCAD pairs, gear_from, tables)
-#   fuzz_mesh      byte 0 picks STL or OBJ (one in eight) and the unit, the rest is the file (read_mesh_gear:
-#                  import, validation, prism, gear recognition); seeds: the MCAD meshes of
-#                  tests/data/mcad (35–154 kB binary STL), the z 12 one as ASCII STL and OBJ, and
-#                  a cube; assets/gears/ (0.36–1.4 MB) are larger than -max_len and left out
+#   fuzz_mesh      byte 0 picks the unit, the rest is an STL file (read_mesh_gear: import,
+#                  validation, prism, gear recognition); seeds: the MCAD meshes of
+#                  tests/data/mcad (35–154 kB binary STL) and the z 12 one as ASCII STL;
+#                  assets/gears/ (0.36–1.4 MB) are larger than -max_len and left out
+#   fuzz_mesh_obj  the same with an OBJ file (a target of its own: Assimp's OBJ importer fills a
+#                  16 MiB buffer per file, ~80 ms under ASan); seeds: the z 12 one as OBJ, a cube
 #   fuzz_run_record  byte 0 picks scenario.json, summary.json or the manifest, the rest is the
 #                  record (the readers of analyze/report/render); seeds: a short spur-pair run's
 #                  records (made with build/bin/gearsim when it is built) and two damaged ones
@@ -30,7 +32,7 @@ target=$1 seconds=$2 jobs=${3:-1}
 # meshes under ASan; 1.7 s in the GCC Release build): 30 s for scenarios, 10 s for meshes.
 case $target in
   fuzz_scenario) max_len=65536 timeout=30 ;;  # 64 KiB: the largest shipped scenario is 5 kB
-  fuzz_mesh) max_len=262144 timeout=10 ;;     # 256 KiB: the MCAD ring (154 kB) fits
+  fuzz_mesh | fuzz_mesh_obj) max_len=262144 timeout=10 ;;  # 256 KiB: the MCAD ring (154 kB) fits
   fuzz_run_record) max_len=131072 timeout=10 ;;  # 128 KiB: a paper run's summary is ~10 kB
   fuzz_set) max_len=4096 timeout=10 ;;
   *) usage ;;
@@ -127,18 +129,20 @@ elif [[ $target == fuzz_set ]]; then
   printf 'solver={time_step_s: 1e-4, time_step_s: 1e-5}' >"$seeds/twice"
   printf 'x={a: &a [1, 1, 1], b: &b [*a, *a, *a], c: [*b, *b, *b]}' >"$seeds/aliases"
 else
-  # Byte 0: low three bits 001 = OBJ (else STL), (byte >> 3) % 3 = unit (mm, m, in); \x00 is a
-  # mm STL, \x01 a mm OBJ.
-  for f in tests/data/mcad/*.stl; do
-    { printf '\x00'; cat "$f"; } >"$seeds/$(basename "$f")"
-  done
+  # Byte 0: byte % 3 = unit (mm, m, in); \x00 is mm, \x01 m.
+  if [[ $target == fuzz_mesh ]]; then
+    for f in tests/data/mcad/*.stl; do
+      { printf '\x00'; cat "$f"; } >"$seeds/$(basename "$f")"
+    done
+  fi
   # The z 12 pinion as ASCII STL and as OBJ (shared vertices), converted here from its binary STL.
-  python3 - tests/data/mcad/mcad_m1_z12_a20_f5_b005.stl "$seeds" <<'EOF'
+  python3 - tests/data/mcad/mcad_m1_z12_a20_f5_b005.stl "$seeds" "$target" <<'EOF'
 import struct, sys
 data = open(sys.argv[1], 'rb').read()
 n = struct.unpack_from('<I', data, 80)[0]
 facets = [struct.unpack_from('<12f', data, 84 + 50 * i) for i in range(n)]
-with open(sys.argv[2] + '/z12_ascii.stl', 'wb') as f:
+obj = sys.argv[3] == 'fuzz_mesh_obj'
+with open(sys.argv[2] + '/z12_ascii.stl', 'wb') if not obj else open('/dev/null', 'wb') as f:
     f.write(b'\x00solid z12\n')
     for t in facets:
         f.write(b'facet normal %g %g %g\n outer loop\n' % t[:3])
@@ -156,12 +160,15 @@ for t in facets:
             lines.append(b'v %.9g %.9g %.9g\n' % v)
         face.append(index[v])
     faces.append(b'f %d %d %d\n' % tuple(face))
-with open(sys.argv[2] + '/z12.obj', 'wb') as f:
-    f.write(b'\x01' + b''.join(lines) + b''.join(faces))
+if obj:
+    with open(sys.argv[2] + '/z12.obj', 'wb') as f:
+        f.write(b'\x00' + b''.join(lines) + b''.join(faces))
 EOF
   # A unit cube (a solid, not a gear), as OBJ in metres.
-  printf '\x03v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n' \
-    >"$seeds/cube.obj"
+  if [[ $target == fuzz_mesh_obj ]]; then
+    printf '\x01v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n' \
+      >"$seeds/cube.obj"
+  fi
 fi
 
 # Run: JOBS fuzzing loops side by side, sharing corpus/ (libFuzzer reloads it). A crash, leak,
