@@ -26,6 +26,11 @@ struct GearsOptions {
   double hausdorff_spacing_mm = 0.5;
 };
 
+// The file name ending of a --formats value.
+std::string extension_of(const std::string& format) {
+  return format == "obj" ? ".obj" : format == "stl-ascii" ? ".ascii.stl" : ".stl";
+}
+
 void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
   const std::filesystem::path dir(o.out_dir);
   OutputFolder folder(dir, "gearsim gears");
@@ -35,14 +40,13 @@ void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
     if (!input::is_safe_name(name, input::NameUse::File))
       throw InputError("gear '" + input::shown_name(name) + "': expected " + input::safe_name_rule(input::NameUse::File) +
                        " (it names a file in " + dir.string() + ")");
-    for (const std::string& f : o.formats) names.push_back(name + (f == "obj" ? ".obj" : f == "stl-ascii" ? ".ascii.stl" : ".stl"));
+    for (const std::string& f : o.formats) names.push_back(name + extension_of(f));
   }
   folder.declare(names);
   for (const auto& [name, body] : a.bodies) {
     for (const std::string& f : o.formats) {
       const MeshFormat fmt = f == "obj" ? MeshFormat::Obj : f == "stl-ascii" ? MeshFormat::StlAscii : MeshFormat::StlBinary;
-      const std::string ext = f == "obj" ? ".obj" : f == "stl-ascii" ? ".ascii.stl" : ".stl";
-      export_mesh(body.mesh, dir / (name + ext), fmt, LengthUnit::Millimetre);
+      export_mesh(body.mesh, dir / (name + extension_of(f)), fmt, LengthUnit::Millimetre);
     }
   }
   json doc = a.doc;
