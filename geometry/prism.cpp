@@ -210,18 +210,20 @@ std::vector<double> turns(const Polygon2& p) {
 // edge's allowance is twice that, from the smaller turn at its two ends (at a sharp corner the
 // turn is the corner's, not the wall's curvature), and none where both ends turn more than
 // kSampledTurn_rad (corners of a polygon, not samples of a curve). `allowance` gets each wall vertex's (its
-// nearest edge's), `deviation` the largest distance of a wall vertex from the outline. Outline
+// nearest edge's) and `curvature` its edge's turn per length (rad/m: the wall's curvature there,
+// 0 where the edge is no sample of a curve), `deviation` the largest distance of a wall vertex
+// from the outline. Outline
 // edges are binned on a grid whose cell (the mean edge length, at least 4·tol and 1e-6 of the
 // perimeter, and the largest allowance) bounds the work: each edge is walked in steps of a cell
 // and goes to the 3×3 cells around each step, so a vertex within its allowance of an edge finds
 // it in its own cell.
 Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>& uv, const std::vector<double>& w,
                                const std::vector<std::size_t>& wall, double tol, double w_lo, double w_hi,
-                               std::vector<double>& allowance, double& deviation) {
+                               std::vector<double>& allowance, std::vector<double>& curvature, double& deviation) {
   deviation = 0;
   if (wall.empty()) return {};
   std::vector<std::pair<Vec2, Vec2>> edges;
-  std::vector<double> edge_allowance;
+  std::vector<double> edge_allowance, edge_curvature;
   double length = 0;
   auto add = [&](const Polygon2& p) {
     const std::vector<double> turn = turns(p);
@@ -232,6 +234,7 @@ Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>&
       length += l;
       const double sampled = std::min(turn[i], turn[j]);
       edge_allowance.push_back(sampled <= kSampledTurn_rad ? l * sampled / 4 : 0.0);
+      edge_curvature.push_back(sampled <= kSampledTurn_rad && l > 0 ? sampled / l : 0.0);
     }
   };
   add(outline.outer);
@@ -268,6 +271,7 @@ Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>&
                      (nearest >= 0 ? " (its wall's chord allows " + fmt(tol + edge_allowance[static_cast<std::size_t>(nearest)]) + " m)" : "")};
     }
     allowance[i] = edge_allowance[static_cast<std::size_t>(nearest)];
+    curvature[i] = edge_curvature[static_cast<std::size_t>(nearest)];
     deviation = std::max(deviation, best);
   }
   return {};
@@ -305,9 +309,10 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     uv[i] = Vec2(d.dot(f.x), d.dot(f.y));
   }
   // Caps keep all three corners on one plane; every other face projects onto a segment: within
-  // tol, and within its wall vertices' chord allowance where it has any (a face across a curved
-  // wall's tessellation, checked once the outline is known).
-  std::vector<double> allowance(nv, 0.0);
+  // tol, and where it has wall vertices (a face across a curved wall's tessellation, checked once
+  // the outline is known) within their chord allowance or the sagitta of its own span e on the
+  // wall's curvature κ there, twice e²·κ/8 (a face may span several of the caps' chords).
+  std::vector<double> allowance(nv, 0.0), curvature(nv, 0.0);
   auto off_wall_line = [&](std::size_t t) -> Check {
     const auto& tri = mesh.triangles[t];
     const std::array<Vec2, 3> p{uv[tri[0]], uv[tri[1]], uv[tri[2]]};
@@ -318,7 +323,8 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     const Vec2 e = p[(k + 2) % 3] - p[(k + 1) % 3];
     const double off =
         e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
-    if (off > tol + std::max({allowance[tri[0]], allowance[tri[1]], allowance[tri[2]]}))
+    const double kappa = std::max({curvature[tri[0]], curvature[tri[1]], curvature[tri[2]]});
+    if (off > tol + std::max({allowance[tri[0]], allowance[tri[1]], allowance[tri[2]], e.squaredNorm() * kappa / 4}))
       return Refusal{"face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " +
              fmt(off) + " m off its wall line"};
     return {};
@@ -414,7 +420,9 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     return Refusal{"the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) +
            " m^2"};
   if (const Check c = check_outline(prism.outline); !c) return Refusal{"the recovered outline is invalid: " + c.reason()};
-  if (const Check c = wall_vertices_on_outline(prism.outline, uv, w, wall_vertices, tol, w_lo, w_hi, allowance, prism.wall_deviation_m); !c)
+  if (const Check c = wall_vertices_on_outline(prism.outline, uv, w, wall_vertices, tol, w_lo, w_hi, allowance, curvature,
+                                               prism.wall_deviation_m);
+      !c)
     return c;
   for (std::size_t t : curved_wall_faces)
     if (const Check c = off_wall_line(t); !c) return c;
