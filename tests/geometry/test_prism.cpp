@@ -118,17 +118,23 @@ TEST(Prism, MalformedInputThrows) {
   EXPECT_THROW(recover_prism(m, 1e-9), InputError);
 }
 
-// Rebuilds the side walls of an extruded prism (vertices: the outline's points at z0, then at z1)
-// as an exporter that splits them does: each wall column gets a vertex between the caps, at a
-// height that varies along the loop, moved `off_m` out of the wall plane.
-TriMesh split_walls(const Outline2& o, double z0, double z1, double off_m) {
+// The extruded prism of `o` with its caps only (vertices: the outline's points at z0, then at z1).
+TriMesh caps_only(const Outline2& o, double z0, double z1) {
   TriMesh m = extrude(o, z0, z1);
-  const auto n = static_cast<std::uint32_t>(m.vertices.size() / 2);
   std::vector<std::array<std::uint32_t, 3>> caps;
   for (const auto& t : m.triangles)
     if (m.vertices[t[0]].z() == m.vertices[t[1]].z() && m.vertices[t[1]].z() == m.vertices[t[2]].z())
       caps.push_back(t);
   m.triangles = caps;
+  return m;
+}
+
+// Rebuilds the side walls of an extruded prism (vertices: the outline's points at z0, then at z1)
+// as an exporter that splits them does: each wall column gets a vertex between the caps, at a
+// height that varies along the loop, moved `off_m` out of the wall plane.
+TriMesh split_walls(const Outline2& o, double z0, double z1, double off_m) {
+  TriMesh m = caps_only(o, z0, z1);
+  const auto n = static_cast<std::uint32_t>(m.vertices.size() / 2);
   std::uint32_t first = 0;
   std::vector<const Polygon2*> loops{&o.outer};
   for (const Polygon2& h : o.holes) loops.push_back(&h);
@@ -176,13 +182,8 @@ TEST(Prism, VerticesOnTheSideWallsBetweenTheCapsAreAccepted) {
 // does: each wall column gets a vertex at mid-height, halfway along its chord, `factor` times the
 // chord's sagitta s out of it (factor 1: on the circle the loop samples, radius r).
 TriMesh tessellated_walls(const Outline2& o, double z0, double z1, double r, double factor) {
-  TriMesh m = extrude(o, z0, z1);  // the loop's points at z0, then at z1 (one loop, no holes)
+  TriMesh m = caps_only(o, z0, z1);  // one loop, no holes
   const auto n = static_cast<std::uint32_t>(m.vertices.size() / 2);
-  std::vector<std::array<std::uint32_t, 3>> caps;
-  for (const auto& t : m.triangles)
-    if (m.vertices[t[0]].z() == m.vertices[t[1]].z() && m.vertices[t[1]].z() == m.vertices[t[2]].z())
-      caps.push_back(t);
-  m.triangles = caps;
   const auto k = static_cast<std::uint32_t>(o.outer.points.size());
   for (std::uint32_t i = 0; i < k; ++i) {
     const Vec2 a = o.outer.points[i], b = o.outer.points[(i + 1) % k], e = b - a;
