@@ -145,6 +145,9 @@ json inspect_mesh(const InspectOptions& o) {
   const double decompose_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const DecompositionDeviation dev = decomposition_deviation(mesh, pieces, o.spacing_mm * 1e-3);
   j["prism_height_mm"] = pr->height_m * 1e3;
+  // How far the side walls' own vertices lie from the outline (an exporter's tessellation of a curved
+  // wall between the caps; 0 for an exact prism).
+  j["prism_wall_deviation_um"] = pr->wall_deviation_m * 1e6;
   j["outline_holes"] = pr->outline.holes.size();
   j["convex_pieces"] = d.pieces.size();
   j["tooth_sectors_exact"] = d.sectors_exact;

@@ -25,6 +25,10 @@ using Vec3 = Eigen::Vector3d;
 // this angle of each other always share a candidate. Normally 1e-3: caps of an extrusion are
 // parallel to rounding (~1e-12 rad on gear meshes), and curved side walls spread over many bins.
 constexpr double kAxisBin_rad = 1e-3;
+// The largest turn (rad) between two edges of a cap outline that still samples a smooth curve:
+// exporters tessellate curves at an angular deflection of at most ~0.5 rad (FreeCAD's coarsest
+// default, MeshPart's AngularDeflection); a larger turn is a corner of the outline.
+constexpr double kSampledTurn_rad = 0.6;
 // At most this many candidate axes are tried, largest face area first.
 constexpr int kMaxAxisCandidates = 64;
 
@@ -187,25 +191,56 @@ double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   return (a + t * ab - p).norm();
 }
 
-// Every vertex between the caps lies within tol of the outline (a side wall), or the refusal
-// names the first that does not. Outline edges are binned on a grid whose cell (the mean edge
-// length, at least 4·tol and 1e-6 of the perimeter) bounds the work: each edge is walked in
-// steps of a cell and goes to the 3×3 cells around each step, so a vertex within tol of an edge
-// finds it in its own cell.
+// The turn (rad, 0 to π) of a closed polygon at each vertex.
+std::vector<double> turns(const Polygon2& p) {
+  const std::size_t n = p.points.size();
+  std::vector<double> t(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 in = p.points[i] - p.points[(i + n - 1) % n], out = p.points[(i + 1) % n] - p.points[i];
+    t[i] = std::abs(std::atan2(cross2(in, out), in.dot(out)));
+  }
+  return t;
+}
+
+// Every vertex between the caps lies within tol of the outline (a side wall), or within its
+// edge's chord allowance beyond that, or the refusal names the first that does not. An
+// exporter that tessellates a curved side wall (a bore's cylinder, a flank) puts vertices on the
+// true surface between the caps, off the cap outline's chord by up to the chord's sagitta:
+// L²/(8R) = L·θ/8 for a chord of length L on a circle sampled at a turn θ per chord. Each
+// edge's allowance is twice that, from the smaller turn at its two ends (at a sharp corner the
+// turn is the corner's, not the wall's curvature), and none where both ends turn more than
+// kSampledTurn_rad (corners of a polygon, not samples of a curve). `allowance` gets each wall vertex's (its
+// nearest edge's) and `curvature` its edge's turn per length (rad/m: the wall's curvature there,
+// 0 where the edge is no sample of a curve), `deviation` the largest distance of a wall vertex
+// from the outline. Outline
+// edges are binned on a grid whose cell (the mean edge length, at least 4·tol and 1e-6 of the
+// perimeter, and the largest allowance) bounds the work: each edge is walked in steps of a cell
+// and goes to the 3×3 cells around each step, so a vertex within its allowance of an edge finds
+// it in its own cell.
 Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>& uv, const std::vector<double>& w,
-                               const std::vector<std::size_t>& wall, double tol, double w_lo, double w_hi) {
+                               const std::vector<std::size_t>& wall, double tol, double w_lo, double w_hi,
+                               std::vector<double>& allowance, std::vector<double>& curvature, double& deviation) {
+  deviation = 0;
   if (wall.empty()) return {};
   std::vector<std::pair<Vec2, Vec2>> edges;
+  std::vector<double> edge_allowance, edge_curvature;
   double length = 0;
   auto add = [&](const Polygon2& p) {
+    const std::vector<double> turn = turns(p);
     for (std::size_t i = 0; i < p.points.size(); ++i) {
-      edges.emplace_back(p.points[i], p.points[(i + 1) % p.points.size()]);
-      length += (edges.back().second - edges.back().first).norm();
+      const std::size_t j = (i + 1) % p.points.size();
+      edges.emplace_back(p.points[i], p.points[j]);
+      const double l = (edges.back().second - edges.back().first).norm();
+      length += l;
+      const double sampled = std::min(turn[i], turn[j]);
+      edge_allowance.push_back(sampled <= kSampledTurn_rad ? l * sampled / 4 : 0.0);
+      edge_curvature.push_back(sampled <= kSampledTurn_rad && l > 0 ? sampled / l : 0.0);
     }
   };
   add(outline.outer);
   for (const Polygon2& h : outline.holes) add(h);
-  const double cell = std::max({length / static_cast<double>(edges.size()), 4 * tol, 1e-6 * length});
+  const double cell = std::max({length / static_cast<double>(edges.size()), 4 * tol, 1e-6 * length,
+                                *std::max_element(edge_allowance.begin(), edge_allowance.end())});
   auto to_cell = [&](double v) { return static_cast<std::int64_t>(std::floor(v / cell)); };
   std::unordered_map<std::uint64_t, std::vector<int>> grid;
   for (std::size_t e = 0; e < edges.size(); ++e) {
@@ -223,15 +258,21 @@ Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>&
   }
   for (std::size_t i : wall) {
     double best = std::numeric_limits<double>::infinity();
+    int nearest = -1;
     const auto it = grid.find(key(to_cell(uv[i].x()), to_cell(uv[i].y())));
     if (it != grid.end())
-      for (int e : it->second) best = std::min(best, segment_distance(uv[i], edges[e].first, edges[e].second));
-    if (best > tol) {
+      for (int e : it->second)
+        if (const double d = segment_distance(uv[i], edges[e].first, edges[e].second); d < best) best = d, nearest = e;
+    if (nearest < 0 || best > tol + edge_allowance[static_cast<std::size_t>(nearest)]) {
       // Not near an edge of its own cell: the distance to the nearest edge, for the message.
       for (const auto& [a, b] : edges) best = std::min(best, segment_distance(uv[i], a, b));
       return Refusal{"vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) + " m above the bottom cap of a " +
-                     fmt(w_hi - w_lo) + " m prism and " + fmt(best) + " m off its side walls"};
+                     fmt(w_hi - w_lo) + " m prism and " + fmt(best) + " m off its side walls" +
+                     (nearest >= 0 ? " (its wall's chord allows " + fmt(tol + edge_allowance[static_cast<std::size_t>(nearest)]) + " m)" : "")};
     }
+    allowance[i] = edge_allowance[static_cast<std::size_t>(nearest)];
+    curvature[i] = edge_curvature[static_cast<std::size_t>(nearest)];
+    deviation = std::max(deviation, best);
   }
   return {};
 }
@@ -267,9 +308,29 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     const Vec3 d = mesh.vertices[i] - f.origin_m;
     uv[i] = Vec2(d.dot(f.x), d.dot(f.y));
   }
-  // Caps keep all three corners on one plane; every other face must project onto a segment.
+  // Caps keep all three corners on one plane; every other face projects onto a segment: within
+  // tol, and where it has wall vertices (a face across a curved wall's tessellation, checked once
+  // the outline is known) within their chord allowance or the sagitta of its own span e on the
+  // wall's curvature κ there, twice e²·κ/8 (a face may span several of the caps' chords).
+  std::vector<double> allowance(nv, 0.0), curvature(nv, 0.0);
+  auto off_wall_line = [&](std::size_t t) -> Check {
+    const auto& tri = mesh.triangles[t];
+    const std::array<Vec2, 3> p{uv[tri[0]], uv[tri[1]], uv[tri[2]]};
+    int k = 0;  // the corner opposite the longest projected edge
+    for (int j = 1; j < 3; ++j)
+      if ((p[(j + 1) % 3] - p[(j + 2) % 3]).norm() > (p[(k + 1) % 3] - p[(k + 2) % 3]).norm())
+        k = j;
+    const Vec2 e = p[(k + 2) % 3] - p[(k + 1) % 3];
+    const double off =
+        e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
+    const double kappa = std::max({curvature[tri[0]], curvature[tri[1]], curvature[tri[2]]});
+    if (off > tol + std::max({allowance[tri[0]], allowance[tri[1]], allowance[tri[2]], e.squaredNorm() * kappa / 4}))
+      return Refusal{"face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " +
+             fmt(off) + " m off its wall line"};
+    return {};
+  };
   double top_area = 0, bottom_area = 0;
-  std::vector<std::size_t> top_faces;
+  std::vector<std::size_t> top_faces, curved_wall_faces;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     const int l0 = level[tri[0]], l1 = level[tri[1]], l2 = level[tri[2]];
@@ -280,17 +341,10 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
       if (l0) top_faces.push_back(t);
       continue;
     }
-    const std::array<Vec2, 3> p{a, b, c};
-    int k = 0;  // the corner opposite the longest projected edge
-    for (int j = 1; j < 3; ++j)
-      if ((p[(j + 1) % 3] - p[(j + 2) % 3]).norm() > (p[(k + 1) % 3] - p[(k + 2) % 3]).norm())
-        k = j;
-    const Vec2 e = p[(k + 2) % 3] - p[(k + 1) % 3];
-    const double off =
-        e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
-    if (off > tol)
-      return Refusal{"face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " +
-             fmt(off) + " m off its wall line"};
+    if (l0 == 2 || l1 == 2 || l2 == 2)
+      curved_wall_faces.push_back(t);
+    else if (const Check perpendicular = off_wall_line(t); !perpendicular)
+      return perpendicular;
   }
   // Weld top-cap corners closer than tol, then keep the directed edges without a reverse twin.
   std::unordered_map<std::uint64_t, std::vector<int>> cells;
@@ -366,8 +420,12 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     return Refusal{"the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) +
            " m^2"};
   if (const Check c = check_outline(prism.outline); !c) return Refusal{"the recovered outline is invalid: " + c.reason()};
-  if (const Check c = wall_vertices_on_outline(prism.outline, uv, w, wall_vertices, tol, w_lo, w_hi); !c)
+  if (const Check c = wall_vertices_on_outline(prism.outline, uv, w, wall_vertices, tol, w_lo, w_hi, allowance, curvature,
+                                               prism.wall_deviation_m);
+      !c)
     return c;
+  for (std::size_t t : curved_wall_faces)
+    if (const Check c = off_wall_line(t); !c) return c;
   prism.frame = f;
   prism.height_m = top - bottom;
   return {};

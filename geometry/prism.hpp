@@ -36,12 +36,18 @@ struct Prism {
   PrismFrame frame;
   double height_m = 0.0;
   Outline2 outline;  // one outer loop (CCW about z), holes CW, m
+  // The largest distance of a vertex between the caps from the outline, m: 0 where the side
+  // walls have no vertices of their own; up to the chords' sagitta where an exporter tessellated
+  // a curved wall between the caps (the outline's chords then lie inside the wall's true curve).
+  double wall_deviation_m = 0.0;
 };
 
 // Recovers the prism of `mesh` within tol_m (m), or refuses naming the offending face, vertex or
 // loop: the faces with every corner within tol_m of one of two parallel cap planes form the caps,
 // every other face is perpendicular to them, every vertex between the caps lies on the side
-// walls (within tol_m of the outline, as exporters that split the walls put them), and the top
+// walls (within tol_m of the outline, as exporters that split the walls put them, or within the
+// sagitta of its wall's chord where an exporter tessellated a curved wall between the caps:
+// Prism::wall_deviation_m says how far), and the top
 // cap's boundary forms one outer loop with holes. Candidate axes are the mean normals of the
 // groups of near-parallel faces with the most area, whatever the faces' sizes or order (time
 // linear in the mesh). The frame's origin is the world origin projected on the bottom

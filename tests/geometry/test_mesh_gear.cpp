@@ -135,6 +135,28 @@ TEST(MeshGear, FreecadExportsAreThePrismsOfTheirGears) {
   EXPECT_TRUE(ring.gear->recognition->internal);
 }
 
+TEST(MeshGear, CoarseFreecadExportsWithCurvedWallsTessellatedBetweenTheCapsAreTheirGears) {
+  // FreeCAD at 0.1 mm / 0.5 rad puts vertices on the bore cylinder at mid-height, 33.8 µm outside
+  // the caps' chords; at 0.02 mm / 10° on the flanks and fillets at ten heights, up to 6.9 µm
+  // outside (tests/data/freecad/README.md). Both are prisms of their caps within the chords'
+  // sagitta, and their gears.
+  const std::string dir = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/freecad/";
+  struct Case {
+    const char* file;
+    int teeth;
+    double face_m, deviation_m;
+  };
+  for (const Case& c : {Case{"fc_m3_z17_a20_l0p1r0p5.stl", 17, 12e-3, 33.8e-6}, Case{"fc_m3_z16_a25_l0p02a10.stl", 16, 12e-3, 6.9e-6}}) {
+    const MeshGearFile f = read_mesh_gear(dir + c.file, LengthUnit::Millimetre);
+    ASSERT_TRUE(f.gear.has_value()) << c.file << ": " << f.prism.reason();
+    EXPECT_NEAR(f.prism->wall_deviation_m, c.deviation_m, 0.1e-6) << c.file;
+    EXPECT_NEAR(f.gear->face_width_m, c.face_m, 1e-9) << c.file;
+    ASSERT_TRUE(f.gear->recognition.ok()) << c.file << ": " << f.gear->recognition.reason();
+    EXPECT_EQ(f.gear->recognition->teeth, c.teeth) << c.file;
+    EXPECT_FALSE(f.gear->recognition->internal) << c.file;
+  }
+}
+
 // CAD exports carry coordinate noise: ±0.5 µm drawn for every coordinate of every vertex (so
 // the caps are no longer planes and top and bottom outlines differ by up to 1 µm) still reads as
 // the prism of the 23-tooth gear, its base circle within the 2 µm of the acceptance.

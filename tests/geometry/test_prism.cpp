@@ -118,17 +118,23 @@ TEST(Prism, MalformedInputThrows) {
   EXPECT_THROW(recover_prism(m, 1e-9), InputError);
 }
 
-// Rebuilds the side walls of an extruded prism (vertices: the outline's points at z0, then at z1)
-// as an exporter that splits them does: each wall column gets a vertex between the caps, at a
-// height that varies along the loop, moved `off_m` out of the wall plane.
-TriMesh split_walls(const Outline2& o, double z0, double z1, double off_m) {
+// The extruded prism of `o` with its caps only (vertices: the outline's points at z0, then at z1).
+TriMesh caps_only(const Outline2& o, double z0, double z1) {
   TriMesh m = extrude(o, z0, z1);
-  const auto n = static_cast<std::uint32_t>(m.vertices.size() / 2);
   std::vector<std::array<std::uint32_t, 3>> caps;
   for (const auto& t : m.triangles)
     if (m.vertices[t[0]].z() == m.vertices[t[1]].z() && m.vertices[t[1]].z() == m.vertices[t[2]].z())
       caps.push_back(t);
   m.triangles = caps;
+  return m;
+}
+
+// Rebuilds the side walls of an extruded prism (vertices: the outline's points at z0, then at z1)
+// as an exporter that splits them does: each wall column gets a vertex between the caps, at a
+// height that varies along the loop, moved `off_m` out of the wall plane.
+TriMesh split_walls(const Outline2& o, double z0, double z1, double off_m) {
+  TriMesh m = caps_only(o, z0, z1);
+  const auto n = static_cast<std::uint32_t>(m.vertices.size() / 2);
   std::uint32_t first = 0;
   std::vector<const Polygon2*> loops{&o.outer};
   for (const Polygon2& h : o.holes) loops.push_back(&h);
@@ -170,6 +176,53 @@ TEST(Prism, VerticesOnTheSideWallsBetweenTheCapsAreAccepted) {
   // Moved 5 µm out of the walls, the same vertices make it no prism within 2 µm.
   const Result<Prism> off = recover_prism(split_walls(o, 0.0, 0.01, 5e-6), 2e-6);
   EXPECT_FALSE(off);
+}
+
+// Rebuilds the side walls of an extruded prism as an exporter that tessellates a curved wall
+// does: each wall column gets a vertex at mid-height, halfway along its chord, `factor` times the
+// chord's sagitta s out of it (factor 1: on the circle the loop samples, radius r).
+TriMesh tessellated_walls(const Outline2& o, double z0, double z1, double r, double factor) {
+  TriMesh m = caps_only(o, z0, z1);  // one loop, no holes
+  const auto n = static_cast<std::uint32_t>(m.vertices.size() / 2);
+  const auto k = static_cast<std::uint32_t>(o.outer.points.size());
+  for (std::uint32_t i = 0; i < k; ++i) {
+    const Vec2 a = o.outer.points[i], b = o.outer.points[(i + 1) % k], e = b - a;
+    const double s = r - std::sqrt(r * r - e.squaredNorm() / 4);
+    const Vec2 p = (a + b) / 2 + factor * s * Vec2(e.y(), -e.x()).normalized();
+    m.vertices.emplace_back(p.x(), p.y(), (z0 + z1) / 2);
+  }
+  for (std::uint32_t i = 0; i < k; ++i) {
+    const std::uint32_t j = (i + 1) % k, bi = i, bj = j, ti = i + n, tj = j + n, mi = 2 * n + i;
+    m.triangles.push_back({bi, bj, mi});
+    m.triangles.push_back({bj, tj, mi});
+    m.triangles.push_back({tj, ti, mi});
+    m.triangles.push_back({ti, bi, mi});
+  }
+  return m;
+}
+
+TEST(Prism, ACurvedWallTessellatedBetweenTheCapsIsThePrismOfItsCapsWithinItsChordsSagitta) {
+  // FreeCAD's coarse exports (0.1 mm, 0.5 rad) put vertices on a bore's or flank's true surface
+  // between the caps: 42 µm outside the caps' chords on an 8 mm bore. A 48-gon of radius 10 mm
+  // (a turn of 7.5° per chord): its wall vertices on the circle lie 21.4 µm outside the chords.
+  Outline2 o;
+  const int k = 48;
+  const double r = 0.010;
+  for (int i = 0; i < k; ++i) o.outer.points.emplace_back(r * std::cos(2 * M_PI * i / k), r * std::sin(2 * M_PI * i / k));
+  const double sagitta = r * (1 - std::cos(M_PI / k));
+  const Result<Prism> on = recover_prism(tessellated_walls(o, 0.0, 0.004, r, 1.0), 2e-6);
+  ASSERT_TRUE(on) << on.reason();
+  EXPECT_EQ(sorted(on->outline.outer.points), sorted(o.outer.points));  // the caps' points, exactly
+  EXPECT_NEAR(on->wall_deviation_m, sagitta, 1e-12);
+  EXPECT_NEAR(on->height_m, 0.004, 1e-18);
+  // Three times as far out (a bulge, not a tessellation of the caps' curve): no prism.
+  const Result<Prism> bulged = recover_prism(tessellated_walls(o, 0.0, 0.004, r, 3.0), 2e-6);
+  ASSERT_FALSE(bulged);
+  EXPECT_NE(bulged.reason().find("off its side walls"), std::string::npos) << bulged.reason();
+  // An exact prism reports no wall deviation.
+  const Result<Prism> plain = recover_prism(extrude(o, 0.0, 0.004), 2e-6);
+  ASSERT_TRUE(plain) << plain.reason();
+  EXPECT_EQ(plain->wall_deviation_m, 0.0);
 }
 
 TEST(Prism, TheCapIsFoundWhenEveryCapTriangleIsSmallerThanTheWalls) {
