@@ -118,17 +118,13 @@ ojson pair_table_json(const physics::PairTableDef& t) {
 
 ojson scenario_json(const physics::Scenario& s) {
   ojson j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
-  j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}, {"engine", physics::engine_name(s.solver.engine)}, {"theta", s.solver.theta}, {"integrator", physics::integrator_name(s.solver.integrator)}, {"row_solver", physics::row_solver_name(s.solver.row_solver)}, {"mass_matrix", physics::mass_matrix_name(s.solver.mass_matrix)}, {"locate_contact_onset", s.solver.locate_contact_onset}};
+  j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}, {"engine", physics::engine_name(s.solver.engine)}, {"theta", s.solver.theta}, {"integrator", physics::integrator_name(s.solver.integrator)}};
   j["output"] = {{"sample_rate_hz", s.output.sample_rate_hz}, {"per_step_log", s.output.per_step_log}};
   j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
                   {"damping_ratio", s.contact.damping_ratio},
                   {"friction", s.contact.friction},
-                  {"friction_model", physics::friction_model_name(s.contact.friction_model)},
                   {"chordal_deviation_m", s.contact.chordal_deviation_m},
-                  {"max_flank_departure_m", s.contact.max_flank_departure_m},
-                  {"coherent_search", s.contact.coherent_search},
-                  {"continued_search", s.contact.continued_search},
-                  {"park_near_pairs", s.contact.park_near_pairs}};
+                  {"max_flank_departure_m", s.contact.max_flank_departure_m}};
   if (!s.contact.stiffness_tables.empty()) {
     ojson tables = ojson::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)
@@ -136,13 +132,21 @@ ojson scenario_json(const physics::Scenario& s) {
                         {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m},
                         {"body_stiffness_N_per_m", t.body_stiffness_N_per_m}});
     j["contact"]["stiffness_tables"] = tables;
-  }  if (!s.contact.mesh_stiffnesses.empty()) {
+  }
+  if (!s.contact.mesh_stiffnesses.empty()) {
     ojson meshes = ojson::array();
     for (const physics::PairMeshStiffnessDef& m : s.contact.mesh_stiffnesses)
       meshes.push_back({{"body_a", m.body_a}, {"body_b", m.body_b}, {"stiffness_N_per_m", m.stiffness_N_per_m}});
     j["contact"]["mesh_stiffnesses"] = meshes;
   }
 
+  j["verify"] = {{"row_solver", physics::row_solver_name(s.solver.row_solver)},
+                 {"mass_matrix", physics::mass_matrix_name(s.solver.mass_matrix)},
+                 {"locate_contact_onset", s.solver.locate_contact_onset},
+                 {"friction_model", physics::friction_model_name(s.contact.friction_model)},
+                 {"coherent_search", s.contact.coherent_search},
+                 {"continued_search", s.contact.continued_search},
+                 {"park_near_pairs", s.contact.park_near_pairs}};
   j["bodies"] = ojson::array();
   for (const physics::BodyDef& b : s.bodies) j["bodies"].push_back(body_json(b));
   j["joints"] = ojson::array();

@@ -129,24 +129,45 @@ physics::JointDef joint_of(const Node& n) {
   return j;
 }
 
+// The verification switches from `solver_keys` (row_solver, mass_matrix, locate_contact_onset)
+// and `contact_keys` (friction_model and the search switches): both the verify object, or a
+// record's solver and contact where it predates it. A key a record lacks takes what ran before
+// the key existed.
+void verify_switches_of(const Node& solver_keys, const Node& contact_keys, physics::Scenario& s) {
+  s.solver.row_solver = physics::SolverDef::RowSolver::dantzig;  // before the active set
+  if (solver_keys.has("row_solver")) {
+    const std::string rs = solver_keys.string("row_solver");
+    if (rs != "active_set" && rs != "dantzig") solver_keys.fail("row_solver", "expected active_set or dantzig");
+    s.solver.row_solver = rs == "dantzig" ? physics::SolverDef::RowSolver::dantzig : physics::SolverDef::RowSolver::active_set;
+  }
+  s.solver.mass_matrix = physics::SolverDef::MassMatrix::articulated;  // before the planar mass matrix
+  if (solver_keys.has("mass_matrix")) {
+    const std::string mm = solver_keys.string("mass_matrix");
+    if (mm != "planar" && mm != "articulated") solver_keys.fail("mass_matrix", "expected planar or articulated");
+    s.solver.mass_matrix = mm == "planar" ? physics::SolverDef::MassMatrix::planar : physics::SolverDef::MassMatrix::articulated;
+  }
+  // Before: contacts started at the first step that began with the teeth overlapping.
+  s.solver.locate_contact_onset = solver_keys.has("locate_contact_onset") && solver_keys.boolean("locate_contact_onset");
+  physics::ContactDef& c = s.contact;
+  c.friction_model = physics::ContactDef::FrictionModel::stick_slip;  // before: the stick–slip rows
+  if (contact_keys.has("friction_model")) {
+    const std::string fm = contact_keys.string("friction_model");
+    if (fm != "sliding" && fm != "stick_slip") contact_keys.fail("friction_model", "expected sliding or stick_slip");
+    c.friction_model = fm == "sliding" ? physics::ContactDef::FrictionModel::sliding : physics::ContactDef::FrictionModel::stick_slip;
+  }
+  // Before: the stateless search.
+  c.coherent_search = contact_keys.has("coherent_search") && contact_keys.boolean("coherent_search");
+  c.continued_search = contact_keys.has("continued_search") && contact_keys.boolean("continued_search");
+  c.park_near_pairs = contact_keys.has("park_near_pairs") && contact_keys.boolean("park_near_pairs");
+}
+
 physics::ContactDef contact_of(const Node& n) {
   physics::ContactDef c;
   c.stiffness_N_per_m_per_m = n.number_within("stiffness_N_per_m_per_m", limits::kContactStiffness_N_per_m_per_m);
   c.damping_ratio = n.number_within("damping_ratio", limits::kDampingRatio);
   c.friction = n.number_within("friction", limits::kFriction);
-  // Records written before the key existed ran the stick–slip rows.
-  c.friction_model = physics::ContactDef::FrictionModel::stick_slip;
-  if (n.has("friction_model")) {
-    const std::string fm = n.string("friction_model");
-    if (fm != "sliding" && fm != "stick_slip") n.fail("friction_model", "expected sliding or stick_slip");
-    c.friction_model = fm == "sliding" ? physics::ContactDef::FrictionModel::sliding : physics::ContactDef::FrictionModel::stick_slip;
-  }
   c.chordal_deviation_m = n.number_within("chordal_deviation_m", limits::kChordalDeviation_m);
   c.max_flank_departure_m = n.number_within("max_flank_departure_m", limits::kFlankDeparture_m);
-  // Records written before the key existed ran the stateless search.
-  c.coherent_search = n.has("coherent_search") ? n.boolean("coherent_search") : false;
-  c.continued_search = n.has("continued_search") ? n.boolean("continued_search") : false;
-  c.park_near_pairs = n.has("park_near_pairs") ? n.boolean("park_near_pairs") : false;
   if (n.has("stiffness_tables"))
     for (const Node& t : n.list("stiffness_tables")) {
       physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),
@@ -283,24 +304,13 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
                           : i == "trapezoid_closed" ? physics::SolverDef::Integrator::trapezoid_closed
                                                     : physics::SolverDef::Integrator::theta;
   }
-  s.solver.row_solver = physics::SolverDef::RowSolver::dantzig;  // records written before the active set have none
-  if (solver.has("row_solver")) {
-    const std::string rs = solver.string("row_solver");
-    if (rs != "active_set" && rs != "dantzig") solver.fail("row_solver", "expected active_set or dantzig");
-    s.solver.row_solver = rs == "dantzig" ? physics::SolverDef::RowSolver::dantzig : physics::SolverDef::RowSolver::active_set;
-  }
-  s.solver.mass_matrix = physics::SolverDef::MassMatrix::articulated;  // records written before the planar mass matrix have none
-  if (solver.has("mass_matrix")) {
-    const std::string mm = solver.string("mass_matrix");
-    if (mm != "planar" && mm != "articulated") solver.fail("mass_matrix", "expected planar or articulated");
-    s.solver.mass_matrix = mm == "planar" ? physics::SolverDef::MassMatrix::planar : physics::SolverDef::MassMatrix::articulated;
-  }
-  // Records written before the key existed started contacts at the first step that began with the
-  // teeth overlapping.
-  s.solver.locate_contact_onset = solver.has("locate_contact_onset") && solver.boolean("locate_contact_onset");
   s.output = {output.number("sample_rate_hz"), output.boolean("per_step_log")};
   if (!(s.output.sample_rate_hz > 0)) output.fail("sample_rate_hz", "expected a positive rate in Hz");
   s.contact = contact_of(r.object("contact"));
+  // The verification switches: a record's verify object, or in records written before it the
+  // same keys in solver and contact.
+  const bool has_verify = r.has("verify");
+  verify_switches_of(has_verify ? r.object("verify") : solver, has_verify ? r.object("verify") : r.object("contact"), s);
   for (const Node& b : r.list("bodies")) s.bodies.push_back(body_of(b));
   for (const Node& jd : r.list("joints")) s.joints.push_back(joint_of(jd));
   read_rest(r, s);

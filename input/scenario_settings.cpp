@@ -48,30 +48,8 @@ void parse_solver(const YamlMap& m, physics::Scenario& s) {
     if (s.solver.integrator != physics::SolverDef::Integrator::theta && given(m, "theta"))
       m.fail("theta", std::string("integrator ") + physics::integrator_name(s.solver.integrator) + " has no θ: remove theta or set integrator: theta");
   }
-  if (given(m, "row_solver")) {
-    s.solver.row_solver = m.choice_or("row_solver", {"active_set", "dantzig"}, "active_set") == "dantzig" ? physics::SolverDef::RowSolver::dantzig
-                                                                                                   : physics::SolverDef::RowSolver::active_set;
-    if (s.solver.engine == physics::SolverEngine::rigid_bodies)
-      m.fail("row_solver", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
-  }
-  if (given(m, "mass_matrix")) {
-    s.solver.mass_matrix = m.choice_or("mass_matrix", {"planar", "articulated"}, "planar") == "articulated" ? physics::SolverDef::MassMatrix::articulated
-                                                                                               : physics::SolverDef::MassMatrix::planar;
-    if (s.solver.engine == physics::SolverEngine::rigid_bodies)
-      m.fail("mass_matrix", "only engine multibody solves its rows directly (rigid_bodies iterates: solver.iterations)");
-  }
-  if (given(m, "locate_contact_onset")) {
-    s.solver.locate_contact_onset = m.boolean_or("locate_contact_onset", s.solver.locate_contact_onset);
-    if (s.solver.locate_contact_onset && s.solver.engine == physics::SolverEngine::rigid_bodies)
-      m.fail("locate_contact_onset", "only engine multibody splits a step at a contact's onset (rigid_bodies steps Bullet's world whole)");
-    if (s.solver.locate_contact_onset && s.solver.integrator == physics::SolverDef::Integrator::bdf2)
-      m.fail("locate_contact_onset", "integrator bdf2 needs equal steps: set locate_contact_onset: false or another integrator");
-  }
-  // rigid_bodies integrates its rows by implicit Euler: the θ-method at θ = 1, as its record says.
-  if (s.solver.engine == physics::SolverEngine::rigid_bodies) s.solver.integrator = physics::SolverDef::Integrator::theta;
-  // What runs, as the record says: rigid_bodies and BDF2 never split a step.
-  if (s.solver.engine == physics::SolverEngine::rigid_bodies || s.solver.integrator == physics::SolverDef::Integrator::bdf2)
-    s.solver.locate_contact_onset = false;
+  for (const char* key : {"row_solver", "mass_matrix", "locate_contact_onset"})
+    if (given(m, key)) m.fail(key, std::string("a verification switch: write it as verify.") + key + " (docs/solver.md, \"Verification switches\")");
   if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
     m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
   m.reject_unknown_keys();
@@ -126,16 +104,46 @@ void parse_contact_settings(const YamlMap& m, physics::Scenario& s) {
   c.stiffness_N_per_m_per_m = number_within_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, limits::kContactStiffness_N_per_m_per_m);
   c.damping_ratio = number_within_or(m, "damping_ratio", c.damping_ratio, limits::kDampingRatio);
   c.friction = number_within_or(m, "friction", c.friction, limits::kFriction);
-  if (given(m, "friction_model")) {
-    c.friction_model = m.choice_or("friction_model", {"sliding", "stick_slip"}, "sliding") == "stick_slip" ? physics::ContactDef::FrictionModel::stick_slip
-                                                                                                        : physics::ContactDef::FrictionModel::sliding;
-    if (s.solver.engine == physics::SolverEngine::rigid_bodies)
-      m.fail("friction_model", "only engine multibody has a choice of friction model (rigid_bodies uses Bullet's friction: stick_slip)");
-  }
-  // rigid_bodies runs Bullet's friction, a box of ±μ·λ_n: stick_slip, as its record says.
-  if (s.solver.engine == physics::SolverEngine::rigid_bodies) c.friction_model = physics::ContactDef::FrictionModel::stick_slip;
   c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
   c.max_flank_departure_m = number_within_or(m, "max_flank_departure_m", c.max_flank_departure_m, limits::kFlankDeparture_m);
+  for (const char* key : {"friction_model", "coherent_search", "continued_search", "park_near_pairs"})
+    if (given(m, key)) m.fail(key, std::string("a verification switch: write it as verify.") + key + " (docs/solver.md, \"Verification switches\")");
+  // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
+  if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
+  if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");
+  m.reject_unknown_keys();
+}
+
+// verify: the switches that run another implementation of a step's part, to check one against
+// the other (docs/solver.md, "Verification switches"). Each belongs to the multibody engine.
+void parse_verify(const YamlMap& m, physics::Scenario& s) {
+  const bool rigid = s.solver.engine == physics::SolverEngine::rigid_bodies;
+  auto multibody_only = [&](const char* key, const char* why) {
+    if (rigid) m.fail(key, std::string("only engine multibody ") + why);
+  };
+  if (given(m, "row_solver")) {
+    s.solver.row_solver = m.choice_or("row_solver", {"active_set", "dantzig"}, "active_set") == "dantzig" ? physics::SolverDef::RowSolver::dantzig
+                                                                                                   : physics::SolverDef::RowSolver::active_set;
+    multibody_only("row_solver", "solves its rows directly (rigid_bodies iterates: solver.iterations)");
+  }
+  if (given(m, "mass_matrix")) {
+    s.solver.mass_matrix = m.choice_or("mass_matrix", {"planar", "articulated"}, "planar") == "articulated" ? physics::SolverDef::MassMatrix::articulated
+                                                                                               : physics::SolverDef::MassMatrix::planar;
+    multibody_only("mass_matrix", "solves its rows directly (rigid_bodies iterates: solver.iterations)");
+  }
+  if (given(m, "locate_contact_onset")) {
+    s.solver.locate_contact_onset = m.boolean_or("locate_contact_onset", s.solver.locate_contact_onset);
+    if (s.solver.locate_contact_onset) multibody_only("locate_contact_onset", "splits a step at a contact's onset (rigid_bodies steps Bullet's world whole)");
+    if (s.solver.locate_contact_onset && s.solver.integrator == physics::SolverDef::Integrator::bdf2)
+      m.fail("locate_contact_onset", "solver.integrator bdf2 needs equal steps: set locate_contact_onset: false or another integrator");
+  }
+  if (given(m, "friction_model")) {
+    s.contact.friction_model = m.choice_or("friction_model", {"sliding", "stick_slip"}, "sliding") == "stick_slip"
+                                   ? physics::ContactDef::FrictionModel::stick_slip
+                                   : physics::ContactDef::FrictionModel::sliding;
+    multibody_only("friction_model", "has a choice of friction model (rigid_bodies uses Bullet's friction: stick_slip)");
+  }
+  physics::ContactDef& c = s.contact;
   c.coherent_search = m.boolean_or("coherent_search", c.coherent_search);
   // A search option that is part of another (`parent`): off with it unless asked for, and then
   // refused.
@@ -150,10 +158,19 @@ void parse_contact_settings(const YamlMap& m, physics::Scenario& s) {
   part_of("continued_search", c.continued_search, c.coherent_search,
           "coherent_search: true (the continuation is part of the coherent search)");
   part_of("park_near_pairs", c.park_near_pairs, c.continued_search, "continued_search: true (near pairs are parked continued solutions)");
-  // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
-  if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
-  if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");
   m.reject_unknown_keys();
+}
+
+// What runs, as the record says: rigid_bodies integrates its rows by implicit Euler (the
+// θ-method at θ = 1) with Bullet's friction box (stick_slip) and never splits a step; BDF2 never
+// splits one either.
+void settle_engine_switches(physics::Scenario& s) {
+  if (s.solver.engine == physics::SolverEngine::rigid_bodies) {
+    s.solver.integrator = physics::SolverDef::Integrator::theta;
+    s.contact.friction_model = physics::ContactDef::FrictionModel::stick_slip;
+  }
+  if (s.solver.engine == physics::SolverEngine::rigid_bodies || s.solver.integrator == physics::SolverDef::Integrator::bdf2)
+    s.solver.locate_contact_onset = false;
 }
 
 }  // namespace
@@ -165,6 +182,8 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
     if (const std::string w = whole_steps_problem(s); !w.empty()) top.fail("solver", w + " (output.sample_rate_hz defaults to 2000 Hz)");
   if (given(top, "render")) parse_render(top.map("render"), s);
   if (given(top, "contact")) parse_contact_settings(top.map("contact"), s);
+  if (given(top, "verify")) parse_verify(top.map("verify"), s);
+  settle_engine_switches(s);
 }
 
 

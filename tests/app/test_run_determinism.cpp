@@ -47,11 +47,11 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
 constexpr std::uint64_t kGoldenHash = 0xd59c0bdd3056c399ull;
 // The default engine's (multibody, trapezoid_closed, active_set, planar mass matrix) hash.
 constexpr std::uint64_t kGoldenHashMultibody = 0xfdfbca74e294871full;
-// The same with --set solver.mass_matrix=articulated (Bullet's articulated-body pass and tree walks).
+// The same with --set verify.mass_matrix=articulated (Bullet's articulated-body pass and tree walks).
 constexpr std::uint64_t kGoldenHashMultibodyArticulated = 0xca89cb5eab98b877ull;
 // The multibody engine with implicit Euler (θ = 1) and Dantzig's pivoting.
 constexpr std::uint64_t kGoldenHashImplicitEuler = 0xb4d3d0aae7b50160ull;
-// Without the continuation (--set contact.continued_search=false): the coherent search's and the
+// Without the continuation (--set verify.continued_search=false): the coherent search's and the
 // stateless search's, the same physics (multibody with θ = 1).
 constexpr std::uint64_t kGoldenHashSampled = 0xc3467939069c6287ull;
 constexpr std::uint64_t kGoldenHashSampledMultibody = 0x6aed78b6c01d6f55ull;
@@ -73,12 +73,12 @@ TEST(RunDeterminism, ShortPaperRunMatchesTheCommittedHash) {
 }
 
 TEST(RunDeterminism, TheArticulatedMassMatrixStillGivesItsCommittedHash) {
-  const std::uint64_t h = hash_files(run_paper("golden_articulated", " --set solver.mass_matrix=articulated"));
+  const std::uint64_t h = hash_files(run_paper("golden_articulated", " --set verify.mass_matrix=articulated"));
   EXPECT_EQ(h, kGoldenHashMultibodyArticulated) << "logs of the short paper run (mass_matrix articulated) changed; new hash " << hex_of(h);
 }
 
 TEST(RunDeterminism, ImplicitEulerStillGivesItsCommittedHash) {
-  const std::uint64_t h = hash_files(run_paper("golden_theta", " --set solver.integrator=theta --set solver.row_solver=dantzig"));
+  const std::uint64_t h = hash_files(run_paper("golden_theta", " --set solver.integrator=theta --set verify.row_solver=dantzig"));
   EXPECT_EQ(h, kGoldenHashImplicitEuler) << "logs of the short paper run (integrator theta) changed; new hash " << hex_of(h);
 }
 
@@ -88,14 +88,14 @@ TEST(RunDeterminism, TheRigidBodyEngineStillGivesItsCommittedHash) {
 }
 
 TEST(RunDeterminism, TheStatelessContactSearchGivesTheSameLogs) {
-  // contact.coherent_search (default true) skips and tracks flanks only where that provably
+  // verify.coherent_search (default true) skips and tracks flanks only where that provably
   // changes nothing: without the continuation, it and the stateless search give the same bytes,
   // with either engine (multibody: θ = 1).
-  const std::string sampled = " --set contact.continued_search=false", theta = " --set solver.integrator=theta --set solver.row_solver=dantzig";
+  const std::string sampled = " --set verify.continued_search=false", theta = " --set solver.integrator=theta --set verify.row_solver=dantzig";
   EXPECT_EQ(hash_files(run_paper("coherent", sampled + theta)), kGoldenHashSampledMultibody);
-  EXPECT_EQ(hash_files(run_paper("stateless", " --set contact.coherent_search=false" + theta)), kGoldenHashSampledMultibody);
+  EXPECT_EQ(hash_files(run_paper("stateless", " --set verify.coherent_search=false" + theta)), kGoldenHashSampledMultibody);
   EXPECT_EQ(hash_files(run_paper("coherent_rigid", sampled + " --set solver.engine=rigid_bodies")), kGoldenHashSampled);
-  EXPECT_EQ(hash_files(run_paper("stateless_rigid", " --set contact.coherent_search=false --set solver.engine=rigid_bodies")), kGoldenHashSampled);
+  EXPECT_EQ(hash_files(run_paper("stateless_rigid", " --set verify.coherent_search=false --set solver.engine=rigid_bodies")), kGoldenHashSampled);
 }
 
 }  // namespace test_run_determinism

@@ -90,20 +90,20 @@ TEST(ScenarioErrors, WrongType) {
 }
 
 TEST(ScenarioErrors, CoherentSearchIsTrueOrFalse) {
-  EXPECT_NAMES(error_for(kGood + "contact: {coherent_search: sometimes}\n"), "bad.yaml:11:", "contact.coherent_search",
+  EXPECT_NAMES(error_for(kGood + "verify: {coherent_search: sometimes}\n"), "bad.yaml:11:", "verify.coherent_search",
                "expected true or false");
-  EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "verify: {coherent_search: false}\n"), "");
 }
 
 // A search option that is part of another (`parent`): asking for it without the parent is
 // refused, not ignored; off with it, and with the parent on either way.
 void expect_part_of(const std::string& key, const std::string& parent) {
-  const std::string named = "contact." + key, needs = "needs " + parent + ": true";
-  EXPECT_NAMES(error_for(kGood + "contact: {" + parent + ": false, " + key + ": true}\n"), "bad.yaml:11:", named.c_str(), needs.c_str());
-  EXPECT_NAMES(error_for(kGood + "contact: {" + key + ": 2}\n"), named.c_str(), "expected true or false");
-  EXPECT_EQ(error_for(kGood + "contact: {" + parent + ": false, " + key + ": false}\n"), "");
-  EXPECT_EQ(error_for(kGood + "contact: {" + key + ": false}\n"), "");
-  EXPECT_EQ(error_for(kGood + "contact: {" + parent + ": false}\n"), "");
+  const std::string named = "verify." + key, needs = "needs " + parent + ": true";
+  EXPECT_NAMES(error_for(kGood + "verify: {" + parent + ": false, " + key + ": true}\n"), "bad.yaml:11:", named.c_str(), needs.c_str());
+  EXPECT_NAMES(error_for(kGood + "verify: {" + key + ": 2}\n"), named.c_str(), "expected true or false");
+  EXPECT_EQ(error_for(kGood + "verify: {" + parent + ": false, " + key + ": false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "verify: {" + key + ": false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "verify: {" + parent + ": false}\n"), "");
 }
 
 TEST(ScenarioErrors, ContinuedSearchNeedsTheCoherentOne) { expect_part_of("continued_search", "coherent_search"); }
@@ -112,33 +112,40 @@ TEST(ScenarioErrors, ParkedNearPairsNeedTheContinuation) {
   // Near pairs are parked continued solutions.
   expect_part_of("park_near_pairs", "continued_search");
   // Without the coherent search the continuation is off, and so the parking.
-  EXPECT_EQ(error_for(kGood + "contact: {coherent_search: false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "verify: {coherent_search: false}\n"), "");
 }
 
 TEST(ScenarioErrors, TheRowSolverAndTheMassMatrixAreOneOfTwoAndTheMultibodyEnginesOnly) {
-  EXPECT_NAMES(error_for(kGood + "solver: {row_solver: lemke}\n"), "bad.yaml:11:", "solver.row_solver", "active_set", "dantzig", "lemke");
-  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, row_solver: dantzig}\n"), "solver.row_solver", "only engine multibody");
-  EXPECT_EQ(error_for(kGood + "solver: {row_solver: dantzig}\n"), "");
-  EXPECT_NAMES(error_for(kGood + "solver: {mass_matrix: dense}\n"), "bad.yaml:11:", "solver.mass_matrix", "planar", "articulated", "dense");
-  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, mass_matrix: planar}\n"), "solver.mass_matrix", "only engine multibody");
-  EXPECT_EQ(error_for(kGood + "solver: {mass_matrix: articulated}\n"), "");
+  EXPECT_NAMES(error_for(kGood + "verify: {row_solver: lemke}\n"), "bad.yaml:11:", "verify.row_solver", "active_set", "dantzig", "lemke");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {row_solver: dantzig}\n"), "verify.row_solver", "only engine multibody");
+  EXPECT_EQ(error_for(kGood + "verify: {row_solver: dantzig}\n"), "");
+  EXPECT_NAMES(error_for(kGood + "verify: {mass_matrix: dense}\n"), "bad.yaml:11:", "verify.mass_matrix", "planar", "articulated", "dense");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {mass_matrix: planar}\n"), "verify.mass_matrix", "only engine multibody");
+  EXPECT_EQ(error_for(kGood + "verify: {mass_matrix: articulated}\n"), "");
 }
 
 TEST(ScenarioErrors, TheFrictionModelIsOneOfTwoAndTheMultibodyEnginesOnly) {
-  EXPECT_NAMES(error_for(kGood + "contact: {friction_model: viscous}\n"), "bad.yaml:11:", "contact.friction_model", "sliding", "stick_slip",
+  EXPECT_NAMES(error_for(kGood + "verify: {friction_model: viscous}\n"), "bad.yaml:11:", "verify.friction_model", "sliding", "stick_slip",
                "viscous");
-  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\ncontact: {friction_model: sliding}\n"), "contact.friction_model",
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {friction_model: sliding}\n"), "verify.friction_model",
                "only engine multibody");
-  EXPECT_EQ(error_for(kGood + "contact: {friction_model: stick_slip}\n"), "");
+  EXPECT_EQ(error_for(kGood + "verify: {friction_model: stick_slip}\n"), "");
 }
 
 TEST(ScenarioErrors, LocatingContactOnsetsIsTheMultibodyEnginesWithEqualStepIntegratorsOnly) {
-  EXPECT_NAMES(error_for(kGood + "solver: {locate_contact_onset: 1}\n"), "solver.locate_contact_onset", "expected true or false");
-  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies, locate_contact_onset: true}\n"), "solver.locate_contact_onset",
+  EXPECT_NAMES(error_for(kGood + "verify: {locate_contact_onset: 1}\n"), "verify.locate_contact_onset", "expected true or false");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {locate_contact_onset: true}\n"), "verify.locate_contact_onset",
                "only engine multibody");
-  EXPECT_NAMES(error_for(kGood + "solver: {integrator: bdf2, locate_contact_onset: true}\n"), "solver.locate_contact_onset", "bdf2");
-  EXPECT_EQ(error_for(kGood + "solver: {integrator: bdf2, locate_contact_onset: false}\n"), "");
-  EXPECT_EQ(error_for(kGood + "solver: {integrator: theta, locate_contact_onset: true}\n"), "");
+  EXPECT_NAMES(error_for(kGood + "solver: {integrator: bdf2}\nverify: {locate_contact_onset: true}\n"), "verify.locate_contact_onset", "bdf2");
+  EXPECT_EQ(error_for(kGood + "solver: {integrator: bdf2}\nverify: {locate_contact_onset: false}\n"), "");
+  EXPECT_EQ(error_for(kGood + "solver: {integrator: theta}\nverify: {locate_contact_onset: true}\n"), "");
+}
+
+TEST(ScenarioErrors, AVerificationSwitchInSolverOrContactIsNamedWithWhereItBelongs) {
+  for (const std::string key : {"row_solver: dantzig", "mass_matrix: articulated", "locate_contact_onset: false"})
+    EXPECT_NAMES(error_for(kGood + "solver: {" + key + "}\n"), "bad.yaml:11:", "verify.");
+  for (const std::string key : {"friction_model: sliding", "coherent_search: false", "continued_search: false", "park_near_pairs: false"})
+    EXPECT_NAMES(error_for(kGood + "contact: {" + key + "}\n"), "bad.yaml:11:", "verify.");
 }
 
 TEST(ScenarioErrors, DuplicateBodyName) {

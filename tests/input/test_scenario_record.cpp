@@ -54,7 +54,7 @@ TEST(ScenarioRecord, EveryAssetScenarioReadsBackToTheSameScenario) {
 }
 
 TEST(ScenarioRecord, TheContactSearchReadsBack) {
-  // contact.coherent_search: the default (true) and false read back; a record written before the
+  // verify.coherent_search: the default (true) and false read back; a record written before the
   // key existed ran the stateless search.
   physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
   EXPECT_TRUE(s.contact.coherent_search);
@@ -62,10 +62,10 @@ TEST(ScenarioRecord, TheContactSearchReadsBack) {
   s.contact.coherent_search = false;
   nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
   EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.coherent_search);
-  j["contact"].erase("coherent_search");
+  j["verify"].erase("coherent_search");
   EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.coherent_search);
-  j["contact"]["coherent_search"] = "yes";
-  EXPECT_NE(error_of(j).find("contact.coherent_search"), std::string::npos) << error_of(j);
+  j["verify"]["coherent_search"] = "yes";
+  EXPECT_NE(error_of(j).find("verify.coherent_search"), std::string::npos) << error_of(j);
 }
 
 TEST(ScenarioRecord, TheIntegratorReadsBack) {
@@ -110,47 +110,69 @@ void expect_choice_reads_back(const std::string& section, const std::string& key
 }
 
 TEST(ScenarioRecord, TheMassMatrixReadsBack) {
-  // solver.mass_matrix: planar (the default) and articulated read back; a record without it ran
+  // verify.mass_matrix: planar (the default) and articulated read back; a record without it ran
   // the articulated-body solves.
   using M = physics::SolverDef::MassMatrix;
-  expect_choice_reads_back("solver", "mass_matrix", [](const physics::Scenario& s) { return s.solver.mass_matrix; }, M::planar,
+  expect_choice_reads_back("verify", "mass_matrix", [](const physics::Scenario& s) { return s.solver.mass_matrix; }, M::planar,
                            "articulated", M::articulated, M::articulated, "dense");
 }
 
 TEST(ScenarioRecord, TheRowSolverReadsBack) {
-  // solver.row_solver: active_set (the default) and dantzig read back; a record without it ran Dantzig.
+  // verify.row_solver: active_set (the default) and dantzig read back; a record without it ran Dantzig.
   using R = physics::SolverDef::RowSolver;
-  expect_choice_reads_back("solver", "row_solver", [](const physics::Scenario& s) { return s.solver.row_solver; }, R::active_set,
+  expect_choice_reads_back("verify", "row_solver", [](const physics::Scenario& s) { return s.solver.row_solver; }, R::active_set,
                            "dantzig", R::dantzig, R::dantzig, "lemke");
 }
 
 TEST(ScenarioRecord, TheFrictionModelReadsBack) {
-  // contact.friction_model: sliding (the multibody default) and stick_slip read back; a record
+  // verify.friction_model: sliding (the multibody default) and stick_slip read back; a record
   // written before the key existed ran the stick–slip rows; rigid_bodies records stick_slip
   // (Bullet's friction box).
   using F = physics::ContactDef::FrictionModel;
-  expect_choice_reads_back("contact", "friction_model", [](const physics::Scenario& s) { return s.contact.friction_model; },
+  expect_choice_reads_back("verify", "friction_model", [](const physics::Scenario& s) { return s.contact.friction_model; },
                            F::sliding, "stick_slip", F::stick_slip, F::stick_slip, "viscous");
-  EXPECT_EQ(scenario_json(load_scenario(asset("paper_dynamics_healthy.yaml")))["contact"]["friction_model"], "sliding");
+  EXPECT_EQ(scenario_json(load_scenario(asset("paper_dynamics_healthy.yaml")))["verify"]["friction_model"], "sliding");
   const physics::Scenario rigid = load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"});
   EXPECT_EQ(rigid.contact.friction_model, F::stick_slip);
 }
 
 TEST(ScenarioRecord, LocatingContactOnsetsReadsBack) {
-  // solver.locate_contact_onset: true by default for multibody with trapezoid_closed or theta,
+  // verify.locate_contact_onset: true by default for multibody with trapezoid_closed or theta,
   // recorded false where the run cannot split a step (rigid_bodies, bdf2); a record written
   // before the key existed ran without it.
   physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
   EXPECT_TRUE(s.solver.locate_contact_onset);
   nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
-  EXPECT_EQ(j["solver"]["locate_contact_onset"], true);
+  EXPECT_EQ(j["verify"]["locate_contact_onset"], true);
   EXPECT_TRUE(scenario_from_json(j, "rec.json").solver.locate_contact_onset);
-  j["solver"].erase("locate_contact_onset");
+  j["verify"].erase("locate_contact_onset");
   EXPECT_FALSE(scenario_from_json(j, "rec.json").solver.locate_contact_onset);
-  j["solver"]["locate_contact_onset"] = "yes";
-  EXPECT_NE(error_of(j).find("solver.locate_contact_onset"), std::string::npos) << error_of(j);
+  j["verify"]["locate_contact_onset"] = "yes";
+  EXPECT_NE(error_of(j).find("verify.locate_contact_onset"), std::string::npos) << error_of(j);
   EXPECT_FALSE(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"}).solver.locate_contact_onset);
   EXPECT_FALSE(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.integrator=bdf2"}).solver.locate_contact_onset);
+}
+
+TEST(ScenarioRecord, ARecordWithTheVerificationSwitchesInSolverAndContactReadsAsItRan) {
+  // Records written before the verify object carry its keys in solver and contact: each is read
+  // from there, with the same values as from a verify object.
+  physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
+  s.solver.row_solver = physics::SolverDef::RowSolver::dantzig;
+  s.solver.mass_matrix = physics::SolverDef::MassMatrix::articulated;
+  s.contact.friction_model = physics::ContactDef::FrictionModel::stick_slip;
+  s.contact.park_near_pairs = false;
+  nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
+  for (const char* key : {"row_solver", "mass_matrix", "locate_contact_onset"}) j["solver"][key] = j["verify"][key];
+  for (const char* key : {"friction_model", "coherent_search", "continued_search", "park_near_pairs"}) j["contact"][key] = j["verify"][key];
+  j.erase("verify");
+  const physics::Scenario back = scenario_from_json(j, "rec.json");
+  EXPECT_EQ(back.solver.row_solver, physics::SolverDef::RowSolver::dantzig);
+  EXPECT_EQ(back.solver.mass_matrix, physics::SolverDef::MassMatrix::articulated);
+  EXPECT_TRUE(back.solver.locate_contact_onset);
+  EXPECT_EQ(back.contact.friction_model, physics::ContactDef::FrictionModel::stick_slip);
+  EXPECT_TRUE(back.contact.coherent_search);
+  EXPECT_TRUE(back.contact.continued_search);
+  EXPECT_FALSE(back.contact.park_near_pairs);
 }
 
 TEST(ScenarioRecord, TheContinuationReadsBack) {
