@@ -2,7 +2,7 @@
 #include <cmath>
 #include <vector>
 
-#include "physics/world_impl.hpp"
+#include "physics/multibody_engine.hpp"
 
 // solver.mass_matrix planar, the rows' side: the diagonal of A = J·M⁻¹·Jᵀ, G = L⁻¹·Jᵀ and the
 // dense A for the row-space solves (the active set's and Dantzig's fallbacks), the folded
@@ -15,17 +15,16 @@ namespace gearsim::physics {
 // row without a spring: a motor, sticking friction). The rows themselves are solved in the
 // coordinates' space (solve_rows_primal), without G = L⁻¹·Jᵀ; planar_g() forms G for the
 // row-space solves (the fallbacks).
-double World::Impl::planar_diag_a(std::size_t r) {
-  MultibodyEngine& e = *mb;
-  const std::size_t ud = static_cast<std::size_t>(e.dofs);
-  const double* m = e.chol.data();
-  const double* jr = e.jrows.data() + r * ud;
-  double* g = e.g_lambda.data();
+double MultibodyEngine::planar_diag_a(std::size_t r) {
+  const std::size_t ud = static_cast<std::size_t>(dofs_);
+  const double* m = mass_.chol.data();
+  const double* jr = rows_.jrows.data() + r * ud;
+  double* g = mass_.g_lambda.data();
   double sum = 0;
   for (std::size_t i = 0; i < ud; ++i) {
     double v = jr[i];
     for (std::size_t k = 0; k < i; ++k) v -= m[i * ud + k] * g[k];
-    g[i] = v * e.chol_inv_diag[i];
+    g[i] = v * mass_.chol_inv_diag[i];
     sum += g[i] * g[i];
   }
   return sum;
@@ -34,14 +33,13 @@ double World::Impl::planar_diag_a(std::size_t r) {
 // G = L⁻¹·Jᵀ of this step's rows, for the row-space solves (solve_rows_folded, planar_full_a).
 // Kept by coordinate (dofs × rows): the substitutions run over all rows at once, one coordinate
 // after the other, instead of one row's chain of dependent divisions after the other's.
-void World::Impl::planar_g() {
-  MultibodyEngine& e = *mb;
-  if (e.g_formed) return;
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
-  const double* m = e.chol.data();
-  e.g.resize(ud * n);
-  double* g = e.g.data();
-  const double* jrows = e.jrows.data();
+void MultibodyEngine::planar_g() {
+  if (mass_.g_formed) return;
+  const std::size_t n = rows_.rows.size(), ud = static_cast<std::size_t>(dofs_);
+  const double* m = mass_.chol.data();
+  mass_.g.resize(ud * n);
+  double* g = mass_.g.data();
+  const double* jrows = rows_.jrows.data();
   for (std::size_t i = 0; i < ud; ++i) {
     double* gi = g + i * n;
     for (std::size_t r = 0; r < n; ++r) gi[r] = jrows[r * ud + i];
@@ -51,22 +49,21 @@ void World::Impl::planar_g() {
       const double* gk = g + k * n;
       for (std::size_t r = 0; r < n; ++r) gi[r] -= lik * gk[r];
     }
-    const double inv = e.chol_inv_diag[i];
+    const double inv = mass_.chol_inv_diag[i];
     for (std::size_t r = 0; r < n; ++r) gi[r] *= inv;
   }
-  e.g_formed = true;
+  mass_.g_formed = true;
 }
 
 // The dense A = Gᵀ·G + diag(compliance), n × n, for Bullet's Dantzig solver (the active set's
 // fallback): the upper triangle summed coordinate by coordinate, then mirrored.
-void World::Impl::planar_full_a() {
-  MultibodyEngine& e = *mb;
-  if (e.a_formed) return;
+void MultibodyEngine::planar_full_a() {
+  if (rows_.a_formed) return;
   planar_g();
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
-  e.a.resize(n * n);
-  double* a = e.a.data();
-  const double* g = e.g.data();
+  const std::size_t n = rows_.rows.size(), ud = static_cast<std::size_t>(dofs_);
+  rows_.a.resize(n * n);
+  double* a = rows_.a.data();
+  const double* g = mass_.g.data();
   for (std::size_t r = 0; r < n; ++r) std::fill(a + r * n + r, a + r * n + n, 0.0);
   for (std::size_t k = 0; k < ud; ++k) {
     const double* gk = g + k * n;
@@ -78,10 +75,10 @@ void World::Impl::planar_full_a() {
     }
   }
   for (std::size_t r = 0; r < n; ++r) {
-    a[r * n + r] += e.compliance[r];
+    a[r * n + r] += rows_.compliance[r];
     for (std::size_t c = r + 1; c < n; ++c) a[c * n + r] = a[r * n + c];
   }
-  e.a_formed = true;
+  rows_.a_formed = true;
 }
 
 // The active set on the folded rows (docs/solver.md, "The planar mass matrix"): a friction row
@@ -91,78 +88,76 @@ void World::Impl::planar_full_a() {
 // (c·λ_u; 0 where the normal carries nothing). The same solution as the full rows' (the active set
 // there does the same folding, row by row); n² dot products of the full A become (n − held)².
 // Returns the linear solves it took, 0 where it did not settle.
-int World::Impl::solve_rows_folded() {
-  MultibodyEngine& e = *mb;
+int MultibodyEngine::solve_rows_folded() {
   planar_g();
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
-  const double* g = e.g.data();
-  e.fold_index.assign(n, -1);
-  e.fold_kept.clear();
+  const std::size_t n = rows_.rows.size(), ud = static_cast<std::size_t>(dofs_);
+  const double* g = mass_.g.data();
+  folded_.index.assign(n, -1);
+  folded_.kept.clear();
   for (std::size_t i = 0; i < n; ++i)
-    if (!e.held_friction(i)) e.fold_index[i] = static_cast<int>(e.fold_kept.size()), e.fold_kept.push_back(static_cast<int>(i));
-  const std::size_t m = e.fold_kept.size();
+    if (!rows_.held_friction(i)) folded_.index[i] = static_cast<int>(folded_.kept.size()), folded_.kept.push_back(static_cast<int>(i));
+  const std::size_t m = folded_.kept.size();
   // Per kept row its g and its column's h = g plus its held friction rows' c·g, by row.
-  e.fold_g.resize(m * ud);
-  e.fold_h.resize(m * ud);
+  folded_.g.resize(m * ud);
+  folded_.h.resize(m * ud);
   for (std::size_t r = 0; r < m; ++r)
-    for (std::size_t k = 0; k < ud; ++k) e.fold_h[r * ud + k] = e.fold_g[r * ud + k] = g[k * n + static_cast<std::size_t>(e.fold_kept[r])];
+    for (std::size_t k = 0; k < ud; ++k) folded_.h[r * ud + k] = folded_.g[r * ud + k] = g[k * n + static_cast<std::size_t>(folded_.kept[r])];
   for (std::size_t t = 0; t < n; ++t) {
-    if (e.fold_index[t] >= 0) continue;
-    double* h = e.fold_h.data() + static_cast<std::size_t>(e.fold_index[static_cast<std::size_t>(e.findex[t])]) * ud;
-    for (std::size_t k = 0; k < ud; ++k) h[k] += e.lo[t] * g[k * n + t];
+    if (folded_.index[t] >= 0) continue;
+    double* h = folded_.h.data() + static_cast<std::size_t>(folded_.index[static_cast<std::size_t>(rows_.findex[t])]) * ud;
+    for (std::size_t k = 0; k < ud; ++k) h[k] += rows_.lo[t] * g[k * n + t];
   }
-  e.fold_a.resize(m * m);
-  e.fold_b.resize(m);
-  e.fold_lo.resize(m);
-  e.fold_hi.resize(m);
-  e.fold_x.resize(m);
-  e.fold_findex.resize(m);
-  e.fold_states.resize(m);
+  folded_.a.resize(m * m);
+  folded_.b.resize(m);
+  folded_.lo.resize(m);
+  folded_.hi.resize(m);
+  folded_.x.resize(m);
+  folded_.findex.resize(m);
+  folded_.states.resize(m);
   for (std::size_t r = 0; r < m; ++r) {
-    const std::size_t i = static_cast<std::size_t>(e.fold_kept[r]);
-    const double* gr = e.fold_g.data() + r * ud;
+    const std::size_t i = static_cast<std::size_t>(folded_.kept[r]);
+    const double* gr = folded_.g.data() + r * ud;
     for (std::size_t c = 0; c < m; ++c) {
-      const double* hc = e.fold_h.data() + c * ud;
+      const double* hc = folded_.h.data() + c * ud;
       double v = 0;
       for (std::size_t k = 0; k < ud; ++k) v += gr[k] * hc[k];
-      e.fold_a[r * m + c] = v;
+      folded_.a[r * m + c] = v;
     }
-    e.fold_a[r * m + r] += e.compliance[i];
-    e.fold_b[r] = e.b[i];
-    e.fold_lo[r] = e.lo[i];
-    e.fold_hi[r] = e.hi[i];
-    e.fold_findex[r] = e.findex[i] >= 0 ? e.fold_index[static_cast<std::size_t>(e.findex[i])] : -1;
-    e.fold_states[r] = e.row_states[i];
+    folded_.a[r * m + r] += rows_.compliance[i];
+    folded_.b[r] = rows_.b[i];
+    folded_.lo[r] = rows_.lo[i];
+    folded_.hi[r] = rows_.hi[i];
+    folded_.findex[r] = rows_.findex[i] >= 0 ? folded_.index[static_cast<std::size_t>(rows_.findex[i])] : -1;
+    folded_.states[r] = active_.row_states[i];
   }
-  const int solves = solve_row_lcp(static_cast<int>(m), e.fold_a.data(), e.fold_b.data(), e.fold_lo.data(), e.fold_hi.data(),
-                                   e.fold_findex.data(), e.fold_x.data(), e.fold_states.data(), e.lcp);
+  const int solves = solve_row_lcp(static_cast<int>(m), folded_.a.data(), folded_.b.data(), folded_.lo.data(), folded_.hi.data(),
+                                   folded_.findex.data(), folded_.x.data(), folded_.states.data(), active_.lcp);
   if (solves == 0) return 0;
   for (std::size_t r = 0; r < m; ++r) {
-    const std::size_t i = static_cast<std::size_t>(e.fold_kept[r]);
-    e.x[i] = e.fold_x[r];
-    e.row_states[i] = e.fold_states[r];
+    const std::size_t i = static_cast<std::size_t>(folded_.kept[r]);
+    rows_.x[i] = folded_.x[r];
+    active_.row_states[i] = folded_.states[r];
   }
   for (std::size_t t = 0; t < n; ++t) {
-    if (e.fold_index[t] >= 0) continue;
-    const double normal = e.x[static_cast<std::size_t>(e.findex[t])];
-    e.x[t] = normal == 0 ? 0.0 : e.lo[t] * normal;
-    e.row_states[t] = RowBound::lower;
+    if (folded_.index[t] >= 0) continue;
+    const double normal = rows_.x[static_cast<std::size_t>(rows_.findex[t])];
+    rows_.x[t] = normal == 0 ? 0.0 : rows_.lo[t] * normal;
+    active_.row_states[t] = RowBound::lower;
   }
   return solves;
 }
 
-void World::Impl::velocity_change(const double* lambda, double* dv) {
-  MultibodyEngine& e = *mb;
-  const std::size_t n = e.rows.size(), ud = static_cast<std::size_t>(e.dofs);
-  if (!e.planar_mass) {
-    Eigen::Map<Eigen::VectorXd>(dv, e.dofs).noalias() = e.minv_jt * Eigen::Map<const Eigen::VectorXd>(lambda, static_cast<Eigen::Index>(n));
+void MultibodyEngine::velocity_change(const double* lambda, double* dv) {
+  const std::size_t n = rows_.rows.size(), ud = static_cast<std::size_t>(dofs_);
+  if (!planar_mass_) {
+    Eigen::Map<Eigen::VectorXd>(dv, dofs_).noalias() = rows_.minv_jt * Eigen::Map<const Eigen::VectorXd>(lambda, static_cast<Eigen::Index>(n));
     return;
   }
   // dv = L⁻ᵀ·L⁻¹·(Jᵀ·λ)
-  const double* m = e.chol.data();
-  const double* jrows = e.jrows.data();
-  double* y = e.g_lambda.data();
-  std::fill(e.g_lambda.begin(), e.g_lambda.end(), 0.0);
+  const double* m = mass_.chol.data();
+  const double* jrows = rows_.jrows.data();
+  double* y = mass_.g_lambda.data();
+  std::fill(mass_.g_lambda.begin(), mass_.g_lambda.end(), 0.0);
   for (std::size_t r = 0; r < n; ++r) {
     const double l = lambda[r];
     if (l == 0) continue;
@@ -171,35 +166,34 @@ void World::Impl::velocity_change(const double* lambda, double* dv) {
   for (std::size_t i = 0; i < ud; ++i) {
     double v = y[i];
     for (std::size_t k = 0; k < i; ++k) v -= m[i * ud + k] * y[k];
-    y[i] = v * e.chol_inv_diag[i];
+    y[i] = v * mass_.chol_inv_diag[i];
   }
   for (std::size_t i = ud; i-- > 0;) {
-    double v = e.g_lambda[i];
+    double v = mass_.g_lambda[i];
     for (std::size_t k = i + 1; k < ud; ++k) v -= m[k * ud + i] * dv[k];
-    dv[i] = v * e.chol_inv_diag[i];
+    dv[i] = v * mass_.chol_inv_diag[i];
   }
 }
 
-// The velocity change of this step's impulses e.x. Where the dof-space solve found them
+// The velocity change of this step's impulses rows_.x. Where the dof-space solve found them
 // (solve_rows_planar), the dv it solved them with: M·dv = Jᵀ·x to rounding, so M⁻¹·Jᵀ·x need
 // not be formed again (World::set_mass_matrix_check compares the two).
-void World::Impl::velocity_change_of_x(double* dv) {
-  MultibodyEngine& e = *mb;
-  if (!(e.planar_mass && e.primal_dv_of_x)) {
-    velocity_change(e.x.data(), dv);
+void MultibodyEngine::velocity_change_of_x(double* dv) {
+  if (!(planar_mass_ && primal_.dv_of_x)) {
+    velocity_change(rows_.x.data(), dv);
     return;
   }
-  std::copy(e.primal_dv.begin(), e.primal_dv.end(), dv);
-  if (!e.check_mass) return;
-  std::vector<double> reference(e.primal_dv.size());
-  velocity_change(e.x.data(), reference.data());
+  std::copy(primal_.dv.begin(), primal_.dv.end(), dv);
+  if (!check_mass_) return;
+  std::vector<double> reference(primal_.dv.size());
+  velocity_change(rows_.x.data(), reference.data());
   double scale = 0, difference = 0;
   for (std::size_t k = 0; k < reference.size(); ++k) {
     scale = std::max(scale, std::abs(reference[k]));
     difference = std::max(difference, std::abs(reference[k] - dv[k]));
   }
-  ++e.mass_check.velocity_changes_compared;
-  if (scale > 0) e.mass_check.velocity_change_difference = std::max(e.mass_check.velocity_change_difference, difference / scale);
+  ++mass_check_.velocity_changes_compared;
+  if (scale > 0) mass_check_.velocity_change_difference = std::max(mass_check_.velocity_change_difference, difference / scale);
 }
 
 }  // namespace gearsim::physics

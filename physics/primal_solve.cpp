@@ -5,7 +5,7 @@
 #include "physics/dense_lu.hpp"
 #include "physics/dof_dispatch.hpp"
 #include "physics/row_lcp.hpp"
-#include "physics/world_impl.hpp"
+#include "physics/multibody_engine.hpp"
 
 // The rows of a planar tree solved in the space of its coordinates (docs/solver.md, "The row
 // solve in the coordinates' space"): the same mixed LCP as solve_row_lcp() on the folded rows,
@@ -14,8 +14,8 @@
 namespace gearsim::physics {
 namespace {
 
-constexpr double kRelativeTolerance = 1e-9;  // as solve_row_lcp()
-constexpr int kMaxSolves = 8;                // as solve_row_lcp()'s default
+constexpr double kPrimalRelativeTolerance = 1e-9;  // as solve_row_lcp()
+constexpr int kMaxPrimalSolves = 8;                // as solve_row_lcp()'s default
 // A spring row whose compliance is below this times its diagonal A_ii = J_i·M⁻¹·J_iᵀ (a spring
 // far stiffer than the step resolves) is solved as a stiff row: in K its 1/D would raise the
 // condition number by up to A_ii/D.
@@ -34,37 +34,36 @@ double dot(const double* a, const double* b, std::size_t n) {
 // their compliances stay the step's through the slip reversals' solves again). A_ii ≤
 // trace(M⁻¹)·|J_i|² (M⁻¹ is positive definite), trace(M⁻¹) = ‖L⁻¹‖²_F: the exact A_ii only where
 // that bound leaves the question open.
-void World::Impl::planar_soft_rows() {
-  with_dof_count(mb->dofs, [&](auto dofs) { planar_soft_rows_n<decltype(dofs)::value>(); });
+void MultibodyEngine::planar_soft_rows() {
+  with_dof_count(dofs_, [&](auto dofs) { planar_soft_rows_n<decltype(dofs)::value>(); });
 }
 
 template <int N>
-void World::Impl::planar_soft_rows_n() {
-  MultibodyEngine& e = *mb;
-  const std::size_t n = e.rows.size(), ud = N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(e.dofs);
-  const double* jrows = e.jrows.data();
+void MultibodyEngine::planar_soft_rows_n() {
+  const std::size_t n = rows_.rows.size(), ud = N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(dofs_);
+  const double* jrows = rows_.jrows.data();
   const auto j = [&](std::size_t i) { return jrows + i * ud; };
-  const double* d = e.compliance.data();
+  const double* d = rows_.compliance.data();
   double trace_minv = 0;
   {
-    const double* l = e.chol.data();
-    std::vector<double>& col = e.g_lambda;  // scratch: column c of L⁻¹
+    const double* l = mass_.chol.data();
+    std::vector<double>& col = mass_.g_lambda;  // scratch: column c of L⁻¹
     // Column c of L⁻¹ is zero above its diagonal (L lower triangular): only rows i ≥ c are
     // formed and summed (the zeros added nothing to the trace).
     for (std::size_t c = 0; c < ud; ++c) {
       for (std::size_t i = c; i < ud; ++i) {
         double v = i == c ? 1.0 : 0.0;
         for (std::size_t k = c; k < i; ++k) v -= l[i * ud + k] * col[k];
-        col[i] = v * e.chol_inv_diag[i];
+        col[i] = v * mass_.chol_inv_diag[i];
         trace_minv += col[i] * col[i];
       }
     }
   }
-  e.primal_soft.resize(n);
+  primal_.soft.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    bool soft = e.rows[i].cfm > 0;
+    bool soft = rows_.rows[i].cfm > 0;
     if (soft && !(d[i] >= kSoftSpring * trace_minv * dot(j(i), j(i), ud))) soft = d[i] >= kSoftSpring * planar_diag_a(i);
-    e.primal_soft[i] = soft;
+    primal_.soft[i] = soft;
   }
 }
 
@@ -93,10 +92,10 @@ namespace {
 // compliances, friction links, bound states and impulses.
 template <int N>
 struct PrimalRows {
-  explicit PrimalRows(MultibodyEngine& e)
-      : n(e.rows.size()), ud(N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(e.dofs)), jrows(e.jrows.data()),
-        state(e.row_states.data()), lo(e.lo.data()), hi(e.hi.data()), b(e.b.data()), d(e.compliance.data()),
-        findex(e.findex.data()), x(e.x.data()) {}
+  PrimalRows(RowSystem& rs, RowBound* states, const double* mass_lower, int dofs)
+      : n(rs.rows.size()), ud(N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(dofs)), jrows(rs.jrows.data()),
+        state(states), lo(rs.lo.data()), hi(rs.hi.data()), b(rs.b.data()), d(rs.compliance.data()),
+        findex(rs.findex.data()), x(rs.x.data()), mass(mass_lower) {}
   const double* j(std::size_t i) const { return jrows + i * ud; }
   // Friction whose normal sits at a zero lower bound: its impulse is 0.
   bool pinned(std::size_t i) const { return findex[i] >= 0 && state[findex[i]] == RowBound::lower && lo[findex[i]] == 0; }
@@ -108,49 +107,50 @@ struct PrimalRows {
   const double *lo, *hi, *b, *d;
   const int* findex;
   double* x;
+  const double* mass;  // M, lower triangle, ud × ud row-major
 };
 
 // Unknowns: the free rows (not pinned, not held), the stiff ones among them apart.
 template <int N>
-void primal_unknowns(MultibodyEngine& e, const PrimalRows<N>& r) {
-  e.primal_rows.clear();
-  e.primal_stiff.clear();
+void primal_unknowns(PrimalSolve& e, const PrimalRows<N>& r) {
+  e.rows.clear();
+  e.stiff.clear();
   for (std::size_t i = 0; i < r.n; ++i) {
-    e.primal_unknown[i] = -1;
+    e.unknown[i] = -1;
     if (r.state[i] == RowBound::free && !r.pinned(i) && !r.held(i)) {
-      e.primal_unknown[i] = static_cast<int>(e.primal_rows.size());
-      e.primal_rows.push_back(static_cast<int>(i));
-      if (!e.primal_soft[i]) e.primal_stiff.push_back(static_cast<int>(i));
+      e.unknown[i] = static_cast<int>(e.rows.size());
+      e.rows.push_back(static_cast<int>(i));
+      if (!e.soft[i]) e.stiff.push_back(static_cast<int>(i));
     }
   }
 }
 
 // Columns: each unknown's J, with the friction held at a multiple c of it (held rows, box
-// friction on a bound) folded in; the constants' impulses into f₀ (e.primal_const).
+// friction on a bound) folded in; the constants' impulses into f₀ (e.constant).
 template <int N>
-void primal_columns(MultibodyEngine& e, const PrimalRows<N>& r) {
-  const std::size_t m = e.primal_rows.size(), ud = r.ud;
+void primal_columns(PrimalSolve& e, const PrimalRows<N>& r) {
+  const std::size_t m = e.rows.size(), ud = r.ud;
   double* x = r.x;
-  e.primal_cols.resize(m * ud);
-  for (std::size_t u = 0; u < m; ++u) std::copy(r.j(static_cast<std::size_t>(e.primal_rows[u])), r.j(static_cast<std::size_t>(e.primal_rows[u])) + ud, e.primal_cols.begin() + static_cast<std::ptrdiff_t>(u * ud));
-  double* f0 = e.primal_const.data();
+  e.cols.resize(m * ud);
+  for (std::size_t u = 0; u < m; ++u) std::copy(r.j(static_cast<std::size_t>(e.rows[u])), r.j(static_cast<std::size_t>(e.rows[u])) + ud, e.cols.begin() + static_cast<std::ptrdiff_t>(u * ud));
+  double* f0 = e.constant.data();
   std::fill(f0, f0 + ud, 0.0);
   for (std::size_t i = 0; i < r.n; ++i) {
-    if (e.primal_unknown[i] >= 0 || r.findex[i] >= 0) continue;
+    if (e.unknown[i] >= 0 || r.findex[i] >= 0) continue;
     x[i] = r.state[i] == RowBound::lower ? r.lo[i] : r.hi[i];  // a row on a bound
     if (x[i] != 0)
       for (std::size_t k = 0; k < ud; ++k) f0[k] += r.j(i)[k] * x[i];
   }
   for (std::size_t i = 0; i < r.n; ++i) {
-    if (e.primal_unknown[i] >= 0 || r.findex[i] < 0) continue;
+    if (e.unknown[i] >= 0 || r.findex[i] < 0) continue;
     if (r.pinned(i)) {
       x[i] = 0;
       continue;
     }
     const double c = r.held(i) || r.state[i] == RowBound::lower ? r.lo[i] : r.hi[i];
     const std::size_t f = static_cast<std::size_t>(r.findex[i]);
-    if (e.primal_unknown[f] >= 0) {
-      double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[f]) * ud;
+    if (e.unknown[f] >= 0) {
+      double* col = e.cols.data() + static_cast<std::size_t>(e.unknown[f]) * ud;
       for (std::size_t k = 0; k < ud; ++k) col[k] += c * r.j(i)[k];
     } else {
       x[i] = c * x[f];
@@ -160,21 +160,21 @@ void primal_columns(MultibodyEngine& e, const PrimalRows<N>& r) {
   }
 }
 
-// K = M + Σ_springs J_f,u·J_uᵀ/D_u (e.primal_k) and its right-hand side f₀ + Σ_springs
-// J_f,u·b_u/D_u (e.primal_rhs).
+// K = M + Σ_springs J_f,u·J_uᵀ/D_u (e.k) and its right-hand side f₀ + Σ_springs
+// J_f,u·b_u/D_u (e.rhs).
 template <int N>
-void primal_k(MultibodyEngine& e, const PrimalRows<N>& r) {
-  const std::size_t m = e.primal_rows.size(), ud = r.ud;
-  double* kk = e.primal_k.data();
-  double* rhs = e.primal_rhs.data();
+void primal_k(PrimalSolve& e, const PrimalRows<N>& r) {
+  const std::size_t m = e.rows.size(), ud = r.ud;
+  double* kk = e.k.data();
+  double* rhs = e.rhs.data();
   for (std::size_t a = 0; a < ud; ++a)
-    for (std::size_t c = 0; c < ud; ++c) kk[a * ud + c] = c <= a ? e.mass[a * ud + c] : e.mass[c * ud + a];
-  std::copy(e.primal_const.data(), e.primal_const.data() + ud, rhs);
+    for (std::size_t c = 0; c < ud; ++c) kk[a * ud + c] = c <= a ? r.mass[a * ud + c] : r.mass[c * ud + a];
+  std::copy(e.constant.data(), e.constant.data() + ud, rhs);
   for (std::size_t u = 0; u < m; ++u) {
-    const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
-    if (!e.primal_soft[i]) continue;
+    const std::size_t i = static_cast<std::size_t>(e.rows[u]);
+    if (!e.soft[i]) continue;
     const double inv_d = 1 / r.d[i];
-    const double* col = e.primal_cols.data() + u * ud;
+    const double* col = e.cols.data() + u * ud;
     const double* ji = r.j(i);
     for (std::size_t a = 0; a < ud; ++a) {
       const double ca = col[a] * inv_d;
@@ -186,37 +186,37 @@ void primal_k(MultibodyEngine& e, const PrimalRows<N>& r) {
   }
 }
 
-// The stiff rows, with K factorised and dv₀ in e.primal_dv: Y = K⁻¹·J_f,R, then
+// The stiff rows, with K factorised and dv₀ in e.dv: Y = K⁻¹·J_f,R, then
 // (D_R + J_R·Y)·λ_R = b_R − J_R·dv₀; λ_R into x and Y·λ_R added to dv. False where the Schur
 // matrix does not factorise.
 template <int N>
-bool primal_stiff_rows(MultibodyEngine& e, const PrimalRows<N>& r) {
-  const std::size_t ms = e.primal_stiff.size(), ud = r.ud;
+bool primal_stiff_rows(PrimalSolve& e, const PrimalRows<N>& r) {
+  const std::size_t ms = e.stiff.size(), ud = r.ud;
   const int dofs = static_cast<int>(ud);
-  double* dv = e.primal_dv.data();
-  e.primal_y.resize(ms * ud);
-  e.primal_s.resize(ms * ms);
-  e.primal_t.resize(ms);
+  double* dv = e.dv.data();
+  e.y.resize(ms * ud);
+  e.s.resize(ms * ms);
+  e.t.resize(ms);
   for (std::size_t q = 0; q < ms; ++q) {
-    const std::size_t i = static_cast<std::size_t>(e.primal_stiff[q]);
-    double* y = e.primal_y.data() + q * ud;
-    const double* col = e.primal_cols.data() + static_cast<std::size_t>(e.primal_unknown[i]) * ud;
+    const std::size_t i = static_cast<std::size_t>(e.stiff[q]);
+    double* y = e.y.data() + q * ud;
+    const double* col = e.cols.data() + static_cast<std::size_t>(e.unknown[i]) * ud;
     std::copy(col, col + ud, y);
-    lu_solve<N>(dofs, e.primal_k.data(), e.primal_pivots.data(), y);
+    lu_solve<N>(dofs, e.k.data(), e.pivots.data(), y);
   }
   for (std::size_t q = 0; q < ms; ++q) {
-    const std::size_t i = static_cast<std::size_t>(e.primal_stiff[q]);
-    for (std::size_t c = 0; c < ms; ++c) e.primal_s[q * ms + c] = dot(r.j(i), e.primal_y.data() + c * ud, ud) + (q == c ? r.d[i] : 0.0);
-    e.primal_t[q] = r.b[i] - dot(r.j(i), dv, ud);
+    const std::size_t i = static_cast<std::size_t>(e.stiff[q]);
+    for (std::size_t c = 0; c < ms; ++c) e.s[q * ms + c] = dot(r.j(i), e.y.data() + c * ud, ud) + (q == c ? r.d[i] : 0.0);
+    e.t[q] = r.b[i] - dot(r.j(i), dv, ud);
   }
-  std::vector<int>& piv = e.primal_stiff_pivots;
+  std::vector<int>& piv = e.stiff_pivots;
   piv.resize(ms);
-  if (!lu_factor(static_cast<int>(ms), e.primal_s.data(), piv.data())) return false;
-  lu_solve(static_cast<int>(ms), e.primal_s.data(), piv.data(), e.primal_t.data());
+  if (!lu_factor(static_cast<int>(ms), e.s.data(), piv.data())) return false;
+  lu_solve(static_cast<int>(ms), e.s.data(), piv.data(), e.t.data());
   for (std::size_t q = 0; q < ms; ++q) {
-    r.x[static_cast<std::size_t>(e.primal_stiff[q])] = e.primal_t[q];
-    const double* y = e.primal_y.data() + q * ud;
-    for (std::size_t k = 0; k < ud; ++k) dv[k] += y[k] * e.primal_t[q];
+    r.x[static_cast<std::size_t>(e.stiff[q])] = e.t[q];
+    const double* y = e.y.data() + q * ud;
+    for (std::size_t k = 0; k < ud; ++k) dv[k] += y[k] * e.t[q];
   }
   return true;
 }
@@ -224,30 +224,30 @@ bool primal_stiff_rows(MultibodyEngine& e, const PrimalRows<N>& r) {
 // The springs' impulses from dv, then the folded friction from its normal. True when a row has
 // conditions on w (one on a bound, not held).
 template <int N>
-bool primal_impulses(MultibodyEngine& e, const PrimalRows<N>& r) {
-  const double* dv = e.primal_dv.data();
+bool primal_impulses(PrimalSolve& e, const PrimalRows<N>& r) {
+  const double* dv = e.dv.data();
   double* x = r.x;
-  for (std::size_t u = 0; u < e.primal_rows.size(); ++u) {
-    const std::size_t i = static_cast<std::size_t>(e.primal_rows[u]);
-    if (e.primal_soft[i]) x[i] = (r.b[i] - dot(r.j(i), dv, r.ud)) / r.d[i];
+  for (std::size_t u = 0; u < e.rows.size(); ++u) {
+    const std::size_t i = static_cast<std::size_t>(e.rows[u]);
+    if (e.soft[i]) x[i] = (r.b[i] - dot(r.j(i), dv, r.ud)) / r.d[i];
   }
   bool on_bound = false;
   for (std::size_t i = 0; i < r.n; ++i) {
-    if (e.primal_unknown[i] >= 0) continue;
+    if (e.unknown[i] >= 0) continue;
     if (!r.held(i) && !r.pinned(i)) on_bound = true;
     if (r.findex[i] < 0 || r.pinned(i)) continue;
     const std::size_t f = static_cast<std::size_t>(r.findex[i]);
-    if (e.primal_unknown[f] >= 0) x[i] = (r.held(i) || r.state[i] == RowBound::lower ? r.lo[i] : r.hi[i]) * x[f];
+    if (e.unknown[f] >= 0) x[i] = (r.held(i) || r.state[i] == RowBound::lower ? r.lo[i] : r.hi[i]) * x[f];
   }
   return on_bound;
 }
 
 // The conditions' scales over the rows that have conditions (held friction has none: it is not
 // a row of the folded problem); w = A·x − b = J·dv + D·x − b where a row sits on a bound (a free
-// row's w is 0: it has none to meet) into e.primal_w. False where a value is not finite.
+// row's w is 0: it has none to meet) into e.w. False where a value is not finite.
 template <int N>
-bool primal_scales(MultibodyEngine& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale) {
-  const double* dv = e.primal_dv.data();
+bool primal_scales(PrimalSolve& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale) {
+  const double* dv = e.dv.data();
   x_scale = 0, w_scale = 0;
   for (std::size_t i = 0; i < r.n; ++i) {
     if (!std::isfinite(r.x[i])) return false;
@@ -257,7 +257,7 @@ bool primal_scales(MultibodyEngine& e, const PrimalRows<N>& r, bool on_bound, do
   if (on_bound) {
     for (std::size_t i = 0; i < r.n; ++i) {
       const double ax = dot(r.j(i), dv, r.ud) + r.d[i] * r.x[i];
-      e.primal_w[i] = ax - r.b[i];
+      e.w[i] = ax - r.b[i];
       if (!std::isfinite(ax)) return false;
       if (r.held(i)) continue;
       w_scale = std::max({w_scale, std::abs(r.b[i]), std::abs(ax)});
@@ -267,32 +267,31 @@ bool primal_scales(MultibodyEngine& e, const PrimalRows<N>& r, bool on_bound, do
 }
 
 template <int N>
-int primal_solve(MultibodyEngine& e) {
-  const PrimalRows<N> r(e);
+int primal_solve(PrimalSolve& e, const PrimalRows<N>& r) {
   const std::size_t n = r.n, ud = r.ud;
   const int dofs = static_cast<int>(ud);
-  e.primal_unknown.resize(n);
-  e.primal_w.resize(n);
-  e.primal_dv.resize(ud);
-  e.primal_const.resize(ud);
-  e.primal_rhs.resize(ud);
-  e.primal_k.resize(ud * ud);
-  e.primal_pivots.resize(ud);
-  for (int solves = 1; solves <= kMaxSolves; ++solves) {
+  e.unknown.resize(n);
+  e.w.resize(n);
+  e.dv.resize(ud);
+  e.constant.resize(ud);
+  e.rhs.resize(ud);
+  e.k.resize(ud * ud);
+  e.pivots.resize(ud);
+  for (int solves = 1; solves <= kMaxPrimalSolves; ++solves) {
     primal_unknowns(e, r);
     primal_columns(e, r);
     primal_k(e, r);
-    double* kk = e.primal_k.data();
-    double* rhs = e.primal_rhs.data();
-    if (!lu_factor<N>(dofs, kk, e.primal_pivots.data())) return 0;
-    lu_solve<N>(dofs, kk, e.primal_pivots.data(), rhs);  // dv of the springs and constants alone
-    std::copy(rhs, rhs + ud, e.primal_dv.data());
-    if (!e.primal_stiff.empty() && !primal_stiff_rows(e, r)) return 0;
+    double* kk = e.k.data();
+    double* rhs = e.rhs.data();
+    if (!lu_factor<N>(dofs, kk, e.pivots.data())) return 0;
+    lu_solve<N>(dofs, kk, e.pivots.data(), rhs);  // dv of the springs and constants alone
+    std::copy(rhs, rhs + ud, e.dv.data());
+    if (!e.stiff.empty() && !primal_stiff_rows(e, r)) return 0;
     const bool on_bound = primal_impulses(e, r);
     double x_scale, w_scale;
     if (!primal_scales(e, r, on_bound, x_scale, w_scale)) return 0;
-    if (settle_row_states(static_cast<int>(n), r.x, on_bound ? e.primal_w.data() : nullptr, r.lo, r.hi, r.findex, r.state, solves,
-                          kRelativeTolerance * x_scale, kRelativeTolerance * w_scale)) {
+    if (settle_row_states(static_cast<int>(n), r.x, on_bound ? e.w.data() : nullptr, r.lo, r.hi, r.findex, r.state, solves,
+                          kPrimalRelativeTolerance * x_scale, kPrimalRelativeTolerance * w_scale)) {
       for (std::size_t i = 0; i < n; ++i)
         if (r.held(i)) r.state[i] = RowBound::lower;
       return solves;
@@ -302,39 +301,40 @@ int primal_solve(MultibodyEngine& e) {
 }
 }  // namespace
 
-int World::Impl::solve_rows_primal() {
-  MultibodyEngine& e = *mb;
-  return with_dof_count(e.dofs, [&](auto n) { return primal_solve<decltype(n)::value>(e); });
+int MultibodyEngine::solve_rows_primal() {
+  return with_dof_count(dofs_, [&](auto n) {
+    constexpr int N = decltype(n)::value;
+    return primal_solve<N>(primal_, PrimalRows<N>(rows_, active_.row_states.data(), mass_.mass.data(), dofs_));
+  });
 }
 
 // The rows by the dof-space solve; where it does not settle, by the folded row-space one from
 // the same bound states. With World::set_mass_matrix_check, both, compared
 // (Multibody.TheDofSpaceSolveIsTheRowSpaceSolve).
-int World::Impl::solve_rows_planar() {
-  MultibodyEngine& e = *mb;
-  e.primal_states_before = e.row_states;
+int MultibodyEngine::solve_rows_planar() {
+  primal_.states_before = active_.row_states;
   const int solves = solve_rows_primal();
-  e.primal_dv_of_x = solves > 0;
-  if (solves > 0 && e.check_mass) {
-    e.primal_x_check = e.x;
-    e.primal_states_check = e.row_states;
-    e.row_states = e.primal_states_before;
+  primal_.dv_of_x = solves > 0;
+  if (solves > 0 && check_mass_) {
+    primal_.x_check = rows_.x;
+    primal_.states_check = active_.row_states;
+    active_.row_states = primal_.states_before;
     if (solve_rows_folded() > 0) {
       double scale = 0, difference = 0;
-      for (std::size_t i = 0; i < e.x.size(); ++i) {
-        scale = std::max(scale, std::abs(e.x[i]));
-        difference = std::max(difference, std::abs(e.x[i] - e.primal_x_check[i]));
+      for (std::size_t i = 0; i < rows_.x.size(); ++i) {
+        scale = std::max(scale, std::abs(rows_.x[i]));
+        difference = std::max(difference, std::abs(rows_.x[i] - primal_.x_check[i]));
       }
-      ++e.mass_check.row_solves_compared;
-      if (scale > 0) e.mass_check.row_solve_difference = std::max(e.mass_check.row_solve_difference, difference / scale);
+      ++mass_check_.row_solves_compared;
+      if (scale > 0) mass_check_.row_solve_difference = std::max(mass_check_.row_solve_difference, difference / scale);
     }
-    e.x = e.primal_x_check;
-    e.row_states = e.primal_states_check;
+    rows_.x = primal_.x_check;
+    active_.row_states = primal_.states_check;
   }
   if (solves > 0) return solves;
-  e.row_states = e.primal_states_before;
+  active_.row_states = primal_.states_before;
   const int folded = solve_rows_folded();
-  if (e.check_mass) ++e.mass_check.row_solve_fallbacks, e.mass_check.row_solve_fallbacks_settled += folded > 0;
+  if (check_mass_) ++mass_check_.row_solve_fallbacks, mass_check_.row_solve_fallbacks_settled += folded > 0;
   return folded;
 }
 

@@ -2,7 +2,8 @@
 #include <cmath>
 
 #include "core/errors.hpp"
-#include "physics/world_impl.hpp"
+#include "physics/measure.hpp"
+#include "physics/multibody_engine.hpp"
 
 // solver.mass_matrix planar (docs/solver.md, "The planar kinematics"): on a tree whose joints all
 // turn about z, each step's positions, the links' poses and velocities and the bodies' states
@@ -20,21 +21,6 @@ btVector3 turn_z(const btVector3& v, double c, double s) { return {c * v.x() - s
 
 }  // namespace
 
-// The angle of joint j's body about its axis against its parent (the gear frames' x axes, as
-// measured from the bodies' transforms).
-double World::Impl::joint_raw_angle(const JointRec& j) const {
-  const BuiltBody& b = bodies[static_cast<std::size_t>(j.body)];
-  // The gear frame's x axis: the first column of (body basis · com_from_gear basis).
-  auto gear_x = [](const BuiltBody& g) { return eig(g.rigid->getWorldTransform().getBasis() * g.com_from_gear.getBasis().getColumn(0)); };
-  const Eigen::Vector3d ax = j.axis_world;
-  const Eigen::Vector3d xb = gear_x(b);
-  Eigen::Vector3d ref = j.parent >= 0 ? gear_x(bodies[static_cast<std::size_t>(j.parent)]) : Eigen::Vector3d::UnitX();
-  if (std::abs(ref.dot(ax)) > 0.9) ref = Eigen::Vector3d::UnitY();
-  ref = (ref - ref.dot(ax) * ax).normalized();
-  const Eigen::Vector3d ref2 = ax.cross(ref);
-  return std::atan2(xb.dot(ref2), xb.dot(ref));
-}
-
 // Per link: its parent, the sign of its joint's turn about world z, and its joint's vectors at
 // q = 0 in world terms (the tree's pose then is the bodies' start poses: build_multibody()).
 // In Bullet's conventions (btMultibodyLink::updateCacheMultiDof, btMultiBody::forwardKinematics)
@@ -46,14 +32,13 @@ double World::Impl::joint_raw_angle(const JointRec& j) const {
 //   planar    c_l = c_p + R_p·Z⁻¹·(q₁·b₁ + q₂·b₂) + R_p·e   (b₁, b₂ its two translation axes)
 // so with E = R_p0·e, D = R_l0·d, B_i = R_l0·b_i (world, at q = 0):
 //   revolute  c_l = c_p + Rz(φ_p)·E + Rz(φ_l)·D,   planar  c_l = c_p + Rz(φ_p)·(q₁·B₁ + q₂·B₂ + E).
-void World::Impl::build_planar_kinematics() {
-  MultibodyEngine& e = *mb;
-  const btMultiBody& t = *e.tree;
+void MultibodyEngine::build_planar_kinematics() {
+  const btMultiBody& t = *tree_;
   const std::size_t links = static_cast<std::size_t>(t.getNumLinks());
-  e.plinks.assign(links, {});
+  kin_.links.assign(links, {});
   for (std::size_t l = 0; l < links; ++l) {
     const btMultibodyLink& link = t.getLink(static_cast<int>(l));
-    MultibodyEngine::PlanarLink& p = e.plinks[l];
+    PlanarKinematics::Link& p = kin_.links[l];
     p.parent = link.m_parent;
     GEARSIM_CHECK(p.parent < static_cast<int>(l), "a multibody link's parent must come before it");
     GEARSIM_CHECK(link.m_jointType == btMultibodyLink::eRevolute || link.m_jointType == btMultibodyLink::ePlanar,
@@ -74,9 +59,9 @@ void World::Impl::build_planar_kinematics() {
       p.axis_length2 = link.getAxisBottom(1).length2();
     }
   }
-  e.link_phi.assign(links, 0.0);
-  e.link_cos.assign(links, 1.0);
-  e.link_sin.assign(links, 0.0);
+  kin_.link_phi.assign(links, 0.0);
+  kin_.link_cos.assign(links, 1.0);
+  kin_.link_sin.assign(links, 0.0);
   std::vector<btTransform> bullet(links);
   for (std::size_t l = 0; l < links; ++l) bullet[l] = t.getLink(static_cast<int>(l)).m_cachedWorldTransform;
   planar_forward_kinematics();
@@ -90,20 +75,21 @@ void World::Impl::build_planar_kinematics() {
   }
   // Per joint its angle at q = 0; per gear its frame's x axis in the plane at q = 0 (unit) and
   // that axis' angle; the fixed gears' poses once.
-  for (JointRec& j : joints) j.angle_at_zero = joint_raw_angle(j);
-  e.gear_x0.assign(bodies.size(), {1.0, 0.0});
-  e.gear_angle0.assign(bodies.size(), 0.0);
-  e.fixed_pose.assign(bodies.size(), {});
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const BuiltBody& b = bodies[i];
+  kin_.angle_at_zero.resize(model_.joints.size());
+  for (std::size_t k = 0; k < model_.joints.size(); ++k) kin_.angle_at_zero[k] = joint_raw_angle(model_, model_.joints[k]);
+  kin_.gear_x0.assign(model_.bodies.size(), {1.0, 0.0});
+  kin_.gear_angle0.assign(model_.bodies.size(), 0.0);
+  kin_.fixed_pose.assign(model_.bodies.size(), {});
+  for (std::size_t i = 0; i < model_.bodies.size(); ++i) {
+    const BuiltBody& b = model_.bodies[i];
     if (!b.flanks) continue;
     const contact::PlanarPose p = planar_pose(b);
-    if (e.link_of_body[i] < 0) {
-      e.fixed_pose[i] = p;
+    if (link_of_body_[i] < 0) {
+      kin_.fixed_pose[i] = p;
       continue;
     }
-    e.gear_x0[i] = {p.cos_angle, p.sin_angle};
-    e.gear_angle0[i] = p.angle_rad;
+    kin_.gear_x0[i] = {p.cos_angle, p.sin_angle};
+    kin_.gear_angle0[i] = p.angle_rad;
   }
 }
 
@@ -112,11 +98,10 @@ void World::Impl::build_planar_kinematics() {
 // b₁, b₂ in its turned frame) turned by the new angle about its axis — Rot(a, q₀)·(v₁·b₁ + v₂·b₂) =
 // (c·v₁ + s·v₂)·b₁ + (c·v₂ − s·v₁)·b₂ — and projected on b₁ and b₂ again. v: one entry per
 // coordinate. Then the poses (planar_forward_kinematics()).
-void World::Impl::planar_step_positions(double h, const double* v) {
-  MultibodyEngine& e = *mb;
-  btMultiBody& t = *e.tree;
-  for (std::size_t l = 0; l < e.plinks.size(); ++l) {
-    const MultibodyEngine::PlanarLink& p = e.plinks[l];
+void MultibodyEngine::planar_step_positions(double h, const double* v) {
+  btMultiBody& t = *tree_;
+  for (std::size_t l = 0; l < kin_.links.size(); ++l) {
+    const PlanarKinematics::Link& p = kin_.links[l];
     btScalar* q = t.getJointPosMultiDof(static_cast<int>(l));
     const double* u = v + t.getLink(static_cast<int>(l)).m_dofOffset;
     q[0] += h * u[0];
@@ -132,18 +117,17 @@ void World::Impl::planar_step_positions(double h, const double* v) {
 // closed form of build_planar_kinematics()), into Bullet's link cache (which the rows and the
 // link Jacobians read) and the bodies' transforms. The links' Jacobians at this pose follow
 // (planar_link_jacobians(); the next step's planar_free_velocities() takes them as they are).
-void World::Impl::planar_forward_kinematics() {
-  MultibodyEngine& e = *mb;
-  btMultiBody& t = *e.tree;
-  for (std::size_t l = 0; l < e.plinks.size(); ++l) {
-    const MultibodyEngine::PlanarLink& p = e.plinks[l];
+void MultibodyEngine::planar_forward_kinematics() {
+  btMultiBody& t = *tree_;
+  for (std::size_t l = 0; l < kin_.links.size(); ++l) {
+    const PlanarKinematics::Link& p = kin_.links[l];
     const btScalar* q = t.getJointPosMultiDof(static_cast<int>(l));
     const bool grounded = p.parent < 0;
     const std::size_t up = grounded ? 0 : static_cast<std::size_t>(p.parent);
-    const double phi_p = grounded ? 0.0 : e.link_phi[up], cp = grounded ? 1.0 : e.link_cos[up], sp = grounded ? 0.0 : e.link_sin[up];
+    const double phi_p = grounded ? 0.0 : kin_.link_phi[up], cp = grounded ? 1.0 : kin_.link_cos[up], sp = grounded ? 0.0 : kin_.link_sin[up];
     const btVector3 origin_p = grounded ? btVector3(0, 0, 0) : t.getLink(p.parent).m_cachedWorldTransform.getOrigin();
     const double phi = phi_p + p.sigma * q[0], c = std::cos(phi), s = std::sin(phi);
-    e.link_phi[l] = phi, e.link_cos[l] = c, e.link_sin[l] = s;
+    kin_.link_phi[l] = phi, kin_.link_cos[l] = c, kin_.link_sin[l] = s;
     btTransform& tl = t.getLink(static_cast<int>(l)).m_cachedWorldTransform;
     const btMatrix3x3& b0 = p.basis0;
     tl.getBasis().setValue(c * b0[0][0] - s * b0[1][0], c * b0[0][1] - s * b0[1][1], c * b0[0][2] - s * b0[1][2],
@@ -152,81 +136,78 @@ void World::Impl::planar_forward_kinematics() {
     tl.setOrigin(p.planar_joint ? origin_p + turn_z(q[1] * p.b1 + q[2] * p.b2 + p.e0, cp, sp)
                                 : origin_p + turn_z(p.e0, cp, sp) + turn_z(p.d0, c, s));
   }
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const int l = e.link_of_body[i];
-    if (l >= 0) bodies[i].rigid->setWorldTransform(t.getLink(l).m_cachedWorldTransform);
+  for (std::size_t i = 0; i < model_.bodies.size(); ++i) {
+    const int l = link_of_body_[i];
+    if (l >= 0) model_.bodies[i].rigid->setWorldTransform(t.getLink(l).m_cachedWorldTransform);
   }
   planar_link_jacobians();
-  e.link_jac_current = true;
+  kin_.link_jac_current = true;
 }
 
 // Each link's spin rate and centre velocity (world) from the coordinates' velocities u through
 // this pose's link Jacobians.
-void World::Impl::planar_link_velocities(const double* u) {
-  MultibodyEngine& e = *mb;
-  const std::size_t links = e.plinks.size(), ud = static_cast<std::size_t>(e.dofs);
-  e.link_w.resize(links);
-  e.link_vx.resize(links);
-  e.link_vy.resize(links);
+void MultibodyEngine::planar_link_velocities(const double* u) {
+  const std::size_t links = kin_.links.size(), ud = static_cast<std::size_t>(dofs_);
+  mass_.link_w.resize(links);
+  mass_.link_vx.resize(links);
+  mass_.link_vy.resize(links);
   for (std::size_t l = 0; l < links; ++l) {
-    const double* jw = e.link_jac.data() + l * 3 * ud;
+    const double* jw = link_jac_.data() + l * 3 * ud;
     const double *jx = jw + ud, *jy = jw + 2 * ud;
     double w = 0, vx = 0, vy = 0;
-    for (const int d : e.link_dofs[l]) {
+    for (const int d : mass_.link_dofs[l]) {
       const std::size_t k = static_cast<std::size_t>(d);
       w += jw[k] * u[k], vx += jx[k] * u[k], vy += jy[k] * u[k];
     }
-    e.link_w[l] = w, e.link_vx[l] = vx, e.link_vy[l] = vy;
+    mass_.link_w[l] = w, mass_.link_vx[l] = vx, mass_.link_vy[l] = vy;
   }
 }
 
 // The end of a step on the planar path: the links' velocities at the new pose onto the bodies,
 // then (World::set_mass_matrix_check) Bullet's own passes from the same coordinates compared.
-void World::Impl::planar_finish_step() {
-  MultibodyEngine& e = *mb;
-  planar_link_velocities(e.tree->getVelocityVector() + 6);
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const int l = e.link_of_body[i];
+void MultibodyEngine::planar_finish_step() {
+  planar_link_velocities(tree_->getVelocityVector() + 6);
+  for (std::size_t i = 0; i < model_.bodies.size(); ++i) {
+    const int l = link_of_body_[i];
     if (l < 0) continue;
     const std::size_t u = static_cast<std::size_t>(l);
-    btRigidBody& r = *bodies[i].rigid;
-    r.setAngularVelocity(btVector3(0, 0, e.link_w[u]));
-    r.setLinearVelocity(btVector3(e.link_vx[u], e.link_vy[u], 0));
+    btRigidBody& r = *model_.bodies[i].rigid;
+    r.setAngularVelocity(btVector3(0, 0, mass_.link_w[u]));
+    r.setLinearVelocity(btVector3(mass_.link_vx[u], mass_.link_vy[u], 0));
   }
-  if (e.check_mass) check_planar_kinematics();
+  if (check_mass_) check_planar_kinematics();
 }
 
 // Joint angles and speeds from the links' turns and spin rates: a joint's angle about its axis is
 // its angle at q = 0 plus the turn of its body less its parent's (a fixed parent or the ground does
 // not turn), seen along the axis.
-void World::Impl::planar_measure_joints() {
-  const MultibodyEngine& e = *mb;
-  for (const JointRec& j : joints) {
-    const std::size_t l = static_cast<std::size_t>(e.link_of_body[static_cast<std::size_t>(j.body)]);
-    const int p = j.parent >= 0 ? e.link_of_body[static_cast<std::size_t>(j.parent)] : -1;
-    const double phi_p = p >= 0 ? e.link_phi[static_cast<std::size_t>(p)] : 0.0, w_p = p >= 0 ? e.link_w[static_cast<std::size_t>(p)] : 0.0;
+void MultibodyEngine::planar_measure_joints() {
+  for (std::size_t k = 0; k < model_.joints.size(); ++k) {
+    const ModelJoint& j = model_.joints[k];
+    const std::size_t l = static_cast<std::size_t>(link_of_body_[static_cast<std::size_t>(j.body)]);
+    const int p = j.parent >= 0 ? link_of_body_[static_cast<std::size_t>(j.parent)] : -1;
+    const double phi_p = p >= 0 ? kin_.link_phi[static_cast<std::size_t>(p)] : 0.0, w_p = p >= 0 ? mass_.link_w[static_cast<std::size_t>(p)] : 0.0;
     const double az = j.axis_world.z();
-    BodyState& s = states[static_cast<std::size_t>(j.body)];
-    s.angle_rad = j.angle_at_zero + (az > 0 ? 1.0 : -1.0) * (e.link_phi[l] - phi_p);
-    s.speed_rad_s = (e.link_w[l] - w_p) * az;
+    BodyState& s = state_.bodies[static_cast<std::size_t>(j.body)];
+    s.angle_rad = kin_.angle_at_zero[k] + (az > 0 ? 1.0 : -1.0) * (kin_.link_phi[l] - phi_p);
+    s.speed_rad_s = (mass_.link_w[l] - w_p) * az;
   }
-  for (std::size_t i = 0; i < bodies.size(); ++i)
-    states[i].position_m = eig(bodies[i].rigid->getWorldTransform() * bodies[i].com_from_gear.getOrigin());
+  for (std::size_t i = 0; i < model_.bodies.size(); ++i)
+    state_.bodies[i].position_m = eig(model_.bodies[i].rigid->getWorldTransform() * model_.bodies[i].com_from_gear.getOrigin());
 }
 
 // A gear's planar pose from its link's turn: its frame's x axis at q = 0 turned by φ (cosine and
 // sine without a libm call), its angle that axis' angle at q = 0 plus φ — not wrapped to a turn
 // (the contact search takes differences of angles and windows modulo the teeth).
-contact::PlanarPose World::Impl::planar_gear_pose(std::size_t body) const {
-  const MultibodyEngine& e = *mb;
-  const int l = e.link_of_body[body];
-  if (l < 0) return e.fixed_pose[body];
+contact::PlanarPose MultibodyEngine::planar_gear_pose(std::size_t body) const {
+  const int l = link_of_body_[body];
+  if (l < 0) return kin_.fixed_pose[body];
   const std::size_t u = static_cast<std::size_t>(l);
-  const BuiltBody& b = bodies[body];
+  const BuiltBody& b = model_.bodies[body];
   const btVector3 o = b.rigid->getWorldTransform() * b.com_from_gear.getOrigin();
-  const double c = e.link_cos[u], s = e.link_sin[u];
-  const Eigen::Vector2d& x0 = e.gear_x0[body];
-  contact::PlanarPose p{{o.x(), o.y()}, e.gear_angle0[body] + e.link_phi[u]};
+  const double c = kin_.link_cos[u], s = kin_.link_sin[u];
+  const Eigen::Vector2d& x0 = kin_.gear_x0[body];
+  contact::PlanarPose p{{o.x(), o.y()}, kin_.gear_angle0[body] + kin_.link_phi[u]};
   p.cos_angle = c * x0.x() - s * x0.y();
   p.sin_angle = s * x0.x() + c * x0.y();
   p.rotation_of_rad = p.angle_rad;
@@ -240,20 +221,19 @@ contact::PlanarPose World::Impl::planar_gear_pose(std::size_t body) const {
 // velocity difference (rad/s, m/s) over the steps. Bullet's caches are left as its passes made
 // them (its articulated-body pass, which the check also runs, reads them); the links' transforms
 // as the planar path made them.
-void World::Impl::check_planar_kinematics() {
-  MultibodyEngine& e = *mb;
-  btMultiBody& t = *e.tree;
+void MultibodyEngine::check_planar_kinematics() {
+  btMultiBody& t = *tree_;
   const int links = t.getNumLinks();
-  const std::size_t ud = static_cast<std::size_t>(e.dofs);
+  const std::size_t ud = static_cast<std::size_t>(dofs_);
   // Bullet's position step on copies: base (quaternion, position) then the links' coordinates.
   std::vector<double> pq(7 + ud, 0.0), pqd(6 + ud, 0.0);
   pq[3] = 1;
-  std::copy(e.check_q_start.begin(), e.check_q_start.end(), pq.begin() + 7);
-  std::copy(e.check_v_positions.begin(), e.check_v_positions.end(), pqd.begin() + 6);
+  std::copy(kin_.check_q_start.begin(), kin_.check_q_start.end(), pq.begin() + 7);
+  std::copy(kin_.check_v_positions.begin(), kin_.check_v_positions.end(), pqd.begin() + 6);
   // (Its planar joints' case reads the tree's own velocities, not pqd: they are set to the same.)
-  const std::vector<double> v_end(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + e.dofs);
-  for (int l = 0; l < links; ++l) t.setJointVelMultiDof(l, e.check_v_positions.data() + t.getLink(l).m_dofOffset);
-  t.stepPositionsMultiDof(e.check_h, pq.data(), pqd.data());
+  const std::vector<double> v_end(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + dofs_);
+  for (int l = 0; l < links; ++l) t.setJointVelMultiDof(l, kin_.check_v_positions.data() + t.getLink(l).m_dofOffset);
+  t.stepPositionsMultiDof(kin_.check_h, pq.data(), pqd.data());
   for (int l = 0; l < links; ++l) t.setJointVelMultiDof(l, v_end.data() + t.getLink(l).m_dofOffset);
   double dq = 0;
   for (int l = 0; l < links; ++l) {
@@ -266,19 +246,19 @@ void World::Impl::check_planar_kinematics() {
     ours[static_cast<std::size_t>(l)] = t.getLink(l).m_cachedWorldTransform;
     t.getLink(l).updateCacheMultiDof();
   }
-  t.forwardKinematics(e.world_to_local, e.local_origin);
-  t.compTreeLinkVelocities(e.omega.data(), e.vel.data());
+  t.forwardKinematics(world_to_local_, local_origin_);
+  t.compTreeLinkVelocities(omega_.data(), vel_.data());
   double dc = 0, db = 0, dv = 0;
   for (int l = 0; l < links; ++l) {
     const std::size_t u = static_cast<std::size_t>(l);
     const btTransform& tb = t.getLink(l).m_cachedWorldTransform;
     dc = std::max(dc, (tb.getOrigin() - ours[u].getOrigin()).length());
     for (int r = 0; r < 3; ++r) db = std::max(db, (tb.getBasis()[r] - ours[u].getBasis()[r]).length());
-    const btVector3 w = tb.getBasis() * e.omega[u + 1], v = tb.getBasis() * e.vel[u + 1];
-    dv = std::max({dv, (w - btVector3(0, 0, e.link_w[u])).length(), (v - btVector3(e.link_vx[u], e.link_vy[u], 0)).length()});
+    const btVector3 w = tb.getBasis() * omega_[u + 1], v = tb.getBasis() * vel_[u + 1];
+    dv = std::max({dv, (w - btVector3(0, 0, mass_.link_w[u])).length(), (v - btVector3(mass_.link_vx[u], mass_.link_vy[u], 0)).length()});
     t.getLink(l).m_cachedWorldTransform = ours[u];
   }
-  World::MassMatrixCheck& c = e.mass_check;
+  World::MassMatrixCheck& c = mass_check_;
   ++c.kinematics_steps;
   c.coordinate_difference = std::max(c.coordinate_difference, dq);
   c.centre_difference_m = std::max(c.centre_difference_m, dc);

@@ -2,7 +2,7 @@
 #include <limits>
 #include <tuple>
 
-#include "physics/world_impl.hpp"
+#include "physics/multibody_engine.hpp"
 
 // How the multibody engine integrates its spring rows (docs/solver.md): the θ-method's row for a
 // spring–damper (also BDF2's, with h_eff and the extrapolated position), and the per-step θ of
@@ -16,14 +16,14 @@ namespace gearsim::physics {
 // way λ/h = f gives the row (A + 1/(h·σ))·λ = force0/σ − w·ṡ − ṡ*, w = 0 or 1.
 // BDF2 (θ = 1 with h_eff = 2h/3): the spring at the extrapolated position x̂ = (4x − x_prev)/3 =
 // x + h·v_move_prev/3, so force0 − k·(h/3)·ṡ_move enters.
-MultibodyRow World::Impl::spring_row(double k, double c, double force0) const {
-  const double h = mb->h_eff, theta = mb->theta;
+MultibodyRow MultibodyEngine::spring_row(double k, double c, double force0) const {
+  const double h = h_eff_, theta = theta_;
   const double sigma = theta * (theta * h * k + c);
   MultibodyRow r;
   r.cfm = 1 / (h * sigma);
   r.target = force0 / sigma;
   r.start_rate_weight = (1 - theta) / theta;
-  if (mb->bdf2 && mb->has_history) r.move_rate_weight = k * scenario.solver.time_step_s / (3 * sigma);
+  if (bdf2_ && has_history_) r.move_rate_weight = k * model_.scenario.solver.time_step_s / (3 * sigma);
   r.lo = -std::numeric_limits<double>::infinity();  // bilateral
   r.hi = std::numeric_limits<double>::infinity();
   return r;
@@ -39,23 +39,22 @@ MultibodyRow World::Impl::spring_row(double k, double c, double force0) const {
 // its rate also took θ = 1, meant for contacts about to open but with the rate's sign inverted,
 // so it hit shallow contacts still closing; with the sign right, damping opening contacts
 // spread the planet–ring harmonics 3.2 % between dt 2e-5 and 5e-6 s: docs/solver.md.)
-double World::Impl::trapezoid_closed_theta() {
-  MultibodyEngine& e = *mb;
-  const double h = e.h_step;
-  std::swap(e.touching, e.touching_before);
-  e.touching.clear();
+double MultibodyEngine::trapezoid_closed_theta() {
+  const double h = h_step_;
+  std::swap(touching_, touching_before_);
+  touching_.clear();
   // New contacts first (their energy Σ ½kδ₀²); the rates only where there is one. The contacts
   // come in the last step's order, mostly: the search for a key starts after the last one found.
   double added_J = 0;
   std::size_t hint = 0;
-  for (std::size_t p = 0; p < pairs.size(); ++p) {
-    const PairRec& pr = pairs[p];
+  for (std::size_t p = 0; p < model_.pairs.size(); ++p) {
+    const PairContacts& pr = state_.pairs[p];
     for (std::size_t i = 0; i < pr.found.size(); ++i) {
       if (!pr.active[i]) continue;
       const contact::ToothContact& c = pr.found[i];
       const ContactKey key = contact_key(static_cast<int>(p), c);
-      e.touching.push_back(key);
-      const std::vector<ContactKey>& before = e.touching_before;
+      touching_.push_back(key);
+      const std::vector<ContactKey>& before = touching_before_;
       if (hint < before.size() && before[hint] == key) {
         ++hint;
         continue;
@@ -70,8 +69,10 @@ double World::Impl::trapezoid_closed_theta() {
   }
   if (added_J == 0) return 0.5;
   double dissipation_weight_J = 0;  // Σ k·(h·ṡ)² over every contact row
-  for (const PairRec& pr : pairs) {
-    const btRigidBody &ra = *bodies[static_cast<std::size_t>(pr.a)].rigid, &rb = *bodies[static_cast<std::size_t>(pr.b)].rigid;
+  for (std::size_t p = 0; p < model_.pairs.size(); ++p) {
+    const ModelPair& mp = model_.pairs[p];
+    const PairContacts& pr = state_.pairs[p];
+    const btRigidBody &ra = *model_.bodies[static_cast<std::size_t>(mp.a)].rigid, &rb = *model_.bodies[static_cast<std::size_t>(mp.b)].rigid;
     for (std::size_t i = 0; i < pr.found.size(); ++i) {
       if (!pr.active[i]) continue;
       const contact::ToothContact& c = pr.found[i];

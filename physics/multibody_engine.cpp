@@ -4,7 +4,9 @@
 #include <mutex>
 
 #include "core/errors.hpp"
-#include "physics/world_impl.hpp"
+#include "physics/measure.hpp"
+#include "physics/tooth_contacts.hpp"
+#include "physics/multibody_engine.hpp"
 
 // The `multibody` engine (solver.engine: multibody). The joints form a tree: every body that is
 // neither fixed nor free turns in one joint about its parent (the ground, a fixed body, or
@@ -49,7 +51,7 @@ const char* const kWho = "scenario: solver.engine multibody: ";
 
 // The joint each body turns in (−1: none), checked: one joint per body, none turning a fixed
 // body, every movable body in one, no shapes but teeth.
-std::vector<int> joints_of_bodies(const std::vector<BuiltBody>& bodies, const std::vector<JointRec>& joints) {
+std::vector<int> joints_of_bodies(const std::vector<BuiltBody>& bodies, const std::vector<ModelJoint>& joints) {
   const std::string who = kWho;
   std::vector<int> joint_of(bodies.size(), -1);
   for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -72,7 +74,7 @@ std::vector<int> joints_of_bodies(const std::vector<BuiltBody>& bodies, const st
 
 // The movable bodies as links, in an order where every parent comes before its children
 // (link_of_body: each body's link, −1 for fixed ones); InputError for a loop of joints.
-std::vector<int> link_order(const std::vector<BuiltBody>& bodies, const std::vector<JointRec>& joints, const std::vector<int>& joint_of,
+std::vector<int> link_order(const std::vector<BuiltBody>& bodies, const std::vector<ModelJoint>& joints, const std::vector<int>& joint_of,
                             std::vector<int>& link_of_body) {
   link_of_body.assign(bodies.size(), -1);
   std::vector<int> order;
@@ -93,44 +95,48 @@ std::vector<int> link_order(const std::vector<BuiltBody>& bodies, const std::vec
   return order;
 }
 
-// The engine's integrator, row solver and friction as the scenario sets them, and whether every
-// joint turns about z (the planar path).
-void set_engine_options(MultibodyEngine& e, const Scenario& scenario, const std::vector<JointRec>& joints) {
-  e.bdf2 = scenario.solver.integrator == SolverDef::Integrator::bdf2;
-  e.trapezoid_closed = scenario.solver.integrator == SolverDef::Integrator::trapezoid_closed;
-  e.theta = e.bdf2 ? 1.0 : e.trapezoid_closed ? 0.5 : scenario.solver.theta;
-  e.h_eff = e.h_step = scenario.solver.time_step_s;
-  e.locate_onset = scenario.solver.locate_contact_onset && !e.bdf2;  // BDF2's history assumes equal steps
-  e.active_set = scenario.solver.row_solver == SolverDef::RowSolver::active_set;
-  e.sliding_friction = scenario.contact.friction_model == ContactDef::FrictionModel::sliding;
-  e.planar = true;
-  for (const JointRec& jr : joints) e.planar = e.planar && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
-}
-
 }  // namespace
 
-void World::Impl::build_multibody() {
-  mb = std::make_unique<MultibodyEngine>();
-  MultibodyEngine& e = *mb;
-  const std::string who = kWho;
-  const std::vector<int> joint_of = joints_of_bodies(bodies, joints);
-  const std::vector<int> order = link_order(bodies, joints, joint_of, e.link_of_body);
+// The engine's integrator, row solver and friction as the scenario sets them, and whether every
+// joint turns about z (the planar path).
+void MultibodyEngine::set_options() {
+  const Scenario& scenario = model_.scenario;
+  bdf2_ = scenario.solver.integrator == SolverDef::Integrator::bdf2;
+  trapezoid_closed_ = scenario.solver.integrator == SolverDef::Integrator::trapezoid_closed;
+  theta_ = bdf2_ ? 1.0 : trapezoid_closed_ ? 0.5 : scenario.solver.theta;
+  h_eff_ = h_step_ = scenario.solver.time_step_s;
+  onset_.on = scenario.solver.locate_contact_onset && !bdf2_;  // BDF2's history assumes equal steps
+  active_.on = scenario.solver.row_solver == SolverDef::RowSolver::active_set;
+  slip_.on = scenario.contact.friction_model == ContactDef::FrictionModel::sliding;
+  planar_ = true;
+  for (const ModelJoint& jr : model_.joints) planar_ = planar_ && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
+}
 
-  e.tree = std::make_unique<btMultiBody>(static_cast<int>(order.size()), 0, btVector3(0, 0, 0), true, false);
-  e.dof_of_joint.assign(joints.size(), -1);
-  e.pivot_in_body.assign(joints.size(), btVector3(0, 0, 0));
-  e.pivot_in_parent.assign(joints.size(), btVector3(0, 0, 0));
-  e.motor_torque_N_m.assign(joints.size(), 0);
+MultibodyEngine::MultibodyEngine(const Model& model, State& state) : model_(model), state_(state) {
+  build_tree();
+  measure_joints();
+}
+
+void MultibodyEngine::build_tree() {
+  const std::string who = kWho;
+  const std::vector<int> joint_of = joints_of_bodies(model_.bodies, model_.joints);
+  const std::vector<int> order = link_order(model_.bodies, model_.joints, joint_of, link_of_body_);
+
+  tree_ = std::make_unique<btMultiBody>(static_cast<int>(order.size()), 0, btVector3(0, 0, 0), true, false);
+  dof_of_joint_.assign(model_.joints.size(), -1);
+  pivot_in_body_.assign(model_.joints.size(), btVector3(0, 0, 0));
+  pivot_in_parent_.assign(model_.joints.size(), btVector3(0, 0, 0));
+  motor_torque_.assign(model_.joints.size(), 0);
   for (std::size_t l = 0; l < order.size(); ++l) {
     const std::size_t i = static_cast<std::size_t>(order[l]);
-    const BuiltBody& b = bodies[i];
+    const BuiltBody& b = model_.bodies[i];
     const std::size_t j = static_cast<std::size_t>(joint_of[i]);
-    const JointRec& jr = joints[j];
-    const bool on_body = jr.parent >= 0 && !bodies[static_cast<std::size_t>(jr.parent)].fixed;
-    const int parent_link = on_body ? e.link_of_body[static_cast<std::size_t>(jr.parent)] : -1;
+    const ModelJoint& jr = model_.joints[j];
+    const bool on_body = jr.parent >= 0 && !model_.bodies[static_cast<std::size_t>(jr.parent)].fixed;
+    const int parent_link = on_body ? link_of_body_[static_cast<std::size_t>(jr.parent)] : -1;
     // Link frames are the bodies' centre-of-mass principal frames at t = 0; the base is the world.
     const btTransform ti = b.rigid->getWorldTransform();
-    const btTransform tp = on_body ? bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() : btTransform::getIdentity();
+    const btTransform tp = on_body ? model_.bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() : btTransform::getIdentity();
     const btQuaternion parent_to_this = ti.getRotation().inverse() * tp.getRotation();
     const btVector3 inv = b.rigid->getInvInertiaDiagLocal();
     if (!(inv.x() > 0 && inv.y() > 0 && inv.z() > 0 && b.mass_kg > 0))
@@ -139,14 +145,14 @@ void World::Impl::build_multibody() {
     const btVector3 pivot = bt(jr.def.pivot_m);
     const btVector3 axis_here = quatRotate(ti.getRotation().inverse(), bt(jr.axis_world));
     if (jr.def.bearing)
-      e.tree->setupPlanar(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(ti.getOrigin()), false);
+      tree_->setupPlanar(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(ti.getOrigin()), false);
     else
-      e.tree->setupRevolute(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(pivot),
+      tree_->setupRevolute(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(pivot),
                             quatRotate(ti.getRotation().inverse(), ti.getOrigin() - pivot), false);
-    e.pivot_in_body[j] = ti.invXform(pivot);
-    e.pivot_in_parent[j] = tp.invXform(pivot);
+    pivot_in_body_[j] = ti.invXform(pivot);
+    pivot_in_parent_[j] = tp.invXform(pivot);
   }
-  btMultiBody& t = *e.tree;
+  btMultiBody& t = *tree_;
   t.finalizeMultiDof();
   t.setLinearDamping(0);
   t.setAngularDamping(0);
@@ -155,141 +161,167 @@ void World::Impl::build_multibody() {
   t.setUseGyroTerm(true);
   t.setHasSelfCollision(false);
   for (std::size_t l = 0; l < order.size(); ++l)
-    e.dof_of_joint[static_cast<std::size_t>(joint_of[static_cast<std::size_t>(order[l])])] = t.getLink(static_cast<int>(l)).m_dofOffset;
-  e.dofs = t.getNumDofs();
-  e.buf.assign(static_cast<std::size_t>(6 + e.dofs), 0);
-  e.v_mid.assign(static_cast<std::size_t>(e.dofs), 0);
-  set_engine_options(e, scenario, joints);
-  e.out.assign(static_cast<std::size_t>(6 + e.dofs), 0);
-  e.omega.assign(order.size() + 1, btVector3(0, 0, 0));
-  e.vel.assign(order.size() + 1, btVector3(0, 0, 0));
-  e.inverse_mass.resize(e.dofs, e.dofs);
+    dof_of_joint_[static_cast<std::size_t>(joint_of[static_cast<std::size_t>(order[l])])] = t.getLink(static_cast<int>(l)).m_dofOffset;
+  dofs_ = t.getNumDofs();
+  rows_.dofs = static_cast<std::size_t>(dofs_);
+  buf_.assign(static_cast<std::size_t>(6 + dofs_), 0);
+  v_mid_.assign(static_cast<std::size_t>(dofs_), 0);
+  set_options();
+  out_.assign(static_cast<std::size_t>(6 + dofs_), 0);
+  omega_.assign(order.size() + 1, btVector3(0, 0, 0));
+  vel_.assign(order.size() + 1, btVector3(0, 0, 0));
+  rows_.inverse_mass.resize(dofs_, dofs_);
   // The tree at q = 0 reproduces the bodies' poses.
-  t.forwardKinematics(e.world_to_local, e.local_origin);
+  t.forwardKinematics(world_to_local_, local_origin_);
   for (std::size_t l = 0; l < order.size(); ++l) {
     const btTransform& tl = t.getLink(static_cast<int>(l)).m_cachedWorldTransform;
-    const btTransform& tb = bodies[static_cast<std::size_t>(order[l])].rigid->getWorldTransform();
+    const btTransform& tb = model_.bodies[static_cast<std::size_t>(order[l])].rigid->getWorldTransform();
     GEARSIM_CHECK((tl.getOrigin() - tb.getOrigin()).length() < 1e-12 && (tl.getBasis().getColumn(0) - tb.getBasis().getColumn(0)).length() < 1e-12,
                   "a multibody link must start at its body's pose");
   }
-  e.planar_mass = e.planar && scenario.solver.mass_matrix == SolverDef::MassMatrix::planar;
-  if (e.planar_mass) {
+  planar_mass_ = planar_ && model_.scenario.solver.mass_matrix == SolverDef::MassMatrix::planar;
+  if (planar_mass_) {
     build_planar_mass();
     build_planar_kinematics();
   }
 }
 
-namespace {
-
 // The loads' torques and the impulses' forces of this time onto the tree's links.
-void apply_loads_and_impulses(World::Impl& w) {
-  MultibodyEngine& e = *w.mb;
-  btMultiBody& t = *e.tree;
-  for (std::size_t j = 0; j < w.joints.size(); ++j) {
-    const JointRec& jr = w.joints[j];
+void MultibodyEngine::apply_loads_and_impulses() {
+  btMultiBody& t = *tree_;
+  for (std::size_t j = 0; j < model_.joints.size(); ++j) {
+    const ModelJoint& jr = model_.joints[j];
     if (!jr.load) continue;
-    const int link = e.link_of_body[static_cast<std::size_t>(jr.body)];
-    t.addJointTorqueMultiDof(link, 0, load_torque_N_m(*jr.load, w.time, w.states[static_cast<std::size_t>(jr.body)].speed_rad_s));
+    const int link = link_of_body_[static_cast<std::size_t>(jr.body)];
+    t.addJointTorqueMultiDof(link, 0, load_torque_N_m(*jr.load, state_.time, state_.bodies[static_cast<std::size_t>(jr.body)].speed_rad_s));
   }
-  for (const ImpulseDef& i : w.scenario.impulses) {
-    const double share = impulse_shape(i, w.time);
-    const int link = e.link_of_body[static_cast<std::size_t>(w.body_index.at(i.body))];
+  for (const ImpulseDef& i : model_.scenario.impulses) {
+    const double share = impulse_shape(i, state_.time);
+    const int link = link_of_body_[static_cast<std::size_t>(model_.body_index.at(i.body))];
     if (share == 0 || link < 0) continue;
     t.addLinkForce(link, bt(i.force_N * share));
     t.addLinkTorque(link, bt(i.torque_N_m * share));
   }
 }
 
-// Bullet's position step of the tree (moved with e.v_mid where `mid`, else with its velocities),
+// Bullet's position step of the tree (moved with v_mid_ where `mid`, else with its velocities),
 // then the links' poses and velocities onto the rigid bodies, which measuring and rendering read.
-void bullet_step_positions(World::Impl& w, double h, bool mid) {
-  MultibodyEngine& e = *w.mb;
-  btMultiBody& t = *e.tree;
+void MultibodyEngine::bullet_step_positions(double h, bool mid) {
+  btMultiBody& t = *tree_;
   if (mid) {
-    set_joint_velocities(t, e.v_mid);
+    set_joint_velocities(t, v_mid_);
     t.stepPositionsMultiDof(h);
-    set_joint_velocities(t, e.v_end);
+    set_joint_velocities(t, v_end_);
   } else {
     t.stepPositionsMultiDof(h);
   }
   t.clearForcesAndTorques();
-  t.forwardKinematics(e.world_to_local, e.local_origin);
-  t.compTreeLinkVelocities(e.omega.data(), e.vel.data());
-  for (std::size_t i = 0; i < w.bodies.size(); ++i) {
-    const int l = e.link_of_body[i];
+  t.forwardKinematics(world_to_local_, local_origin_);
+  t.compTreeLinkVelocities(omega_.data(), vel_.data());
+  for (std::size_t i = 0; i < model_.bodies.size(); ++i) {
+    const int l = link_of_body_[i];
     if (l < 0) continue;
     const btTransform& tl = t.getLink(l).m_cachedWorldTransform;
-    btRigidBody& r = *w.bodies[i].rigid;
+    btRigidBody& r = *model_.bodies[i].rigid;
     r.setCenterOfMassTransform(tl);
     r.updateInertiaTensor();
-    r.setAngularVelocity(tl.getBasis() * e.omega[static_cast<std::size_t>(l) + 1]);
-    r.setLinearVelocity(tl.getBasis() * e.vel[static_cast<std::size_t>(l) + 1]);
+    r.setAngularVelocity(tl.getBasis() * omega_[static_cast<std::size_t>(l) + 1]);
+    r.setLinearVelocity(tl.getBasis() * vel_[static_cast<std::size_t>(l) + 1]);
   }
 }
 
-}  // namespace
-
 // One step (or sub-step) of length h from the contacts generate_contacts() found at its start.
-void World::Impl::advance_multibody(double h) {
-  MultibodyEngine& e = *mb;
-  btMultiBody& t = *e.tree;
-  const bool two_step = e.bdf2 && e.has_history;
-  e.h_step = h;
-  e.h_eff = two_step ? 2 * h / 3 : h;
-  apply_loads_and_impulses(*this);
-  e.v_start.assign(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + e.dofs);
+void MultibodyEngine::advance(double h) {
+  btMultiBody& t = *tree_;
+  const bool two_step = bdf2_ && has_history_;
+  h_step_ = h;
+  h_eff_ = two_step ? 2 * h / 3 : h;
+  apply_loads_and_impulses();
+  v_start_.assign(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + dofs_);
   if (two_step) {  // BDF2 starts from v̂ = (4v − v_prev)/3
-    for (int k = 0; k < e.dofs; ++k)
-      e.v_mid[static_cast<std::size_t>(k)] = (4 * e.v_start[static_cast<std::size_t>(k)] - e.v_prev[static_cast<std::size_t>(k)]) / 3;
-    set_joint_velocities(t, e.v_mid);
+    for (int k = 0; k < dofs_; ++k)
+      v_mid_[static_cast<std::size_t>(k)] = (4 * v_start_[static_cast<std::size_t>(k)] - v_prev_[static_cast<std::size_t>(k)]) / 3;
+    set_joint_velocities(t, v_mid_);
   }
   // Velocities after the external and gyroscopic forces alone: for a planar tree with the planar
   // mass matrix from it (which the rows then use), else by Bullet's articulated-body pass.
-  if (e.planar_mass) planar_free_velocities(e.h_eff);
-  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(e.h_eff, e.scratch_r, e.scratch_v, e.scratch_m, false, false, false);
-  if (e.planar_mass && e.check_mass) {  // check_planar_kinematics() steps Bullet from here
-    e.check_q_start.clear();
+  if (planar_mass_) planar_free_velocities(h_eff_);
+  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h_eff_, scratch_r_, scratch_v_, scratch_m_, false, false, false);
+  if (planar_mass_ && check_mass_) {  // check_planar_kinematics() steps Bullet from here
+    kin_.check_q_start.clear();
     for (int l = 0; l < t.getNumLinks(); ++l)
-      for (int k = 0; k < t.getLink(l).m_posVarCount; ++k) e.check_q_start.push_back(t.getJointPosMultiDof(l)[k]);
-    e.check_h = h;
+      for (int k = 0; k < t.getLink(l).m_posVarCount; ++k) kin_.check_q_start.push_back(t.getJointPosMultiDof(l)[k]);
+    kin_.check_h = h;
   }
-  const std::uint64_t solve_start = clock.now();
-  multibody_rows();
-  solve_multibody_rows();
-  row_solve_ticks += clock.now() - solve_start;
+  const std::uint64_t solve_start = state_.clock.now();
+  build_rows();
+  solve_rows();
+  state_.row_solve_ticks += state_.clock.now() - solve_start;
   // The positions move with v_move (BDF2), the θ-weighted mean of the start and end velocities,
   // or v⁺; the velocities stay v⁺. On the planar path by its own kinematics (which also set the
   // links' and bodies' poses and velocities), else by Bullet's.
   const double* v_end = t.getVelocityVector() + 6;
   const double* v_positions = v_end;
-  if (e.bdf2) {
+  if (bdf2_) {
     // x⁺ = (4x − x_prev)/3 + h_eff·v⁺ = x + h·v_move, v_move = (v_move_prev + 2v⁺)/3.
-    e.v_end.assign(v_end, v_end + e.dofs);
-    for (int k = 0; k < e.dofs; ++k) {
+    v_end_.assign(v_end, v_end + dofs_);
+    for (int k = 0; k < dofs_; ++k) {
       const std::size_t u = static_cast<std::size_t>(k);
-      e.v_mid[u] = two_step ? (e.v_move[u] + 2 * e.v_end[u]) / 3 : e.v_end[u];
+      v_mid_[u] = two_step ? (v_move_[u] + 2 * v_end_[u]) / 3 : v_end_[u];
     }
-    v_positions = e.v_mid.data();
-    e.v_prev = e.v_start;
-    e.v_move = e.v_mid;
-    e.has_history = true;
-  } else if (e.theta < 1) {
-    e.v_end.assign(v_end, v_end + e.dofs);
-    for (int k = 0; k < e.dofs; ++k)
-      e.v_mid[static_cast<std::size_t>(k)] = (1 - e.theta) * e.v_start[static_cast<std::size_t>(k)] + e.theta * e.v_end[static_cast<std::size_t>(k)];
-    v_positions = e.v_mid.data();
+    v_positions = v_mid_.data();
+    v_prev_ = v_start_;
+    v_move_ = v_mid_;
+    has_history_ = true;
+  } else if (theta_ < 1) {
+    v_end_.assign(v_end, v_end + dofs_);
+    for (int k = 0; k < dofs_; ++k)
+      v_mid_[static_cast<std::size_t>(k)] = (1 - theta_) * v_start_[static_cast<std::size_t>(k)] + theta_ * v_end_[static_cast<std::size_t>(k)];
+    v_positions = v_mid_.data();
   }
-  if (e.planar_mass) {
-    if (e.check_mass) e.check_v_positions.assign(v_positions, v_positions + e.dofs);
+  if (planar_mass_) {
+    if (check_mass_) kin_.check_v_positions.assign(v_positions, v_positions + dofs_);
     planar_step_positions(h, v_positions);
     t.clearForcesAndTorques();
     planar_finish_step();
   } else {
-    bullet_step_positions(*this, h, v_positions != v_end);
+    bullet_step_positions(h, v_positions != v_end);
   }
-  time += h;
+  state_.time += h;
   measure_joints();
-  multibody_results();
+  results();
+}
+
+// This step's tooth contacts at the gears' poses: on the planar path from the links' turns, else
+// from the bodies' transforms; the near pairs too where the step may split at an onset.
+void MultibodyEngine::generate_contacts() {
+  const std::uint64_t start = state_.clock.now();
+  if (planar_mass_) {
+    state_.gear_poses.resize(model_.bodies.size());
+    for (std::size_t i = 0; i < model_.bodies.size(); ++i)
+      if (model_.bodies[i].flanks) state_.gear_poses[i] = planar_gear_pose(i);
+  } else {
+    gear_poses_from_bodies(model_, state_);
+  }
+  find_tooth_contacts(model_, state_, {0, onset_.on});
+  state_.tooth_contact_ticks += state_.clock.now() - start;
+}
+
+// Joint angles and speeds: on the planar path from the links' turns, else from the bodies.
+void MultibodyEngine::measure_joints() {
+  if (planar_mass_) planar_measure_joints();
+  else measure_joints_from_bodies(model_, state_);
+}
+
+double MultibodyEngine::kinetic_energy_J() const {
+  if (!planar_mass_) return kinetic_energy_of_bodies_J(model_);
+  // The planar tree's links turn about z: ½·m·|v|² + ½·I_zz·ω² each, from this pose's link
+  // velocities (this path holds no world inertia tensors of the bodies).
+  double kinetic = 0;
+  for (std::size_t l = 0; l < mass_.link_w.size(); ++l)
+    kinetic += 0.5 * mass_.link_mass_kg[l] * (mass_.link_vx[l] * mass_.link_vx[l] + mass_.link_vy[l] * mass_.link_vy[l]) +
+               0.5 * mass_.link_izz_kg_m2[l] * mass_.link_w[l] * mass_.link_w[l];
+  return kinetic;
 }
 
 }  // namespace gearsim::physics

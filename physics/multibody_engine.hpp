@@ -1,0 +1,157 @@
+// The `multibody` engine (solver.engine multibody, the default): the joint tree as one
+// btMultiBody on a fixed base (reduced coordinates, Featherstone), and per step one direct solve
+// of every row that is not a joint — tooth contacts (normal, friction), bearing springs,
+// torsional springs, motors (multibody_rows.hpp) — by the row solvers (row_solvers.hpp), with the
+// planar mass matrix and kinematics on a tree turning about z (planar_mass.hpp,
+// planar_kinematics.hpp), sliding friction (slip_friction.hpp) and the step split at a contact's
+// onset (onset_split.hpp). Its sources: multibody_engine.cpp (building, stepping),
+// multibody_rows.cpp, multibody_integrator.cpp, multibody_solve.cpp, planar_*.cpp,
+// primal_solve.cpp, slip_friction.cpp, onset_split.cpp. Not the rigid_bodies engine
+// (rigid_body_engine.hpp). Internal to physics/.
+#pragma once
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/MLCPSolvers/btDantzigLCP.h>
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "physics/engine.hpp"
+#include "physics/multibody_rows.hpp"
+#include "physics/onset_split.hpp"
+#include "physics/planar_kinematics.hpp"
+#include "physics/planar_mass.hpp"
+#include "physics/row_solvers.hpp"
+#include "physics/slip_friction.hpp"
+
+namespace gearsim::physics {
+
+// Bullet's Dantzig solver's global failure flag: held around every call (multibody_engine.cpp).
+std::mutex& dantzig_flag();
+
+class MultibodyEngine final : public Engine {
+ public:
+  // Throws InputError where the joints do not form a tree of hinges and bearings.
+  MultibodyEngine(const Model& model, State& state);
+  MultibodyEngine(const MultibodyEngine&) = delete;
+  MultibodyEngine& operator=(const MultibodyEngine&) = delete;
+
+  void step() override;
+  double motor_torque_N_m(std::size_t joint) const override { return motor_torque_[joint]; }
+  long failed_solves() const override { return failed_solves_; }
+  void set_mass_matrix_check(bool on) override { check_mass_ = on; }
+  const World::MassMatrixCheck& mass_matrix_check() const override { return mass_check_; }
+
+ private:
+  struct RowBuilder;
+
+  // Building and stepping (multibody_engine.cpp).
+  void build_tree();
+  void set_options();
+  void advance(double h);  // one (sub)step from the contacts generate_contacts() found
+  void apply_loads_and_impulses();
+  void bullet_step_positions(double h, bool mid);
+  void generate_contacts();
+  void measure_joints();
+  double kinetic_energy_J() const;
+  // The step split at contact onsets (onset_split.cpp).
+  double contact_onset_s(double within_s) const;  // when the first near pair touches (≥ within_s: none)
+  void accumulate_substep(double h, bool first);
+  void finish_split_step(double h);
+  // The rows and what they did (multibody_rows.cpp), their integration (multibody_integrator.cpp).
+  void build_rows();
+  void bullet_link_jacobians();
+  void contact_rows(RowBuilder& rb);
+  void bearing_rows(RowBuilder& rb, std::size_t joint);
+  void results();
+  MultibodyRow spring_row(double k, double c, double force0) const;
+  double trapezoid_closed_theta();
+  // The solve (multibody_solve.cpp, slip_friction.cpp).
+  void solve_rows();
+  bool solve_rows_active_set();
+  bool solve_rows_dantzig_fixed_friction();
+  bool locate_slip_reversals(bool solved);
+  double slip_drift(int row, double slip_start_m_s, std::size_t& hint) const;
+  // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).
+  void velocity_change(const double* lambda, double* dv);
+  void velocity_change_of_x(double* dv);  // of x: the dof-space solve's where it found x, else velocity_change()
+  // The planar mass matrix (planar_mass.cpp) and the rows' side of it (planar_rows.cpp).
+  void build_planar_mass();
+  void planar_link_jacobians();
+  void planar_mass_factor();
+  void planar_free_velocities(double h);
+  void check_planar_mass(const double* m_lower);
+  double planar_diag_a(std::size_t row);
+  void planar_g();
+  void planar_full_a();
+  int solve_rows_folded();
+  // The dof-space solve (primal_solve.cpp).
+  void planar_soft_rows();  // per row: soft spring (into K) or stiff, for solve_rows_primal()
+  template <int N>
+  void planar_soft_rows_n();  // N coordinates (0: dofs_), physics/dof_dispatch.hpp
+  int solve_rows_primal();
+  int solve_rows_planar();  // solve_rows_primal(), solve_rows_folded() where it does not settle
+  // The planar kinematics (planar_kinematics.cpp).
+  void build_planar_kinematics();
+  void planar_step_positions(double h, const double* v);
+  void planar_forward_kinematics();
+  void planar_link_velocities(const double* u);
+  void planar_finish_step();
+  void planar_measure_joints();
+  contact::PlanarPose planar_gear_pose(std::size_t body) const;
+  void check_planar_kinematics();
+
+  const Model& model_;
+  State& state_;
+  // The tree: per body its link (−1 for the ground and fixed bodies), per joint its spin
+  // coordinate among the dofs and its bearing centre in the body's and the parent's frame
+  // (world for the ground); Bullet's scratch.
+  std::unique_ptr<btMultiBody> tree_;
+  int dofs_ = 0;  // joint coordinates, without the fixed base's six
+  std::vector<int> link_of_body_;
+  std::vector<int> dof_of_joint_;
+  std::vector<btVector3> pivot_in_body_, pivot_in_parent_;
+  std::vector<double> buf_, out_;  // 6 + dofs
+  btAlignedObjectArray<btScalar> scratch_r_;
+  btAlignedObjectArray<btVector3> scratch_v_;
+  btAlignedObjectArray<btMatrix3x3> scratch_m_;
+  btAlignedObjectArray<btQuaternion> world_to_local_;
+  btAlignedObjectArray<btVector3> local_origin_;
+  std::vector<btVector3> omega_, vel_;
+  bool planar_ = false;       // every joint axis along z: rows from link_jac_
+  bool planar_mass_ = false;  // solver.mass_matrix planar on a planar tree
+  std::vector<double> link_jac_;  // per link: rows ω_z, v_x, v_y of its centre over the dofs
+  // The integrator (multibody_integrator.cpp): θ (spring rows at s + θ·h·ṡ_θ, positions with
+  // (1 − θ)·v + θ·v⁺; 1: implicit Euler); BDF2 (solver.integrator bdf2): v⁺ = v̂ + h_eff·M⁻¹·F(x⁺,
+  // v⁺), x⁺ = x + h·v_move with v̂ = (4v − v_prev)/3, h_eff = 2h/3, v_move = (v_move_prev + 2v⁺)/3,
+  // implicit Euler until there is a step behind; trapezoid_closed: θ per step, ½ while every
+  // contact stays closed, else more.
+  double theta_ = 1;
+  bool bdf2_ = false, has_history_ = false, trapezoid_closed_ = false;
+  double h_eff_ = 0;   // this step's h_eff (h for the θ-method)
+  double h_step_ = 0;  // this (sub)step's length, s
+  std::vector<double> v_start_, v_end_, v_mid_;  // joint velocities at the step's start, end, mean
+  std::vector<double> v_prev_, v_move_;          // BDF2: v at the last step's start; the last step's v_move
+  Eigen::VectorXd v_theta_;
+  std::vector<ContactKey> touching_, touching_before_;  // trapezoid_closed: this step's contacts, the last's
+  RowSystem rows_;
+  PlanarMass mass_;
+  PlanarKinematics kin_;
+  ActiveSetSolve active_;
+  FoldedSolve folded_;
+  PrimalSolve primal_;
+  btDantzigScratchMemory dantzig_;
+  SlipFriction slip_;
+  OnsetSplit onset_;
+  std::vector<double> motor_torque_;  // per joint, last step, N·m
+  long failed_solves_ = 0;
+  bool check_mass_ = false;  // World::set_mass_matrix_check
+  World::MassMatrixCheck mass_check_;
+};
+
+}  // namespace gearsim::physics
