@@ -105,9 +105,9 @@ void MultibodyEngine::set_options() {
   trapezoid_closed_ = scenario.solver.integrator == SolverDef::Integrator::trapezoid_closed;
   theta_ = bdf2_ ? 1.0 : trapezoid_closed_ ? 0.5 : scenario.solver.theta;
   h_eff_ = h_step_ = scenario.solver.time_step_s;
-  onset_.on = scenario.solver.locate_contact_onset && !bdf2_;  // BDF2's history assumes equal steps
+  onset_ = OnsetSplit(scenario.solver.locate_contact_onset && !bdf2_);  // BDF2's history assumes equal steps
   active_.on = scenario.solver.row_solver == SolverDef::RowSolver::active_set;
-  slip_.on = scenario.contact.friction_model == ContactDef::FrictionModel::sliding;
+  slip_ = SlipFriction(scenario.contact.friction_model == ContactDef::FrictionModel::sliding);
   planar_ = true;
   for (const ModelJoint& jr : model_.joints) planar_ = planar_ && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
 }
@@ -292,6 +292,39 @@ void MultibodyEngine::advance(double h) {
   results();
 }
 
+// One step: split where a near tooth pair touches (solver.locate_contact_onset), else whole.
+void MultibodyEngine::step() {
+  const double h = model_.scenario.solver.time_step_s;
+  generate_contacts();
+  double onset = onset_.on() ? onset_.onset_s(model_, state_, h) : h;
+  if (!(onset < h)) {
+    advance(h);
+    ++state_.steps;
+    return;
+  }
+  // Split at each instant a near pair touches, so a contact starts with its spring at rest
+  // instead of found a step late with a depth no work put in (docs/solver.md, "Contact onset").
+  const double start = state_.time;
+  double done = 0;
+  double deepest = state_.max_penetration;
+  for (int split = 0;; ++split) {
+    const bool cut = onset < h - done;
+    const double sub = cut ? onset : h - done;
+    advance(sub);
+    onset_.accumulate(state_, motor_torque_, sub, split == 0);
+    done += sub;
+    if (!cut) break;  // the step's last piece
+    ++state_.profile.onset_splits;
+    generate_contacts();
+    deepest = std::max(deepest, state_.max_penetration);
+    onset = split + 1 < kMaxOnsetSplits ? onset_.onset_s(model_, state_, h - done) : h;
+  }
+  state_.max_penetration = deepest;
+  state_.time = start + h;
+  onset_.finish(state_, motor_torque_, h);
+  ++state_.steps;
+}
+
 // This step's tooth contacts at the gears' poses: on the planar path from the links' turns, else
 // from the bodies' transforms; the near pairs too where the step may split at an onset.
 void MultibodyEngine::generate_contacts() {
@@ -303,7 +336,7 @@ void MultibodyEngine::generate_contacts() {
   } else {
     gear_poses_from_bodies(model_, state_);
   }
-  find_tooth_contacts(model_, state_, {0, onset_.on});
+  find_tooth_contacts(model_, state_, {0, onset_.on()});
   state_.tooth_contact_ticks += state_.clock.now() - start;
 }
 

@@ -59,10 +59,6 @@ class MultibodyEngine final : public Engine {
   void generate_contacts();
   void measure_joints();
   double kinetic_energy_J() const;
-  // The step split at contact onsets (onset_split.cpp).
-  double contact_onset_s(double within_s) const;  // when the first near pair touches (≥ within_s: none)
-  void accumulate_substep(double h, bool first);
-  void finish_split_step(double h);
   // The rows and what they did (multibody_rows.cpp), their integration (multibody_integrator.cpp).
   void build_rows();
   void bullet_link_jacobians();
@@ -71,12 +67,11 @@ class MultibodyEngine final : public Engine {
   void results();
   MultibodyRow spring_row(double k, double c, double force0) const;
   double trapezoid_closed_theta();
-  // The solve (multibody_solve.cpp, slip_friction.cpp).
+  // The solve (multibody_solve.cpp).
   void solve_rows();
   bool solve_rows_active_set();
   bool solve_rows_dantzig_fixed_friction();
   bool locate_slip_reversals(bool solved);
-  double slip_drift(int row, double slip_start_m_s, std::size_t& hint) const;
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).
   void velocity_change(const double* lambda, double* dv);
   void velocity_change_of_x(double* dv);  // of x: the dof-space solve's where it found x, else velocity_change()

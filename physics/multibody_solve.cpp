@@ -48,9 +48,8 @@ void MultibodyEngine::solve_rows() {
   rows_.lo.resize(static_cast<std::size_t>(n));
   rows_.hi.resize(static_cast<std::size_t>(n));
   rows_.findex.resize(static_cast<std::size_t>(n));
-  slip_.drift.assign(static_cast<std::size_t>(n), 0.0);
+  slip_.begin_rows(static_cast<std::size_t>(n));
   if (planar_mass_) rows_.compliance.resize(static_cast<std::size_t>(n));
-  std::size_t drift_hint = 0;
   for (int i = 0; i < n; ++i) {
     const MultibodyRow& r = rows_.rows[static_cast<std::size_t>(i)];
     // Rows without a spring (friction sticking, a motor) get a compliance of kStiffRow times their
@@ -65,9 +64,7 @@ void MultibodyEngine::solve_rows() {
     rows_.findex[static_cast<std::size_t>(i)] = r.friction_of;
     // sliding: a contact sliding at the step's start is solved with μ·λ_n against that slip
     // first (a fixed multiple of its normal: lo = hi); one starting without slip keeps the box.
-    if (slip_.on) slip_.drift[static_cast<std::size_t>(i)] = r.kind == MultibodyRow::contact_friction ? slip_drift(i, j_v_start(i), drift_hint) * (slip_.end_h > 0 ? h_step_ / slip_.end_h : 1.0) : 0.0;
-    if (slip_.on && r.kind == MultibodyRow::contact_friction && j_v_start(i) != 0)
-      rows_.lo[static_cast<std::size_t>(i)] = rows_.hi[static_cast<std::size_t>(i)] = j_v_start(i) > 0 ? -r.hi : r.hi;  // r.hi = μ
+    if (slip_.on()) slip_.start_row(rows_, static_cast<std::size_t>(i), state_.contacts, j_v_start(i), h_step_);
     // Friction held at a multiple of its normal's impulse is no unknown of the solve: its
     // compliance is never used (0).
     if (planar_mass_)
@@ -81,10 +78,10 @@ void MultibodyEngine::solve_rows() {
     ++state_.profile.dantzig_solves;
     if (planar_mass_) planar_full_a();
     const std::lock_guard<std::mutex> lock(dantzig_flag());
-    solved = slip_.on ? solve_rows_dantzig_fixed_friction()
+    solved = slip_.on() ? solve_rows_dantzig_fixed_friction()
                                 : btSolveDantzigLCP(n, rows_.a.data(), rows_.x.data(), rows_.b.data(), rows_.w.data(), 0, rows_.lo.data(), rows_.hi.data(), rows_.findex.data(), dantzig_);
   }
-  if (slip_.on) solved = locate_slip_reversals(solved);
+  if (slip_.on()) solved = locate_slip_reversals(solved);
   if (!solved) ++failed_solves_;
   if (rows_.dv_of_x) {
     std::fill(buf_.begin(), buf_.begin() + 6, 0.0);
@@ -129,6 +126,82 @@ bool MultibodyEngine::solve_rows_active_set() {
   }
   std::fill(rows_.x.begin(), rows_.x.end(), 0.0);
   std::fill(active_.row_states.begin(), active_.row_states.end(), RowBound::free);  // the next step starts cold
+  return false;
+}
+
+// After the first solve (`solved`: it found a solution), where a contact's slip at the step's end
+// disagrees with the share its friction was solved with (SlipFriction::reshare): solved again.
+// Returns whether the last solve found a solution. Records each contact's end slip for the next
+// step's drift.
+bool MultibodyEngine::locate_slip_reversals(bool solved) {
+  const int n = static_cast<int>(rows_.rows.size()), dofs = dofs_;
+  Eigen::Map<Eigen::VectorXd> dv(buf_.data() + 6, dofs);
+  slip_.begin_rounds(static_cast<std::size_t>(n));
+  bool dv_of_x = false;  // dv is M⁻¹·Jᵀ·x of the present x
+  for (int round = 0; solved && round < kSlipRounds; ++round) {
+    velocity_change_of_x(dv.data());
+    dv_of_x = true;
+    if (!slip_.reshare(rows_, dv.data())) break;
+    ++state_.profile.friction_rounds;
+    dv_of_x = false;
+    if (active_.on && (planar_mass_ ? solve_rows_planar()
+                                    : solve_row_lcp(n, rows_.a.data(), rows_.b.data(), rows_.lo.data(), rows_.hi.data(), rows_.findex.data(), rows_.x.data(),
+                                                    active_.row_states.data(), active_.lcp)) > 0)
+      continue;
+    if (planar_mass_) planar_full_a();
+    const std::lock_guard<std::mutex> lock(dantzig_flag());
+    solved = solve_rows_dantzig_fixed_friction();
+  }
+  // Each contact's slip at the step's end on this step's rows, for the next step's drift.
+  if (!dv_of_x) velocity_change_of_x(dv.data());
+  rows_.dv_of_x = true;  // solve_rows applies it
+  slip_.record_end_slips(rows_, state_.contacts, dv.data(), h_step_);
+  return solved;
+}
+
+// Dantzig for rows some of which are friction fixed at a multiple of their normal's impulse
+// (contact.friction_model sliding: lo = hi on a row with findex ≥ 0). Bullet's solver takes such a
+// row's bounds as ±|hi·x_f|, a box, so the fixed rows leave its problem: their impulses c·x_f,
+// with x_f from the last round, move to the others' right-hand side, and rounds repeat until the
+// impulses settle (each round changes the normals by about μ times the last change: a
+// contraction). The caller holds dantzig_flag(). false when a round fails or they do not settle.
+bool MultibodyEngine::solve_rows_dantzig_fixed_friction() {
+  const int n = static_cast<int>(rows_.rows.size());
+  const auto at = [](int i) { return static_cast<std::size_t>(i); };
+  std::vector<int> kept, fixed, slot(at(n), -1);
+  for (int i = 0; i < n; ++i) {
+    if (rows_.held_friction(at(i))) fixed.push_back(i);
+    else slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
+  }
+  const int m = static_cast<int>(kept.size());
+  std::vector<double> a(at(m) * at(m)), b(at(m)), x(at(m)), w(at(m)), lo(at(m)), hi(at(m));
+  std::vector<int> findex(at(m));
+  std::fill(rows_.x.begin(), rows_.x.begin() + n, 0.0);
+  constexpr int kRounds = 50;
+  for (int round = 0; round < kRounds; ++round) {
+    for (const int t : fixed) rows_.x[at(t)] = rows_.lo[at(t)] * rows_.x[at(rows_.findex[at(t)])];
+    for (int r = 0; r < m; ++r) {
+      const int i = kept[at(r)];
+      for (int c = 0; c < m; ++c) a[at(r) * at(m) + at(c)] = rows_.a[at(i) * at(n) + at(kept[at(c)])];
+      b[at(r)] = rows_.b[at(i)];
+      for (const int t : fixed) b[at(r)] -= rows_.a[at(i) * at(n) + at(t)] * rows_.x[at(t)];
+      lo[at(r)] = rows_.lo[at(i)], hi[at(r)] = rows_.hi[at(i)];
+      findex[at(r)] = rows_.findex[at(i)] >= 0 ? slot[at(rows_.findex[at(i)])] : -1;
+      x[at(r)] = 0, w[at(r)] = 0;
+    }
+    if (!btSolveDantzigLCP(m, a.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(), findex.data(), dantzig_)) return false;
+    double change = 0, scale = 0;
+    for (int r = 0; r < m; ++r) {
+      const std::size_t i = at(kept[at(r)]);
+      change = std::max(change, std::abs(x[at(r)] - rows_.x[i]));
+      scale = std::max(scale, std::abs(x[at(r)]));
+      rows_.x[i] = x[at(r)];
+    }
+    if (change <= 1e-12 * scale) {
+      for (const int t : fixed) rows_.x[at(t)] = rows_.lo[at(t)] * rows_.x[at(rows_.findex[at(t)])];
+      return true;
+    }
+  }
   return false;
 }
 
