@@ -36,17 +36,6 @@ void set_joint_velocities(btMultiBody& t, const std::vector<double>& v) {
   for (int l = 0; l < t.getNumLinks(); ++l) t.setJointVelMultiDof(l, v.data() + t.getLink(l).m_dofOffset);
 }
 
-}  // namespace
-
-// Bullet's Dantzig solver reports failure through one global flag (btDantzigLCP.cpp, s_error):
-// worlds stepped in parallel threads (the Python module releases the GIL) take turns.
-std::mutex& dantzig_flag() {
-  static std::mutex m;
-  return m;
-}
-
-namespace {
-
 const char* const kWho = "scenario: solver.engine multibody: ";
 
 // The joint each body turns in (−1: none), checked: one joint per body, none turning a fixed
@@ -106,7 +95,7 @@ void MultibodyEngine::set_options() {
   theta_ = bdf2_ ? 1.0 : trapezoid_closed_ ? 0.5 : scenario.solver.theta;
   h_eff_ = h_step_ = scenario.solver.time_step_s;
   onset_ = OnsetSplit(scenario.solver.locate_contact_onset && !bdf2_);  // BDF2's history assumes equal steps
-  active_.on = scenario.solver.row_solver == SolverDef::RowSolver::active_set;
+  active_ = ActiveSetSolve(scenario.solver.row_solver == SolverDef::RowSolver::active_set);
   slip_ = SlipFriction(scenario.contact.friction_model == ContactDef::FrictionModel::sliding);
   planar_ = true;
   for (const ModelJoint& jr : model_.joints) planar_ = planar_ && std::abs(std::abs(jr.axis_world.z()) - 1) < 1e-12;
@@ -168,11 +157,11 @@ void MultibodyEngine::build_tree() {
   v_mid_.assign(static_cast<std::size_t>(dofs_), 0);
   set_options();
   out_.assign(static_cast<std::size_t>(6 + dofs_), 0);
-  omega_.assign(order.size() + 1, btVector3(0, 0, 0));
-  vel_.assign(order.size() + 1, btVector3(0, 0, 0));
+  scratch_.omega.assign(order.size() + 1, btVector3(0, 0, 0));
+  scratch_.vel.assign(order.size() + 1, btVector3(0, 0, 0));
   rows_.inverse_mass.resize(dofs_, dofs_);
   // The tree at q = 0 reproduces the bodies' poses.
-  t.forwardKinematics(world_to_local_, local_origin_);
+  t.forwardKinematics(scratch_.world_to_local, scratch_.local_origin);
   for (std::size_t l = 0; l < order.size(); ++l) {
     const btTransform& tl = t.getLink(static_cast<int>(l)).m_cachedWorldTransform;
     const btTransform& tb = model_.bodies[static_cast<std::size_t>(order[l])].rigid->getWorldTransform();
@@ -181,8 +170,8 @@ void MultibodyEngine::build_tree() {
   }
   planar_mass_ = planar_ && model_.scenario.solver.mass_matrix == SolverDef::MassMatrix::planar;
   if (planar_mass_) {
-    build_planar_mass();
-    build_planar_kinematics();
+    mass_.build(*tree_);  // before the kinematics rewrite the links' cached poses
+    kin_.build(model_, *tree_, link_of_body_);
   }
 }
 
@@ -216,8 +205,8 @@ void MultibodyEngine::bullet_step_positions(double h, bool mid) {
     t.stepPositionsMultiDof(h);
   }
   t.clearForcesAndTorques();
-  t.forwardKinematics(world_to_local_, local_origin_);
-  t.compTreeLinkVelocities(omega_.data(), vel_.data());
+  t.forwardKinematics(scratch_.world_to_local, scratch_.local_origin);
+  t.compTreeLinkVelocities(scratch_.omega.data(), scratch_.vel.data());
   for (std::size_t i = 0; i < model_.bodies.size(); ++i) {
     const int l = link_of_body_[i];
     if (l < 0) continue;
@@ -225,8 +214,8 @@ void MultibodyEngine::bullet_step_positions(double h, bool mid) {
     btRigidBody& r = *model_.bodies[i].rigid;
     r.setCenterOfMassTransform(tl);
     r.updateInertiaTensor();
-    r.setAngularVelocity(tl.getBasis() * omega_[static_cast<std::size_t>(l) + 1]);
-    r.setLinearVelocity(tl.getBasis() * vel_[static_cast<std::size_t>(l) + 1]);
+    r.setAngularVelocity(tl.getBasis() * scratch_.omega[static_cast<std::size_t>(l) + 1]);
+    r.setLinearVelocity(tl.getBasis() * scratch_.vel[static_cast<std::size_t>(l) + 1]);
   }
 }
 
@@ -245,14 +234,9 @@ void MultibodyEngine::advance(double h) {
   }
   // Velocities after the external and gyroscopic forces alone: for a planar tree with the planar
   // mass matrix from it (which the rows then use), else by Bullet's articulated-body pass.
-  if (planar_mass_) planar_free_velocities(h_eff_);
-  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h_eff_, scratch_r_, scratch_v_, scratch_m_, false, false, false);
-  if (planar_mass_ && check_mass_) {  // check_planar_kinematics() steps Bullet from here
-    kin_.check_q_start.clear();
-    for (int l = 0; l < t.getNumLinks(); ++l)
-      for (int k = 0; k < t.getLink(l).m_posVarCount; ++k) kin_.check_q_start.push_back(t.getJointPosMultiDof(l)[k]);
-    kin_.check_h = h;
-  }
+  if (planar_mass_) mass_.free_velocities(kin_, h_eff_, buf_, scratch_, check_mass_ ? &mass_check_ : nullptr);
+  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h_eff_, scratch_.r, scratch_.v, scratch_.m, false, false, false);
+  if (planar_mass_ && check_mass_) kin_.keep_step_start(h);  // the check steps Bullet from here
   const std::uint64_t solve_start = state_.clock.now();
   build_rows();
   solve_rows();
@@ -280,10 +264,10 @@ void MultibodyEngine::advance(double h) {
     v_positions = v_mid_.data();
   }
   if (planar_mass_) {
-    if (check_mass_) kin_.check_v_positions.assign(v_positions, v_positions + dofs_);
-    planar_step_positions(h, v_positions);
+    if (check_mass_) kin_.keep_position_velocities(v_positions);
+    kin_.step_positions(h, v_positions);
     t.clearForcesAndTorques();
-    planar_finish_step();
+    kin_.finish_step(scratch_, check_mass_ ? &mass_check_ : nullptr);
   } else {
     bullet_step_positions(h, v_positions != v_end);
   }
@@ -332,7 +316,7 @@ void MultibodyEngine::generate_contacts() {
   if (planar_mass_) {
     state_.gear_poses.resize(model_.bodies.size());
     for (std::size_t i = 0; i < model_.bodies.size(); ++i)
-      if (model_.bodies[i].flanks) state_.gear_poses[i] = planar_gear_pose(i);
+      if (model_.bodies[i].flanks) state_.gear_poses[i] = kin_.gear_pose(i);
   } else {
     gear_poses_from_bodies(model_, state_);
   }
@@ -342,19 +326,12 @@ void MultibodyEngine::generate_contacts() {
 
 // Joint angles and speeds: on the planar path from the links' turns, else from the bodies.
 void MultibodyEngine::measure_joints() {
-  if (planar_mass_) planar_measure_joints();
+  if (planar_mass_) kin_.measure_joints(state_);
   else measure_joints_from_bodies(model_, state_);
 }
 
 double MultibodyEngine::kinetic_energy_J() const {
-  if (!planar_mass_) return kinetic_energy_of_bodies_J(model_);
-  // The planar tree's links turn about z: ½·m·|v|² + ½·I_zz·ω² each, from this pose's link
-  // velocities (this path holds no world inertia tensors of the bodies).
-  double kinetic = 0;
-  for (std::size_t l = 0; l < mass_.link_w.size(); ++l)
-    kinetic += 0.5 * mass_.link_mass_kg[l] * (mass_.link_vx[l] * mass_.link_vx[l] + mass_.link_vy[l] * mass_.link_vy[l]) +
-               0.5 * mass_.link_izz_kg_m2[l] * mass_.link_w[l] * mass_.link_w[l];
-  return kinetic;
+  return planar_mass_ ? mass_.kinetic_energy_J(kin_) : kinetic_energy_of_bodies_J(model_);
 }
 
 }  // namespace gearsim::physics

@@ -12,27 +12,24 @@
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletDynamics/Featherstone/btMultiBody.h>
-#include <BulletDynamics/MLCPSolvers/btDantzigLCP.h>
 
 #include <Eigen/Dense>
 
-#include <array>
 #include <memory>
-#include <mutex>
 #include <vector>
 
+#include "physics/bullet_scratch.hpp"
 #include "physics/engine.hpp"
+#include "physics/folded_solve.hpp"
 #include "physics/multibody_rows.hpp"
 #include "physics/onset_split.hpp"
 #include "physics/planar_kinematics.hpp"
 #include "physics/planar_mass.hpp"
+#include "physics/primal_solve.hpp"
 #include "physics/row_solvers.hpp"
 #include "physics/slip_friction.hpp"
 
 namespace gearsim::physics {
-
-// Bullet's Dantzig solver's global failure flag: held around every call (multibody_engine.cpp).
-std::mutex& dantzig_flag();
 
 class MultibodyEngine final : public Engine {
  public:
@@ -67,39 +64,14 @@ class MultibodyEngine final : public Engine {
   void results();
   MultibodyRow spring_row(double k, double c, double force0) const;
   double trapezoid_closed_theta();
-  // The solve (multibody_solve.cpp).
+  // The solve (multibody_solve.cpp): the rows' problem, then the row solvers in turn.
   void solve_rows();
   bool solve_rows_active_set();
-  bool solve_rows_dantzig_fixed_friction();
+  int solve_rows_planar();  // the dof-space solve, the folded one where it does not settle
   bool locate_slip_reversals(bool solved);
   // dv = M⁻¹·Jᵀ·λ over this step's rows (λ: one impulse per row; dv: dofs entries).
   void velocity_change(const double* lambda, double* dv);
   void velocity_change_of_x(double* dv);  // of x: the dof-space solve's where it found x, else velocity_change()
-  // The planar mass matrix (planar_mass.cpp) and the rows' side of it (planar_rows.cpp).
-  void build_planar_mass();
-  void planar_link_jacobians();
-  void planar_mass_factor();
-  void planar_free_velocities(double h);
-  void check_planar_mass(const double* m_lower);
-  double planar_diag_a(std::size_t row);
-  void planar_g();
-  void planar_full_a();
-  int solve_rows_folded();
-  // The dof-space solve (primal_solve.cpp).
-  void planar_soft_rows();  // per row: soft spring (into K) or stiff, for solve_rows_primal()
-  template <int N>
-  void planar_soft_rows_n();  // N coordinates (0: dofs_), physics/dof_dispatch.hpp
-  int solve_rows_primal();
-  int solve_rows_planar();  // solve_rows_primal(), solve_rows_folded() where it does not settle
-  // The planar kinematics (planar_kinematics.cpp).
-  void build_planar_kinematics();
-  void planar_step_positions(double h, const double* v);
-  void planar_forward_kinematics();
-  void planar_link_velocities(const double* u);
-  void planar_finish_step();
-  void planar_measure_joints();
-  contact::PlanarPose planar_gear_pose(std::size_t body) const;
-  void check_planar_kinematics();
 
   const Model& model_;
   State& state_;
@@ -112,15 +84,10 @@ class MultibodyEngine final : public Engine {
   std::vector<int> dof_of_joint_;
   std::vector<btVector3> pivot_in_body_, pivot_in_parent_;
   std::vector<double> buf_, out_;  // 6 + dofs
-  btAlignedObjectArray<btScalar> scratch_r_;
-  btAlignedObjectArray<btVector3> scratch_v_;
-  btAlignedObjectArray<btMatrix3x3> scratch_m_;
-  btAlignedObjectArray<btQuaternion> world_to_local_;
-  btAlignedObjectArray<btVector3> local_origin_;
-  std::vector<btVector3> omega_, vel_;
-  bool planar_ = false;       // every joint axis along z: rows from link_jac_
-  bool planar_mass_ = false;  // solver.mass_matrix planar on a planar tree
-  std::vector<double> link_jac_;  // per link: rows ω_z, v_x, v_y of its centre over the dofs
+  BulletScratch scratch_;
+  bool planar_ = false;       // every joint axis along z: rows from the links' Jacobians
+  bool planar_mass_ = false;  // solver.mass_matrix planar on a planar tree: mass_ and kin_
+  std::vector<double> link_jac_;  // planar tree, articulated path: per link rows ω_z, v_x, v_y over the dofs
   // The integrator (multibody_integrator.cpp): θ (spring rows at s + θ·h·ṡ_θ, positions with
   // (1 − θ)·v + θ·v⁺; 1: implicit Euler); BDF2 (solver.integrator bdf2): v⁺ = v̂ + h_eff·M⁻¹·F(x⁺,
   // v⁺), x⁺ = x + h·v_move with v̂ = (4v − v_prev)/3, h_eff = 2h/3, v_move = (v_move_prev + 2v⁺)/3,
@@ -135,12 +102,18 @@ class MultibodyEngine final : public Engine {
   Eigen::VectorXd v_theta_;
   std::vector<ContactKey> touching_, touching_before_;  // trapezoid_closed: this step's contacts, the last's
   RowSystem rows_;
-  PlanarMass mass_;
   PlanarKinematics kin_;
+  PlanarMass mass_;
   ActiveSetSolve active_;
-  FoldedSolve folded_;
   PrimalSolve primal_;
-  btDantzigScratchMemory dantzig_;
+  FoldedSolve folded_;
+  DantzigSolve dantzig_;
+  // World::set_mass_matrix_check: the dof-space solve's bound states before it, its impulses and
+  // states after it (the folded solve is compared from the same states).
+  struct {
+    std::vector<RowBound> states_before, states;
+    std::vector<double> x;
+  } planar_check_;
   SlipFriction slip_;
   OnsetSplit onset_;
   std::vector<double> motor_torque_;  // per joint, last step, N·m

@@ -34,7 +34,7 @@ void MultibodyEngine::bullet_link_jacobians() {
     const btVector3 centre = t.getLink(static_cast<int>(l)).m_cachedWorldTransform.getOrigin();
     const btVector3 points[3] = {centre + ex, centre, centre}, dirs[3] = {ey, ex, ey};
     for (std::size_t c = 0; c < 3; ++c) {
-      t.fillContactJacobianMultiDof(static_cast<int>(l), points[c], dirs[c], buf_.data(), scratch_r_, scratch_v_, scratch_m_);
+      t.fillContactJacobianMultiDof(static_cast<int>(l), points[c], dirs[c], buf_.data(), scratch_.r, scratch_.v, scratch_.m);
       std::copy(buf_.begin() + 6, buf_.end(), link_jac_.begin() + static_cast<std::ptrdiff_t>((l * 3 + c) * ud));
     }
     double* jl = link_jac_.data() + l * 3 * ud;
@@ -46,6 +46,7 @@ void MultibodyEngine::bullet_link_jacobians() {
 struct MultibodyEngine::RowBuilder {
   MultibodyEngine& e;
   std::size_t ud;
+  const double* link_jac;  // per link: rows ω_z, v_x, v_y over the coordinates (planar trees)
   // J of the velocity of `point` (world) on the body of link `link`, along `dir`, added × sign.
   void add_point(std::size_t row, int link, const btVector3& point, const btVector3& dir, double sign) {
     if (link < 0) return;
@@ -53,11 +54,11 @@ struct MultibodyEngine::RowBuilder {
     double* out = e.rows_.jrows.data() + row * ud;
     if (e.planar_) {
       const btVector3 r = point - t.getLink(link).m_cachedWorldTransform.getOrigin();
-      const double* jl = e.link_jac_.data() + static_cast<std::size_t>(link) * 3 * ud;
+      const double* jl = link_jac + static_cast<std::size_t>(link) * 3 * ud;
       const double w = sign * (r.x() * dir.y() - r.y() * dir.x()), wx = sign * dir.x(), wy = sign * dir.y();
       if (e.planar_mass_) {
-        // Only the coordinates on the link's chain: planar_link_jacobians() leaves the others 0.
-        for (const int d : e.mass_.link_dofs[static_cast<std::size_t>(link)]) {
+        // Only the coordinates on the link's chain: PlanarKinematics::link_jacobians() leaves the others 0.
+        for (const int d : e.kin_.link_dofs(static_cast<std::size_t>(link))) {
           const std::size_t k = static_cast<std::size_t>(d);
           out[k] += w * jl[k] + wx * jl[ud + k] + wy * jl[2 * ud + k];
         }
@@ -66,7 +67,7 @@ struct MultibodyEngine::RowBuilder {
       for (std::size_t k = 0; k < ud; ++k) out[k] += w * jl[k] + wx * jl[ud + k] + wy * jl[2 * ud + k];
       return;
     }
-    t.fillContactJacobianMultiDof(link, point, dir, e.buf_.data(), e.scratch_r_, e.scratch_v_, e.scratch_m_);
+    t.fillContactJacobianMultiDof(link, point, dir, e.buf_.data(), e.scratch_.r, e.scratch_.v, e.scratch_.m);
     for (std::size_t k = 0; k < ud; ++k) out[k] += sign * e.buf_[6 + k];
   }
   std::size_t new_row(const MultibodyRow& r) {
@@ -168,9 +169,9 @@ void MultibodyEngine::build_rows() {
   // A planar tree (every joint axis along z): each link's spin rate and centre velocity as rows
   // over the coordinates, once per step; a point's velocity along an in-plane direction is then
   // a combination of the three (v_p = v_c + ω × r), without walking the tree per row. With the
-  // planar mass matrix, planar_free_velocities() built them for this pose.
+  // planar mass matrix, the planar kinematics built them for this pose.
   if (!planar_mass_ && planar_) bullet_link_jacobians();
-  RowBuilder rb{*this, static_cast<std::size_t>(dofs)};
+  RowBuilder rb{*this, static_cast<std::size_t>(dofs), planar_mass_ ? kin_.link_jac().data() : link_jac_.data()};
   contact_rows(rb);
   for (std::size_t j = 0; j < model_.joints.size(); ++j) {
     const ModelJoint& jr = model_.joints[j];

@@ -7,7 +7,7 @@
 // bounds and compliances (solve_rows), then with solver.row_solver active_set from the
 // bound states the same rows had in the step before — a tooth contact's rows are the same rows
 // while its tooth pair and flank stay in contact, a joint's rows are always the same — by
-// physics/row_lcp.hpp, or on a planar tree in the coordinates' space (world_primal_solve.cpp),
+// physics/row_lcp.hpp, or on a planar tree in the coordinates' space (primal_solve.hpp),
 // falling back to Bullet's Dantzig solver when that does not settle.
 namespace gearsim::physics {
 namespace {
@@ -26,13 +26,13 @@ void MultibodyEngine::solve_rows() {
   if (!planar_mass_) rows_.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(rows_.a.data(), planar_mass_ ? 0 : n, planar_mass_ ? 0 : n);
   if (planar_mass_) {
-    mass_.g_formed = rows_.a_formed = false;  // G and A of this step's rows, where a fallback needs them
+    mass_.new_rows();  // G and A of this step's rows, where a fallback needs them
   } else {
     // M⁻¹, column by column, from the articulated-body inertias of this step.
     for (int k = 0; k < dofs; ++k) {
       std::fill(buf_.begin(), buf_.end(), 0.0);
       buf_[static_cast<std::size_t>(6 + k)] = 1;
-      t.calcAccelerationDeltasMultiDof(buf_.data(), out_.data(), scratch_r_, scratch_v_);
+      t.calcAccelerationDeltasMultiDof(buf_.data(), out_.data(), scratch_.r, scratch_.v);
       for (int r = 0; r < dofs; ++r) rows_.inverse_mass(r, k) = out_[static_cast<std::size_t>(6 + r)];
     }
     rows_.minv_jt.noalias() = rows_.inverse_mass * rows_.jac.transpose();
@@ -68,18 +68,16 @@ void MultibodyEngine::solve_rows() {
     // Friction held at a multiple of its normal's impulse is no unknown of the solve: its
     // compliance is never used (0).
     if (planar_mass_)
-      rows_.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : rows_.held_friction(static_cast<std::size_t>(i)) ? 0.0 : kStiffRow * planar_diag_a(static_cast<std::size_t>(i));
+      rows_.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : rows_.held_friction(static_cast<std::size_t>(i)) ? 0.0 : kStiffRow * mass_.diag_a(rows_, static_cast<std::size_t>(i));
   }
-  if (planar_mass_) planar_soft_rows();
+  if (planar_mass_) primal_.classify_rows(rows_, mass_, dofs_);
   rows_.dv_of_x = false;
-  primal_.dv_of_x = false;
-  bool solved = active_.on && solve_rows_active_set();
+  primal_.forget();
+  bool solved = active_.on() && solve_rows_active_set();
   if (!solved) {
     ++state_.profile.dantzig_solves;
-    if (planar_mass_) planar_full_a();
-    const std::lock_guard<std::mutex> lock(dantzig_flag());
-    solved = slip_.on() ? solve_rows_dantzig_fixed_friction()
-                                : btSolveDantzigLCP(n, rows_.a.data(), rows_.x.data(), rows_.b.data(), rows_.w.data(), 0, rows_.lo.data(), rows_.hi.data(), rows_.findex.data(), dantzig_);
+    if (planar_mass_) mass_.full_a(rows_);
+    solved = dantzig_.solve(rows_, slip_.on());
   }
   if (slip_.on()) solved = locate_slip_reversals(solved);
   if (!solved) ++failed_solves_;
@@ -93,39 +91,13 @@ void MultibodyEngine::solve_rows() {
 }
 
 bool MultibodyEngine::solve_rows_active_set() {
-  const std::size_t n = rows_.rows.size();
-  std::swap(active_.row_keys, active_.row_keys_before);
-  std::swap(active_.row_states, active_.row_states_before);
-  active_.row_keys.resize(n);
-  active_.row_states.assign(n, RowBound::free);
-  for (std::size_t i = 0; i < n; ++i) {
-    const MultibodyRow& r = rows_.rows[i];
-    std::array<int, 5> key{static_cast<int>(r.kind), r.owner, 0, 0, 0};
-    if (r.kind == MultibodyRow::contact_normal || r.kind == MultibodyRow::contact_friction) {
-      const ContactSample& c = state_.contacts[static_cast<std::size_t>(r.owner)];
-      key = {static_cast<int>(r.kind), c.pair, c.geometry.tooth_a, c.geometry.tooth_b, static_cast<int>(c.geometry.flank_a)};
-    } else {
-      for (std::size_t j = 0; j < i; ++j)  // a bearing's two radial rows: its first and second
-        if (active_.row_keys[j][0] == key[0] && active_.row_keys[j][1] == key[1]) key[2] = std::max(key[2], active_.row_keys[j][2] + 1);
-    }
-    active_.row_keys[i] = key;
-    // The row's state in the step before: at the same place in the list, or anywhere in it.
-    if (i < active_.row_keys_before.size() && active_.row_keys_before[i] == key) {
-      active_.row_states[i] = active_.row_states_before[i];
-    } else {
-      const auto it = std::find(active_.row_keys_before.begin(), active_.row_keys_before.end(), key);
-      if (it != active_.row_keys_before.end()) active_.row_states[i] = active_.row_states_before[static_cast<std::size_t>(it - active_.row_keys_before.begin())];
-    }
-  }
-  const int solves = planar_mass_ ? solve_rows_planar()
-                                   : solve_row_lcp(static_cast<int>(n), rows_.a.data(), rows_.b.data(), rows_.lo.data(), rows_.hi.data(), rows_.findex.data(),
-                                                   rows_.x.data(), active_.row_states.data(), active_.lcp);
+  active_.warm_start(rows_, state_.contacts);
+  const int solves = planar_mass_ ? solve_rows_planar() : active_.solve_dense(rows_);
   if (solves > 0) {
     ++state_.profile.active_set_solves;
     return true;
   }
-  std::fill(rows_.x.begin(), rows_.x.end(), 0.0);
-  std::fill(active_.row_states.begin(), active_.row_states.end(), RowBound::free);  // the next step starts cold
+  active_.start_cold(rows_);
   return false;
 }
 
@@ -144,13 +116,9 @@ bool MultibodyEngine::locate_slip_reversals(bool solved) {
     if (!slip_.reshare(rows_, dv.data())) break;
     ++state_.profile.friction_rounds;
     dv_of_x = false;
-    if (active_.on && (planar_mass_ ? solve_rows_planar()
-                                    : solve_row_lcp(n, rows_.a.data(), rows_.b.data(), rows_.lo.data(), rows_.hi.data(), rows_.findex.data(), rows_.x.data(),
-                                                    active_.row_states.data(), active_.lcp)) > 0)
-      continue;
-    if (planar_mass_) planar_full_a();
-    const std::lock_guard<std::mutex> lock(dantzig_flag());
-    solved = solve_rows_dantzig_fixed_friction();
+    if (active_.on() && (planar_mass_ ? solve_rows_planar() : active_.solve_dense(rows_)) > 0) continue;
+    if (planar_mass_) mass_.full_a(rows_);
+    solved = dantzig_.solve(rows_, true);
   }
   // Each contact's slip at the step's end on this step's rows, for the next step's drift.
   if (!dv_of_x) velocity_change_of_x(dv.data());
@@ -159,50 +127,64 @@ bool MultibodyEngine::locate_slip_reversals(bool solved) {
   return solved;
 }
 
-// Dantzig for rows some of which are friction fixed at a multiple of their normal's impulse
-// (contact.friction_model sliding: lo = hi on a row with findex ≥ 0). Bullet's solver takes such a
-// row's bounds as ±|hi·x_f|, a box, so the fixed rows leave its problem: their impulses c·x_f,
-// with x_f from the last round, move to the others' right-hand side, and rounds repeat until the
-// impulses settle (each round changes the normals by about μ times the last change: a
-// contraction). The caller holds dantzig_flag(). false when a round fails or they do not settle.
-bool MultibodyEngine::solve_rows_dantzig_fixed_friction() {
-  const int n = static_cast<int>(rows_.rows.size());
-  const auto at = [](int i) { return static_cast<std::size_t>(i); };
-  std::vector<int> kept, fixed, slot(at(n), -1);
-  for (int i = 0; i < n; ++i) {
-    if (rows_.held_friction(at(i))) fixed.push_back(i);
-    else slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
+// dv = M⁻¹·Jᵀ·λ over this step's rows: by M⁻¹·Jᵀ on the articulated path, by L on the planar one.
+void MultibodyEngine::velocity_change(const double* lambda, double* dv) {
+  const std::size_t n = rows_.rows.size();
+  if (!planar_mass_) {
+    Eigen::Map<Eigen::VectorXd>(dv, dofs_).noalias() = rows_.minv_jt * Eigen::Map<const Eigen::VectorXd>(lambda, static_cast<Eigen::Index>(n));
+    return;
   }
-  const int m = static_cast<int>(kept.size());
-  std::vector<double> a(at(m) * at(m)), b(at(m)), x(at(m)), w(at(m)), lo(at(m)), hi(at(m));
-  std::vector<int> findex(at(m));
-  std::fill(rows_.x.begin(), rows_.x.begin() + n, 0.0);
-  constexpr int kRounds = 50;
-  for (int round = 0; round < kRounds; ++round) {
-    for (const int t : fixed) rows_.x[at(t)] = rows_.lo[at(t)] * rows_.x[at(rows_.findex[at(t)])];
-    for (int r = 0; r < m; ++r) {
-      const int i = kept[at(r)];
-      for (int c = 0; c < m; ++c) a[at(r) * at(m) + at(c)] = rows_.a[at(i) * at(n) + at(kept[at(c)])];
-      b[at(r)] = rows_.b[at(i)];
-      for (const int t : fixed) b[at(r)] -= rows_.a[at(i) * at(n) + at(t)] * rows_.x[at(t)];
-      lo[at(r)] = rows_.lo[at(i)], hi[at(r)] = rows_.hi[at(i)];
-      findex[at(r)] = rows_.findex[at(i)] >= 0 ? slot[at(rows_.findex[at(i)])] : -1;
-      x[at(r)] = 0, w[at(r)] = 0;
-    }
-    if (!btSolveDantzigLCP(m, a.data(), x.data(), b.data(), w.data(), 0, lo.data(), hi.data(), findex.data(), dantzig_)) return false;
-    double change = 0, scale = 0;
-    for (int r = 0; r < m; ++r) {
-      const std::size_t i = at(kept[at(r)]);
-      change = std::max(change, std::abs(x[at(r)] - rows_.x[i]));
-      scale = std::max(scale, std::abs(x[at(r)]));
-      rows_.x[i] = x[at(r)];
-    }
-    if (change <= 1e-12 * scale) {
-      for (const int t : fixed) rows_.x[at(t)] = rows_.lo[at(t)] * rows_.x[at(rows_.findex[at(t)])];
-      return true;
-    }
+  mass_.velocity_change(rows_, lambda, dv);
+}
+
+// The velocity change of this step's impulses rows_.x. Where the dof-space solve found them
+// (solve_rows_planar), the dv it solved them with: M·dv = Jᵀ·x to rounding, so M⁻¹·Jᵀ·x need
+// not be formed again (World::set_mass_matrix_check compares the two).
+void MultibodyEngine::velocity_change_of_x(double* dv) {
+  if (!(planar_mass_ && primal_.has_dv())) {
+    velocity_change(rows_.x.data(), dv);
+    return;
   }
-  return false;
+  std::copy(primal_.dv().begin(), primal_.dv().end(), dv);
+  if (!check_mass_) return;
+  std::vector<double> reference(primal_.dv().size());
+  velocity_change(rows_.x.data(), reference.data());
+  double scale = 0, difference = 0;
+  for (std::size_t k = 0; k < reference.size(); ++k) {
+    scale = std::max(scale, std::abs(reference[k]));
+    difference = std::max(difference, std::abs(reference[k] - dv[k]));
+  }
+  ++mass_check_.velocity_changes_compared;
+  if (scale > 0) mass_check_.velocity_change_difference = std::max(mass_check_.velocity_change_difference, difference / scale);
+}
+
+// The rows by the dof-space solve; where it does not settle, by the folded row-space one from
+// the same bound states. With World::set_mass_matrix_check, both, compared
+// (Multibody.TheDofSpaceSolveIsTheRowSpaceSolve).
+int MultibodyEngine::solve_rows_planar() {
+  planar_check_.states_before = active_.states();
+  const int solves = primal_.solve(rows_, active_.states(), mass_.mass(), dofs_);
+  if (solves > 0 && check_mass_) {
+    planar_check_.x = rows_.x;
+    planar_check_.states = active_.states();
+    active_.states() = planar_check_.states_before;
+    if (folded_.solve(rows_, mass_.g(rows_), active_.states(), active_.lcp()) > 0) {
+      double scale = 0, difference = 0;
+      for (std::size_t i = 0; i < rows_.x.size(); ++i) {
+        scale = std::max(scale, std::abs(rows_.x[i]));
+        difference = std::max(difference, std::abs(rows_.x[i] - planar_check_.x[i]));
+      }
+      ++mass_check_.row_solves_compared;
+      if (scale > 0) mass_check_.row_solve_difference = std::max(mass_check_.row_solve_difference, difference / scale);
+    }
+    rows_.x = planar_check_.x;
+    active_.states() = planar_check_.states;
+  }
+  if (solves > 0) return solves;
+  active_.states() = planar_check_.states_before;
+  const int folded = folded_.solve(rows_, mass_.g(rows_), active_.states(), active_.lcp());
+  if (check_mass_) ++mass_check_.row_solve_fallbacks, mass_check_.row_solve_fallbacks_settled += folded > 0;
+  return folded;
 }
 
 }  // namespace gearsim::physics

@@ -1,3 +1,5 @@
+#include "physics/primal_solve.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -5,7 +7,6 @@
 #include "physics/dense_lu.hpp"
 #include "physics/dof_dispatch.hpp"
 #include "physics/row_lcp.hpp"
-#include "physics/multibody_engine.hpp"
 
 // The rows of a planar tree solved in the space of its coordinates (docs/solver.md, "The row
 // solve in the coordinates' space"): the same mixed LCP as solve_row_lcp() on the folded rows,
@@ -34,59 +35,38 @@ double dot(const double* a, const double* b, std::size_t n) {
 // their compliances stay the step's through the slip reversals' solves again). A_ii ≤
 // trace(M⁻¹)·|J_i|² (M⁻¹ is positive definite), trace(M⁻¹) = ‖L⁻¹‖²_F: the exact A_ii only where
 // that bound leaves the question open.
-void MultibodyEngine::planar_soft_rows() {
-  with_dof_count(dofs_, [&](auto dofs) { planar_soft_rows_n<decltype(dofs)::value>(); });
+void PrimalSolve::classify_rows(const RowSystem& rows, PlanarMass& mass, int dofs) {
+  with_dof_count(dofs, [&](auto count) { classify_rows_n<decltype(count)::value>(rows, mass, dofs); });
 }
 
 template <int N>
-void MultibodyEngine::planar_soft_rows_n() {
-  const std::size_t n = rows_.rows.size(), ud = N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(dofs_);
-  const double* jrows = rows_.jrows.data();
+void PrimalSolve::classify_rows_n(const RowSystem& rows, PlanarMass& mass, int dofs) {
+  const std::size_t n = rows.rows.size(), ud = N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(dofs);
+  const double* jrows = rows.jrows.data();
   const auto j = [&](std::size_t i) { return jrows + i * ud; };
-  const double* d = rows_.compliance.data();
+  const double* d = rows.compliance.data();
   double trace_minv = 0;
   {
-    const double* l = mass_.chol.data();
-    std::vector<double>& col = mass_.g_lambda;  // scratch: column c of L⁻¹
+    const double* l = mass.chol().data();
+    std::vector<double>& col = mass.scratch();  // scratch: column c of L⁻¹
     // Column c of L⁻¹ is zero above its diagonal (L lower triangular): only rows i ≥ c are
     // formed and summed (the zeros added nothing to the trace).
     for (std::size_t c = 0; c < ud; ++c) {
       for (std::size_t i = c; i < ud; ++i) {
         double v = i == c ? 1.0 : 0.0;
         for (std::size_t k = c; k < i; ++k) v -= l[i * ud + k] * col[k];
-        col[i] = v * mass_.chol_inv_diag[i];
+        col[i] = v * mass.chol_inv_diag()[i];
         trace_minv += col[i] * col[i];
       }
     }
   }
-  primal_.soft.resize(n);
+  w_.soft.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    bool soft = rows_.rows[i].cfm > 0;
-    if (soft && !(d[i] >= kSoftSpring * trace_minv * dot(j(i), j(i), ud))) soft = d[i] >= kSoftSpring * planar_diag_a(i);
-    primal_.soft[i] = soft;
+    bool soft = rows.rows[i].cfm > 0;
+    if (soft && !(d[i] >= kSoftSpring * trace_minv * dot(j(i), j(i), ud))) soft = d[i] >= kSoftSpring * mass.diag_a(rows, i);
+    w_.soft[i] = soft;
   }
 }
-
-// The problem of solve_rows_folded() — A·λ = b + w with A = J·M⁻¹·J_fᵀ + D (J_f: each unknown
-// row's column with the friction held at a multiple of its impulse folded in, D the rows'
-// compliances), every row's bound conditions — for given bound states, solved through the
-// velocity change dv = M⁻¹·(Σ_u J_f,u·λ_u + f₀) it makes (f₀: the impulses of the rows held at a
-// bound). A spring row u (compliance D_u, a tooth contact, a bearing) is λ_u = (b_u − J_u·dv)/D_u,
-// so that
-//   K·dv = f₀ + Σ_springs J_f,u·b_u/D_u + Σ_stiff J_f,r·λ_r,   K = M + Σ_springs J_f,u·J_uᵀ/D_u,
-// and a stiff row r (no spring: a motor, sticking friction, D_r = 1e-8 of its diagonal; or a
-// spring with D_r < kSoftSpring·A_rr) keeps its row equation D_r·λ_r + J_r·dv = b_r, which with
-// dv from K gives the small Schur system
-//   (D_R + J_R·K⁻¹·J_f,R)·λ_R = b_R − J_R·K⁻¹·(f₀ + Σ_springs J_f,u·b_u/D_u).
-// The springs' compliances are of the order of their diagonal or larger at the steps this tool
-// takes (1/(h·θ·(θ·h·k + c)) against 1/m: ≈ 14 for the paper's teeth at 1e-5 s), so K is as well
-// conditioned as M; the stiff rows, whose 1/D would make it ill-conditioned, stay out of it.
-// Rows whose condition breaks change their bound state as in solve_row_lcp()
-// (settle_row_states); returns the linear solves it took, 0 where it did not settle (or a
-// factorisation failed): the caller falls back to the row-space solve then.
-// N > 0: the tree has N coordinates, known when compiling (solve_rows_primal() dispatches on the
-// count): the short loops over them unroll; the same arithmetic in the same order.
-namespace {
 
 // The step's rows as primal_solve() reads them: Jacobians, bounds, right-hand sides,
 // compliances, friction links, bound states and impulses.
@@ -112,7 +92,7 @@ struct PrimalRows {
 
 // Unknowns: the free rows (not pinned, not held), the stiff ones among them apart.
 template <int N>
-void primal_unknowns(PrimalSolve& e, const PrimalRows<N>& r) {
+void PrimalSolve::unknowns(Work& e, const PrimalRows<N>& r) {
   e.rows.clear();
   e.stiff.clear();
   for (std::size_t i = 0; i < r.n; ++i) {
@@ -128,7 +108,7 @@ void primal_unknowns(PrimalSolve& e, const PrimalRows<N>& r) {
 // Columns: each unknown's J, with the friction held at a multiple c of it (held rows, box
 // friction on a bound) folded in; the constants' impulses into f₀ (e.constant).
 template <int N>
-void primal_columns(PrimalSolve& e, const PrimalRows<N>& r) {
+void PrimalSolve::columns(Work& e, const PrimalRows<N>& r) {
   const std::size_t m = e.rows.size(), ud = r.ud;
   double* x = r.x;
   e.cols.resize(m * ud);
@@ -163,7 +143,7 @@ void primal_columns(PrimalSolve& e, const PrimalRows<N>& r) {
 // K = M + Σ_springs J_f,u·J_uᵀ/D_u (e.k) and its right-hand side f₀ + Σ_springs
 // J_f,u·b_u/D_u (e.rhs).
 template <int N>
-void primal_k(PrimalSolve& e, const PrimalRows<N>& r) {
+void PrimalSolve::form_k(Work& e, const PrimalRows<N>& r) {
   const std::size_t m = e.rows.size(), ud = r.ud;
   double* kk = e.k.data();
   double* rhs = e.rhs.data();
@@ -190,7 +170,7 @@ void primal_k(PrimalSolve& e, const PrimalRows<N>& r) {
 // (D_R + J_R·Y)·λ_R = b_R − J_R·dv₀; λ_R into x and Y·λ_R added to dv. False where the Schur
 // matrix does not factorise.
 template <int N>
-bool primal_stiff_rows(PrimalSolve& e, const PrimalRows<N>& r) {
+bool PrimalSolve::stiff_rows(Work& e, const PrimalRows<N>& r) {
   const std::size_t ms = e.stiff.size(), ud = r.ud;
   const int dofs = static_cast<int>(ud);
   double* dv = e.dv.data();
@@ -224,7 +204,7 @@ bool primal_stiff_rows(PrimalSolve& e, const PrimalRows<N>& r) {
 // The springs' impulses from dv, then the folded friction from its normal. True when a row has
 // conditions on w (one on a bound, not held).
 template <int N>
-bool primal_impulses(PrimalSolve& e, const PrimalRows<N>& r) {
+bool PrimalSolve::impulses(Work& e, const PrimalRows<N>& r) {
   const double* dv = e.dv.data();
   double* x = r.x;
   for (std::size_t u = 0; u < e.rows.size(); ++u) {
@@ -246,7 +226,7 @@ bool primal_impulses(PrimalSolve& e, const PrimalRows<N>& r) {
 // a row of the folded problem); w = A·x − b = J·dv + D·x − b where a row sits on a bound (a free
 // row's w is 0: it has none to meet) into e.w. False where a value is not finite.
 template <int N>
-bool primal_scales(PrimalSolve& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale) {
+bool PrimalSolve::scales(Work& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale) {
   const double* dv = e.dv.data();
   x_scale = 0, w_scale = 0;
   for (std::size_t i = 0; i < r.n; ++i) {
@@ -267,7 +247,7 @@ bool primal_scales(PrimalSolve& e, const PrimalRows<N>& r, bool on_bound, double
 }
 
 template <int N>
-int primal_solve(PrimalSolve& e, const PrimalRows<N>& r) {
+int PrimalSolve::solve_n(Work& e, const PrimalRows<N>& r) {
   const std::size_t n = r.n, ud = r.ud;
   const int dofs = static_cast<int>(ud);
   e.unknown.resize(n);
@@ -278,18 +258,18 @@ int primal_solve(PrimalSolve& e, const PrimalRows<N>& r) {
   e.k.resize(ud * ud);
   e.pivots.resize(ud);
   for (int solves = 1; solves <= kMaxPrimalSolves; ++solves) {
-    primal_unknowns(e, r);
-    primal_columns(e, r);
-    primal_k(e, r);
+    unknowns(e, r);
+    columns(e, r);
+    form_k(e, r);
     double* kk = e.k.data();
     double* rhs = e.rhs.data();
     if (!lu_factor<N>(dofs, kk, e.pivots.data())) return 0;
     lu_solve<N>(dofs, kk, e.pivots.data(), rhs);  // dv of the springs and constants alone
     std::copy(rhs, rhs + ud, e.dv.data());
-    if (!e.stiff.empty() && !primal_stiff_rows(e, r)) return 0;
-    const bool on_bound = primal_impulses(e, r);
+    if (!e.stiff.empty() && !stiff_rows(e, r)) return 0;
+    const bool on_bound = impulses(e, r);
     double x_scale, w_scale;
-    if (!primal_scales(e, r, on_bound, x_scale, w_scale)) return 0;
+    if (!scales(e, r, on_bound, x_scale, w_scale)) return 0;
     if (settle_row_states(static_cast<int>(n), r.x, on_bound ? e.w.data() : nullptr, r.lo, r.hi, r.findex, r.state, solves,
                           kPrimalRelativeTolerance * x_scale, kPrimalRelativeTolerance * w_scale)) {
       for (std::size_t i = 0; i < n; ++i)
@@ -299,43 +279,15 @@ int primal_solve(PrimalSolve& e, const PrimalRows<N>& r) {
   }
   return 0;
 }
-}  // namespace
 
-int MultibodyEngine::solve_rows_primal() {
-  return with_dof_count(dofs_, [&](auto n) {
+int PrimalSolve::solve(RowSystem& rows, std::vector<RowBound>& states, const std::vector<double>& mass, int dofs) {
+  w_.dv_of_x = false;
+  const int solves = with_dof_count(dofs, [&](auto n) {
     constexpr int N = decltype(n)::value;
-    return primal_solve<N>(primal_, PrimalRows<N>(rows_, active_.row_states.data(), mass_.mass.data(), dofs_));
+    return solve_n<N>(w_, PrimalRows<N>(rows, states.data(), mass.data(), dofs));
   });
-}
-
-// The rows by the dof-space solve; where it does not settle, by the folded row-space one from
-// the same bound states. With World::set_mass_matrix_check, both, compared
-// (Multibody.TheDofSpaceSolveIsTheRowSpaceSolve).
-int MultibodyEngine::solve_rows_planar() {
-  primal_.states_before = active_.row_states;
-  const int solves = solve_rows_primal();
-  primal_.dv_of_x = solves > 0;
-  if (solves > 0 && check_mass_) {
-    primal_.x_check = rows_.x;
-    primal_.states_check = active_.row_states;
-    active_.row_states = primal_.states_before;
-    if (solve_rows_folded() > 0) {
-      double scale = 0, difference = 0;
-      for (std::size_t i = 0; i < rows_.x.size(); ++i) {
-        scale = std::max(scale, std::abs(rows_.x[i]));
-        difference = std::max(difference, std::abs(rows_.x[i] - primal_.x_check[i]));
-      }
-      ++mass_check_.row_solves_compared;
-      if (scale > 0) mass_check_.row_solve_difference = std::max(mass_check_.row_solve_difference, difference / scale);
-    }
-    rows_.x = primal_.x_check;
-    active_.row_states = primal_.states_check;
-  }
-  if (solves > 0) return solves;
-  active_.row_states = primal_.states_before;
-  const int folded = solve_rows_folded();
-  if (check_mass_) ++mass_check_.row_solve_fallbacks, mass_check_.row_solve_fallbacks_settled += folded > 0;
-  return folded;
+  w_.dv_of_x = solves > 0;
+  return solves;
 }
 
 }  // namespace gearsim::physics

@@ -1,45 +1,58 @@
-// The multibody engine's row solvers' working data (docs/solver.md, "The row solve"): the active
-// set's warm start (each row's identity and bound state, this step's and the last's), the folded
-// row-space solve (friction held at a multiple of its normal folded into that normal's column)
-// and the dof-space solve of a planar tree (the rows solved through the coordinates' velocity
-// change, one dofs × dofs factorisation per solve). Dantzig (Bullet's) is the fallback of all.
+// The multibody engine's row solvers (docs/solver.md, "The row solve"), each with its own working
+// data: the active set, warm-started from the bound states the same rows had in the step before
+// (physics/row_lcp.hpp on the dense A; on a planar tree the dof-space solve, primal_solve.hpp,
+// or the folded one, folded_solve.hpp), and Bullet's Dantzig solver, the fallback of all.
 // Internal to physics/.
 #pragma once
 
+#include <BulletDynamics/MLCPSolvers/btDantzigLCP.h>
+
 #include <array>
+#include <mutex>
 #include <vector>
 
+#include "physics/multibody_rows.hpp"
 #include "physics/row_lcp.hpp"
+#include "physics/world.hpp"
 
 namespace gearsim::physics {
 
-struct ActiveSetSolve {
-  bool on = false;  // solver.row_solver active_set
-  std::vector<std::array<int, 5>> row_keys, row_keys_before;  // (kind, contact or joint …) per row
-  std::vector<RowBound> row_states, row_states_before;
-  RowLcpScratch lcp;
+// Bullet's Dantzig solver's global failure flag: held around every call.
+std::mutex& dantzig_flag();
+
+class ActiveSetSolve {
+ public:
+  ActiveSetSolve() = default;
+  explicit ActiveSetSolve(bool on) : on_(on) {}
+  bool on() const { return on_; }  // solver.row_solver active_set
+  // This step's rows' identities (the contacts' tooth pairs and flanks, the joints) and their
+  // bound states in the step before, where they had one (else free).
+  void warm_start(const RowSystem& rows, const std::vector<ContactSample>& contacts);
+  // The rows by solve_row_lcp() on the dense A (rows.a): the linear solves it took, 0 where it
+  // did not settle.
+  int solve_dense(RowSystem& rows);
+  // After no solution: no impulses, and the next step starts cold.
+  void start_cold(RowSystem& rows);
+  std::vector<RowBound>& states() { return states_; }  // this step's, per row
+  RowLcpScratch& lcp() { return lcp_; }
+
+ private:
+  bool on_ = false;
+  std::vector<std::array<int, 5>> keys_, keys_before_;  // (kind, contact or joint …) per row
+  std::vector<RowBound> states_, states_before_;
+  RowLcpScratch lcp_;
 };
 
-// The rows kept (not friction held at a multiple of its normal), each row's index among them
-// (−1: held), their g and column vectors h, and the folded problem.
-struct FoldedSolve {
-  std::vector<int> kept, index, findex;
-  std::vector<double> g, h, a, b, lo, hi, x;
-  std::vector<RowBound> states;
-};
+class DantzigSolve {
+ public:
+  // Bullet's Dantzig solver on the dense A (rows.a), holding dantzig_flag(); with
+  // fixed_friction, friction rows held at a multiple of their normal's impulse (lo = hi) are
+  // taken out of its problem and solved by rounds. False where it found no solution.
+  bool solve(RowSystem& rows, bool fixed_friction);
 
-// Per row its unknown's index (−1: a constant or a folded friction row), the unknowns' rows,
-// whether each is stiff (no spring: solved by its Schur complement), their folded columns by
-// unknown (unknowns × dofs), the constant rows' impulses on the coordinates, K and its LU
-// pivots, and the solutions.
-struct PrimalSolve {
-  std::vector<int> unknown, rows, pivots, stiff, stiff_pivots;
-  std::vector<double> cols, constant, k, rhs, y, s, t, dv, w;
-  std::vector<char> soft;  // per row: a spring soft enough for K (else stiff)
-  std::vector<RowBound> states_before;
-  std::vector<double> x_check;
-  std::vector<RowBound> states_check;
-  bool dv_of_x = false;  // dv is the velocity change of x: the dof-space solve settled x
+ private:
+  bool solve_fixed_friction(RowSystem& rows);
+  btDantzigScratchMemory scratch_;
 };
 
 }  // namespace gearsim::physics
