@@ -70,6 +70,8 @@ void PrimalSolve::classify_rows_n(const RowSystem& rows, PlanarMass& mass, int d
 
 // The step's rows as primal_solve() reads them: Jacobians, bounds, right-hand sides,
 // compliances, friction links, bound states and impulses.
+namespace {
+
 template <int N>
 struct PrimalRows {
   PrimalRows(RowSystem& rs, RowBound* states, const double* mass_lower, int dofs)
@@ -92,7 +94,7 @@ struct PrimalRows {
 
 // Unknowns: the free rows (not pinned, not held), the stiff ones among them apart.
 template <int N>
-void PrimalSolve::unknowns(Work& e, const PrimalRows<N>& r) {
+void primal_unknowns(PrimalWork& e, const PrimalRows<N>& r) {
   e.rows.clear();
   e.stiff.clear();
   for (std::size_t i = 0; i < r.n; ++i) {
@@ -108,7 +110,7 @@ void PrimalSolve::unknowns(Work& e, const PrimalRows<N>& r) {
 // Columns: each unknown's J, with the friction held at a multiple c of it (held rows, box
 // friction on a bound) folded in; the constants' impulses into f₀ (e.constant).
 template <int N>
-void PrimalSolve::columns(Work& e, const PrimalRows<N>& r) {
+void primal_columns(PrimalWork& e, const PrimalRows<N>& r) {
   const std::size_t m = e.rows.size(), ud = r.ud;
   double* x = r.x;
   e.cols.resize(m * ud);
@@ -143,7 +145,7 @@ void PrimalSolve::columns(Work& e, const PrimalRows<N>& r) {
 // K = M + Σ_springs J_f,u·J_uᵀ/D_u (e.k) and its right-hand side f₀ + Σ_springs
 // J_f,u·b_u/D_u (e.rhs).
 template <int N>
-void PrimalSolve::form_k(Work& e, const PrimalRows<N>& r) {
+void primal_k(PrimalWork& e, const PrimalRows<N>& r) {
   const std::size_t m = e.rows.size(), ud = r.ud;
   double* kk = e.k.data();
   double* rhs = e.rhs.data();
@@ -170,7 +172,7 @@ void PrimalSolve::form_k(Work& e, const PrimalRows<N>& r) {
 // (D_R + J_R·Y)·λ_R = b_R − J_R·dv₀; λ_R into x and Y·λ_R added to dv. False where the Schur
 // matrix does not factorise.
 template <int N>
-bool PrimalSolve::stiff_rows(Work& e, const PrimalRows<N>& r) {
+bool primal_stiff_rows(PrimalWork& e, const PrimalRows<N>& r) {
   const std::size_t ms = e.stiff.size(), ud = r.ud;
   const int dofs = static_cast<int>(ud);
   double* dv = e.dv.data();
@@ -204,7 +206,7 @@ bool PrimalSolve::stiff_rows(Work& e, const PrimalRows<N>& r) {
 // The springs' impulses from dv, then the folded friction from its normal. True when a row has
 // conditions on w (one on a bound, not held).
 template <int N>
-bool PrimalSolve::impulses(Work& e, const PrimalRows<N>& r) {
+bool primal_impulses(PrimalWork& e, const PrimalRows<N>& r) {
   const double* dv = e.dv.data();
   double* x = r.x;
   for (std::size_t u = 0; u < e.rows.size(); ++u) {
@@ -226,7 +228,7 @@ bool PrimalSolve::impulses(Work& e, const PrimalRows<N>& r) {
 // a row of the folded problem); w = A·x − b = J·dv + D·x − b where a row sits on a bound (a free
 // row's w is 0: it has none to meet) into e.w. False where a value is not finite.
 template <int N>
-bool PrimalSolve::scales(Work& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale) {
+bool primal_scales(PrimalWork& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale) {
   const double* dv = e.dv.data();
   x_scale = 0, w_scale = 0;
   for (std::size_t i = 0; i < r.n; ++i) {
@@ -247,7 +249,8 @@ bool PrimalSolve::scales(Work& e, const PrimalRows<N>& r, bool on_bound, double&
 }
 
 template <int N>
-int PrimalSolve::solve_n(Work& e, const PrimalRows<N>& r) {
+int primal_solve(PrimalWork& e, RowSystem& rows, RowBound* states, const double* mass, int tree_dofs) {
+  const PrimalRows<N> r(rows, states, mass, tree_dofs);
   const std::size_t n = r.n, ud = r.ud;
   const int dofs = static_cast<int>(ud);
   e.unknown.resize(n);
@@ -258,18 +261,18 @@ int PrimalSolve::solve_n(Work& e, const PrimalRows<N>& r) {
   e.k.resize(ud * ud);
   e.pivots.resize(ud);
   for (int solves = 1; solves <= kMaxPrimalSolves; ++solves) {
-    unknowns(e, r);
-    columns(e, r);
-    form_k(e, r);
+    primal_unknowns(e, r);
+    primal_columns(e, r);
+    primal_k(e, r);
     double* kk = e.k.data();
     double* rhs = e.rhs.data();
     if (!lu_factor<N>(dofs, kk, e.pivots.data())) return 0;
     lu_solve<N>(dofs, kk, e.pivots.data(), rhs);  // dv of the springs and constants alone
     std::copy(rhs, rhs + ud, e.dv.data());
-    if (!e.stiff.empty() && !stiff_rows(e, r)) return 0;
-    const bool on_bound = impulses(e, r);
+    if (!e.stiff.empty() && !primal_stiff_rows(e, r)) return 0;
+    const bool on_bound = primal_impulses(e, r);
     double x_scale, w_scale;
-    if (!scales(e, r, on_bound, x_scale, w_scale)) return 0;
+    if (!primal_scales(e, r, on_bound, x_scale, w_scale)) return 0;
     if (settle_row_states(static_cast<int>(n), r.x, on_bound ? e.w.data() : nullptr, r.lo, r.hi, r.findex, r.state, solves,
                           kPrimalRelativeTolerance * x_scale, kPrimalRelativeTolerance * w_scale)) {
       for (std::size_t i = 0; i < n; ++i)
@@ -280,11 +283,13 @@ int PrimalSolve::solve_n(Work& e, const PrimalRows<N>& r) {
   return 0;
 }
 
+}  // namespace
+
 int PrimalSolve::solve(RowSystem& rows, std::vector<RowBound>& states, const std::vector<double>& mass, int dofs) {
   w_.dv_of_x = false;
   const int solves = with_dof_count(dofs, [&](auto n) {
     constexpr int N = decltype(n)::value;
-    return solve_n<N>(w_, PrimalRows<N>(rows, states.data(), mass.data(), dofs));
+    return primal_solve<N>(w_, rows, states.data(), mass.data(), dofs);
   });
   w_.dv_of_x = solves > 0;
   return solves;

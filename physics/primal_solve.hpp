@@ -16,8 +16,17 @@
 
 namespace gearsim::physics {
 
-template <int N>
-struct PrimalRows;
+// The dof-space solve's working storage (PrimalSolve's; its steps are primal_solve.cpp's).
+// Per row its unknown's index (−1: a constant or a folded friction row), the unknowns' rows,
+// whether each is stiff (no spring: solved by its Schur complement), their folded columns by
+// unknown (unknowns × dofs), the constant rows' impulses on the coordinates, K and its LU
+// pivots, and the solutions.
+struct PrimalWork {
+  std::vector<int> unknown, rows, pivots, stiff, stiff_pivots;
+  std::vector<double> cols, constant, k, rhs, y, s, t, dv, w;
+  std::vector<char> soft;  // per row: a spring soft enough for K (else stiff)
+  bool dv_of_x = false;
+};
 
 class PrimalSolve {
  public:
@@ -34,34 +43,9 @@ class PrimalSolve {
   void forget() { w_.dv_of_x = false; }
 
  private:
-  // Per row its unknown's index (−1: a constant or a folded friction row), the unknowns' rows,
-  // whether each is stiff (no spring: solved by its Schur complement), their folded columns by
-  // unknown (unknowns × dofs), the constant rows' impulses on the coordinates, K and its LU
-  // pivots, and the solutions.
-  struct Work {
-    std::vector<int> unknown, rows, pivots, stiff, stiff_pivots;
-    std::vector<double> cols, constant, k, rhs, y, s, t, dv, w;
-    std::vector<char> soft;  // per row: a spring soft enough for K (else stiff)
-    bool dv_of_x = false;
-  };
   template <int N>
   void classify_rows_n(const RowSystem& rows, PlanarMass& mass, int dofs);
-  template <int N>
-  static int solve_n(Work& e, const PrimalRows<N>& r);
-  template <int N>
-  static void unknowns(Work& e, const PrimalRows<N>& r);
-  template <int N>
-  static void columns(Work& e, const PrimalRows<N>& r);
-  template <int N>
-  static void form_k(Work& e, const PrimalRows<N>& r);
-  template <int N>
-  static bool stiff_rows(Work& e, const PrimalRows<N>& r);
-  template <int N>
-  static bool impulses(Work& e, const PrimalRows<N>& r);
-  template <int N>
-  static bool scales(Work& e, const PrimalRows<N>& r, bool on_bound, double& x_scale, double& w_scale);
-
-  Work w_;
+  PrimalWork w_;
 };
 
 }  // namespace gearsim::physics
