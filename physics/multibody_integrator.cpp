@@ -6,7 +6,7 @@
 
 // How the multibody engine integrates its spring rows (docs/solver.md): the θ-method's row for a
 // spring–damper (also BDF2's, with h_eff and the extrapolated position), and the per-step θ of
-// solver.integrator trapezoid_closed. The step itself is world_multibody.cpp's.
+// solver.integrator trapezoid_closed. The step itself is multibody_engine.cpp's.
 namespace gearsim::physics {
 
 // A spring–damper row (stiffness k, damping c) whose spring force at the start of the step is

@@ -5,7 +5,7 @@
 #include "physics/multibody_engine.hpp"
 #include "physics/measure.hpp"
 
-// The rows of the `multibody` engine's step (world_multibody.cpp steps the tree): one per tooth
+// The rows of the `multibody` engine's step (multibody_engine.cpp steps the tree): one per tooth
 // contact's normal and friction, bearing direction, torsional support and motor, each with its
 // Jacobian over the tree's coordinates, compliance, target and bounds; and what the solved rows
 // did (forces, motor torques, power flows).

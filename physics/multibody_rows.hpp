@@ -39,7 +39,6 @@ struct RowSystem {
   std::vector<double> a, b, x, w, lo, hi;
   std::vector<int> findex;
   std::vector<double> compliance;
-  bool dv_of_x = false;  // the engine's velocity buffer holds M⁻¹·Jᵀ·x of this x (the slip rounds left it)
 
   // Row i is friction held at a fixed multiple of its normal's impulse (lo = hi): no unknown of the solve.
   bool held_friction(std::size_t i) const { return findex[i] >= 0 && !(hi[i] > lo[i]); }

@@ -71,7 +71,6 @@ void MultibodyEngine::solve_rows() {
       rows_.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : rows_.held_friction(static_cast<std::size_t>(i)) ? 0.0 : kStiffRow * mass_.diag_a(rows_, static_cast<std::size_t>(i));
   }
   if (planar_mass_) primal_.classify_rows(rows_, mass_, dofs_);
-  rows_.dv_of_x = false;
   primal_.forget();
   bool solved = active_.on() && solve_rows_active_set();
   if (!solved) {
@@ -79,9 +78,10 @@ void MultibodyEngine::solve_rows() {
     if (planar_mass_) mass_.full_a(rows_);
     solved = dantzig_.solve(rows_, slip_.on());
   }
+  // Sliding friction's rounds leave the velocity change of the impulses in buf_[6…].
   if (slip_.on()) solved = locate_slip_reversals(solved);
   if (!solved) ++failed_solves_;
-  if (rows_.dv_of_x) {
+  if (slip_.on()) {
     std::fill(buf_.begin(), buf_.begin() + 6, 0.0);
   } else {
     std::fill(buf_.begin(), buf_.end(), 0.0);
@@ -103,7 +103,8 @@ bool MultibodyEngine::solve_rows_active_set() {
 
 // After the first solve (`solved`: it found a solution), where a contact's slip at the step's end
 // disagrees with the share its friction was solved with (SlipFriction::reshare): solved again.
-// Returns whether the last solve found a solution. Records each contact's end slip for the next
+// Returns whether the last solve found a solution, and leaves the velocity change of its
+// impulses in buf_[6…] (solve_rows applies it). Records each contact's end slip for the next
 // step's drift.
 bool MultibodyEngine::locate_slip_reversals(bool solved) {
   const int n = static_cast<int>(rows_.rows.size()), dofs = dofs_;
@@ -122,7 +123,6 @@ bool MultibodyEngine::locate_slip_reversals(bool solved) {
   }
   // Each contact's slip at the step's end on this step's rows, for the next step's drift.
   if (!dv_of_x) velocity_change_of_x(dv.data());
-  rows_.dv_of_x = true;  // solve_rows applies it
   slip_.record_end_slips(rows_, state_.contacts, dv.data(), h_step_);
   return solved;
 }

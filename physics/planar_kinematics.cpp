@@ -123,7 +123,7 @@ void PlanarKinematics::build_gears() {
 // angle by h·v; a planar joint's angle likewise, its translations by its in-plane velocity (along
 // b₁, b₂ in its turned frame) turned by the new angle about its axis — Rot(a, q₀)·(v₁·b₁ + v₂·b₂) =
 // (c·v₁ + s·v₂)·b₁ + (c·v₂ − s·v₁)·b₂ — and projected on b₁ and b₂ again. v: one entry per
-// coordinate. Then the poses (planar_forward_kinematics()).
+// coordinate. Then the poses (forward_kinematics()).
 void PlanarKinematics::step_positions(double h, const double* v) {
   btMultiBody& t = *tree_;
   for (std::size_t l = 0; l < links_.size(); ++l) {
@@ -140,9 +140,9 @@ void PlanarKinematics::step_positions(double h, const double* v) {
 }
 
 // Each link's turn φ (its cosine and sine) and world transform from the joint positions (the
-// closed form of build_planar_kinematics()), into Bullet's link cache (which the rows and the
+// closed form of build()), into Bullet's link cache (which the rows and the
 // link Jacobians read) and the bodies' transforms. The links' Jacobians at this pose follow
-// (link_jacobians(); the next step's planar_free_velocities() takes them as they are).
+// (link_jacobians(); the next step's PlanarMass::free_velocities() and rows take them as they are).
 void PlanarKinematics::forward_kinematics() {
   const Model& model = *model_;
   btMultiBody& t = *tree_;
@@ -176,7 +176,7 @@ void PlanarKinematics::forward_kinematics() {
 // linear part, world): ω_l = Σ s_d·q̇_d, v_l = Σ (s_d·ẑ × (c_l − c_i) + b_d)·q̇_d — Bullet's own
 // joint axes (btMultibodyLink::getAxisTop/Bottom, in i's frame) and convention
 // (fillConstraintJacobianMultiDof, compTreeLinkVelocities), without walking the tree per row.
-// s_d and b_d are kept per coordinate (planar_free_velocities() differentiates them).
+// s_d and b_d are kept per coordinate (PlanarMass::free_velocities() differentiates them).
 void PlanarKinematics::link_jacobians() {
   const btMultiBody& t = *tree_;
   const std::size_t links = static_cast<std::size_t>(t.getNumLinks()), ud = dofs_;
@@ -299,7 +299,7 @@ contact::PlanarPose PlanarKinematics::gear_pose(std::size_t body) const {
 }
 
 // World::set_mass_matrix_check: Bullet's position step from the step's start coordinates (kept
-// by advance_multibody() in check_q_start) and the velocities the positions moved with, its link
+// by keep_step_start() in check_q_start_) and the velocities the positions moved with, its link
 // caches, forward kinematics and link velocities from this step's coordinates, against the planar
 // path's: the largest coordinate difference, link centre distance (m), basis difference and
 // velocity difference (rad/s, m/s) over the steps. Bullet's caches are left as its passes made

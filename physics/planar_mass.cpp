@@ -9,7 +9,7 @@
 // solver.mass_matrix planar (docs/solver.md, "The planar mass matrix"): for a tree whose joints
 // all turn about z, the links' Jacobians from their joint axes, the mass matrix from them and its
 // Cholesky factor, in place of Bullet's Jacobian tree walks and articulated-body solves
-// (world_multibody.cpp, solver.mass_matrix articulated).
+// (the multibody engine's articulated path, solver.mass_matrix articulated).
 namespace gearsim::physics {
 
 // Per link: mass and moment about z.
@@ -35,7 +35,7 @@ void PlanarMass::build(btMultiBody& tree) {
 
 // M of this step from the links' Jacobians and its Cholesky factor L (chol_, lower triangle;
 // chol_inv_diag_). M is positive definite for links with positive masses and moments
-// (build_multibody requires them).
+// (MultibodyEngine::build_tree requires them).
 void PlanarMass::factor(const PlanarKinematics& kin, BulletScratch& scratch, World::MassMatrixCheck* check) {
   const std::size_t ud = dofs_;
   double* m = chol_.data();
@@ -52,7 +52,7 @@ void PlanarMass::factor(const PlanarKinematics& kin, BulletScratch& scratch, Wor
       }
   }
   if (check) check_against_bullet(m, kin, scratch, *check);
-  mass_.assign(m, m + ud * ud);  // M itself, for the dof-space solve (solve_rows_primal)
+  mass_.assign(m, m + ud * ud);  // M itself, for the dof-space solve (PrimalSolve)
   chol_inv_diag_.resize(ud);
   for (std::size_t j = 0; j < ud; ++j) {
     double s = m[j * ud + j];
@@ -83,7 +83,7 @@ void PlanarMass::free_velocities(PlanarKinematics& kin, double h, std::vector<do
   btMultiBody& t = *tree_;
   if (check) {
     // Bullet's pass at the same state without a step (dt 0): its q̈ in scratch_r[dofs + 6…]
-    // (and the articulated inertias that check_planar_mass() solves with).
+    // (and the articulated inertias that check_against_bullet() solves with).
     t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(0, scratch.r, scratch.v, scratch.m, false, false, false);
     bullet_qdd_.assign(&scratch.r[static_cast<int>(dofs_)] + 6, &scratch.r[static_cast<int>(dofs_)] + 6 + dofs_);
   }

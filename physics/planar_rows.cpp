@@ -4,16 +4,16 @@
 
 #include "physics/planar_mass.hpp"
 
-// solver.mass_matrix planar, the rows' side: the diagonal of A = J·M⁻¹·Jᵀ, G = L⁻¹·Jᵀ and the
-// dense A for the row-space solves (the active set's and Dantzig's fallbacks), the folded
-// row-space solve, and the velocity change of given impulses (world_planar_mass.cpp forms M and
-// its factor L; world_primal_solve.cpp solves the rows in the coordinates' space).
+// solver.mass_matrix planar, the rows' side of PlanarMass: the diagonal of A = J·M⁻¹·Jᵀ, G = L⁻¹·Jᵀ
+// and the dense A for the row-space solves (the folded solve's and Dantzig's), the velocity
+// change of given impulses, the links' kinetic energy (planar_mass.cpp forms M and its factor L;
+// primal_solve.cpp solves the rows in the coordinates' space).
 namespace gearsim::physics {
 
 // solver.mass_matrix planar: row r's diagonal of A = J·M⁻¹·Jᵀ, |L⁻¹·J_rᵀ|² (L of
-// planar_free_velocities(), this step's pose), where its compliance is taken relative to it (a
+// free_velocities(), this step's pose), where its compliance is taken relative to it (a
 // row without a spring: a motor, sticking friction). The rows themselves are solved in the
-// coordinates' space (solve_rows_primal), without G = L⁻¹·Jᵀ; planar_g() forms G for the
+// coordinates' space (PrimalSolve), without G = L⁻¹·Jᵀ; g() forms G for the
 // row-space solves (the fallbacks).
 double PlanarMass::diag_a(const RowSystem& rows, std::size_t r) {
   const std::size_t ud = dofs_;
@@ -30,7 +30,7 @@ double PlanarMass::diag_a(const RowSystem& rows, std::size_t r) {
   return sum;
 }
 
-// G = L⁻¹·Jᵀ of this step's rows, for the row-space solves (solve_rows_folded, planar_full_a).
+// G = L⁻¹·Jᵀ of this step's rows, for the row-space solves (FoldedSolve, full_a()).
 // Kept by coordinate (dofs × rows): the substitutions run over all rows at once, one coordinate
 // after the other, instead of one row's chain of dependent divisions after the other's.
 const std::vector<double>& PlanarMass::g(const RowSystem& rows) {

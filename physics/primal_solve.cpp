@@ -31,7 +31,7 @@ double dot(const double* a, const double* b, std::size_t n) {
 }  // namespace
 
 // Which of this step's rows enter K (soft springs) and which the Schur system of
-// solve_rows_primal() (the rest): once per step, after the rows' compliances (the rows and
+// the dof-space solve (the rest): once per step, after the rows' compliances (the rows and
 // their compliances stay the step's through the slip reversals' solves again). A_ii ≤
 // trace(M⁻¹)·|J_i|² (M⁻¹ is positive definite), trace(M⁻¹) = ‖L⁻¹‖²_F: the exact A_ii only where
 // that bound leaves the question open.
