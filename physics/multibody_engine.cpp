@@ -32,8 +32,8 @@
 namespace gearsim::physics {
 namespace {
 
-void set_joint_velocities(btMultiBody& t, const std::vector<double>& v) {
-  for (int l = 0; l < t.getNumLinks(); ++l) t.setJointVelMultiDof(l, v.data() + t.getLink(l).m_dofOffset);
+void set_joint_velocities(btMultiBody& t, const double* v) {
+  for (int l = 0; l < t.getNumLinks(); ++l) t.setJointVelMultiDof(l, v + t.getLink(l).m_dofOffset);
 }
 
 const char* const kWho = "scenario: solver.engine multibody: ";
@@ -90,11 +90,8 @@ std::vector<int> link_order(const std::vector<BuiltBody>& bodies, const std::vec
 // joint turns about z (the planar path).
 void MultibodyEngine::set_options() {
   const Scenario& scenario = model_.scenario;
-  bdf2_ = scenario.solver.integrator == SolverDef::Integrator::bdf2;
-  trapezoid_closed_ = scenario.solver.integrator == SolverDef::Integrator::trapezoid_closed;
-  theta_ = bdf2_ ? 1.0 : trapezoid_closed_ ? 0.5 : scenario.solver.theta;
-  h_eff_ = h_step_ = scenario.solver.time_step_s;
-  onset_ = OnsetSplit(scenario.solver.locate_contact_onset && !bdf2_);  // BDF2's history assumes equal steps
+  integ_ = Integrator(scenario.solver, dofs_);
+  onset_ = OnsetSplit(scenario.solver.locate_contact_onset && !integ_.bdf2());  // BDF2's history assumes equal steps
   active_ = ActiveSetSolve(scenario.solver.row_solver == SolverDef::RowSolver::active_set);
   slip_ = SlipFriction(scenario.contact.friction_model == ContactDef::FrictionModel::sliding);
   planar_ = true;
@@ -154,7 +151,6 @@ void MultibodyEngine::build_tree() {
   dofs_ = t.getNumDofs();
   rows_.dofs = static_cast<std::size_t>(dofs_);
   buf_.assign(static_cast<std::size_t>(6 + dofs_), 0);
-  v_mid_.assign(static_cast<std::size_t>(dofs_), 0);
   set_options();
   out_.assign(static_cast<std::size_t>(6 + dofs_), 0);
   scratch_.omega.assign(order.size() + 1, btVector3(0, 0, 0));
@@ -193,14 +189,14 @@ void MultibodyEngine::apply_loads_and_impulses() {
   }
 }
 
-// Bullet's position step of the tree (moved with v_mid_ where `mid`, else with its velocities),
+// Bullet's position step of the tree (moved with the integrator's v_mid where `mid`, else with its velocities),
 // then the links' poses and velocities onto the rigid bodies, which measuring and rendering read.
 void MultibodyEngine::bullet_step_positions(double h, bool mid) {
   btMultiBody& t = *tree_;
   if (mid) {
-    set_joint_velocities(t, v_mid_);
+    set_joint_velocities(t, integ_.v_mid().data());
     t.stepPositionsMultiDof(h);
-    set_joint_velocities(t, v_end_);
+    set_joint_velocities(t, integ_.v_end().data());
   } else {
     t.stepPositionsMultiDof(h);
   }
@@ -222,47 +218,24 @@ void MultibodyEngine::bullet_step_positions(double h, bool mid) {
 // One step (or sub-step) of length h from the contacts generate_contacts() found at its start.
 void MultibodyEngine::advance(double h) {
   btMultiBody& t = *tree_;
-  const bool two_step = bdf2_ && has_history_;
-  h_step_ = h;
-  h_eff_ = two_step ? 2 * h / 3 : h;
+  const double* v_hat = integ_.start(h, t.getVelocityVector() + 6);
   apply_loads_and_impulses();
-  v_start_.assign(t.getVelocityVector() + 6, t.getVelocityVector() + 6 + dofs_);
-  if (two_step) {  // BDF2 starts from v̂ = (4v − v_prev)/3
-    for (int k = 0; k < dofs_; ++k)
-      v_mid_[static_cast<std::size_t>(k)] = (4 * v_start_[static_cast<std::size_t>(k)] - v_prev_[static_cast<std::size_t>(k)]) / 3;
-    set_joint_velocities(t, v_mid_);
-  }
+  if (v_hat) set_joint_velocities(t, v_hat);  // BDF2 starts from v̂
   // Velocities after the external and gyroscopic forces alone: for a planar tree with the planar
   // mass matrix from it (which the rows then use), else by Bullet's articulated-body pass.
-  if (planar_mass_) mass_.free_velocities(kin_, h_eff_, buf_, scratch_, check_mass_ ? &mass_check_ : nullptr);
-  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h_eff_, scratch_.r, scratch_.v, scratch_.m, false, false, false);
+  const double h_eff = integ_.h_eff();
+  if (planar_mass_) mass_.free_velocities(kin_, h_eff, buf_, scratch_, check_mass_ ? &mass_check_ : nullptr);
+  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h_eff, scratch_.r, scratch_.v, scratch_.m, false, false, false);
   if (planar_mass_ && check_mass_) kin_.keep_step_start(h);  // the check steps Bullet from here
   const std::uint64_t solve_start = state_.clock.now();
   build_rows();
   solve_rows();
   state_.row_solve_ticks += state_.clock.now() - solve_start;
-  // The positions move with v_move (BDF2), the θ-weighted mean of the start and end velocities,
-  // or v⁺; the velocities stay v⁺. On the planar path by its own kinematics (which also set the
-  // links' and bodies' poses and velocities), else by Bullet's.
+  // The positions move with the integrator's velocities (v⁺ itself for implicit Euler); the
+  // velocities stay v⁺. On the planar path by its own kinematics (which also set the links' and
+  // bodies' poses and velocities), else by Bullet's.
   const double* v_end = t.getVelocityVector() + 6;
-  const double* v_positions = v_end;
-  if (bdf2_) {
-    // x⁺ = (4x − x_prev)/3 + h_eff·v⁺ = x + h·v_move, v_move = (v_move_prev + 2v⁺)/3.
-    v_end_.assign(v_end, v_end + dofs_);
-    for (int k = 0; k < dofs_; ++k) {
-      const std::size_t u = static_cast<std::size_t>(k);
-      v_mid_[u] = two_step ? (v_move_[u] + 2 * v_end_[u]) / 3 : v_end_[u];
-    }
-    v_positions = v_mid_.data();
-    v_prev_ = v_start_;
-    v_move_ = v_mid_;
-    has_history_ = true;
-  } else if (theta_ < 1) {
-    v_end_.assign(v_end, v_end + dofs_);
-    for (int k = 0; k < dofs_; ++k)
-      v_mid_[static_cast<std::size_t>(k)] = (1 - theta_) * v_start_[static_cast<std::size_t>(k)] + theta_ * v_end_[static_cast<std::size_t>(k)];
-    v_positions = v_mid_.data();
-  }
+  const double* v_positions = integ_.position_velocities(v_end);
   if (planar_mass_) {
     if (check_mass_) kin_.keep_position_velocities(v_positions);
     kin_.step_positions(h, v_positions);

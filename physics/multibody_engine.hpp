@@ -4,10 +4,10 @@
 // torsional springs, motors (multibody_rows.hpp) — by the row solvers (row_solvers.hpp), with the
 // planar mass matrix and kinematics on a tree turning about z (planar_mass.hpp,
 // planar_kinematics.hpp), sliding friction (slip_friction.hpp) and the step split at a contact's
-// onset (onset_split.hpp). Its sources: multibody_engine.cpp (building, stepping),
-// multibody_rows.cpp, multibody_integrator.cpp, multibody_solve.cpp, planar_*.cpp,
-// primal_solve.cpp, slip_friction.cpp, onset_split.cpp. Not the rigid_bodies engine
-// (rigid_body_engine.hpp). Internal to physics/.
+// onset (onset_split.hpp), integrated as solver.integrator says (multibody_integrator.hpp). Its
+// own sources: multibody_engine.cpp (building, stepping), multibody_rows.cpp (the rows, what they
+// did), multibody_solve.cpp (the rows' problem, the solvers in turn). Not the rigid_bodies
+// engine (rigid_body_engine.hpp). Internal to physics/.
 #pragma once
 
 #include <btBulletDynamicsCommon.h>
@@ -21,6 +21,7 @@
 #include "physics/bullet_scratch.hpp"
 #include "physics/engine.hpp"
 #include "physics/folded_solve.hpp"
+#include "physics/multibody_integrator.hpp"
 #include "physics/multibody_rows.hpp"
 #include "physics/onset_split.hpp"
 #include "physics/planar_kinematics.hpp"
@@ -56,14 +57,12 @@ class MultibodyEngine final : public Engine {
   void generate_contacts();
   void measure_joints();
   double kinetic_energy_J() const;
-  // The rows and what they did (multibody_rows.cpp), their integration (multibody_integrator.cpp).
+  // The rows and what they did (multibody_rows.cpp).
   void build_rows();
   void bullet_link_jacobians();
   void contact_rows(RowBuilder& rb);
   void bearing_rows(RowBuilder& rb, std::size_t joint);
   void results();
-  MultibodyRow spring_row(double k, double c, double force0) const;
-  double trapezoid_closed_theta();
   // The solve (multibody_solve.cpp): the rows' problem, then the row solvers in turn.
   void solve_rows();
   bool solve_rows_active_set();
@@ -88,19 +87,7 @@ class MultibodyEngine final : public Engine {
   bool planar_ = false;       // every joint axis along z: rows from the links' Jacobians
   bool planar_mass_ = false;  // solver.mass_matrix planar on a planar tree: mass_ and kin_
   std::vector<double> link_jac_;  // planar tree, articulated path: per link rows ω_z, v_x, v_y over the dofs
-  // The integrator (multibody_integrator.cpp): θ (spring rows at s + θ·h·ṡ_θ, positions with
-  // (1 − θ)·v + θ·v⁺; 1: implicit Euler); BDF2 (solver.integrator bdf2): v⁺ = v̂ + h_eff·M⁻¹·F(x⁺,
-  // v⁺), x⁺ = x + h·v_move with v̂ = (4v − v_prev)/3, h_eff = 2h/3, v_move = (v_move_prev + 2v⁺)/3,
-  // implicit Euler until there is a step behind; trapezoid_closed: θ per step, ½ while every
-  // contact stays closed, else more.
-  double theta_ = 1;
-  bool bdf2_ = false, has_history_ = false, trapezoid_closed_ = false;
-  double h_eff_ = 0;   // this step's h_eff (h for the θ-method)
-  double h_step_ = 0;  // this (sub)step's length, s
-  std::vector<double> v_start_, v_end_, v_mid_;  // joint velocities at the step's start, end, mean
-  std::vector<double> v_prev_, v_move_;          // BDF2: v at the last step's start; the last step's v_move
-  Eigen::VectorXd v_theta_;
-  std::vector<ContactKey> touching_, touching_before_;  // trapezoid_closed: this step's contacts, the last's
+  Integrator integ_;
   RowSystem rows_;
   PlanarKinematics kin_;
   PlanarMass mass_;

@@ -102,7 +102,7 @@ void MultibodyEngine::contact_rows(RowBuilder& rb) {
       const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
       const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
       const double k = cs.stiffness_N_per_m;
-      MultibodyRow r = spring_row(k, contact_damping(model_, pr, k), k * c.depth_m);
+      MultibodyRow r = integ_.spring_row(k, contact_damping(model_, pr, k), k * c.depth_m);
       r.kind = MultibodyRow::contact_normal;
       r.owner = static_cast<int>(state_.contacts.size() - 1);
       r.lo = 0;
@@ -139,7 +139,7 @@ void MultibodyEngine::bearing_rows(RowBuilder& rb, std::size_t j) {
   const btVector3 e1 = unit_perpendicular(axis), e2 = axis.cross(e1);
   for (const btVector3& d : {e1, e2}) {
     if (!(bd.radial_stiffness_N_per_m > 0 || bd.radial_damping_N_s_per_m > 0)) break;
-    MultibodyRow r = spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m, -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
+    MultibodyRow r = integ_.spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m, -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
     r.kind = MultibodyRow::bearing;
     r.owner = static_cast<int>(j);
     r.lo = -kInfinity;
@@ -149,7 +149,7 @@ void MultibodyEngine::bearing_rows(RowBuilder& rb, std::size_t j) {
     rb.add_point(row, parent_link, housing, d, -1);
   }
   if (bd.torsional_stiffness_N_m_per_rad > 0 || bd.torsional_damping_N_m_s_per_rad > 0) {
-    MultibodyRow r = spring_row(bd.torsional_stiffness_N_m_per_rad, bd.torsional_damping_N_m_s_per_rad,
+    MultibodyRow r = integ_.spring_row(bd.torsional_stiffness_N_m_per_rad, bd.torsional_damping_N_m_s_per_rad,
                                   -bd.torsional_stiffness_N_m_per_rad * tree_->getJointPosMultiDof(link)[0]);
     r.kind = MultibodyRow::torsion;
     r.owner = static_cast<int>(j);
@@ -163,7 +163,7 @@ void MultibodyEngine::bearing_rows(RowBuilder& rb, std::size_t j) {
 void MultibodyEngine::build_rows() {
   const int dofs = dofs_;
   rows_.rows.clear();
-  if (trapezoid_closed_) theta_ = trapezoid_closed_theta();
+  integ_.choose_theta(model_, state_);
   state_.contacts.clear();
   rows_.jrows.clear();
   // A planar tree (every joint axis along z): each link's spin rate and centre velocity as rows
@@ -181,9 +181,9 @@ void MultibodyEngine::build_rows() {
       MultibodyRow r;
       r.kind = MultibodyRow::motor;
       r.owner = static_cast<int>(j);
-      r.target = motor_target_rad_s(*jr.motor, state_.time + h_step_);  // the speed at the (sub)step's end
-      r.lo = -jr.motor->max_torque_N_m * h_eff_;  // impulses are force × h_eff
-      r.hi = jr.motor->max_torque_N_m * h_eff_;
+      r.target = motor_target_rad_s(*jr.motor, state_.time + integ_.h_step());  // the speed at the (sub)step's end
+      r.lo = -jr.motor->max_torque_N_m * integ_.h_eff();  // impulses are force × h_eff
+      r.hi = jr.motor->max_torque_N_m * integ_.h_eff();
       rows_.jrows[rb.new_row(r) * static_cast<std::size_t>(dofs) + static_cast<std::size_t>(dof)] = 1;
     }
   }
@@ -193,17 +193,14 @@ void MultibodyEngine::build_rows() {
 
 // Forces, motor torques and power flows of the step just taken (velocities after it).
 void MultibodyEngine::results() {
-  const double h = h_step_;
+  const double h = integ_.h_step(), h_eff = integ_.h_eff();
   // Work of a row over the step: its force times its travel, h·J·v_θ (positions moved with v_θ).
-  const Eigen::Map<const Eigen::VectorXd> v_end(tree_->getVelocityVector() + 6, dofs_), v_start(v_start_.data(), dofs_);
-  if (bdf2_) v_theta_ = Eigen::Map<const Eigen::VectorXd>(v_move_.data(), dofs_);  // BDF2: positions moved with v_move
-  else v_theta_.noalias() = (1 - theta_) * v_start + theta_ * v_end;
-  const Eigen::VectorXd& v = v_theta_;
+  const Eigen::VectorXd& v = integ_.work_velocities(tree_->getVelocityVector() + 6);
   PowerFlows pw;
   std::fill(motor_torque_.begin(), motor_torque_.end(), 0.0);
   for (std::size_t r = 0; r < rows_.rows.size(); ++r) {
     const MultibodyRow& row = rows_.rows[r];
-    const double force = rows_.x[r] / h_eff_, rate = rows_.row_dot(r, v.data());
+    const double force = rows_.x[r] / h_eff, rate = rows_.row_dot(r, v.data());
     switch (row.kind) {
       case MultibodyRow::contact_normal:
         state_.contacts[static_cast<std::size_t>(row.owner)].normal_force_N = force;

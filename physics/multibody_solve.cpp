@@ -38,10 +38,10 @@ void MultibodyEngine::solve_rows() {
     rows_.minv_jt.noalias() = rows_.inverse_mass * rows_.jac.transpose();
     a.noalias() = rows_.jac * rows_.minv_jt;
   }
-  const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs), v_start(v_start_.data(), dofs);
+  const Eigen::Map<const Eigen::VectorXd> v_pred(t.getVelocityVector() + 6, dofs), v_start(integ_.v_start().data(), dofs);
   rows_.rows_times(v_pred.data(), rows_.row_rate);
   rows_.rows_times(v_start.data(), rows_.row_rate_start);
-  if (bdf2_ && has_history_) rows_.rows_times(v_move_.data(), rows_.row_rate_move);
+  if (integ_.two_step()) rows_.rows_times(integ_.v_move().data(), rows_.row_rate_move);
   const Eigen::VectorXd &j_v = rows_.row_rate, &j_v_start = rows_.row_rate_start;
   rows_.b.resize(static_cast<std::size_t>(n));
   rows_.w.assign(static_cast<std::size_t>(n), 0);
@@ -64,7 +64,7 @@ void MultibodyEngine::solve_rows() {
     rows_.findex[static_cast<std::size_t>(i)] = r.friction_of;
     // sliding: a contact sliding at the step's start is solved with μ·λ_n against that slip
     // first (a fixed multiple of its normal: lo = hi); one starting without slip keeps the box.
-    if (slip_.on()) slip_.start_row(rows_, static_cast<std::size_t>(i), state_.contacts, j_v_start(i), h_step_);
+    if (slip_.on()) slip_.start_row(rows_, static_cast<std::size_t>(i), state_.contacts, j_v_start(i), integ_.h_step());
     // Friction held at a multiple of its normal's impulse is no unknown of the solve: its
     // compliance is never used (0).
     if (planar_mass_)
@@ -123,7 +123,7 @@ bool MultibodyEngine::locate_slip_reversals(bool solved) {
   }
   // Each contact's slip at the step's end on this step's rows, for the next step's drift.
   if (!dv_of_x) velocity_change_of_x(dv.data());
-  slip_.record_end_slips(rows_, state_.contacts, dv.data(), h_step_);
+  slip_.record_end_slips(rows_, state_.contacts, dv.data(), integ_.h_step());
   return solved;
 }
 
