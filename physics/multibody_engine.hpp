@@ -46,8 +46,6 @@ class MultibodyEngine final : public Engine {
   const World::MassMatrixCheck& mass_matrix_check() const override { return mass_check_; }
 
  private:
-  struct RowBuilder;
-
   // Building and stepping (multibody_engine.cpp).
   void build_tree();
   void set_options();
@@ -60,8 +58,6 @@ class MultibodyEngine final : public Engine {
   // The rows and what they did (multibody_rows.cpp).
   void build_rows();
   void bullet_link_jacobians();
-  void contact_rows(RowBuilder& rb);
-  void bearing_rows(RowBuilder& rb, std::size_t joint);
   void results();
   // The solve (multibody_solve.cpp): the rows' problem, then the row solvers in turn.
   void solve_rows();

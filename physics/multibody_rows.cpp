@@ -42,23 +42,30 @@ void MultibodyEngine::bullet_link_jacobians() {
   }
 }
 
-// Appends rows to rows_.rows with their Jacobians in rows_.jrows (grown row by row).
-struct MultibodyEngine::RowBuilder {
-  MultibodyEngine& e;
+namespace {
+
+// Appends rows to rows.rows with their Jacobians in rows.jrows (grown row by row).
+struct RowBuilder {
+  RowSystem& rows;
+  btMultiBody& tree;
+  std::vector<double>& buf;  // the tree's 6 + dofs scratch
+  BulletScratch& scratch;
+  bool planar;                   // a planar tree: rows from link_jac
+  const PlanarKinematics* kin;   // the planar kinematics' links (solver.mass_matrix planar), else nullptr
+  const double* link_jac;        // per link: rows ω_z, v_x, v_y over the coordinates (planar trees)
   std::size_t ud;
-  const double* link_jac;  // per link: rows ω_z, v_x, v_y over the coordinates (planar trees)
   // J of the velocity of `point` (world) on the body of link `link`, along `dir`, added × sign.
   void add_point(std::size_t row, int link, const btVector3& point, const btVector3& dir, double sign) {
     if (link < 0) return;
-    btMultiBody& t = *e.tree_;
-    double* out = e.rows_.jrows.data() + row * ud;
-    if (e.planar_) {
+    btMultiBody& t = tree;
+    double* out = rows.jrows.data() + row * ud;
+    if (planar) {
       const btVector3 r = point - t.getLink(link).m_cachedWorldTransform.getOrigin();
       const double* jl = link_jac + static_cast<std::size_t>(link) * 3 * ud;
       const double w = sign * (r.x() * dir.y() - r.y() * dir.x()), wx = sign * dir.x(), wy = sign * dir.y();
-      if (e.planar_mass_) {
+      if (kin) {
         // Only the coordinates on the link's chain: PlanarKinematics::link_jacobians() leaves the others 0.
-        for (const int d : e.kin_.link_dofs(static_cast<std::size_t>(link))) {
+        for (const int d : kin->link_dofs(static_cast<std::size_t>(link))) {
           const std::size_t k = static_cast<std::size_t>(d);
           out[k] += w * jl[k] + wx * jl[ud + k] + wy * jl[2 * ud + k];
         }
@@ -67,27 +74,27 @@ struct MultibodyEngine::RowBuilder {
       for (std::size_t k = 0; k < ud; ++k) out[k] += w * jl[k] + wx * jl[ud + k] + wy * jl[2 * ud + k];
       return;
     }
-    t.fillContactJacobianMultiDof(link, point, dir, e.buf_.data(), e.scratch_.r, e.scratch_.v, e.scratch_.m);
-    for (std::size_t k = 0; k < ud; ++k) out[k] += sign * e.buf_[6 + k];
+    t.fillContactJacobianMultiDof(link, point, dir, buf.data(), scratch.r, scratch.v, scratch.m);
+    for (std::size_t k = 0; k < ud; ++k) out[k] += sign * buf[6 + k];
   }
   std::size_t new_row(const MultibodyRow& r) {
-    e.rows_.rows.push_back(r);
-    e.rows_.jrows.resize(e.rows_.rows.size() * ud, 0.0);
-    return e.rows_.rows.size() - 1;
+    rows.rows.push_back(r);
+    rows.jrows.resize(rows.rows.size() * ud, 0.0);
+    return rows.rows.size() - 1;
   }
 };
 
 // A row per kept tooth contact's normal (a unilateral spring) and, with friction, one along its
-// tangent; each contact also recorded in state_.contacts.
-void MultibodyEngine::contact_rows(RowBuilder& rb) {
-  const double mu = model_.scenario.contact.friction;
-  for (std::size_t p = 0; p < model_.pairs.size(); ++p) {
-    const ModelPair& pr = model_.pairs[p];
-    const PairContacts& pc = state_.pairs[p];
-    const BuiltBody &a = model_.bodies[static_cast<std::size_t>(pr.a)], &b = model_.bodies[static_cast<std::size_t>(pr.b)];
-    const int la = link_of_body_[static_cast<std::size_t>(pr.a)], lb = link_of_body_[static_cast<std::size_t>(pr.b)];
+// tangent; each contact also recorded in state.contacts.
+void contact_rows(RowBuilder& rb, const Model& model, State& state, const std::vector<int>& link_of_body, const Integrator& integ) {
+  const double mu = model.scenario.contact.friction;
+  for (std::size_t p = 0; p < model.pairs.size(); ++p) {
+    const ModelPair& pr = model.pairs[p];
+    const PairContacts& pc = state.pairs[p];
+    const BuiltBody &a = model.bodies[static_cast<std::size_t>(pr.a)], &b = model.bodies[static_cast<std::size_t>(pr.b)];
+    const int la = link_of_body[static_cast<std::size_t>(pr.a)], lb = link_of_body[static_cast<std::size_t>(pr.b)];
     // The contact plane's height: a planar tree's rows use the points' x and y only.
-    const double z = planar_ ? 0.0
+    const double z = rb.planar ? 0.0
                               : 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
                                        (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     for (std::size_t i = 0; i < pc.found.size(); ++i) {
@@ -97,14 +104,14 @@ void MultibodyEngine::contact_rows(RowBuilder& rb) {
       cs.pair = static_cast<int>(p);
       cs.geometry = c;
       cs.stiffness_N_per_m = pc.pair_stiffness[i];
-      state_.contacts.push_back(cs);
+      state.contacts.push_back(cs);
       const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
       const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
       const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
       const double k = cs.stiffness_N_per_m;
-      MultibodyRow r = integ_.spring_row(k, contact_damping(model_, pr, k), k * c.depth_m);
+      MultibodyRow r = integ.spring_row(k, contact_damping(model, pr, k), k * c.depth_m);
       r.kind = MultibodyRow::contact_normal;
-      r.owner = static_cast<int>(state_.contacts.size() - 1);
+      r.owner = static_cast<int>(state.contacts.size() - 1);
       r.lo = 0;
       r.hi = kInfinity;
       const std::size_t normal = rb.new_row(r);
@@ -127,19 +134,20 @@ void MultibodyEngine::contact_rows(RowBuilder& rb) {
 
 // A bearing's rows: two radial springs on its centre's displacement from the housing, and a
 // torsional one on its spin coordinate where it has one.
-void MultibodyEngine::bearing_rows(RowBuilder& rb, std::size_t j) {
-  const ModelJoint& jr = model_.joints[j];
+void bearing_rows(RowBuilder& rb, const Model& model, const Integrator& integ, std::size_t j, const std::vector<int>& link_of_body,
+                  const std::vector<int>& dof_of_joint, const std::vector<btVector3>& pivot_in_body, const std::vector<btVector3>& pivot_in_parent) {
+  const ModelJoint& jr = model.joints[j];
   const BearingDef& bd = *jr.def.bearing;
-  const int link = link_of_body_[static_cast<std::size_t>(jr.body)];
-  const bool on_body = jr.parent >= 0 && link_of_body_[static_cast<std::size_t>(jr.parent)] >= 0;
-  const int parent_link = on_body ? link_of_body_[static_cast<std::size_t>(jr.parent)] : -1;
-  const btVector3 centre = model_.bodies[static_cast<std::size_t>(jr.body)].rigid->getWorldTransform() * pivot_in_body_[j];
-  const btVector3 housing = on_body ? model_.bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() * pivot_in_parent_[j] : pivot_in_parent_[j];
+  const int link = link_of_body[static_cast<std::size_t>(jr.body)];
+  const bool on_body = jr.parent >= 0 && link_of_body[static_cast<std::size_t>(jr.parent)] >= 0;
+  const int parent_link = on_body ? link_of_body[static_cast<std::size_t>(jr.parent)] : -1;
+  const btVector3 centre = model.bodies[static_cast<std::size_t>(jr.body)].rigid->getWorldTransform() * pivot_in_body[j];
+  const btVector3 housing = on_body ? model.bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() * pivot_in_parent[j] : pivot_in_parent[j];
   const btVector3 axis = bt(jr.axis_world);
   const btVector3 e1 = unit_perpendicular(axis), e2 = axis.cross(e1);
   for (const btVector3& d : {e1, e2}) {
     if (!(bd.radial_stiffness_N_per_m > 0 || bd.radial_damping_N_s_per_m > 0)) break;
-    MultibodyRow r = integ_.spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m, -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
+    MultibodyRow r = integ.spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m, -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
     r.kind = MultibodyRow::bearing;
     r.owner = static_cast<int>(j);
     r.lo = -kInfinity;
@@ -149,15 +157,17 @@ void MultibodyEngine::bearing_rows(RowBuilder& rb, std::size_t j) {
     rb.add_point(row, parent_link, housing, d, -1);
   }
   if (bd.torsional_stiffness_N_m_per_rad > 0 || bd.torsional_damping_N_m_s_per_rad > 0) {
-    MultibodyRow r = integ_.spring_row(bd.torsional_stiffness_N_m_per_rad, bd.torsional_damping_N_m_s_per_rad,
-                                  -bd.torsional_stiffness_N_m_per_rad * tree_->getJointPosMultiDof(link)[0]);
+    MultibodyRow r = integ.spring_row(bd.torsional_stiffness_N_m_per_rad, bd.torsional_damping_N_m_s_per_rad,
+                                  -bd.torsional_stiffness_N_m_per_rad * rb.tree.getJointPosMultiDof(link)[0]);
     r.kind = MultibodyRow::torsion;
     r.owner = static_cast<int>(j);
     r.lo = -kInfinity;
     r.hi = kInfinity;
-    rows_.jrows[rb.new_row(r) * rb.ud + static_cast<std::size_t>(dof_of_joint_[j])] = 1;
+    rb.rows.jrows[rb.new_row(r) * rb.ud + static_cast<std::size_t>(dof_of_joint[j])] = 1;
   }
 }
+
+}  // namespace
 
 // The rows of this step: their Jacobians (rows_.jrows), compliances, targets and bounds.
 void MultibodyEngine::build_rows() {
@@ -171,12 +181,13 @@ void MultibodyEngine::build_rows() {
   // a combination of the three (v_p = v_c + ω × r), without walking the tree per row. With the
   // planar mass matrix, the planar kinematics built them for this pose.
   if (!planar_mass_ && planar_) bullet_link_jacobians();
-  RowBuilder rb{*this, static_cast<std::size_t>(dofs), planar_mass_ ? kin_.link_jac().data() : link_jac_.data()};
-  contact_rows(rb);
+  RowBuilder rb{rows_, *tree_, buf_, scratch_, planar_, planar_mass_ ? &kin_ : nullptr,
+                planar_mass_ ? kin_.link_jac().data() : link_jac_.data(), static_cast<std::size_t>(dofs)};
+  contact_rows(rb, model_, state_, link_of_body_, integ_);
   for (std::size_t j = 0; j < model_.joints.size(); ++j) {
     const ModelJoint& jr = model_.joints[j];
     const int dof = dof_of_joint_[j];
-    if (jr.def.bearing) bearing_rows(rb, j);
+    if (jr.def.bearing) bearing_rows(rb, model_, integ_, j, link_of_body_, dof_of_joint_, pivot_in_body_, pivot_in_parent_);
     if (jr.motor) {
       MultibodyRow r;
       r.kind = MultibodyRow::motor;
