@@ -3,8 +3,6 @@
 #include "core/errors.hpp"
 #include "physics/engine.hpp"
 #include "physics/model.hpp"
-#include "physics/multibody_engine.hpp"
-#include "physics/rigid_body_engine.hpp"
 #include "physics/state.hpp"
 
 // World: the model built from the scenario, the state it starts in and the engine that steps it
@@ -17,16 +15,6 @@ struct World::Impl {
   State state;
   std::unique_ptr<Engine> engine;  // destroyed first: it takes its objects out of Bullet's world
 };
-
-const World::MassMatrixCheck& Engine::mass_matrix_check() const {
-  static const World::MassMatrixCheck kNone;
-  return kNone;
-}
-
-std::unique_ptr<Engine> make_engine(const Model& model, State& state) {
-  if (model.scenario.solver.engine == SolverEngine::multibody) return std::make_unique<MultibodyEngine>(model, state);
-  return std::make_unique<RigidBodyEngine>(model, state);
-}
 
 World::World(const Scenario& s) : impl_(std::make_unique<Impl>(s)) {}
 
