@@ -29,7 +29,7 @@ class CoherentToothSearch {
   // near_bound(); docs/tooth-contact.md, "Near pairs: the osculating-circle bound") is taken
   // from the poses alone, whatever their motion since the solve. With `near` a pair is parked only when `motion` is given too, and
   // only while it also cannot close within two steps at the present velocities: the near list
-  // is what predicts a contact's onset (World's contact_onset_s()), and a parked pair is one it
+  // is what predicts a contact's onset (physics' OnsetSplit::onset_s()), and a parked pair is one it
   // would not have split a step for.
   struct PlanarTwist {
     Eigen::Vector2d velocity_m_s = Eigen::Vector2d::Zero();  // the gear centre's (PlanarPose::centre_m), world

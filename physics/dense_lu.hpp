@@ -1,5 +1,5 @@
 // LU factorisation with partial pivoting of a small dense row-major matrix, and its solves: the
-// row solves' linear algebra (physics/row_lcp.cpp on the rows, world_primal_solve.cpp on the
+// row solves' linear algebra (physics/row_lcp.cpp on the rows, primal_solve.cpp on the
 // coordinates). Internal to physics/.
 #pragma once
 

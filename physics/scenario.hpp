@@ -215,7 +215,7 @@ struct ContactDef {
 // motors and tooth contacts rows of the sequential-impulse solver (`iterations` sweeps).
 // `multibody`: the joint tree in reduced coordinates (btMultiBody, Featherstone), joints exact by
 // construction; tooth contacts (with friction), bearing springs and motors rows of one direct
-// (Dantzig) solve per step, exact whatever `iterations` says (physics/world_multibody.cpp).
+// (Dantzig) solve per step, exact whatever `iterations` says (physics/multibody_engine.hpp).
 enum class SolverEngine { rigid_bodies, multibody };
 
 

@@ -151,9 +151,9 @@ class World {
     long steps = 0;
     double identity_residual = 0, jacobian_difference = 0;
     // |v* − v*_Bullet| / max(|v*_Bullet − v|, ε): the velocities after the applied forces alone
-    // (planar_free_velocities) against Bullet's articulated-body pass, relative to the change.
+    // (PlanarMass::free_velocities) against Bullet's articulated-body pass, relative to the change.
     double free_velocity_difference = 0;
-    // The rows' impulses of the dof-space solve (solve_rows_primal) against the folded row-space
+    // The rows' impulses of the dof-space solve (PrimalSolve) against the folded row-space
     // solve's from the same bound states: max |Δλ| / max |λ| over the solves compared.
     // Fallbacks: the dof-space solve did not settle; of them, settled by the row-space solve.
     long row_solves_compared = 0, row_solve_fallbacks = 0, row_solve_fallbacks_settled = 0;
@@ -162,7 +162,7 @@ class World {
     // where that solve settled) against M⁻¹·Jᵀ·λ from the same impulses: max |Δdv| / max |dv|.
     long velocity_changes_compared = 0;
     double velocity_change_difference = 0;
-    // The planar kinematics (world_planar_kinematics.cpp) against Bullet's position step, forward
+    // The planar kinematics (planar_kinematics.hpp) against Bullet's position step, forward
     // kinematics and link velocities from the same coordinates: the largest coordinate
     // difference, link centre distance (m), basis row difference and link velocity difference
     // (rad/s, m/s), over kinematics_steps steps.

@@ -1,10 +1,11 @@
 // Building Bullet rigid bodies from body definitions: generated gears and CAD meshes become
 // compounds of their exact convex pieces with mass properties from the mesh; gears also get the
-// flank tables tooth contact uses. Internal to physics/ (world.cpp).
+// flank tables tooth contact uses; a body's planar pose. Internal to physics/ (model.cpp).
 #pragma once
 
 #include <btBulletDynamicsCommon.h>
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -15,6 +16,9 @@
 #include "physics/world.hpp"
 
 namespace gearsim::physics {
+
+inline btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+inline Eigen::Vector3d eig(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 struct BuiltBody {
   std::string name;
@@ -60,5 +64,20 @@ double contact_damping_N_s_per_m(double stiffness_N_per_m, double reduced_mass_k
 
 // Tooth-pair stiffness and damping of a meshing pair (the constant stiffness per face width).
 GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactDef& contact);
+
+// Gear-frame pose projected on the common plane (the gear axes must be parallel to world z): its
+// angle from the gear frame's x axis, and that axis normalised in the plane as the angle's cosine
+// and sine (the same rotation to rounding, without libm's sincos of an angle that grows with
+// every turn).
+inline contact::PlanarPose planar_pose(const BuiltBody& b) {
+  const btTransform t = b.rigid->getWorldTransform() * b.com_from_gear;
+  const btVector3 x = t.getBasis().getColumn(0);
+  contact::PlanarPose p{{t.getOrigin().x(), t.getOrigin().y()}, std::atan2(x.y(), x.x())};
+  const double length = std::sqrt(x.x() * x.x() + x.y() * x.y());
+  p.cos_angle = x.x() / length;
+  p.sin_angle = x.y() / length;
+  p.rotation_of_rad = p.angle_rad;
+  return p;
+}
 
 }  // namespace gearsim::physics

@@ -138,7 +138,7 @@ struct NearSweep {
   double max_depth_diff_m = 0, least_slack_m = 1e300, least_ratio = 1e300;
 };
 
-// The closing rate of a near pair as World::Impl::contact_onset_s() takes it: the two gears'
+// The closing rate of a near pair as physics::OnsetSplit::onset_s() takes it: the two gears'
 // velocities at the contact point along its normal.
 double closing_rate(const ToothContact& c, const PlanarPose& pa, const CoherentToothSearch::PlanarTwist& va, const PlanarPose& pb,
                     const CoherentToothSearch::PlanarTwist& vb) {

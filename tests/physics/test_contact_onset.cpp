@@ -1,4 +1,4 @@
-// Contact onset located within the step (solver.locate_contact_onset, physics/world_multibody.cpp,
+// Contact onset located within the step (solver.locate_contact_onset, physics/onset_split.hpp,
 // docs/solver.md "Contact onset"). A tooth pair found overlapping at a step's start has
 // penetrated by δ₀ with no force since it touched: its spring holds ½·k·δ₀² that no work put in
 // (the faulty paper set's re-contact after the thinned tooth closes at ≈ 0.06 m/s: δ₀ up to

@@ -1,4 +1,4 @@
-// The multibody engine (physics/world_multibody.cpp, solver.engine: multibody, the default): the
+// The multibody engine (physics/multibody_engine.hpp, solver.engine: multibody, the default): the
 // joint tree in reduced coordinates and one direct solve of the contact, bearing and motor rows.
 //  - A rigid sun shares its torque between three identical planets exactly: the load each
 //    carries is T_sun/(3·r_b) within 0.1 %, at the default settings (no iteration count to tune;
@@ -225,7 +225,7 @@ TEST(Multibody, ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEverySt
   // World::set_mass_matrix_check: at every step, at the same pose, M from the links' Jacobians
   // times the articulated-body solves' M⁻¹ is the identity, each link Jacobian from the joint
   // axes is Bullet's tree walk's, and the joint accelerations of the applied forces alone
-  // (M·q̈ = Q − c, planar_free_velocities) are Bullet's articulated-body pass's at the same state,
+  // (M·q̈ = Q − c, PlanarMass::free_velocities) are Bullet's articulated-body pass's at the same state,
   // to rounding — on the floating sun (7 coordinates) and on paper_dynamics_bearings (18: planets
   // on bearings on the turning carrier, the carrier on bearings, the ring on springs: planar
   // joints below a rotating link, where the centripetal and Coriolis terms c act). Besides the
@@ -247,7 +247,7 @@ TEST(Multibody, ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEverySt
     EXPECT_LT(c.identity_residual, 1e-13) << scenario;
     EXPECT_LT(c.jacobian_difference, 1e-14) << scenario;
     EXPECT_LT(c.free_velocity_difference, 1e-12) << scenario;
-    // The planar kinematics (world_planar_kinematics.cpp: positions, poses, link velocities in
+    // The planar kinematics (planar_kinematics.cpp: positions, poses, link velocities in
     // closed form) against Bullet's position step, forward kinematics and link velocities from
     // the same coordinates, at every step.
     std::printf("  %s: planar kinematics, %ld steps: coordinates %.2e, centres %.2e m, bases %.2e, link velocities %.2e\n", scenario.c_str(),
@@ -266,7 +266,7 @@ TEST(Multibody, ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEverySt
 }
 
 TEST(Multibody, TheDofSpaceSolveIsTheRowSpaceSolve) {
-  // The rows of a planar tree are solved in its coordinates' space (solve_rows_primal: K = M +
+  // The rows of a planar tree are solved in its coordinates' space (PrimalSolve: K = M +
   // Σ J_f·Jᵀ/D over the spring rows, the stiff rows by their Schur complement); with
   // World::set_mass_matrix_check the folded row-space solve (n × n) runs too from the same bound
   // states, at every step: the same impulses to rounding — with sliding friction folded into the

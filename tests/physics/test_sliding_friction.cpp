@@ -1,4 +1,4 @@
-// Tooth friction in the multibody engine (contact.friction_model, physics/world_multibody.cpp,
+// Tooth friction in the multibody engine (contact.friction_model, physics/slip_friction.hpp,
 // docs/solver.md "Friction at the pitch point"). Gear flanks slide by their kinematics: the
 // sliding speed is (ω_a + ω_b)·(distance of the contact from the pitch point) for an external pair,
 // so friction is μ·λ_n against the slip everywhere but at the pitch point, where it reverses.
