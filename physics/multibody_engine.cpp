@@ -20,7 +20,7 @@
 //   tooth contact, normal    unilateral implicit spring–damper (k, c): impulse λ ≥ 0 with
 //                            λ/h = k·δ⁺ + c·δ̇⁺ at the end of the step (δ⁺ = δ − h·J·v⁺)
 //   tooth contact, friction  in-plane tangent: μ·λ_n against the slip, shared at its reversal
-//                            (contact.friction_model sliding, slip_friction.hpp), or sticking
+//                            (verify.friction_model sliding, slip_friction.hpp), or sticking
 //                            unless |λ_t| would exceed μ·λ_n (stick_slip)
 //   bearing, radial          two bilateral implicit springs (k_r, c_r) on the bearing centre's
 //                            displacement from its housing
@@ -249,7 +249,7 @@ void MultibodyEngine::advance(double h) {
   results();
 }
 
-// One step: split where a near tooth pair touches (solver.locate_contact_onset), else whole.
+// One step: split where a near tooth pair touches (verify.locate_contact_onset), else whole.
 void MultibodyEngine::step() {
   const double h = model_.scenario.solver.time_step_s;
   generate_contacts();

@@ -51,7 +51,7 @@ struct RowBuilder {
   std::vector<double>& buf;  // the tree's 6 + dofs scratch
   BulletScratch& scratch;
   bool planar;                   // a planar tree: rows from link_jac
-  const PlanarKinematics* kin;   // the planar kinematics' links (solver.mass_matrix planar), else nullptr
+  const PlanarKinematics* kin;   // the planar kinematics' links (verify.mass_matrix planar), else nullptr
   const double* link_jac;        // per link: rows ω_z, v_x, v_y over the coordinates (planar trees)
   std::size_t ud;
   // J of the velocity of `point` (world) on the body of link `link`, along `dir`, added × sign.

@@ -28,7 +28,7 @@ struct RowSystem {
   std::size_t dofs = 0;  // the tree's coordinates
   std::vector<MultibodyRow> rows;
   std::vector<double> jrows;  // this step's row Jacobians, rows × dofs, row-major
-  // The articulated path (solver.mass_matrix articulated): J as a matrix, M⁻¹ and M⁻¹·Jᵀ.
+  // The articulated path (verify.mass_matrix articulated): J as a matrix, M⁻¹ and M⁻¹·Jᵀ.
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jac;
   Eigen::MatrixXd inverse_mass;  // dofs × dofs
   Eigen::MatrixXd minv_jt;       // dofs × rows

@@ -4,7 +4,7 @@
 #include "physics/multibody_engine.hpp"
 
 // The multibody step's rows solved (docs/solver.md, "The row solve"): their right-hand sides,
-// bounds and compliances (solve_rows), then with solver.row_solver active_set from the
+// bounds and compliances (solve_rows), then with verify.row_solver active_set from the
 // bound states the same rows had in the step before — a tooth contact's rows are the same rows
 // while its tooth pair and flank stay in contact, a joint's rows are always the same — by
 // physics/row_lcp.hpp, or on a planar tree in the coordinates' space (primal_solve.hpp),

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <tuple>
 
-// The multibody step split where a tooth contact starts (solver.locate_contact_onset,
+// The multibody step split where a tooth contact starts (verify.locate_contact_onset,
 // docs/solver.md "Contact onset"): when to split, and the step's forces and flows from the pieces.
 namespace gearsim::physics {
 

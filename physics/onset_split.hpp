@@ -1,4 +1,4 @@
-// solver.locate_contact_onset (docs/solver.md, "Contact onset"): a multibody step in which a near
+// verify.locate_contact_onset (docs/solver.md, "Contact onset"): a multibody step in which a near
 // tooth pair closes is split at the instant it touches, so that the contact starts with its
 // spring at rest; the sub-steps' impulses summed per contact (the step's forces: their sum over
 // h), its power flows and motor torques averaged. The multibody engine takes the pieces; this
@@ -23,7 +23,7 @@ class OnsetSplit {
  public:
   OnsetSplit() = default;
   explicit OnsetSplit(bool on) : on_(on) {}
-  bool on() const { return on_; }  // solver.locate_contact_onset (and an equal-step integrator)
+  bool on() const { return on_; }  // verify.locate_contact_onset (and an equal-step integrator)
   // Where to cut the rest of the step (within_s long) from the near pairs of state.pairs and the
   // bodies' velocities: within_s when no pair touches before it.
   double onset_s(const Model& model, const State& state, double within_s) const;

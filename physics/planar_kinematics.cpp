@@ -6,7 +6,7 @@
 #include "core/errors.hpp"
 #include "physics/measure.hpp"
 
-// solver.mass_matrix planar (docs/solver.md, "The planar kinematics"): on a tree whose joints all
+// verify.mass_matrix planar (docs/solver.md, "The planar kinematics"): on a tree whose joints all
 // turn about z, each step's positions, the links' poses and velocities and the bodies' states
 // from the joint coordinates in closed form — every link's turn is the sum of the angles on its
 // chain, one sine and cosine per link — in place of Bullet's stepPositionsMultiDof(),

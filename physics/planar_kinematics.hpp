@@ -1,4 +1,4 @@
-// solver.mass_matrix planar (docs/solver.md, "The planar kinematics"): on a tree whose joints all
+// verify.mass_matrix planar (docs/solver.md, "The planar kinematics"): on a tree whose joints all
 // turn about z, the positions, the links' poses, Jacobians and velocities and the bodies' states
 // from the joint coordinates in closed form — every link's turn is the sum of the angles on its
 // chain — in place of Bullet's position step, forward kinematics, link velocities and Jacobian

@@ -6,10 +6,10 @@
 
 #include "core/errors.hpp"
 
-// solver.mass_matrix planar (docs/solver.md, "The planar mass matrix"): for a tree whose joints
+// verify.mass_matrix planar (docs/solver.md, "The planar mass matrix"): for a tree whose joints
 // all turn about z, the links' Jacobians from their joint axes, the mass matrix from them and its
 // Cholesky factor, in place of Bullet's Jacobian tree walks and articulated-body solves
-// (the multibody engine's articulated path, solver.mass_matrix articulated).
+// (the multibody engine's articulated path, verify.mass_matrix articulated).
 namespace gearsim::physics {
 
 // Per link: mass and moment about z.

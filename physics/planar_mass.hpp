@@ -1,4 +1,4 @@
-// solver.mass_matrix planar on a tree whose joints all turn about z (docs/solver.md, "The planar
+// verify.mass_matrix planar on a tree whose joints all turn about z (docs/solver.md, "The planar
 // mass matrix"): M = Σ m·(J_xᵀ·J_x + J_yᵀ·J_y) + I_zz·J_ωᵀ·J_ω over the links (their Jacobians from
 // planar_kinematics.hpp), factored M = L·Lᵀ (Cholesky); per row g_i = L⁻¹·J_iᵀ, so that A = Gᵀ·G
 // and M⁻¹·Jᵀ·λ = L⁻ᵀ·(G·λ), without M⁻¹; the free motion v* = v + h·M⁻¹·(Q − c). In place of

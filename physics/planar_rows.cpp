@@ -4,13 +4,13 @@
 
 #include "physics/planar_mass.hpp"
 
-// solver.mass_matrix planar, the rows' side of PlanarMass: the diagonal of A = J·M⁻¹·Jᵀ, G = L⁻¹·Jᵀ
+// verify.mass_matrix planar, the rows' side of PlanarMass: the diagonal of A = J·M⁻¹·Jᵀ, G = L⁻¹·Jᵀ
 // and the dense A for the row-space solves (the folded solve's and Dantzig's), the velocity
 // change of given impulses, the links' kinetic energy (planar_mass.cpp forms M and its factor L;
 // primal_solve.cpp solves the rows in the coordinates' space).
 namespace gearsim::physics {
 
-// solver.mass_matrix planar: row r's diagonal of A = J·M⁻¹·Jᵀ, |L⁻¹·J_rᵀ|² (L of
+// verify.mass_matrix planar: row r's diagonal of A = J·M⁻¹·Jᵀ, |L⁻¹·J_rᵀ|² (L of
 // free_velocities(), this step's pose), where its compliance is taken relative to it (a
 // row without a spring: a motor, sticking friction). The rows themselves are solved in the
 // coordinates' space (PrimalSolve), without G = L⁻¹·Jᵀ; g() forms G for the

@@ -62,7 +62,7 @@ bool DantzigSolve::solve(RowSystem& rows, bool fixed_friction) {
 }
 
 // Dantzig for rows some of which are friction fixed at a multiple of their normal's impulse
-// (contact.friction_model sliding: lo = hi on a row with findex ≥ 0). Bullet's solver takes such a
+// (verify.friction_model sliding: lo = hi on a row with findex ≥ 0). Bullet's solver takes such a
 // row's bounds as ±|hi·x_f|, a box, so the fixed rows leave its problem: their impulses c·x_f,
 // with x_f from the last round, move to the others' right-hand side, and rounds repeat until the
 // impulses settle (each round changes the normals by about μ times the last change: a

@@ -24,7 +24,7 @@ class ActiveSetSolve {
  public:
   ActiveSetSolve() = default;
   explicit ActiveSetSolve(bool on) : on_(on) {}
-  bool on() const { return on_; }  // solver.row_solver active_set
+  bool on() const { return on_; }  // verify.row_solver active_set
   // This step's rows' identities (the contacts' tooth pairs and flanks, the joints) and their
   // bound states in the step before, where they had one (else free).
   void warm_start(const RowSystem& rows, const std::vector<ContactSample>& contacts);

@@ -206,7 +206,7 @@ struct ContactDef {
   bool continued_search = true;
   // Near pairs parked on top of the continuation (CoherentToothSearch::set_park_near_pairs): a
   // continued pair with a gap is not solved again while a bound proves it still apart and (with
-  // solver.locate_contact_onset) unable to close within two steps (docs/tooth-contact.md, "Near
+  // verify.locate_contact_onset) unable to close within two steps (docs/tooth-contact.md, "Near
   // pairs: the osculating-circle bound"). Part of continued_search: off without it.
   bool park_near_pairs = true;
 };

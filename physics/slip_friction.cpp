@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-// Tooth friction in the multibody engine, contact.friction_model sliding (docs/solver.md,
+// Tooth friction in the multibody engine, verify.friction_model sliding (docs/solver.md,
 // "Friction at the pitch point"): each friction row is a fixed multiple of its normal's impulse,
 // −μ·λ_n times the mean sign of the slip over the step, the reversal at the pitch point shared
 // within the step where it falls.
@@ -11,7 +11,7 @@
 namespace gearsim::physics {
 namespace {
 
-// contact.friction_model sliding: the mean over the step of the sign of a slip that runs linearly
+// verify.friction_model sliding: the mean over the step of the sign of a slip that runs linearly
 // from s0 at the step's start to s1 at its end (the θ-method's velocities are linear over the
 // step): where it changes sign the step is shared at the crossing, φ = s0 / (s0 − s1) on the first
 // side, φ·sgn(s0) + (1 − φ)·sgn(s1). Continuous in s1 for s0 ≠ 0.

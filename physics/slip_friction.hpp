@@ -1,4 +1,4 @@
-// contact.friction_model sliding in the multibody engine (docs/solver.md, "Friction at the pitch
+// verify.friction_model sliding in the multibody engine (docs/solver.md, "Friction at the pitch
 // point"): each friction row a fixed multiple of its normal's impulse, −μ·λ_n times the mean sign
 // of the slip over the step, the reversal at the pitch point shared within the step where it
 // falls. The rule and what it keeps from step to step (each contact's end slip, for the drift of
@@ -25,7 +25,7 @@ class SlipFriction {
  public:
   SlipFriction() = default;
   explicit SlipFriction(bool on) : on_(on) {}
-  bool on() const { return on_; }  // contact.friction_model sliding
+  bool on() const { return on_; }  // verify.friction_model sliding
 
   // Before the step's rows are set up (n of them).
   void begin_rows(std::size_t n);

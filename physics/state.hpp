@@ -21,10 +21,10 @@ namespace gearsim::physics {
 // One gear pair's tooth contacts this step (the vectors keep their storage from step to step).
 struct PairContacts {
   std::vector<contact::ToothContact> found;  // touching tooth pairs
-  std::vector<contact::ToothContact> near;   // near pairs, a gap of a few µm (solver.locate_contact_onset)
+  std::vector<contact::ToothContact> near;   // near pairs, a gap of a few µm (verify.locate_contact_onset)
   std::vector<double> pair_stiffness;        // per found contact, N/m
   std::vector<char> active;                  // per found contact: passed to the solver
-  contact::CoherentToothSearch search;       // the pair's flank records (contact.coherent_search)
+  contact::CoherentToothSearch search;       // the pair's flank records (verify.coherent_search)
 };
 
 // A joint's angle measured from its bodies' transforms, unwrapped across turns.

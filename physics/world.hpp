@@ -117,10 +117,10 @@ class World {
     double row_solve_s = 0;  // multibody: rows, M⁻¹ and the direct solve (part of the rest)
     double step_total_s = 0;
     long active_set_solves = 0, dantzig_solves = 0;  // multibody: steps whose rows each solved
-    long onset_splits = 0;     // multibody, solver.locate_contact_onset: splits of a step at a contact's onset (each adds a search and a solve)
-    long friction_rounds = 0;  // multibody, contact.friction_model sliding: solves again to locate slip reversals
+    long onset_splits = 0;     // multibody, verify.locate_contact_onset: splits of a step at a contact's onset (each adds a search and a solve)
+    long friction_rounds = 0;  // multibody, verify.friction_model sliding: solves again to locate slip reversals
     // The coherent tooth search's flank visits, summed over the gear pairs (both passes; all 0
-    // with contact.coherent_search false): contact::CoherentToothSearch::Counts, each a count
+    // with verify.coherent_search false): contact::CoherentToothSearch::Counts, each a count
     // of flanks — searched in full, tracked, skipped by their records, continued (of them
     // `crossings` at a tip circle), renewed, shared between the passes, parked near pairs.
     contact::CoherentToothSearch::Counts flank_visits;
@@ -137,7 +137,7 @@ class World {
   // always 0 for rigid_bodies. A run stops at the first (sim/run_bounds.hpp).
   long failed_solves() const;
 
-  // solver.mass_matrix planar (multibody, a tree turning about z): with the check on, every
+  // verify.mass_matrix planar (multibody, a tree turning about z): with the check on, every
   // step also takes Bullet's articulated-body solves for M⁻¹ and its Jacobian tree walks for the
   // links, and records the largest |M·M⁻¹ − I| (M the planar mass matrix) and the largest
   // difference of a link Jacobian's entries (1 or m) seen: that both paths state the same

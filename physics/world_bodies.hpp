@@ -35,7 +35,7 @@ struct BuiltBody {
   double face_width_m = 0;
   double contact_radius_m = 0;  // base radius (generated) or mid-tooth radius (meshes), for damping
   // Flanks generated from a gear spec (smooth to the outline's nm), not read from a CAD mesh: only
-  // between two such gears does contact.continued_search let a continued contact stand alone. A
+  // between two such gears does verify.continued_search let a continued contact stand alone. A
   // faceted mesh's flanks (MCAD's STL) give a contact's depth profile several maxima ~20 µm apart:
   // there the deeper of the continued and the searched maximum stands (docs/tooth-contact.md,
   // "Continuation").

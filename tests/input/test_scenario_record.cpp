@@ -176,7 +176,7 @@ TEST(ScenarioRecord, ARecordWithTheVerificationSwitchesInSolverAndContactReadsAs
 }
 
 TEST(ScenarioRecord, TheContinuationReadsBack) {
-  // contact.continued_search: on by default, off without the coherent search; a record written
+  // verify.continued_search: on by default, off without the coherent search; a record written
   // before the key existed ran without it.
   physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
   EXPECT_TRUE(s.contact.continued_search);

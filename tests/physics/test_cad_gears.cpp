@@ -245,15 +245,15 @@ TEST(CadGears, McadPlanetarySetFromMeshesCarriesTheSunTorqueOverItsPlanets) {
 }
 
 TEST(CadGears, ContactsOfMeshFlanksAreTheDeeperOfTheContinuedAndTheSearched) {
-  // contact.continued_search on CAD meshes: the deeper of the continued maximum and the
+  // verify.continued_search on CAD meshes: the deeper of the continued maximum and the
   // stateless search's. The MCAD planetary set with it on (the default) and off runs the same
   // until a step where a continued maximum is the deeper: there, from the same poses, every
   // contact is at least as deep as without, one deeper (the runs part after that). Contact onsets
   // are not located here: the near pairs' gaps, which place a split, come from the continued or
   // the searched maximum too, and would part the runs before the contacts differ.
   const fs::path file = test::mcad_planetary_file(test::fresh_test_dir(), 1.0);
-  World on(input::load_scenario(file, {"solver.locate_contact_onset=false"})),
-      off(input::load_scenario(file, {"contact.continued_search=false", "solver.locate_contact_onset=false"}));
+  World on(input::load_scenario(file, {"verify.locate_contact_onset=false"})),
+      off(input::load_scenario(file, {"verify.continued_search=false", "verify.locate_contact_onset=false"}));
   int parted = -1;
   for (int i = 0; i < 3000 && parted < 0; ++i) {
     on.step();
@@ -292,9 +292,9 @@ TEST(CadGears, TheTrapezoidClosedIntegratorKeepsTheRattlingMcadSetWithinItsEnerg
     return true;
   };
   EXPECT_TRUE(stays_inside({"solver.integrator=trapezoid_closed"}));
-  EXPECT_TRUE(stays_inside({"solver.integrator=trapezoid_closed", "solver.locate_contact_onset=false"}));
+  EXPECT_TRUE(stays_inside({"solver.integrator=trapezoid_closed", "verify.locate_contact_onset=false"}));
   EXPECT_TRUE(stays_inside({"solver.theta=0.5"}));
-  EXPECT_FALSE(stays_inside({"solver.theta=0.5", "solver.locate_contact_onset=false"}))
+  EXPECT_FALSE(stays_inside({"solver.theta=0.5", "verify.locate_contact_onset=false"}))
       << "a fixed θ = ½ with late onsets should leave the bounds here (what the per-step choice avoids)";
 }
 

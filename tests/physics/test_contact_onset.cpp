@@ -1,4 +1,4 @@
-// Contact onset located within the step (solver.locate_contact_onset, physics/onset_split.hpp,
+// Contact onset located within the step (verify.locate_contact_onset, physics/onset_split.hpp,
 // docs/solver.md "Contact onset"). A tooth pair found overlapping at a step's start has
 // penetrated by δ₀ with no force since it touched: its spring holds ½·k·δ₀² that no work put in
 // (the faulty paper set's re-contact after the thinned tooth closes at ≈ 0.06 m/s: δ₀ up to
@@ -50,7 +50,7 @@ struct NewContacts : sim::Observer {
 NewContacts run(bool locate, long& splits) {
   const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics.yaml",
                                                    {"duration_s=0.15", "output.per_step_log=false",
-                                                    std::string("solver.locate_contact_onset=") + (locate ? "true" : "false")});
+                                                    std::string("verify.locate_contact_onset=") + (locate ? "true" : "false")});
   NewContacts obs;
   const sim::RunSummary r = sim::simulate(s, {&obs});
   EXPECT_EQ(r.status, sim::RunStatus::Completed);

@@ -99,17 +99,17 @@ TEST(Multibody, AgreesWithTheRigidBodyEngineOnThePaperRun) {
 }
 
 TEST(Multibody, TheActiveSetSolvesTheRowsFromTheLastStepAndAgreesWithDantzig) {
-  // solver.row_solver active_set (the default) against dantzig on the healthy paper set (friction
+  // verify.row_solver active_set (the default) against dantzig on the healthy paper set (friction
   // 0.05, floating sun): the warm start settles nearly every step, the cold first steps may fall
-  // back to Dantzig. With contact.friction_model stick_slip the mean mesh forces agree within 1e-4
+  // back to Dantzig. With verify.friction_model stick_slip the mean mesh forces agree within 1e-4
   // (Dantzig's friction bounds are taken from its frictionless normals, the active set's from the
   // coupled ones: measured 2.6e-5 apart over 1 s, docs/solver.md). With sliding (the default) each
   // friction impulse is a fixed multiple of its normal's, which both solve exactly (Dantzig in
   // rounds, the fixed impulses on the right-hand side): within the solves' 1e-9.
   auto run = [](const std::string& row_solver, const std::string& friction, sim::RunSummary& r) {
     const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml",
-                                                     {"duration_s=0.15", "output.per_step_log=false", "solver.row_solver=" + row_solver,
-                                                      "contact.friction_model=" + friction});
+                                                     {"duration_s=0.15", "output.per_step_log=false", "verify.row_solver=" + row_solver,
+                                                      "verify.friction_model=" + friction});
     MeanForces obs(0.07);
     r = sim::simulate(s, {&obs});
     EXPECT_EQ(r.status, sim::RunStatus::Completed) << row_solver << " " << friction;
@@ -148,7 +148,7 @@ TEST(Multibody, TheProfileCountsTheFlankVisitsThatFoundEveryContact) {
   for (const bool coherent : {true, false}) {
     const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml",
                                                      {"duration_s=0.02", "output.per_step_log=false",
-                                                      std::string("contact.coherent_search=") + (coherent ? "true" : "false")});
+                                                      std::string("verify.coherent_search=") + (coherent ? "true" : "false")});
     ContactCount count;
     const sim::RunSummary r = sim::simulate(s, {&count});
     ASSERT_EQ(r.status, sim::RunStatus::Completed);
@@ -173,7 +173,7 @@ TEST(Multibody, TheProfileCountsTheFlankVisitsThatFoundEveryContact) {
 }
 
 TEST(Multibody, ThePlanarMassMatrixGivesTheArticulatedBodySolvesAnswer) {
-  // solver.mass_matrix planar (the default: the links' Jacobians from their joint axes, M from
+  // verify.mass_matrix planar (the default: the links' Jacobians from their joint axes, M from
   // them, Cholesky) against articulated (Bullet's Jacobian tree walks and one articulated-body
   // solve per coordinate for M⁻¹) on the healthy paper set: the same equations, so the same
   // mean mesh forces and carrier speed to the solves' rounding (the 1e-9 that active set and
@@ -192,12 +192,12 @@ TEST(Multibody, ThePlanarMassMatrixGivesTheArticulatedBodySolvesAnswer) {
   };
   const std::vector<std::pair<Case, File>> cases = {
       {{"floating sun, sliding friction", {}}, {"paper_dynamics_healthy.yaml", {}}},
-      {{"floating sun, stick_slip friction", {"contact.friction_model=stick_slip"}}, {"paper_dynamics_healthy.yaml", {}}},
+      {{"floating sun, stick_slip friction", {"verify.friction_model=stick_slip"}}, {"paper_dynamics_healthy.yaml", {}}},
       {{"rigid sun (paper_te_loaded)", {}}, {"paper_te_loaded.yaml", {"planetary.faulty_planets={}"}}}};
   for (const auto& [c, file] : cases) {
     const bool rigid = c.name.find("rigid") != std::string::npos;
     auto run = [&](const std::string& mass_matrix) {
-      std::vector<std::string> set = {"duration_s=0.12", "output.per_step_log=false", "solver.mass_matrix=" + mass_matrix};
+      std::vector<std::string> set = {"duration_s=0.12", "output.per_step_log=false", "verify.mass_matrix=" + mass_matrix};
       set.insert(set.end(), c.settings.begin(), c.settings.end());
       set.insert(set.end(), file.settings.begin(), file.settings.end());
       const physics::Scenario s = input::load_scenario(kScenarios / file.scenario, set);
@@ -259,7 +259,7 @@ TEST(Multibody, ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEverySt
     EXPECT_LT(c.link_velocity_difference, 1e-12) << scenario;
   }
   // Not used (and so not checked) where the articulated path is asked for.
-  physics::World w(input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml", {"solver.mass_matrix=articulated"}));
+  physics::World w(input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml", {"verify.mass_matrix=articulated"}));
   w.set_mass_matrix_check(true);
   w.step();
   EXPECT_EQ(w.mass_matrix_check().steps, 0);
@@ -281,7 +281,7 @@ TEST(Multibody, TheDofSpaceSolveIsTheRowSpaceSolve) {
     std::vector<std::string> settings;
   };
   const std::vector<Case> cases = {{"paper_dynamics_healthy.yaml", {}},
-                                   {"paper_dynamics.yaml", {"contact.friction_model=stick_slip"}},
+                                   {"paper_dynamics.yaml", {"verify.friction_model=stick_slip"}},
                                    {"paper_dynamics_bearings.yaml", {}},
                                    {"paper_te_loaded.yaml", {}},
                                    {"paper_dynamics_healthy.yaml", {"planetary.floating_sun.radial_stiffness_N_per_m=1e13"}}};

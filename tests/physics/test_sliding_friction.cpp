@@ -1,4 +1,4 @@
-// Tooth friction in the multibody engine (contact.friction_model, physics/slip_friction.hpp,
+// Tooth friction in the multibody engine (verify.friction_model, physics/slip_friction.hpp,
 // docs/solver.md "Friction at the pitch point"). Gear flanks slide by their kinematics: the
 // sliding speed is (ω_a + ω_b)·(distance of the contact from the pitch point) for an external pair,
 // so friction is μ·λ_n against the slip everywhere but at the pitch point, where it reverses.
@@ -71,7 +71,7 @@ struct FrictionSteps : sim::Observer {
 FrictionSteps run(const std::string& model, const std::string& dt) {
   const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml",
                                                    {"duration_s=0.12", "output.per_step_log=false", "solver.time_step_s=" + dt,
-                                                    "contact.friction_model=" + model});
+                                                    "verify.friction_model=" + model});
   FrictionSteps obs(s.contact.friction, 0.06);
   obs.dt = s.solver.time_step_s;
   const sim::RunSummary r = sim::simulate(s, {&obs});
