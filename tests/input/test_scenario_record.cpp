@@ -182,9 +182,9 @@ TEST(ScenarioRecord, TheContinuationReadsBack) {
   EXPECT_TRUE(s.contact.continued_search);
   nlohmann::json j = nlohmann::json::parse(scenario_json(s).dump());
   EXPECT_TRUE(scenario_from_json(j, "rec.json").contact.continued_search);
-  j["contact"]["continued_search"] = false;
+  j["verify"]["continued_search"] = false;
   EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.continued_search);
-  j["contact"].erase("continued_search");
+  j["verify"].erase("continued_search");
   EXPECT_FALSE(scenario_from_json(j, "rec.json").contact.continued_search);
 }
 
