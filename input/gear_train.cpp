@@ -15,6 +15,31 @@ bool is_internal(const physics::BodyDef& b) {
   return b.mesh && b.mesh->recognised && b.mesh->recognised->internal;  // a mesh as recognised
 }
 
+namespace {
+
+// The planetary set t (sun, planets, ring, carrier named) as the frequencies' spec: which member
+// stands still, which is driven, at what speed.
+PlanetaryTrainSpec planetary_spec(const physics::Scenario& s, const GearTrain& t, const physics::BodyDef& ring, const std::string& where) {
+  PlanetaryTrainSpec spec;
+  spec.sun_teeth = t.sun_teeth;
+  spec.planet_teeth = t.planet_teeth;
+  spec.ring_teeth = t.ring_teeth;
+  spec.planets = static_cast<int>(t.planets.size());
+  // A ring held against rotation by a torsional support stands still like a welded one.
+  bool ring_held = ring.fixed;
+  for (const physics::JointDef& j : s.joints)
+    ring_held = ring_held || (j.body == ring.name && j.parent == "ground" && j.bearing && j.bearing->torsional_stiffness_N_m_per_rad > 0);
+  spec.fixed = ring_held ? PlanetaryMember::Ring : PlanetaryMember::Carrier;
+  if (t.input_body == t.sun) spec.input = PlanetaryMember::Sun;
+  else if (t.input_body == t.carrier) spec.input = PlanetaryMember::Carrier;
+  else if (t.input_body == t.ring) spec.input = PlanetaryMember::Ring;
+  else throw InputError(where + "the motor drives '" + t.input_body + "', not the sun, carrier or ring");
+  spec.input_speed_rad_s = t.input_speed_rad_s;
+  return spec;
+}
+
+}  // namespace
+
 GearTrain gear_train_of(const physics::Scenario& s) {
   const std::string where = s.source.string() + ": ";
   auto parent_of = [&](const std::string& body) -> std::string {
@@ -61,23 +86,7 @@ GearTrain gear_train_of(const physics::Scenario& s) {
     }
     if (t.sun.empty() || t.planets.empty())
       throw InputError(where + "an internal gear without a sun and planets on a carrier: not a planetary set");
-    PlanetaryTrainSpec spec;
-    spec.sun_teeth = t.sun_teeth;
-    spec.planet_teeth = t.planet_teeth;
-    spec.ring_teeth = t.ring_teeth;
-    spec.planets = static_cast<int>(t.planets.size());
-    const physics::BodyDef* ring_def = ring;
-    // A ring held against rotation by a torsional support stands still like a welded one.
-    bool ring_held = ring_def->fixed;
-    for (const physics::JointDef& j : s.joints)
-      ring_held = ring_held || (j.body == ring_def->name && j.parent == "ground" && j.bearing && j.bearing->torsional_stiffness_N_m_per_rad > 0);
-    spec.fixed = ring_held ? PlanetaryMember::Ring : PlanetaryMember::Carrier;
-    if (t.input_body == t.sun) spec.input = PlanetaryMember::Sun;
-    else if (t.input_body == t.carrier) spec.input = PlanetaryMember::Carrier;
-    else if (t.input_body == t.ring) spec.input = PlanetaryMember::Ring;
-    else throw InputError(where + "the motor drives '" + t.input_body + "', not the sun, carrier or ring");
-    spec.input_speed_rad_s = t.input_speed_rad_s;
-    t.frequencies = planetary_frequencies(spec);
+    t.frequencies = planetary_frequencies(planetary_spec(s, t, *ring, where));
     return t;
   }
   if (gears.size() != 2)

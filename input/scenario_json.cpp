@@ -114,10 +114,8 @@ ojson pair_table_json(const physics::PairTableDef& t) {
           {"base_pitch_mismatch_m", t.figures.base_pitch_mismatch_m}};
 }
 
-}  // namespace
-
-ojson scenario_json(const physics::Scenario& s) {
-  ojson j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
+// The run settings: solver, output, contact and the verification switches.
+void settings_json(const physics::Scenario& s, ojson& j) {
   j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}, {"engine", physics::engine_name(s.solver.engine)}, {"theta", s.solver.theta}, {"integrator", physics::integrator_name(s.solver.integrator)}};
   j["output"] = {{"sample_rate_hz", s.output.sample_rate_hz}, {"per_step_log", s.output.per_step_log}};
   j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
@@ -147,6 +145,13 @@ ojson scenario_json(const physics::Scenario& s) {
                  {"coherent_search", s.contact.coherent_search},
                  {"continued_search", s.contact.continued_search},
                  {"park_near_pairs", s.contact.park_near_pairs}};
+}
+
+}  // namespace
+
+ojson scenario_json(const physics::Scenario& s) {
+  ojson j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
+  settings_json(s, j);
   j["bodies"] = ojson::array();
   for (const physics::BodyDef& b : s.bodies) j["bodies"].push_back(body_json(b));
   j["joints"] = ojson::array();
