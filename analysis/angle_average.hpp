@@ -27,13 +27,12 @@ struct AngleAverage {
 // 2π/samples_per_revolution) inside the record and uses every whole revolution after it.
 // Throws InputError on different lengths, fewer than 2 samples, a non-monotone or non-finite
 // angle, samples_per_revolution < 4, or a record shorter than one revolution.
-AngleAverage angle_synchronous_average(
-    const std::vector<double>& signal, const std::vector<double>& angle_rad,
-    int samples_per_revolution = analysis_constants::kDefaultSamplesPerRevolution);
+AngleAverage angle_synchronous_average(const std::vector<double>& signal, const std::vector<double>& angle_rad,
+                                       int samples_per_revolution = analysis_constants::kDefaultSamplesPerRevolution);
 
 // How many whole revolutions of the grid angle_synchronous_average would average (0: the record
 // is too short for it), from the angle's first and last samples.
 long long synchronous_revolutions(const std::vector<double>& angle_rad,
-                            int samples_per_revolution = analysis_constants::kDefaultSamplesPerRevolution);
+                                  int samples_per_revolution = analysis_constants::kDefaultSamplesPerRevolution);
 
 }  // namespace gearsim

@@ -13,17 +13,12 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 void require_teeth(const char* what, const char* key, int z) {
-  if (z < 1)
-    throw InputError(std::string(what) + ": " + key + ": expected at least 1 tooth, got " +
-                     std::to_string(z));
+  if (z < 1) throw InputError(std::string(what) + ": " + key + ": expected at least 1 tooth, got " + std::to_string(z));
 }
 
 void require_speed_and_harmonics(const char* what, double speed_rad_s, int harmonics) {
-  if (!std::isfinite(speed_rad_s))
-    throw InputError(std::string(what) + ": input speed must be a finite number of rad/s");
-  if (harmonics < 1)
-    throw InputError(std::string(what) + ": mesh_harmonics: expected at least 1, got " +
-                     std::to_string(harmonics));
+  if (!std::isfinite(speed_rad_s)) throw InputError(std::string(what) + ": input speed must be a finite number of rad/s");
+  if (harmonics < 1) throw InputError(std::string(what) + ": mesh_harmonics: expected at least 1, got " + std::to_string(harmonics));
 }
 
 const char* member_name(PlanetaryMember m) {
@@ -42,8 +37,7 @@ void add_mesh_harmonics(GearTrainFrequencies& g, int harmonics, const char* fund
   g.frequencies.push_back({"mesh", "mesh frequency", g.mesh_hz, fundamental_formula, FrequencyKind::Mesh});
   for (int h = 2; h <= harmonics; ++h) {
     const std::string n = std::to_string(h);
-    g.frequencies.push_back(
-        {"mesh_" + n, "mesh harmonic " + n, h * g.mesh_hz, n + "·f_m", FrequencyKind::Mesh});
+    g.frequencies.push_back({"mesh_" + n, "mesh harmonic " + n, h * g.mesh_hz, n + "·f_m", FrequencyKind::Mesh});
   }
 }
 
@@ -60,11 +54,8 @@ PlanetarySpeeds planetary_speeds(const PlanetaryTrainSpec& s) {
   require_teeth(what, "sun_teeth", s.sun_teeth);
   require_teeth(what, "planet_teeth", s.planet_teeth);
   require_teeth(what, "ring_teeth", s.ring_teeth);
-  if (s.planets < 1)
-    throw InputError(std::string(what) + ": planets: expected at least 1, got " + std::to_string(s.planets));
-  if (s.fixed == s.input)
-    throw InputError(std::string(what) + ": the " + member_name(s.fixed) +
-                     " cannot be both fixed and the input");
+  if (s.planets < 1) throw InputError(std::string(what) + ": planets: expected at least 1, got " + std::to_string(s.planets));
+  if (s.fixed == s.input) throw InputError(std::string(what) + ": the " + member_name(s.fixed) + " cannot be both fixed and the input");
   require_speed_and_harmonics(what, s.input_speed_rad_s, s.mesh_harmonics);
   const double zs = s.sun_teeth, zp = s.planet_teeth, zr = s.ring_teeth;
   // Willis in the form z_s·ω_s + z_r·ω_r = (z_s + z_r)·ω_c; one member at 0, one at the input.
@@ -73,8 +64,7 @@ PlanetarySpeeds planetary_speeds(const PlanetaryTrainSpec& s) {
   double& ws = w[0];
   double& wc = w[1];
   double& wr = w[2];
-  const PlanetaryMember free_member =
-      static_cast<PlanetaryMember>(3 - static_cast<int>(s.fixed) - static_cast<int>(s.input));
+  const PlanetaryMember free_member = static_cast<PlanetaryMember>(3 - static_cast<int>(s.fixed) - static_cast<int>(s.input));
   switch (free_member) {
     case PlanetaryMember::Sun:
       ws = ((zs + zr) * wc - zr * wr) / zs;
@@ -105,27 +95,19 @@ GearTrainFrequencies planetary_frequencies(const PlanetaryTrainSpec& s) {
     g.frequencies.push_back({key, name, f, formula, kind});
   };
   using K = FrequencyKind;
-  if (s.fixed != PlanetaryMember::Sun)
-    add("sun_shaft", "sun rotation", hz(v.sun_rad_s), "|ω_s|/2π", K::Shaft);
+  if (s.fixed != PlanetaryMember::Sun) add("sun_shaft", "sun rotation", hz(v.sun_rad_s), "|ω_s|/2π", K::Shaft);
   if (s.fixed != PlanetaryMember::Carrier)
-    add("carrier_shaft", "carrier rotation", hz(v.carrier_rad_s),
-        "f_c = |ω_c|/2π, z_s·ω_s + z_r·ω_r = (z_s + z_r)·ω_c", K::Shaft);
-  if (s.fixed != PlanetaryMember::Ring)
-    add("ring_shaft", "ring rotation", hz(v.ring_rad_s), "|ω_r|/2π", K::Shaft);
-  add("planet_spin", "planet spin (absolute)", hz(v.planet_rad_s), "|ω_c − (z_s/z_p)(ω_s − ω_c)|/2π",
+    add("carrier_shaft", "carrier rotation", hz(v.carrier_rad_s), "f_c = |ω_c|/2π, z_s·ω_s + z_r·ω_r = (z_s + z_r)·ω_c", K::Shaft);
+  if (s.fixed != PlanetaryMember::Ring) add("ring_shaft", "ring rotation", hz(v.ring_rad_s), "|ω_r|/2π", K::Shaft);
+  add("planet_spin", "planet spin (absolute)", hz(v.planet_rad_s), "|ω_c − (z_s/z_p)(ω_s − ω_c)|/2π", K::Shaft);
+  add("planet_spin_relative", "planet spin relative to the carrier", hz(v.planet_relative_rad_s), "(z_s/z_p)·|f_s − f_c| = f_m/z_p",
       K::Shaft);
-  add("planet_spin_relative", "planet spin relative to the carrier", hz(v.planet_relative_rad_s),
-      "(z_s/z_p)·|f_s − f_c| = f_m/z_p", K::Shaft);
   add_mesh_harmonics(g, s.mesh_harmonics, "f_m = z_r·|f_r − f_c| = z_s·|f_s − f_c|");
-  add("sun_fault", "sun local fault", n * hz(v.sun_rad_s - v.carrier_rad_s), "N·|f_s − f_c| = N·f_m/z_s",
-      K::Fault);
+  add("sun_fault", "sun local fault", n * hz(v.sun_rad_s - v.carrier_rad_s), "N·|f_s − f_c| = N·f_m/z_s", K::Fault);
   add("planet_fault", "planet local fault (one flank)", g.mesh_hz / zp, "f_m/z_p", K::Fault);
-  add("planet_fault_both_flanks", "planet local fault (both flanks: meets sun and ring)",
-      2.0 * g.mesh_hz / zp, "2·f_m/z_p", K::Fault);
-  add("ring_fault", "ring local fault", n * hz(v.ring_rad_s - v.carrier_rad_s), "N·|f_r − f_c| = N·f_m/z_r",
-      K::Fault);
-  if (s.fixed != PlanetaryMember::Carrier)
-    add("planet_pass", "planet pass (housing)", n * hz(v.carrier_rad_s), "N·|f_c|", K::Pass);
+  add("planet_fault_both_flanks", "planet local fault (both flanks: meets sun and ring)", 2.0 * g.mesh_hz / zp, "2·f_m/z_p", K::Fault);
+  add("ring_fault", "ring local fault", n * hz(v.ring_rad_s - v.carrier_rad_s), "N·|f_r − f_c| = N·f_m/z_r", K::Fault);
+  if (s.fixed != PlanetaryMember::Carrier) add("planet_pass", "planet pass (housing)", n * hz(v.carrier_rad_s), "N·|f_c|", K::Pass);
   return g;
 }
 
@@ -139,13 +121,11 @@ GearTrainFrequencies gear_pair_frequencies(const GearPairSpec& s) {
   GearTrainFrequencies g;
   g.mesh_hz = z1 * f1;
   g.frequencies.push_back({"driver_shaft", "driver rotation", f1, "f_1 = |ω_1|/2π", FrequencyKind::Shaft});
-  g.frequencies.push_back(
-      {"driven_shaft", "driven rotation", f1 * z1 / z2, "f_2 = f_1·z_1/z_2", FrequencyKind::Shaft});
+  g.frequencies.push_back({"driven_shaft", "driven rotation", f1 * z1 / z2, "f_2 = f_1·z_1/z_2", FrequencyKind::Shaft});
   add_mesh_harmonics(g, s.mesh_harmonics, "f_m = z_1·f_1 = z_2·f_2");
   const double common = std::gcd(s.driver_teeth, s.driven_teeth);
-  g.frequencies.push_back({"hunting_tooth", "hunting tooth (same tooth pair meets again)",
-                           g.mesh_hz * common / (z1 * z2), "f_m·gcd(z_1, z_2)/(z_1·z_2)",
-                           FrequencyKind::Fault});
+  g.frequencies.push_back({"hunting_tooth", "hunting tooth (same tooth pair meets again)", g.mesh_hz * common / (z1 * z2),
+                           "f_m·gcd(z_1, z_2)/(z_1·z_2)", FrequencyKind::Fault});
   return g;
 }
 

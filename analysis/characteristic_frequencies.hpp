@@ -11,14 +11,14 @@ namespace gearsim {
 
 enum class FrequencyKind {
   Shaft,  // a rotation rate of a body (absolute, or relative to the carrier)
-  Mesh,   // the mesh frequency and its harmonics
+  Mesh,  // the mesh frequency and its harmonics
   Fault,  // the rate at which a local defect on one body is struck
-  Pass,   // the rate at which planets pass a point fixed to the housing
+  Pass,  // the rate at which planets pass a point fixed to the housing
 };
 
 struct CharacteristicFrequency {
-  std::string key;      // stable identifier, e.g. "planet_fault"
-  std::string name;     // e.g. "planet local fault (one flank)"
+  std::string key;  // stable identifier, e.g. "planet_fault"
+  std::string name;  // e.g. "planet local fault (one flank)"
   double value_hz = 0;  // always ≥ 0: a rate, not a signed speed
   std::string formula;  // how it was computed, e.g. "f_m/z_p"
   FrequencyKind kind = FrequencyKind::Shaft;
@@ -28,23 +28,23 @@ enum class PlanetaryMember { Sun, Carrier, Ring };
 
 struct PlanetaryTrainSpec {
   int sun_teeth = 0, planet_teeth = 0, ring_teeth = 0;  // z_s, z_p, z_r (≥ 1)
-  int planets = 1;                                      // N (≥ 1)
-  PlanetaryMember fixed = PlanetaryMember::Ring;        // held still
-  PlanetaryMember input = PlanetaryMember::Sun;         // driven at input_speed_rad_s
-  double input_speed_rad_s = 0;                         // signed, rad/s
-  int mesh_harmonics = 3;                               // harmonics of f_m listed (≥ 1)
+  int planets = 1;  // N (≥ 1)
+  PlanetaryMember fixed = PlanetaryMember::Ring;  // held still
+  PlanetaryMember input = PlanetaryMember::Sun;  // driven at input_speed_rad_s
+  double input_speed_rad_s = 0;  // signed, rad/s
+  int mesh_harmonics = 3;  // harmonics of f_m listed (≥ 1)
 };
 
 // Signed angular speeds, rad/s, about the common axis (planet: about its own axis).
 struct PlanetarySpeeds {
   double sun_rad_s = 0, carrier_rad_s = 0, ring_rad_s = 0;
-  double planet_rad_s = 0;           // absolute spin
+  double planet_rad_s = 0;  // absolute spin
   double planet_relative_rad_s = 0;  // spin relative to the carrier
 };
 
 struct GearTrainFrequencies {
   std::vector<CharacteristicFrequency> frequencies;  // shafts, mesh and harmonics, faults, passes
-  double mesh_hz = 0;                                // the fundamental mesh frequency f_m
+  double mesh_hz = 0;  // the fundamental mesh frequency f_m
   // The entry with this key; throws InputError naming the key when absent.
   const CharacteristicFrequency& at(const std::string& key) const;
 };
@@ -64,8 +64,8 @@ GearTrainFrequencies planetary_frequencies(const PlanetaryTrainSpec& spec);
 
 struct GearPairSpec {
   int driver_teeth = 0, driven_teeth = 0;  // z_1, z_2 (≥ 1), external mesh
-  double driver_speed_rad_s = 0;           // signed, rad/s
-  int mesh_harmonics = 3;                  // harmonics of f_m listed (≥ 1)
+  double driver_speed_rad_s = 0;  // signed, rad/s
+  int mesh_harmonics = 3;  // harmonics of f_m listed (≥ 1)
 };
 
 // Keys: driver_shaft, driven_shaft, mesh, mesh_2 … mesh_H, and hunting_tooth

@@ -29,10 +29,10 @@ namespace gearsim {
 double order_amplitude(const std::vector<double>& x, int order);
 
 struct TsaSignals {
-  std::vector<double> regular;     // mean removed
+  std::vector<double> regular;  // mean removed
   std::vector<double> residual;
   std::vector<double> difference;
-  std::vector<double> mesh;        // the mesh orders k·z alone
+  std::vector<double> mesh;  // the mesh orders k·z alone
 };
 
 // The regular, residual and difference signals of one revolution of a gear with `teeth` teeth.

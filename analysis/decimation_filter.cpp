@@ -25,8 +25,7 @@ std::string decimation_number(double v) {
 
 void check_decimation_rate(const char* what, double rate_hz) {
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0)
-    throw InputError(std::string("decimation filter: ") + what + " must be a positive number of Hz, got " +
-                     decimation_number(rate_hz));
+    throw InputError(std::string("decimation filter: ") + what + " must be a positive number of Hz, got " + decimation_number(rate_hz));
 }
 
 // Kaiser's β for a stopband attenuation a_dB (Kaiser 1974; Oppenheim & Schafer eq. 7.62).
@@ -74,8 +73,7 @@ void measure_decimation_response(DecimationFilter& f) {
   while (fft_length < ac::kResponseGridOversampling * f.length()) fft_length *= 2;
   const std::vector<std::complex<double>> spectrum = real_dft(f.taps, fft_length);
   const double bin_hz = f.input_rate_hz / static_cast<double>(fft_length);
-  double ripple = std::max(std::abs(frequency_response(f, f.passband_edge_hz) - 1.0),
-                           std::abs(frequency_response(f, 0.0) - 1.0));
+  double ripple = std::max(std::abs(frequency_response(f, f.passband_edge_hz) - 1.0), std::abs(frequency_response(f, 0.0) - 1.0));
   double stop_peak = std::abs(frequency_response(f, f.stopband_edge_hz));
   for (std::size_t k = 0; k < spectrum.size(); ++k) {
     const double fk = static_cast<double>(k) * bin_hz;
@@ -89,32 +87,28 @@ void measure_decimation_response(DecimationFilter& f) {
 
 }  // namespace
 
-DecimationFilter design_decimation_filter(double input_rate_hz, double output_rate_hz,
-                                          const DecimationFilterOptions& options) {
+DecimationFilter design_decimation_filter(double input_rate_hz, double output_rate_hz, const DecimationFilterOptions& options) {
   check_decimation_rate("input rate", input_rate_hz);
   check_decimation_rate("output rate", output_rate_hz);
   const double exact_ratio = input_rate_hz / output_rate_hz;
   const double ratio = std::round(exact_ratio);
   if (std::abs(exact_ratio - ratio) > ac::kDecimationRatioRelativeTolerance * exact_ratio)
-    throw InputError("decimation filter: input rate " + decimation_number(input_rate_hz) +
-                     " Hz over output rate " + decimation_number(output_rate_hz) + " Hz is " +
-                     decimation_number(exact_ratio) + ", not an integer (within " +
-                     decimation_number(ac::kDecimationRatioRelativeTolerance) +
-                     "); choose an output rate that divides the input rate");
+    throw InputError("decimation filter: input rate " + decimation_number(input_rate_hz) + " Hz over output rate " +
+                     decimation_number(output_rate_hz) + " Hz is " + decimation_number(exact_ratio) + ", not an integer (within " +
+                     decimation_number(ac::kDecimationRatioRelativeTolerance) + "); choose an output rate that divides the input rate");
   if (ratio < 2.0)
-    throw InputError("decimation filter: input rate " + decimation_number(input_rate_hz) +
-                     " Hz must be at least twice the output rate " + decimation_number(output_rate_hz) +
-                     " Hz (ratio " + decimation_number(exact_ratio) + "); at ratio 1 keep every sample");
+    throw InputError("decimation filter: input rate " + decimation_number(input_rate_hz) + " Hz must be at least twice the output rate " +
+                     decimation_number(output_rate_hz) + " Hz (ratio " + decimation_number(exact_ratio) +
+                     "); at ratio 1 keep every sample");
   const double f_pass = options.passband_edge_hz.value_or(ac::kDefaultPassbandFraction * output_rate_hz);
   if (!std::isfinite(f_pass) || f_pass <= 0.0 || f_pass >= 0.5 * output_rate_hz)
-    throw InputError("decimation filter: passband edge " + decimation_number(f_pass) +
-                     " Hz must lie in (0, " + decimation_number(0.5 * output_rate_hz) +
-                     ") Hz, below half the output rate " + decimation_number(output_rate_hz) + " Hz");
+    throw InputError("decimation filter: passband edge " + decimation_number(f_pass) + " Hz must lie in (0, " +
+                     decimation_number(0.5 * output_rate_hz) + ") Hz, below half the output rate " + decimation_number(output_rate_hz) +
+                     " Hz");
   const double a_dB = options.stopband_attenuation_dB;
   if (!std::isfinite(a_dB) || a_dB < ac::kMinStopbandAttenuation_dB || a_dB > ac::kMaxStopbandAttenuation_dB)
     throw InputError("decimation filter: stopband attenuation " + decimation_number(a_dB) + " dB must lie in [" +
-                     decimation_number(ac::kMinStopbandAttenuation_dB) + ", " +
-                     decimation_number(ac::kMaxStopbandAttenuation_dB) + "] dB");
+                     decimation_number(ac::kMinStopbandAttenuation_dB) + ", " + decimation_number(ac::kMaxStopbandAttenuation_dB) + "] dB");
 
   DecimationFilter f;
   f.input_rate_hz = input_rate_hz;
@@ -129,8 +123,8 @@ DecimationFilter design_decimation_filter(double input_rate_hz, double output_ra
   for (;;) {
     if (length > ac::kMaxDecimationFilterTaps)
       throw InputError("decimation filter: " + decimation_number(a_dB) + " dB over a transition band of " +
-                       decimation_number(transition_hz) + " Hz at " + decimation_number(input_rate_hz) +
-                       " Hz needs more than " + std::to_string(ac::kMaxDecimationFilterTaps) +
+                       decimation_number(transition_hz) + " Hz at " + decimation_number(input_rate_hz) + " Hz needs more than " +
+                       std::to_string(ac::kMaxDecimationFilterTaps) +
                        " taps; widen the transition (a lower passband edge) or ask for less attenuation");
     f.taps = decimation_kaiser_sinc(length, f.ratio, f.kaiser_beta);
     f.group_delay_samples = (length - 1) / 2;
@@ -143,14 +137,12 @@ DecimationFilter design_decimation_filter(double input_rate_hz, double output_ra
 
 double frequency_response(const DecimationFilter& filter, double frequency_hz) {
   if (!std::isfinite(frequency_hz))
-    throw InputError("decimation filter response: frequency must be a finite number of Hz, got " +
-                     decimation_number(frequency_hz));
+    throw InputError("decimation filter response: frequency must be a finite number of Hz, got " + decimation_number(frequency_hz));
   GEARSIM_CHECK(filter.length() % 2 == 1 && filter.input_rate_hz > 0.0, "a designed decimation filter");
   const std::size_t m_half = filter.group_delay_samples;
   const double w = 2.0 * std::numbers::pi * frequency_hz / filter.input_rate_hz;  // rad/sample
   double h = filter.taps[m_half];
-  for (std::size_t m = 1; m <= m_half; ++m)
-    h += 2.0 * filter.taps[m_half + m] * std::cos(w * static_cast<double>(m));
+  for (std::size_t m = 1; m <= m_half; ++m) h += 2.0 * filter.taps[m_half + m] * std::cos(w * static_cast<double>(m));
   return h;
 }
 

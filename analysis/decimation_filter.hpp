@@ -28,18 +28,18 @@ struct DecimationFilterOptions {
 // A designed filter: taps plus the figures that describe it. Zero-phase when applied centred
 // (decimator.hpp): its response is then the real amplitude H(f) of frequency_response().
 struct DecimationFilter {
-  double input_rate_hz = 0;     // f_in, Hz
-  double output_rate_hz = 0;    // f_out = f_in/R, Hz
-  int ratio = 0;                // R, input samples per output sample
+  double input_rate_hz = 0;  // f_in, Hz
+  double output_rate_hz = 0;  // f_out = f_in/R, Hz
+  int ratio = 0;  // R, input samples per output sample
   double passband_edge_hz = 0;  // f_pass, Hz
   double stopband_edge_hz = 0;  // f_out − f_pass, Hz
-  double kaiser_beta = 0;       // shape parameter of the Kaiser window, dimensionless
+  double kaiser_beta = 0;  // shape parameter of the Kaiser window, dimensionless
   // h_n, n = 0 … L−1: L odd, symmetric (h_n = h_{L−1−n} exactly), Σh = 1 to rounding (DC gain 1).
   std::vector<double> taps;
   std::size_t group_delay_samples = 0;  // (L − 1)/2, input samples: how far the centre tap lags
-  double group_delay_s = 0;             // (L − 1)/2 / f_in, s
-  double passband_ripple = 0;           // measured max |H(f) − 1| on [0, f_pass], dimensionless
-  double stopband_attenuation_dB = 0;   // measured −20·log10 max |H(f)| on [f_stop, f_in/2], dB
+  double group_delay_s = 0;  // (L − 1)/2 / f_in, s
+  double passband_ripple = 0;  // measured max |H(f) − 1| on [0, f_pass], dimensionless
+  double stopband_attenuation_dB = 0;  // measured −20·log10 max |H(f)| on [f_stop, f_in/2], dB
 
   std::size_t length() const { return taps.size(); }  // L, taps
 };
@@ -50,8 +50,7 @@ struct DecimationFilter {
 // non-finite or non-positive rate, a ratio f_in/f_out that is not an integer ≥ 2 (within
 // kDecimationRatioRelativeTolerance), a passband edge outside (0, f_out/2), an attenuation
 // outside its range, or a design longer than kMaxDecimationFilterTaps.
-DecimationFilter design_decimation_filter(double input_rate_hz, double output_rate_hz,
-                                          const DecimationFilterOptions& options = {});
+DecimationFilter design_decimation_filter(double input_rate_hz, double output_rate_hz, const DecimationFilterOptions& options = {});
 
 // H(f) = h_M + 2·Σ_{m=1…M} h_{M+m}·cos(2π·f·m/f_in), M = (L − 1)/2: the filter's gain at f, Hz,
 // when applied centred (zero phase). Real, and negative on alternate stopband lobes; |H| is the

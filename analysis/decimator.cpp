@@ -20,8 +20,8 @@ namespace {
 // latency set the time. The one kernel for streaming (a ring of rows) and whole records (one
 // channel, stride 1), so both give the same bits.
 constexpr std::size_t kChannelBlock = 8;
-void decimation_centred_outputs(const std::vector<double>& taps, const double* window, std::size_t stride,
-                                std::size_t count, std::size_t m_half, double* y) {
+void decimation_centred_outputs(const std::vector<double>& taps, const double* window, std::size_t stride, std::size_t count,
+                                std::size_t m_half, double* y) {
   double acc[kChannelBlock];
   const double* centre = window + m_half * stride;
   for (std::size_t c = 0; c < count; ++c) acc[c] = taps[m_half] * centre[c];
@@ -69,8 +69,8 @@ std::optional<DecimatedRow> Decimator::ready_output() {
   out.time_s = start_time_s_ + static_cast<double>(next_output_) / filter_.output_rate_hz;
   out.values.resize(channels_);
   for (std::size_t c = 0; c < channels_; c += kChannelBlock)
-    decimation_centred_outputs(filter_.taps, ring_.data() + start * channels_ + c, channels_,
-                               std::min(kChannelBlock, channels_ - c), filter_.group_delay_samples, out.values.data() + c);
+    decimation_centred_outputs(filter_.taps, ring_.data() + start * channels_ + c, channels_, std::min(kChannelBlock, channels_ - c),
+                               filter_.group_delay_samples, out.values.data() + c);
   ++next_output_;
   return out;
 }
@@ -78,13 +78,13 @@ std::optional<DecimatedRow> Decimator::ready_output() {
 std::optional<DecimatedRow> Decimator::push(std::span<const double> row) {
   GEARSIM_CHECK(!finished_, "no input after Decimator::finish()");
   if (row.size() != channels_)
-    throw InputError("decimator: input row " + std::to_string(inputs_) + " holds " + std::to_string(row.size()) +
-                     " values, expected " + std::to_string(channels_));
+    throw InputError("decimator: input row " + std::to_string(inputs_) + " holds " + std::to_string(row.size()) + " values, expected " +
+                     std::to_string(channels_));
   for (std::size_t c = 0; c < channels_; ++c)
     if (!std::isfinite(row[c]))
-      throw InputError("decimator: input row " + std::to_string(inputs_) + " (t = " +
-                       decimator_number(start_time_s_ + static_cast<double>(inputs_) / filter_.input_rate_hz) +
-                       " s), column " + std::to_string(c) + " is not finite (" + decimator_number(row[c]) + ")");
+      throw InputError("decimator: input row " + std::to_string(inputs_) +
+                       " (t = " + decimator_number(start_time_s_ + static_cast<double>(inputs_) / filter_.input_rate_hz) + " s), column " +
+                       std::to_string(c) + " is not finite (" + decimator_number(row[c]) + ")");
   // Before the first row the signal holds its value: the left half of output 0's window.
   if (inputs_ == 0)
     for (std::size_t k = 0; k < filter_.group_delay_samples; ++k) append(row);
@@ -114,10 +114,8 @@ UniformSignal decimate(const std::vector<double>& x, const DecimationFilter& fil
   if (!std::isfinite(start_time_s))
     throw InputError("decimate: start time must be a finite number of s, got " + decimator_number(start_time_s));
   for (std::size_t k = 0; k < x.size(); ++k)
-    if (!std::isfinite(x[k]))
-      throw InputError("decimate: sample " + std::to_string(k) + " is not finite (" + decimator_number(x[k]) + ")");
-  GEARSIM_CHECK(filter.length() % 2 == 1 && filter.group_delay_samples == (filter.length() - 1) / 2 &&
-                    filter.ratio >= 1,
+    if (!std::isfinite(x[k])) throw InputError("decimate: sample " + std::to_string(k) + " is not finite (" + decimator_number(x[k]) + ")");
+  GEARSIM_CHECK(filter.length() % 2 == 1 && filter.group_delay_samples == (filter.length() - 1) / 2 && filter.ratio >= 1,
                 "decimate needs a filter from design_decimation_filter");
   const std::size_t m_half = filter.group_delay_samples;
   const auto ratio = static_cast<std::size_t>(filter.ratio);
@@ -134,8 +132,8 @@ UniformSignal decimate(const std::vector<double>& x, const DecimationFilter& fil
   return y;
 }
 
-UniformSignal decimate(const std::vector<double>& x, double input_rate_hz, double output_rate_hz,
-                       const DecimationFilterOptions& options, double start_time_s) {
+UniformSignal decimate(const std::vector<double>& x, double input_rate_hz, double output_rate_hz, const DecimationFilterOptions& options,
+                       double start_time_s) {
   return decimate(x, design_decimation_filter(input_rate_hz, output_rate_hz, options), start_time_s);
 }
 

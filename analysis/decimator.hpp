@@ -25,7 +25,7 @@
 namespace gearsim {
 
 struct DecimatedRow {
-  double time_s = 0;           // t0 + j/f_out, s
+  double time_s = 0;  // t0 + j/f_out, s
   std::vector<double> values;  // one per channel, in the input's units
 };
 
@@ -47,11 +47,11 @@ class Decimator {
 
   const DecimationFilter& filter() const { return filter_; }
   std::size_t channels() const { return channels_; }
-  std::size_t inputs() const { return inputs_; }         // rows pushed
-  std::size_t outputs() const { return next_output_; }   // rows returned (push and finish)
+  std::size_t inputs() const { return inputs_; }  // rows pushed
+  std::size_t outputs() const { return next_output_; }  // rows returned (push and finish)
 
  private:
-  void append(std::span<const double> row);    // one row into the ring (real or held)
+  void append(std::span<const double> row);  // one row into the ring (real or held)
   std::optional<DecimatedRow> ready_output();  // output next_output_, if its window is complete
 
   DecimationFilter filter_;

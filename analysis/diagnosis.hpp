@@ -15,11 +15,11 @@
 namespace gearsim {
 
 struct ToothFault {
-  std::string gear;     // body name, e.g. "planet_0"
-  int tooth = -1;       // its own numbering
-  std::string flank;    // "ccw" or "cw": the flank that carried the load in that mesh ("" unknown)
-  PairId pair;          // the mesh it was found in
-  std::string source;   // "contact forces"
+  std::string gear;  // body name, e.g. "planet_0"
+  int tooth = -1;  // its own numbering
+  std::string flank;  // "ccw" or "cw": the flank that carried the load in that mesh ("" unknown)
+  PairId pair;  // the mesh it was found in
+  std::string source;  // "contact forces"
   std::string evidence;
   // The fraction of the window's whole revolutions in which this tooth carried the smallest share
   // of its gear's teeth in that mesh (1: every revolution).
@@ -36,7 +36,7 @@ struct ToothResponse {
 };
 
 struct Diagnosis {
-  std::vector<ToothFault> faults;        // empty: nothing found
+  std::vector<ToothFault> faults;  // empty: nothing found
   std::vector<ToothResponse> responses;  // teeth that stand out for a fault elsewhere
 };
 

@@ -31,10 +31,11 @@ Diagnosis diagnose_from_contacts(const std::vector<ToothLoads>& loads, LoadedFla
       std::ostringstream ev;
       ev.precision(3);
       ev << "in its mesh " << t.pair.a << "–" << t.pair.b << " it carried " << 100 * t.share_steps[ku] / others
-         << " % of the share a sound tooth of " << t.gear << " carries (share z " << t.share_z[ku] << ", mean load z "
-         << t.z_score[ku] << "), the least of its teeth in " << lowest << " of " << t.share_per_revolution.size() << " revolutions";
+         << " % of the share a sound tooth of " << t.gear << " carries (share z " << t.share_z[ku] << ", mean load z " << t.z_score[ku]
+         << "), the least of its teeth in " << lowest << " of " << t.share_per_revolution.size() << " revolutions";
       f.evidence = ev.str();
-      f.confidence = t.share_per_revolution.empty() ? 0.0 : static_cast<double>(lowest) / static_cast<double>(t.share_per_revolution.size());
+      f.confidence =
+          t.share_per_revolution.empty() ? 0.0 : static_cast<double>(lowest) / static_cast<double>(t.share_per_revolution.size());
       d.faults.push_back(f);
     }
   auto is_fault = [&](const std::string& gear, int tooth) {
@@ -64,12 +65,12 @@ Diagnosis diagnose_from_contacts(const std::vector<ToothLoads>& loads, LoadedFla
       std::ostringstream why;
       why.precision(3);
       if (rel > 0 && next_to_fault(t, k))
-        why << "next to a faulty tooth of the same gear in the same mesh: it takes up the share that tooth sheds (share "
-            << 100 * rel << " % above a sound tooth's, share z " << t.share_z[ku] << ")";
+        why << "next to a faulty tooth of the same gear in the same mesh: it takes up the share that tooth sheds (share " << 100 * rel
+            << " % above a sound tooth's, share z " << t.share_z[ku] << ")";
       else if (std::abs(rel) < t.min_relative_deviation || std::abs(t.share_z[ku]) < t.z_threshold)
         why << "its mean load stands out (z " << t.z_score[ku] << ") but its share of its own mesh is within " << 100 * std::abs(rel)
-            << " % of a sound tooth's (a fault is called at " << 100 * t.min_relative_deviation
-            << " %): its mesh as a whole carried " << (t.z_score[ku] > 0 ? "more" : "less")
+            << " % of a sound tooth's (a fault is called at " << 100 * t.min_relative_deviation << " %): its mesh as a whole carried "
+            << (t.z_score[ku] > 0 ? "more" : "less")
             << " load while it was in mesh, as meshes sharing one load do when a tooth elsewhere sheds or takes load "
                "(planets meshing in phase, or the other mesh of a planet whose tooth sheds load)";
       else

@@ -14,7 +14,7 @@ namespace gearsim {
 
 struct EnvelopeSpectrum {
   std::vector<double> envelope;  // per sample, the signal's unit
-  Spectrum spectrum;             // of the envelope, its mean removed
+  Spectrum spectrum;  // of the envelope, its mean removed
 };
 
 // InputError on fewer than 16 samples, a non-finite sample or rate, or a band that is empty or

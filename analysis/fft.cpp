@@ -35,8 +35,8 @@ struct FftwBuffer {
 std::vector<std::complex<double>> real_dft(const std::vector<double>& x, std::size_t fft_length) {
   if (x.empty()) throw InputError("real_dft: expected at least one sample, got none");
   if (fft_length < x.size())
-    throw InputError("real_dft: fft length " + std::to_string(fft_length) + " is shorter than the record (" +
-                     std::to_string(x.size()) + " samples)");
+    throw InputError("real_dft: fft length " + std::to_string(fft_length) + " is shorter than the record (" + std::to_string(x.size()) +
+                     " samples)");
   if (fft_length > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw InputError("real_dft: fft length " + std::to_string(fft_length) + " exceeds FFTW's int range");
   const std::size_t bins = fft_length / 2 + 1;

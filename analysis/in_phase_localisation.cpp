@@ -30,11 +30,13 @@ InPhaseLocalisation localise_in_phase(const std::vector<std::vector<double>>& me
                                       int teeth, double sensor_samples_per_revolution) {
   constexpr double kTurn = 2 * std::numbers::pi;
   const std::size_t P = means.size();
-  if (P < 2 || sun_direction_rad.size() != P) throw InputError("in-phase localisation: expected two or more planets, one sun direction each");
+  if (P < 2 || sun_direction_rad.size() != P)
+    throw InputError("in-phase localisation: expected two or more planets, one sun direction each");
   const std::size_t N = means[0].size();
   for (const std::vector<double>& m : means)
     if (m.size() != N) throw InputError("in-phase localisation: every planet's average must lie on one grid");
-  if (teeth < 1 || N < 4 * static_cast<std::size_t>(teeth)) throw InputError("in-phase localisation: the grid needs 4 samples per tooth or more");
+  if (teeth < 1 || N < 4 * static_cast<std::size_t>(teeth))
+    throw InputError("in-phase localisation: the grid needs 4 samples per tooth or more");
   InPhaseLocalisation out;
   out.samples_per_revolution = static_cast<int>(N);
   // Each planet's difference signal, turned so that index 0 is its tooth 0 facing the sun.
@@ -103,8 +105,7 @@ InPhaseLocalisation localise_in_phase(const std::vector<std::vector<double>>& me
         const double r = out.correlation[a][b];
         fits = fits && ((a == j || b == j) ? r <= -out.min_correlation : r >= out.min_correlation);
       }
-    for (std::size_t k = 0; k < P; ++k)
-      fits = fits && (k == j || out.planets[j].event_rms_m_s2 > out.planets[k].event_rms_m_s2);
+    for (std::size_t k = 0; k < P; ++k) fits = fits && (k == j || out.planets[j].event_rms_m_s2 > out.planets[k].event_rms_m_s2);
     if (!fits) continue;
     out.named = static_cast<int>(j);
     out.confidence = 1;

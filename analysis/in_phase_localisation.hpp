@@ -16,21 +16,21 @@
 namespace gearsim {
 
 struct InPhaseEvent {
-  double event_rms_m_s2 = 0;       // RMS of the difference signal over the event window
+  double event_rms_m_s2 = 0;  // RMS of the difference signal over the event window
   double background_rms_m_s2 = 0;  // RMS of the difference signal more than one pitch from it
 };
 
 struct InPhaseLocalisation {
   int samples_per_revolution = 0;
-  int event_tooth = -1;      // the tooth facing the sun at the event's largest excursion (every planet's)
+  int event_tooth = -1;  // the tooth facing the sun at the event's largest excursion (every planet's)
   std::vector<InPhaseEvent> planets;
   // Normalised correlation ⟨v_j, v_k⟩/(|v_j||v_k|) of the planets' event waveforms.
   std::vector<std::vector<double>> correlation;
   double min_correlation = 0;  // |ρ| a pattern's correlation must reach (2/√M, M samples in the window)
-  bool event = false;          // some planet's event stands kInPhaseEventOverBackground over its background
-  int named = -1;              // the planet whose event opposes all the others', -1: none
-  double confidence = 0;       // named: the weakest |ρ| of its pattern (1: exact ± copies)
-  std::string reason;          // why this planet, or why none
+  bool event = false;  // some planet's event stands kInPhaseEventOverBackground over its background
+  int named = -1;  // the planet whose event opposes all the others', -1: none
+  double confidence = 0;  // named: the weakest |ρ| of its pattern (1: exact ± copies)
+  std::string reason;  // why this planet, or why none
 };
 
 // means[k]: planet k's separated average over one turn relative to the carrier (all on one grid of

@@ -32,15 +32,15 @@ std::vector<FaultLine> planet_fault_family(const Spectrum& s, double fault_hz, d
 
 }  // namespace
 
-PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<double>& f, double sample_rate_hz,
-                                     const TrainDescription& train, const std::vector<double>& point_force_N) {
+PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<double>& f, double sample_rate_hz, const TrainDescription& train,
+                                     const std::vector<double>& point_force_N) {
   PairForceAnalysis r;
   r.pair = pair;
   // Mean and peak force, their ratio, and the share of samples without contact.
   const std::vector<double>& point = point_force_N.empty() ? f : point_force_N;
   if (point.size() != f.size())
-    throw InputError("run analysis: the point-sampled force of pair " + pair_label(pair) + " holds " +
-                     std::to_string(point.size()) + " samples for " + std::to_string(f.size()));
+    throw InputError("run analysis: the point-sampled force of pair " + pair_label(pair) + " holds " + std::to_string(point.size()) +
+                     " samples for " + std::to_string(f.size()));
   double mean = 0, zeros = 0;
   for (double v : f) mean += v;
   for (double v : point) zeros += v == 0;
@@ -55,11 +55,9 @@ PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<doubl
   r.floor_N = median_noise_floor(r.spectrum, 0, kRunFloorBandTop_hz);
   r.mesh = analyse_sidebands(r.spectrum, train.frequencies.mesh_hz, train.frequencies.frequencies);
   for (const MeshHarmonic& h : r.mesh.harmonics)
-    r.harmonic_over_floor_db.push_back(h.peak ? std::optional(amplitude_ratio_db(h.peak->amplitude, r.floor_N))
-                                              : std::nullopt);
+    r.harmonic_over_floor_db.push_back(h.peak ? std::optional(amplitude_ratio_db(h.peak->amplitude, r.floor_N)) : std::nullopt);
   // The planet local-fault family (a planet tooth meets the sun once per relative turn).
-  if (train.planetary)
-    r.planet_fault_family = planet_fault_family(r.spectrum, train.frequencies.at("planet_fault").value_hz, r.floor_N);
+  if (train.planetary) r.planet_fault_family = planet_fault_family(r.spectrum, train.frequencies.at("planet_fault").value_hz, r.floor_N);
   return r;
 }
 

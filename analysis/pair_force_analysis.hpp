@@ -17,10 +17,10 @@ namespace gearsim {
 
 // A line expected at a multiple of the planet local-fault frequency.
 struct FaultLine {
-  int multiple = 1;                  // k
-  double expected_hz = 0;            // k·f_planet_fault, Hz
+  int multiple = 1;  // k
+  double expected_hz = 0;  // k·f_planet_fault, Hz
   std::optional<SpectralPeak> peak;  // the local maximum nearest it within tolerance; nothing: none
-  double over_floor_db = 0;          // 20·log10(peak amplitude/floor_N), dB, when found
+  double over_floor_db = 0;  // 20·log10(peak amplitude/floor_N), dB, when found
 };
 
 struct PairForceAnalysis {
@@ -40,8 +40,8 @@ struct PairForceAnalysis {
   // interval (the paper's faulty tooth: ≈ 0.4 ms per planet turn, samples 0.5 ms apart) is
   // seen here, not always in the samples.
   std::optional<double> steps_without_force_share;
-  double floor_N = 0;           // median amplitude over 0 … kRunFloorBandTop_hz, N
-  SidebandAnalysis mesh;        // harmonics of f_m and their sidebands (default options)
+  double floor_N = 0;  // median amplitude over 0 … kRunFloorBandTop_hz, N
+  SidebandAnalysis mesh;  // harmonics of f_m and their sidebands (default options)
   // One per mesh.harmonics: its peak over floor_N, dB; nothing where no peak was found.
   std::vector<std::optional<double>> harmonic_over_floor_db;
   // k = 1 … kPlanetFaultMultiples for a planetary set; empty for a gear pair.

@@ -13,10 +13,8 @@ namespace {
 // Bin range [first, last] covering lo_hz ≤ f ≤ hi_hz; empty (first > last) when none.
 std::pair<std::size_t, std::size_t> bin_range(const Spectrum& s, double lo_hz, double hi_hz) {
   const std::size_t n = s.frequency_hz.size();
-  auto first = static_cast<std::size_t>(
-      std::lower_bound(s.frequency_hz.begin(), s.frequency_hz.end(), lo_hz) - s.frequency_hz.begin());
-  auto end = static_cast<std::size_t>(std::upper_bound(s.frequency_hz.begin(), s.frequency_hz.end(), hi_hz) -
-                                      s.frequency_hz.begin());
+  auto first = static_cast<std::size_t>(std::lower_bound(s.frequency_hz.begin(), s.frequency_hz.end(), lo_hz) - s.frequency_hz.begin());
+  auto end = static_cast<std::size_t>(std::upper_bound(s.frequency_hz.begin(), s.frequency_hz.end(), hi_hz) - s.frequency_hz.begin());
   if (end == 0 || first >= n || first >= end) return {1, 0};
   return {first, end - 1};
 }
@@ -28,8 +26,7 @@ std::vector<SpectralPeak> local_maxima(const Spectrum& s, double lo_hz, double h
   const auto [first, last] = bin_range(s, lo_hz, hi_hz);
   const std::vector<double>& a = s.amplitude;
   for (std::size_t k = std::max<std::size_t>(first, 1); k <= last && k + 1 < a.size(); ++k)
-    if (a[k] > a[k - 1] && a[k] >= a[k + 1] && a[k] >= min_amplitude)
-      peaks.push_back({k, s.frequency_hz[k], a[k]});
+    if (a[k] > a[k - 1] && a[k] >= a[k + 1] && a[k] >= min_amplitude) peaks.push_back({k, s.frequency_hz[k], a[k]});
   return peaks;
 }
 
@@ -49,8 +46,7 @@ std::optional<SpectralPeak> nearest_local_maximum(const Spectrum& s, double targ
 double median_noise_floor(const Spectrum& s, double lo_hz, double hi_hz) {
   const auto [first, last] = bin_range(s, lo_hz, hi_hz);
   if (first > last)
-    throw InputError("noise floor: the band " + std::to_string(lo_hz) + " … " + std::to_string(hi_hz) +
-                     " Hz holds no bin of the spectrum");
+    throw InputError("noise floor: the band " + std::to_string(lo_hz) + " … " + std::to_string(hi_hz) + " Hz holds no bin of the spectrum");
   std::vector<double> band(s.amplitude.begin() + static_cast<std::ptrdiff_t>(first),
                            s.amplitude.begin() + static_cast<std::ptrdiff_t>(last) + 1);
   const std::size_t mid = band.size() / 2;

@@ -20,8 +20,7 @@ struct SpectralPeak {
 
 // Local maxima (a[k] > a[k−1] and a[k] ≥ a[k+1]; the first and last bins of the spectrum never
 // count) with lo_hz ≤ f ≤ hi_hz and amplitude ≥ min_amplitude, in increasing frequency.
-std::vector<SpectralPeak> local_maxima(const Spectrum& s, double lo_hz, double hi_hz,
-                                       double min_amplitude = 0);
+std::vector<SpectralPeak> local_maxima(const Spectrum& s, double lo_hz, double hi_hz, double min_amplitude = 0);
 
 // The local maximum nearest target_hz within ± tolerance_hz, or nothing; equal distances go to
 // the higher peak.

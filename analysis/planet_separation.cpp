@@ -78,8 +78,8 @@ void finish_average(PlanetSeparatedAverage& a) {
 }  // namespace
 
 PlanetSeparatedAverage sun_separated_average(const std::vector<double>& x, const std::vector<std::vector<double>>& position,
-                                             const std::vector<double>& offset, const std::vector<double>& sun, double sensor,
-                                             double width, int n) {
+                                             const std::vector<double>& offset, const std::vector<double>& sun, double sensor, double width,
+                                             int n) {
   constexpr double kTurn = 2 * std::numbers::pi;
   if (position.size() != offset.size() || position.empty()) throw InputError("sun separation: one position and one offset per planet");
   for (const std::vector<double>& p : position)

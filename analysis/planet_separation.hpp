@@ -23,8 +23,8 @@ struct PlanetSeparatedAverage {
   // reached are interpolated between their seen neighbours (coverage says how many were seen).
   std::vector<double> mean;
   std::vector<double> weight;  // Σ window weights that went into mean[j] (0: never seen)
-  double coverage = 0;         // share of the grid with weight > 0
-  double passes = 0;           // sensor passes of the planet in the record
+  double coverage = 0;  // share of the grid with weight > 0
+  double passes = 0;  // sensor passes of the planet in the record
 };
 
 // signal, planet_position_rad (the planet centre's angle about the set's centre, world, unwrapped)

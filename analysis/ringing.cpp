@@ -30,12 +30,10 @@ double ringing_dot(const std::vector<double>& a, const std::vector<double>& b) {
 RingingEstimate estimate_ringing(const std::vector<double>& x, double sample_rate_hz) {
   if (!std::isfinite(sample_rate_hz) || sample_rate_hz <= 0.0)
     throw InputError("ringing: sample rate must be a positive number of Hz, got " + ringing_number(sample_rate_hz));
-  if (x.size() < 8)
-    throw InputError("ringing: expected at least 8 samples, got " + std::to_string(x.size()));
+  if (x.size() < 8) throw InputError("ringing: expected at least 8 samples, got " + std::to_string(x.size()));
   double mean = 0.0;
   for (std::size_t k = 0; k < x.size(); ++k) {
-    if (!std::isfinite(x[k]))
-      throw InputError("ringing: sample " + std::to_string(k) + " is not finite (" + ringing_number(x[k]) + ")");
+    if (!std::isfinite(x[k])) throw InputError("ringing: sample " + std::to_string(k) + " is not finite (" + ringing_number(x[k]) + ")");
     mean += x[k];
   }
   mean /= static_cast<double>(x.size());
@@ -68,8 +66,9 @@ RingingEstimate estimate_ringing(const std::vector<double>& x, double sample_rat
     r[j][j] = std::sqrt(ringing_dot(q[j], q[j]));
     // A column (nearly) in the span of the others: the record holds fewer than two modes' worth.
     if (!(r[j][j] > analysis_constants::kRingingRankTolerance * before))
-      throw InputError("ringing: the record is not an oscillation (its samples follow a first-order "
-                       "recurrence, e.g. a plain exponential decay)");
+      throw InputError(
+          "ringing: the record is not an oscillation (its samples follow a first-order "
+          "recurrence, e.g. a plain exponential decay)");
     for (double& v : q[j]) v /= r[j][j];
     qb[j] = ringing_dot(q[j], b);
     for (std::size_t n = 0; n < rows; ++n) b[n] -= qb[j] * q[j][n];
@@ -87,10 +86,10 @@ RingingEstimate estimate_ringing(const std::vector<double>& x, double sample_rat
   const double c1 = c[1], c2 = c[2];
   const double radius = c2 < 0.0 ? std::sqrt(-c2) : 0.0;
   if (!(c2 < 0.0) || !(std::abs(c1) < 2.0 * radius))
-    throw InputError("ringing: the record's best two-pole fit does not oscillate (real poles: c1 = " +
-                     ringing_number(c1) + ", c2 = " + ringing_number(c2) + ")");
+    throw InputError("ringing: the record's best two-pole fit does not oscillate (real poles: c1 = " + ringing_number(c1) +
+                     ", c2 = " + ringing_number(c2) + ")");
   const double theta = std::acos(c1 / (2.0 * radius));  // rad per sample, (0, π)
-  const double wd = theta * sample_rate_hz;              // rad/s
+  const double wd = theta * sample_rate_hz;  // rad/s
   e.frequency_hz = wd / (2.0 * std::numbers::pi);
   e.decay_rate_per_s = -std::log(radius) * sample_rate_hz;
   e.damping_ratio = e.decay_rate_per_s / std::hypot(wd, e.decay_rate_per_s);

@@ -12,9 +12,9 @@
 namespace gearsim {
 
 struct RingingEstimate {
-  double frequency_hz = 0;      // damped frequency f_d, Hz
+  double frequency_hz = 0;  // damped frequency f_d, Hz
   double decay_rate_per_s = 0;  // σ: the envelope goes as exp(−σ·t), 1/s; negative if it grows
-  double damping_ratio = 0;     // ζ = σ/ω_n with ω_n = √((2π·f_d)² + σ²), dimensionless
+  double damping_ratio = 0;  // ζ = σ/ω_n with ω_n = √((2π·f_d)² + σ²), dimensionless
   // RMS of the prediction error over the RMS of x about its mean: ~1e-15 for one ringing on an
   // offset, of order 0.01 or more once anything else is mixed in, dimensionless.
   double relative_residual = 0;

@@ -26,19 +26,16 @@ std::vector<double> window(const std::vector<double>& x, const std::vector<doubl
 
 void check_length(std::size_t n, std::size_t times, const std::string& what) {
   if (n != times)
-    throw InputError("run analysis: " + what + " holds " + std::to_string(n) + " samples for " +
-                     std::to_string(times) + " sample times");
+    throw InputError("run analysis: " + what + " holds " + std::to_string(n) + " samples for " + std::to_string(times) + " sample times");
 }
 
 // Every series as long as the time base; enough samples in the window; at least one pair.
 void check_signals(const RunSignals& s) {
   const std::size_t n = samples_from(s.time_s, s.from_s);
   if (n < analysis_constants::kMinRunSamples)
-    throw InputError("run analysis: only " + std::to_string(n) + " output samples after t = " +
-                     std::to_string(s.from_s) + " s: at least " + std::to_string(analysis_constants::kMinRunSamples) +
-                     " are needed to analyse; run longer");
-  if (s.pair_forces.empty())
-    throw InputError("run analysis: no gear pair (a run with no gear pairs has nothing to analyse)");
+    throw InputError("run analysis: only " + std::to_string(n) + " output samples after t = " + std::to_string(s.from_s) + " s: at least " +
+                     std::to_string(analysis_constants::kMinRunSamples) + " are needed to analyse; run longer");
+  if (s.pair_forces.empty()) throw InputError("run analysis: no gear pair (a run with no gear pairs has nothing to analyse)");
   for (const PairForce& p : s.pair_forces) {
     check_length(p.force_N.size(), s.time_s.size(), "the force of pair " + pair_label(p.pair));
     if (!p.point_force_N.empty())
@@ -104,8 +101,8 @@ std::vector<ToothLoads> all_tooth_loads(const RunSignals& s, const TrainDescript
   for (std::size_t p = 0; p < log.pairs.size(); ++p)
     for (const bool side_a : {true, false}) {
       const std::string& gear = side_a ? log.pairs[p].a : log.pairs[p].b;
-      const auto counted = std::find_if(train.counted_gears.begin(), train.counted_gears.end(),
-                                        [&](const CountedGear& g) { return g.body == gear; });
+      const auto counted =
+          std::find_if(train.counted_gears.begin(), train.counted_gears.end(), [&](const CountedGear& g) { return g.body == gear; });
       if (counted == train.counted_gears.end()) continue;
       const WholeRevolutions w = whole_revolutions(s.time_s, angle_of(s, gear, "its per-tooth loads"), s.from_s);
       if (w.turns < 1) continue;
@@ -122,7 +119,8 @@ void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
   const double dt = log.time_step_s;
   if (!(dt > 0)) return;
   // Step k ends at k·dt (its time in the log, a sum of steps: within rounding of it).
-  const auto first = static_cast<std::int64_t>(std::ceil(r.from_s / dt - 1e-6)), last = static_cast<std::int64_t>(std::floor(r.to_s / dt + 1e-6));
+  const auto first = static_cast<std::int64_t>(std::ceil(r.from_s / dt - 1e-6)),
+             last = static_cast<std::int64_t>(std::floor(r.to_s / dt + 1e-6));
   if (last < first) return;
   std::vector<std::int64_t> with_force(log.pairs.size(), 0), last_counted(log.pairs.size(), first - 1);
   for (std::size_t c = 0; c < log.time_s.size(); ++c) {
@@ -155,8 +153,7 @@ RunAnalysis analyze_signals(const RunSignals& s, const TrainDescription& train) 
   // Each pair's force spectrum; the TE; the planets' synchronous averages; the per-tooth loads.
   for (const PairForce& p : s.pair_forces)
     r.pairs.push_back(analyse_pair_force(p.pair, window(p.force_N, s.time_s, s.from_s), r.sample_rate_hz, train,
-                                         p.point_force_N.empty() ? std::vector<double>{}
-                                                                 : window(p.point_force_N, s.time_s, s.from_s)));
+                                         p.point_force_N.empty() ? std::vector<double>{} : window(p.point_force_N, s.time_s, s.from_s)));
   if (s.te) {
     double samples_p2p = 0;
     r.te = windowed_te_stats(*s.te, s.from_s, &samples_p2p);

@@ -24,7 +24,7 @@ namespace gearsim {
 
 struct RunAnalysis {
   double from_s = 0, to_s = 0;  // the first and last analysed sample instants, s
-  double sample_rate_hz = 0;    // of the output-rate samples in the window, Hz
+  double sample_rate_hz = 0;  // of the output-rate samples in the window, Hz
   std::vector<PairForceAnalysis> pairs;  // every gear pair, in the order of RunSignals::pair_forces
   // Over the window; nothing without a TE series. min, max and peak_to_peak are those of the
   // band-limited signal the samples hold (band_limited.hpp), mean and rms the samples'.

@@ -46,32 +46,32 @@ struct BodyAngle {
 
 // The per-step tooth contacts of a run: one row per tooth-pair contact per step.
 struct ToothContactLog {
-  std::vector<PairId> pairs;                         // the gear pairs; pair[c] indexes this
-  std::vector<double> time_s;                        // the step's time, s
+  std::vector<PairId> pairs;  // the gear pairs; pair[c] indexes this
+  std::vector<double> time_s;  // the step's time, s
   std::vector<std::int64_t> pair, tooth_a, tooth_b;  // tooth_a: a tooth of pairs[pair[c]].a
-  std::vector<double> normal_impulse_N_s;            // normal impulse over the step, N·s
-  double time_step_s = 0;                            // the run's step, s
+  std::vector<double> normal_impulse_N_s;  // normal impulse over the step, N·s
+  double time_step_s = 0;  // the run's step, s
 };
 
 // A housing sensor's record (sensors.csv) and where it sits.
 struct SensorSignal {
   std::string name;
-  double angle_rad = 0;         // about the set's centre, world
+  double angle_rad = 0;  // about the set's centre, world
   double window_width_rad = 0;  // its planet-pass window (the model's)
-  double resonance_hz = 0;      // the housing mode it rings at (0: unknown): the envelope band's centre
+  double resonance_hz = 0;  // the housing mode it rings at (0: unknown): the envelope band's centre
   std::vector<double> time_s;
   std::vector<double> acceleration_m_s2;
 };
 
 struct RunSignals {
-  std::vector<double> time_s;          // output-rate sample instants, s (uniform from from_s on)
+  std::vector<double> time_s;  // output-rate sample instants, s (uniform from from_s on)
   std::vector<PairForce> pair_forces;  // every gear pair, in the world's order, sampled at time_s
   // θ_in − i·θ_out as the run logged it, sampled at time_s; nothing when the run has no
   // transmission (transmission_error_series builds it).
   std::optional<TransmissionError> te;
   std::vector<BodyAngle> angles;  // sampled at time_s: at least the planets and the counted gears
   std::optional<ToothContactLog> tooth_contacts;  // nothing: the run kept no per-step log
-  std::vector<SensorSignal> sensors;              // the run's housing sensors (at their own rate)
+  std::vector<SensorSignal> sensors;  // the run's housing sensors (at their own rate)
   double from_s = 0;  // start of the analysed window, s: samples with time_s ≥ from_s are analysed
 };
 
@@ -87,7 +87,6 @@ struct PlanetGear {
   double position0_rad = 0;
 };
 
-
 // A gear whose per-tooth loads are taken from the tooth-contact log.
 struct CountedGear {
   std::string body;
@@ -100,9 +99,9 @@ struct TrainDescription {
   // A planetary set: its force spectra get the planet local-fault family (key "planet_fault"
   // must be among the frequencies) and its planets a synchronous average.
   bool planetary = false;
-  std::string sun;                 // planetary: the sun's body
+  std::string sun;  // planetary: the sun's body
   std::vector<PlanetGear> planets;  // planetary: every planet
-  std::string carrier;              // planetary: the carrier's body (its angle is logged)
+  std::string carrier;  // planetary: the carrier's body (its angle is logged)
   // planetary: the planets mesh in phase (z_s/N whole): at every instant each is at the same
   // point of its own mesh cycle, so a fixed sensor cannot tell one planet's events from another's.
   bool planets_in_phase = false;

@@ -50,8 +50,8 @@ void localise_in_phase_planets(SensorAnalysis& out, const std::vector<double>& t
   auto events = [&](std::ostringstream& o) {
     o << "event RMS at the common tooth";
     for (std::size_t k = 0; k < a.planets.size(); ++k)
-      o << (k ? ", " : " ") << train.planets[k].body << " " << a.planets[k].event_rms_m_s2 << " m/s² (background " << a.planets[k].background_rms_m_s2
-        << ")";
+      o << (k ? ", " : " ") << train.planets[k].body << " " << a.planets[k].event_rms_m_s2 << " m/s² (background "
+        << a.planets[k].background_rms_m_s2 << ")";
     o << "; correlations";
     for (std::size_t i = 0; i < a.planets.size(); ++i)
       for (std::size_t j = i + 1; j < a.planets.size(); ++j) o << " " << i << "–" << j << " " << a.correlation[i][j];
@@ -86,10 +86,12 @@ void localise_in_phase_planets(SensorAnalysis& out, const std::vector<double>& t
     if (static_cast<int>(k) == a.named) continue;
     std::ostringstream why;
     why.precision(3);
-    why << "its event at the same tooth (" << a.planets[k].event_rms_m_s2 << " m/s², against " << a.planets[static_cast<std::size_t>(a.named)].event_rms_m_s2
-        << " on " << p.body << ") has the opposite polarity to " << p.body << "'s (correlation " << a.correlation[k][static_cast<std::size_t>(a.named)]
+    why << "its event at the same tooth (" << a.planets[k].event_rms_m_s2 << " m/s², against "
+        << a.planets[static_cast<std::size_t>(a.named)].event_rms_m_s2 << " on " << p.body << ") has the opposite polarity to " << p.body
+        << "'s (correlation " << a.correlation[k][static_cast<std::size_t>(a.named)]
         << ") and agrees with the other responders: it takes up the load " << p.body << " sheds (in-phase load sharing), not a fault";
-    out.responses.push_back({train.planets[k].body, a.event_tooth, PairId{}, std::nan(""), std::nan(""), "sensor " + sensor.name, why.str()});
+    out.responses.push_back(
+        {train.planets[k].body, a.event_tooth, PairId{}, std::nan(""), std::nan(""), "sensor " + sensor.name, why.str()});
   }
 }
 
@@ -101,7 +103,8 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
   // The sensor's samples inside the analysed window and the angle record.
   std::vector<double> t, x;
   for (std::size_t i = 0; i < sensor.time_s.size(); ++i)
-    if (sensor.time_s[i] >= s.from_s && sensor.time_s[i] <= s.time_s.back()) t.push_back(sensor.time_s[i]), x.push_back(sensor.acceleration_m_s2[i]);
+    if (sensor.time_s[i] >= s.from_s && sensor.time_s[i] <= s.time_s.back())
+      t.push_back(sensor.time_s[i]), x.push_back(sensor.acceleration_m_s2[i]);
   if (t.size() < 2) throw InputError("sensor " + sensor.name + ": no samples inside the analysed window");
   out.sample_rate_hz = uniform_sample_rate_hz(t);
   const std::vector<double> carrier = interpolate_linear(s.time_s, angle_named(s, train.carrier), t);
@@ -113,7 +116,8 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     const std::vector<double>& spin = spins.back();
     std::vector<double>& position = positions.emplace_back(t.size());
     for (std::size_t i = 0; i < t.size(); ++i) position[i] = p.position0_rad + carrier[i];
-    const PlanetSeparatedAverage a = planet_separated_average(x, position, spin, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
+    const PlanetSeparatedAverage a =
+        planet_separated_average(x, position, spin, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
     PlanetSensorView v{p.body, a.coverage, a.passes, condition_indicators(a.mean, p.teeth), -1};
     // Where the difference signal peaks, as the tooth then facing the sun (tooth k faces it at
     // the planet's turn sun_direction − k·pitch).
@@ -145,7 +149,8 @@ SensorAnalysis analyse_sensor(const SensorSignal& sensor, const RunSignals& s, c
     for (const PlanetGear& p : train.planets) offsets.push_back(p.position0_rad);
     std::vector<double> sun = interpolate_linear(s.time_s, angle_named(s, train.sun), t);
     for (std::size_t i = 0; i < t.size(); ++i) sun[i] -= carrier[i];
-    const PlanetSeparatedAverage a = sun_separated_average(x, positions, offsets, sun, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
+    const PlanetSeparatedAverage a =
+        sun_separated_average(x, positions, offsets, sun, sensor.angle_rad, sensor.window_width_rad, kSamplesPerTurn);
     out.sun = PlanetSensorView{train.sun, a.coverage, a.passes, condition_indicators(a.mean, train.sun_teeth), -1};
   }
   // Sequentially phased: one planet standing apart, FM4 over the fault level and over twice every

@@ -34,10 +34,8 @@ struct Candidate {
 
 }  // namespace
 
-std::optional<SidebandMatch> match_offset(double offset_hz,
-                                          const std::vector<CharacteristicFrequency>& candidates,
-                                          double tolerance_floor_hz, double relative_tolerance,
-                                          int max_multiple) {
+std::optional<SidebandMatch> match_offset(double offset_hz, const std::vector<CharacteristicFrequency>& candidates,
+                                          double tolerance_floor_hz, double relative_tolerance, int max_multiple) {
   const double target = std::abs(offset_hz);
   std::vector<Candidate> hits;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -71,22 +69,18 @@ std::optional<SidebandMatch> match_offset(double offset_hz,
   return m;
 }
 
-SidebandAnalysis analyse_sidebands(const Spectrum& s, double mesh_hz,
-                                   const std::vector<CharacteristicFrequency>& candidates,
+SidebandAnalysis analyse_sidebands(const Spectrum& s, double mesh_hz, const std::vector<CharacteristicFrequency>& candidates,
                                    const SidebandOptions& o) {
   const char* what = "sideband analysis";
   if (!std::isfinite(mesh_hz) || mesh_hz <= 0.0)
-    throw InputError(std::string(what) + ": mesh frequency must be a positive number of Hz, got " +
-                     std::to_string(mesh_hz));
-  if (o.harmonics < 1 || o.max_multiple < 1)
-    throw InputError(std::string(what) + ": harmonics and max_multiple must be at least 1");
+    throw InputError(std::string(what) + ": mesh frequency must be a positive number of Hz, got " + std::to_string(mesh_hz));
+  if (o.harmonics < 1 || o.max_multiple < 1) throw InputError(std::string(what) + ": harmonics and max_multiple must be at least 1");
   if (!(o.span_hz >= 0.0) || !(o.tolerance_bins >= 0.0) || !(o.relative_tolerance >= 0.0))
     throw InputError(std::string(what) + ": span, tolerance_bins and relative_tolerance must be ≥ 0");
   const double top_hz = s.frequency_hz.empty() ? 0.0 : s.frequency_hz.back();
   if (o.harmonics * mesh_hz > top_hz)
-    throw InputError(std::string(what) + ": harmonic " + std::to_string(o.harmonics) + " of " +
-                     std::to_string(mesh_hz) + " Hz lies above the spectrum's highest frequency (" +
-                     std::to_string(top_hz) + " Hz)");
+    throw InputError(std::string(what) + ": harmonic " + std::to_string(o.harmonics) + " of " + std::to_string(mesh_hz) +
+                     " Hz lies above the spectrum's highest frequency (" + std::to_string(top_hz) + " Hz)");
   SidebandAnalysis r;
   r.bin_width_hz = s.bin_width_hz;
   r.resolution_hz = s.resolution_hz;
@@ -107,8 +101,7 @@ SidebandAnalysis analyse_sidebands(const Spectrum& s, double mesh_hz,
       h.height_over_floor_db = amplitude_ratio_db(hp.amplitude, h.noise_floor);
       // Skip the harmonic's own main lobe (less half a bin for the grid's rounding).
       const double lobe_hz = s.mainlobe_halfwidth_hz - 0.5 * s.bin_width_hz;
-      for (const SpectralPeak& p : local_maxima(s, hp.frequency_hz - r.span_hz, hp.frequency_hz + r.span_hz,
-                                                min_ratio * h.noise_floor)) {
+      for (const SpectralPeak& p : local_maxima(s, hp.frequency_hz - r.span_hz, hp.frequency_hz + r.span_hz, min_ratio * h.noise_floor)) {
         const double offset = p.frequency_hz - hp.frequency_hz;
         if (std::abs(offset) < lobe_hz) continue;
         Sideband sb;
@@ -116,8 +109,7 @@ SidebandAnalysis analyse_sidebands(const Spectrum& s, double mesh_hz,
         sb.offset_hz = offset;
         sb.level_db_re_harmonic = amplitude_ratio_db(p.amplitude, hp.amplitude);
         sb.height_over_floor_db = amplitude_ratio_db(p.amplitude, h.noise_floor);
-        sb.match =
-            match_offset(offset, candidates, r.tolerance_floor_hz, o.relative_tolerance, o.max_multiple);
+        sb.match = match_offset(offset, candidates, r.tolerance_floor_hz, o.relative_tolerance, o.max_multiple);
         h.sidebands.push_back(std::move(sb));
       }
     }

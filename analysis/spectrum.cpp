@@ -13,27 +13,24 @@ namespace {
 
 void check_signal(const char* what, const std::vector<double>& x, double sample_rate_hz) {
   if (!std::isfinite(sample_rate_hz) || sample_rate_hz <= 0.0)
-    throw InputError(std::string(what) + ": sample rate must be a positive number of Hz, got " +
-                     std::to_string(sample_rate_hz));
-  if (x.size() < 2)
-    throw InputError(std::string(what) + ": expected at least 2 samples, got " + std::to_string(x.size()));
+    throw InputError(std::string(what) + ": sample rate must be a positive number of Hz, got " + std::to_string(sample_rate_hz));
+  if (x.size() < 2) throw InputError(std::string(what) + ": expected at least 2 samples, got " + std::to_string(x.size()));
   for (std::size_t i = 0; i < x.size(); ++i)
-    if (!std::isfinite(x[i]))
-      throw InputError(std::string(what) + ": sample " + std::to_string(i) + " is not finite");
+    if (!std::isfinite(x[i])) throw InputError(std::string(what) + ": sample " + std::to_string(i) + " is not finite");
 }
 
 // Segments of `length` samples starting every `step` samples, each windowed and transformed;
 // the result holds the mean PSD and the RMS amplitude over the segments.
-Spectrum averaged_spectrum(const std::vector<double>& x, double fs, std::size_t length, std::size_t step,
-                           WindowKind kind, std::size_t fft_length, bool remove_mean) {
+Spectrum averaged_spectrum(const std::vector<double>& x, double fs, std::size_t length, std::size_t step, WindowKind kind,
+                           std::size_t fft_length, bool remove_mean) {
   const Window w = make_window(kind, length);
   const std::size_t fft_len = fft_length == 0 ? length : fft_length;
   if (fft_len < length)
-    throw InputError("spectrum: fft length " + std::to_string(fft_len) + " is shorter than the record (" +
-                     std::to_string(length) + " samples); padding can only lengthen it");
+    throw InputError("spectrum: fft length " + std::to_string(fft_len) + " is shorter than the record (" + std::to_string(length) +
+                     " samples); padding can only lengthen it");
   const std::size_t bins = fft_len / 2 + 1;
   const double n = static_cast<double>(length);
-  const double s1 = w.coherent_gain * n;        // Σw
+  const double s1 = w.coherent_gain * n;  // Σw
   const double s2 = w.enbw_bins * s1 * s1 / n;  // Σw²
   Spectrum s;
   s.window = kind;
@@ -90,15 +87,12 @@ Spectrum amplitude_spectrum(const std::vector<double>& x, double sample_rate_hz,
 Spectrum welch_spectrum(const std::vector<double>& x, double sample_rate_hz, const WelchOptions& o) {
   check_signal("welch spectrum", x, sample_rate_hz);
   if (o.segment_length < 2 || o.segment_length > x.size())
-    throw InputError("welch spectrum: segment length must be 2 … " + std::to_string(x.size()) +
-                     " samples (the record), got " + std::to_string(o.segment_length));
+    throw InputError("welch spectrum: segment length must be 2 … " + std::to_string(x.size()) + " samples (the record), got " +
+                     std::to_string(o.segment_length));
   if (!(o.overlap_fraction >= 0.0 && o.overlap_fraction < 1.0))
-    throw InputError("welch spectrum: overlap fraction must be in [0, 1), got " +
-                     std::to_string(o.overlap_fraction));
-  const auto overlap =
-      static_cast<std::size_t>(std::llround(o.overlap_fraction * static_cast<double>(o.segment_length)));
-  const std::size_t step =
-      std::max<std::size_t>(1, o.segment_length - std::min(overlap, o.segment_length - 1));
+    throw InputError("welch spectrum: overlap fraction must be in [0, 1), got " + std::to_string(o.overlap_fraction));
+  const auto overlap = static_cast<std::size_t>(std::llround(o.overlap_fraction * static_cast<double>(o.segment_length)));
+  const std::size_t step = std::max<std::size_t>(1, o.segment_length - std::min(overlap, o.segment_length - 1));
   return averaged_spectrum(x, sample_rate_hz, o.segment_length, step, o.window, o.fft_length, o.remove_mean);
 }
 

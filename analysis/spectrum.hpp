@@ -27,13 +27,13 @@ struct Spectrum {
   std::vector<double> psd_per_hz;
   WindowKind window = WindowKind::Hann;
   double sample_rate_hz = 0;
-  std::size_t record_length = 0;     // samples per DFT before padding (Welch: the segment length)
-  std::size_t fft_length = 0;        // DFT length after zero padding, ≥ record_length
-  int averages = 1;                  // segments averaged (1 for a single record)
-  double bin_width_hz = 0;           // fs/fft_length
-  double resolution_hz = 0;          // fs/record_length = 1/T
+  std::size_t record_length = 0;  // samples per DFT before padding (Welch: the segment length)
+  std::size_t fft_length = 0;  // DFT length after zero padding, ≥ record_length
+  int averages = 1;  // segments averaged (1 for a single record)
+  double bin_width_hz = 0;  // fs/fft_length
+  double resolution_hz = 0;  // fs/record_length = 1/T
   double mainlobe_halfwidth_hz = 0;  // window main-lobe half width, Hz: tones closer than this merge
-  double enbw_hz = 0;                // equivalent noise bandwidth of one bin, Hz
+  double enbw_hz = 0;  // equivalent noise bandwidth of one bin, Hz
 };
 
 struct SpectrumOptions {
@@ -45,15 +45,14 @@ struct SpectrumOptions {
 
 // Spectrum of one record x (uniform samples at sample_rate_hz). Throws InputError on an empty or
 // too-short record, a non-positive or non-finite rate, a non-finite sample, or fft_length < N.
-Spectrum amplitude_spectrum(const std::vector<double>& x, double sample_rate_hz,
-                            const SpectrumOptions& options = {});
+Spectrum amplitude_spectrum(const std::vector<double>& x, double sample_rate_hz, const SpectrumOptions& options = {});
 
 struct WelchOptions {
   std::size_t segment_length = 0;  // samples per segment, 2 … x.size() (required)
-  double overlap_fraction = 0.5;   // overlap of consecutive segments, [0, 1); 0.5 suits Hann
+  double overlap_fraction = 0.5;  // overlap of consecutive segments, [0, 1); 0.5 suits Hann
   WindowKind window = WindowKind::Hann;
   std::size_t fft_length = 0;  // 0: the segment length; otherwise ≥ it (zero padding)
-  bool remove_mean = true;     // subtract each segment's mean before windowing
+  bool remove_mean = true;  // subtract each segment's mean before windowing
 };
 
 // Welch's method: the PSD is the mean of the segments' PSDs; the amplitude is the RMS over

@@ -15,14 +15,14 @@
 namespace gearsim {
 
 struct SynchronousTeeth {
-  PairId pair;         // the sun–planet pair whose force was averaged
+  PairId pair;  // the sun–planet pair whose force was averaged
   std::string planet;  // whose teeth
-  int revolutions = 0;             // whole revolutions relative to the carrier averaged
+  int revolutions = 0;  // whole revolutions relative to the carrier averaged
   int samples_per_revolution = 0;  // of the angle-domain average
   double z_threshold = 0, min_relative_deviation = 0;
   std::vector<double> mean_force_N;  // per tooth k (the planet's own numbering), N
-  std::vector<double> z_score;       // per tooth k, leave-one-out
-  std::vector<int> flagged_teeth;    // by the same rule as ToothLoads::flagged, increasing
+  std::vector<double> z_score;  // per tooth k, leave-one-out
+  std::vector<int> flagged_teeth;  // by the same rule as ToothLoads::flagged, increasing
   // The standard indicators of the averaged revolution (condition_indicators.hpp), mesh order z_p.
   ConditionIndicators indicators;
 };

@@ -27,8 +27,8 @@ WholeRevolutions whole_revolutions(const std::vector<double>& t, const std::vect
   return {t[i1 - 1] + (t[i1] - t[i1 - 1]) * (target - d0) / (d1 - d0), turns};
 }
 
-ToothLoads tooth_loads(const ToothContactLog& log, std::size_t pair_index, bool side_a, int teeth, double from_s,
-                       double to_s, double revolutions) {
+ToothLoads tooth_loads(const ToothContactLog& log, std::size_t pair_index, bool side_a, int teeth, double from_s, double to_s,
+                       double revolutions) {
   ToothLoads t;
   t.pair = log.pairs.at(pair_index);
   t.gear = side_a ? t.pair.a : t.pair.b;
@@ -42,8 +42,8 @@ ToothLoads tooth_loads(const ToothContactLog& log, std::size_t pair_index, bool 
     if (log.pair[c] != pair || log.time_s[c] < from_s || log.time_s[c] >= to_s) continue;
     const std::int64_t tooth = side_a ? log.tooth_a[c] : log.tooth_b[c];
     if (tooth < 0 || tooth >= teeth)
-      throw InputError("tooth-contact log: pair " + pair_label(t.pair) + " names tooth " + std::to_string(tooth) +
-                       " of " + t.gear + ", a " + std::to_string(teeth) + "-tooth gear");
+      throw InputError("tooth-contact log: pair " + pair_label(t.pair) + " names tooth " + std::to_string(tooth) + " of " + t.gear +
+                       ", a " + std::to_string(teeth) + "-tooth gear");
     t.mean_force_N[static_cast<std::size_t>(tooth)] += log.normal_impulse_N_s[c];
   }
   for (double& f : t.mean_force_N) f /= (to_s - from_s);

@@ -17,20 +17,20 @@ namespace gearsim {
 
 struct ToothLoads {
   PairId pair;
-  std::string gear;             // whose teeth: pair.a or pair.b
+  std::string gear;  // whose teeth: pair.a or pair.b
   double from_s = 0, to_s = 0;  // the window, s: whole revolutions of `gear`
   double revolutions = 0;
   std::vector<double> mean_force_N;  // per tooth k: impulse carried / window length, N
-  std::vector<double> z_score;       // per tooth k, leave-one-out
+  std::vector<double> z_score;  // per tooth k, leave-one-out
   std::vector<int> flagged;  // |z| > z_threshold and apart from the others' mean by > min_relative_deviation
   double z_threshold = 0, min_relative_deviation = 0;
   // Each tooth's share of its own mesh: Σ over the logged steps of its impulse over the pair's
   // total impulse that step (in steps). Healthy teeth carry equal shares whatever the mesh's total
   // does; a flank that is not where the geometry puts it carries less, its neighbours more.
   // Load moved between meshes (planets meshing in phase) changes mean_force_N, not the shares.
-  std::vector<double> share_steps;   // per tooth k
-  std::vector<double> share_z;       // per tooth k, leave-one-out
-  std::vector<int> share_flagged;    // by the same rule as `flagged`
+  std::vector<double> share_steps;  // per tooth k
+  std::vector<double> share_z;  // per tooth k, leave-one-out
+  std::vector<int> share_flagged;  // by the same rule as `flagged`
   // Per whole revolution r (the window cut into `revolutions` equal spans), per tooth k.
   std::vector<std::vector<double>> share_per_revolution;
 };
@@ -43,13 +43,12 @@ struct WholeRevolutions {
   double to_s = 0;
   int turns = 0;
 };
-WholeRevolutions whole_revolutions(const std::vector<double>& time_s, const std::vector<double>& angle_rad,
-                                   double from_s);
+WholeRevolutions whole_revolutions(const std::vector<double>& time_s, const std::vector<double>& angle_rad, double from_s);
 
 // Teeth of side a (side_a) or b of log.pairs[pair_index] over [from_s, to_s), which the caller
 // chose to hold `revolutions` whole revolutions of that gear; `teeth` its tooth count (≥ 3).
 // InputError naming the pair when the log names a tooth outside 0 … teeth − 1.
-ToothLoads tooth_loads(const ToothContactLog& log, std::size_t pair_index, bool side_a, int teeth, double from_s,
-                       double to_s, double revolutions);
+ToothLoads tooth_loads(const ToothContactLog& log, std::size_t pair_index, bool side_a, int teeth, double from_s, double to_s,
+                       double revolutions);
 
 }  // namespace gearsim

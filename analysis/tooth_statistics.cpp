@@ -32,8 +32,8 @@ std::vector<double> leave_one_out_z_scores(const std::vector<double>& values) {
   return out;
 }
 
-std::vector<int> teeth_standing_apart(const std::vector<double>& values, const std::vector<double>& z_scores,
-                                      double z_threshold, double min_relative_deviation) {
+std::vector<int> teeth_standing_apart(const std::vector<double>& values, const std::vector<double>& z_scores, double z_threshold,
+                                      double min_relative_deviation) {
   double total = 0.0;
   for (double v : values) total += v;
   std::vector<int> out;
@@ -51,8 +51,8 @@ ToothStatistics tooth_statistics(const AngleAverage& avg, const ToothStatisticsO
   const int z = o.teeth;
   if (z < 3) throw InputError(std::string(what) + ": teeth: expected at least 3, got " + std::to_string(z));
   if (avg.mean.size() < static_cast<std::size_t>(z) || avg.angle_rad.size() != avg.mean.size())
-    throw InputError(std::string(what) + ": the average holds " + std::to_string(avg.mean.size()) +
-                     " samples, fewer than the " + std::to_string(z) + " teeth");
+    throw InputError(std::string(what) + ": the average holds " + std::to_string(avg.mean.size()) + " samples, fewer than the " +
+                     std::to_string(z) + " teeth");
   if (!(o.z_threshold > 0.0)) throw InputError(std::string(what) + ": z threshold must be positive");
   const double two_pi = 2.0 * std::numbers::pi;
   const double pitch_rad = two_pi / z;

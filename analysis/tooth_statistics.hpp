@@ -36,7 +36,7 @@ struct ToothStatistic {
 
 struct ToothStatistics {
   std::vector<ToothStatistic> teeth;  // tooth 0 … z−1
-  std::vector<int> faulty_teeth;      // indices with |z| > z_threshold, increasing
+  std::vector<int> faulty_teeth;  // indices with |z| > z_threshold, increasing
   double z_threshold = 0;
 };
 
@@ -48,8 +48,8 @@ std::vector<double> leave_one_out_z_scores(const std::vector<double>& values);
 // The teeth whose |z| passes z_threshold AND whose value differs from the mean of the others by
 // more than min_relative_deviation of it (kDefaultToothMinRelativeDeviation: the z alone flags
 // tiny scatter when healthy teeth agree very closely). Increasing order.
-std::vector<int> teeth_standing_apart(const std::vector<double>& values, const std::vector<double>& z_scores,
-                                      double z_threshold, double min_relative_deviation);
+std::vector<int> teeth_standing_apart(const std::vector<double>& values, const std::vector<double>& z_scores, double z_threshold,
+                                      double min_relative_deviation);
 
 // Throws InputError on fewer than 3 teeth (a leave-one-out spread needs two others), fewer
 // average samples than teeth, a non-positive z threshold, or a tooth window with no counting

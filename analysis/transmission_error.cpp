@@ -17,8 +17,7 @@ constexpr double kMToUm = 1e6;
 
 double checked_base_radius(double r_m) {
   if (!std::isfinite(r_m) || r_m <= 0.0)
-    throw InputError("transmission error: input base radius must be a positive number of m, got " +
-                     std::to_string(r_m));
+    throw InputError("transmission error: input base radius must be a positive number of m, got " + std::to_string(r_m));
   return r_m;
 }
 
@@ -46,18 +45,15 @@ SeriesStats stats_of(const std::vector<double>& x, double factor) {
 
 }  // namespace
 
-TransmissionError transmission_error(const std::vector<double>& time_s,
-                                     const std::vector<double>& theta_in_rad,
+TransmissionError transmission_error(const std::vector<double>& time_s, const std::vector<double>& theta_in_rad,
                                      const std::vector<double>& theta_out_rad, double ratio) {
   const char* what = "transmission error";
   if (time_s.size() != theta_in_rad.size() || time_s.size() != theta_out_rad.size())
-    throw InputError(std::string(what) + ": " + std::to_string(time_s.size()) + " times, " +
-                     std::to_string(theta_in_rad.size()) + " input angles and " +
-                     std::to_string(theta_out_rad.size()) + " output angles; expected equal counts");
+    throw InputError(std::string(what) + ": " + std::to_string(time_s.size()) + " times, " + std::to_string(theta_in_rad.size()) +
+                     " input angles and " + std::to_string(theta_out_rad.size()) + " output angles; expected equal counts");
   if (time_s.size() < 2) throw InputError(std::string(what) + ": expected at least 2 samples");
   if (!std::isfinite(ratio) || ratio == 0.0)
-    throw InputError(std::string(what) + ": ratio must be a finite, non-zero number, got " +
-                     std::to_string(ratio));
+    throw InputError(std::string(what) + ": ratio must be a finite, non-zero number, got " + std::to_string(ratio));
   TransmissionError te;
   te.time_s = time_s;
   te.ratio = ratio;
@@ -70,12 +66,11 @@ TransmissionError transmission_error(const std::vector<double>& time_s,
   return te;
 }
 
-TransmissionError transmission_error_series(const std::vector<double>& time_s, const std::vector<double>& te_rad,
-                                            double ratio) {
+TransmissionError transmission_error_series(const std::vector<double>& time_s, const std::vector<double>& te_rad, double ratio) {
   const char* what = "transmission error series";
   if (time_s.size() != te_rad.size())
-    throw InputError(std::string(what) + ": " + std::to_string(time_s.size()) + " times and " +
-                     std::to_string(te_rad.size()) + " values; expected equal counts");
+    throw InputError(std::string(what) + ": " + std::to_string(time_s.size()) + " times and " + std::to_string(te_rad.size()) +
+                     " values; expected equal counts");
   if (time_s.size() < 2) throw InputError(std::string(what) + ": expected at least 2 samples");
   if (!std::isfinite(ratio) || ratio == 0.0)
     throw InputError(std::string(what) + ": ratio must be a finite, non-zero number, got " + std::to_string(ratio));

@@ -36,8 +36,7 @@ std::vector<double> cosine_sum(std::span<const double> a, std::size_t length) {
 Window make_window(WindowKind kind, std::size_t length) {
   if (length == 0) throw InputError("window: expected a length of at least 1 sample, got 0");
   if (kind != WindowKind::Rectangular && length < 2)
-    throw InputError("window: a " + std::string(window_name(kind)) +
-                     " window needs at least 2 samples, got 1");
+    throw InputError("window: a " + std::string(window_name(kind)) + " window needs at least 2 samples, got 1");
   Window w;
   w.kind = kind;
   switch (kind) {

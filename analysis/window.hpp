@@ -12,8 +12,8 @@ namespace gearsim {
 
 enum class WindowKind {
   Rectangular,  // no taper: best resolution, Parseval exact, heavy leakage (−13 dB sidelobes)
-  Hann,         // general purpose: −31 dB first sidelobe, up to −1.42 dB scalloping off-bin
-  FlatTop,      // for amplitudes: HFT95 (Heinzel et al. 2002), ±0.0044 dB flatness, −95 dB sidelobes
+  Hann,  // general purpose: −31 dB first sidelobe, up to −1.42 dB scalloping off-bin
+  FlatTop,  // for amplitudes: HFT95 (Heinzel et al. 2002), ±0.0044 dB flatness, −95 dB sidelobes
 };
 
 struct Window {

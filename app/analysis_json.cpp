@@ -15,8 +15,11 @@ json harmonic_json(const MeshHarmonic& h, const std::optional<double>& over_floo
   }
   json sides = json::array();
   for (const Sideband& b : h.sidebands) {
-    json bj{{"frequency_hz", b.peak.frequency_hz}, {"offset_hz", b.offset_hz}, {"amplitude_N", b.peak.amplitude},
-            {"level_db_re_harmonic", b.level_db_re_harmonic}, {"over_floor_db", b.height_over_floor_db}};
+    json bj{{"frequency_hz", b.peak.frequency_hz},
+            {"offset_hz", b.offset_hz},
+            {"amplitude_N", b.peak.amplitude},
+            {"level_db_re_harmonic", b.level_db_re_harmonic},
+            {"over_floor_db", b.height_over_floor_db}};
     if (b.match) bj["match"] = match_label(*b.match);
     sides.push_back(bj);
   }
@@ -37,8 +40,8 @@ json pair_json(const PairForceAnalysis& p, bool planetary) {
     json family = json::array();
     for (const FaultLine& l : p.planet_fault_family) {
       json e{{"multiple", l.multiple}, {"expected_hz", l.expected_hz}};
-      if (l.peak) e["peak_hz"] = l.peak->frequency_hz, e["amplitude_N"] = l.peak->amplitude,
-                  e["over_median_floor_0_1000_hz_db"] = l.over_floor_db;
+      if (l.peak)
+        e["peak_hz"] = l.peak->frequency_hz, e["amplitude_N"] = l.peak->amplitude, e["over_median_floor_0_1000_hz_db"] = l.over_floor_db;
       family.push_back(e);
     }
     j["planet_fault_family"] = family;
@@ -52,8 +55,7 @@ json pair_json(const PairForceAnalysis& p, bool planetary) {
 }
 
 json te_json(const SeriesStats& te) {
-  return {{"mean_rad", te.mean}, {"min_rad", te.min}, {"max_rad", te.max}, {"peak_to_peak_rad", te.peak_to_peak},
-          {"rms_rad", te.rms}};
+  return {{"mean_rad", te.mean}, {"min_rad", te.min}, {"max_rad", te.max}, {"peak_to_peak_rad", te.peak_to_peak}, {"rms_rad", te.rms}};
 }
 
 // Per tooth: its mean force and z-score.
@@ -78,15 +80,16 @@ json synchronous_json(const SynchronousTeeth& s) {
   // NaN (a difference signal without variance) is written as null.
   auto num_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   const ConditionIndicators& c = s.indicators;
-  j["condition_indicators"] = {{"signal", "the averaged force (one planet revolution); mesh order " + std::to_string(s.mean_force_N.size())},
-                               {"rms_N", num_or_null(c.rms)},
-                               {"crest_factor", num_or_null(c.crest_factor)},
-                               {"kurtosis", num_or_null(c.kurtosis)},
-                               {"fm0", num_or_null(c.fm0)},
-                               {"fm4", num_or_null(c.fm4)},
-                               {"m6a", num_or_null(c.m6a)},
-                               {"na4", num_or_null(c.na4)},
-                               {"er", num_or_null(c.er)}};
+  j["condition_indicators"] = {
+      {"signal", "the averaged force (one planet revolution); mesh order " + std::to_string(s.mean_force_N.size())},
+      {"rms_N", num_or_null(c.rms)},
+      {"crest_factor", num_or_null(c.crest_factor)},
+      {"kurtosis", num_or_null(c.kurtosis)},
+      {"fm0", num_or_null(c.fm0)},
+      {"fm4", num_or_null(c.fm4)},
+      {"m6a", num_or_null(c.m6a)},
+      {"na4", num_or_null(c.na4)},
+      {"er", num_or_null(c.er)}};
   return j;
 }
 
@@ -110,21 +113,24 @@ json tooth_loads_json(const ToothLoads& t) {
 }
 
 json fault_json(const ToothFault& f) {
-  return {{"gear", f.gear}, {"tooth", f.tooth}, {"flank", f.flank}, {"pair", f.pair.a.empty() ? "" : pair_name(f.pair)},
+  return {{"gear", f.gear},     {"tooth", f.tooth},       {"flank", f.flank},          {"pair", f.pair.a.empty() ? "" : pair_name(f.pair)},
           {"source", f.source}, {"evidence", f.evidence}, {"confidence", f.confidence}};
 }
 
 json diagnosis_json(const Diagnosis& d) {
   json faults = json::array();
-  for (const ToothFault& f : d.faults)
-    faults.push_back(fault_json(f));
+  for (const ToothFault& f : d.faults) faults.push_back(fault_json(f));
   return {{"faults", faults}};
 }
 
 json response_json(const ToothResponse& r) {
   auto num_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
-  return {{"gear", r.gear},          {"tooth", r.tooth},     {"pair", r.pair.a.empty() ? "" : pair_name(r.pair)},
-          {"load_z_score", num_or_null(r.load_z)}, {"share_z_score", num_or_null(r.share_z)}, {"source", r.source},
+  return {{"gear", r.gear},
+          {"tooth", r.tooth},
+          {"pair", r.pair.a.empty() ? "" : pair_name(r.pair)},
+          {"load_z_score", num_or_null(r.load_z)},
+          {"share_z_score", num_or_null(r.share_z)},
+          {"source", r.source},
           {"reason", r.reason}};
 }
 
@@ -142,10 +148,17 @@ json in_phase_json(const InPhaseLocalisation& l, const std::vector<PlanetSensorV
     per.push_back({{"planet", k < planets.size() ? planets[k].planet : ""},
                    {"event_rms_m_s2", l.planets[k].event_rms_m_s2},
                    {"background_rms_m_s2", l.planets[k].background_rms_m_s2}});
-  return {{"samples_per_revolution", l.samples_per_revolution}, {"event_tooth_facing_sun", l.event_tooth}, {"planets", per},
-          {"correlation", l.correlation}, {"min_correlation", l.min_correlation}, {"event", l.event},
-          {"named", l.named >= 0 && static_cast<std::size_t>(l.named) < planets.size() ? json(planets[static_cast<std::size_t>(l.named)].planet) : json(nullptr)},
-          {"confidence", l.confidence}, {"reason", l.reason}};
+  return {
+      {"samples_per_revolution", l.samples_per_revolution},
+      {"event_tooth_facing_sun", l.event_tooth},
+      {"planets", per},
+      {"correlation", l.correlation},
+      {"min_correlation", l.min_correlation},
+      {"event", l.event},
+      {"named", l.named >= 0 && static_cast<std::size_t>(l.named) < planets.size() ? json(planets[static_cast<std::size_t>(l.named)].planet)
+                                                                                   : json(nullptr)},
+      {"confidence", l.confidence},
+      {"reason", l.reason}};
 }
 
 json sensors_json(const std::vector<SensorAnalysis>& list) {
@@ -155,14 +168,24 @@ json sensors_json(const std::vector<SensorAnalysis>& list) {
     json planets = json::array();
     for (const PlanetSensorView& v : a.planets) {
       const ConditionIndicators& c = v.indicators;
-      planets.push_back({{"planet", v.planet}, {"passes", v.passes}, {"coverage", v.coverage}, {"peak_tooth_facing_sun", v.peak_tooth},
+      planets.push_back({{"planet", v.planet},
+                         {"passes", v.passes},
+                         {"coverage", v.coverage},
+                         {"peak_tooth_facing_sun", v.peak_tooth},
                          {"difference_peak_m_s2", v.difference_peak_m_s2},
                          {"condition_indicators",
-                          {{"rms_m_s2", num_or_null(c.rms)}, {"crest_factor", num_or_null(c.crest_factor)}, {"kurtosis", num_or_null(c.kurtosis)},
-                           {"fm0", num_or_null(c.fm0)}, {"fm4", num_or_null(c.fm4)}, {"m6a", num_or_null(c.m6a)}, {"na4", num_or_null(c.na4)},
+                          {{"rms_m_s2", num_or_null(c.rms)},
+                           {"crest_factor", num_or_null(c.crest_factor)},
+                           {"kurtosis", num_or_null(c.kurtosis)},
+                           {"fm0", num_or_null(c.fm0)},
+                           {"fm4", num_or_null(c.fm4)},
+                           {"m6a", num_or_null(c.m6a)},
+                           {"na4", num_or_null(c.na4)},
                            {"er", num_or_null(c.er)}}}});
     }
-    json j = {{"sensor", a.sensor}, {"sample_rate_hz", a.sample_rate_hz}, {"method", "McFadden's planet-separated averages (1991)"},
+    json j = {{"sensor", a.sensor},
+              {"sample_rate_hz", a.sample_rate_hz},
+              {"method", "McFadden's planet-separated averages (1991)"},
               {"planets", planets}};
     if (!a.envelope_lines.empty()) {
       json lines = json::array();
@@ -172,10 +195,17 @@ json sensors_json(const std::vector<SensorAnalysis>& list) {
     }
     if (a.sun) {
       const ConditionIndicators& c = a.sun->indicators;
-      j["sun"] = {{"gear", a.sun->planet}, {"passes", a.sun->passes}, {"coverage", a.sun->coverage},
+      j["sun"] = {{"gear", a.sun->planet},
+                  {"passes", a.sun->passes},
+                  {"coverage", a.sun->coverage},
                   {"condition_indicators",
-                   {{"rms_m_s2", num_or_null(c.rms)}, {"crest_factor", num_or_null(c.crest_factor)}, {"kurtosis", num_or_null(c.kurtosis)},
-                    {"fm0", num_or_null(c.fm0)}, {"fm4", num_or_null(c.fm4)}, {"m6a", num_or_null(c.m6a)}, {"na4", num_or_null(c.na4)},
+                   {{"rms_m_s2", num_or_null(c.rms)},
+                    {"crest_factor", num_or_null(c.crest_factor)},
+                    {"kurtosis", num_or_null(c.kurtosis)},
+                    {"fm0", num_or_null(c.fm0)},
+                    {"fm4", num_or_null(c.fm4)},
+                    {"m6a", num_or_null(c.m6a)},
+                    {"na4", num_or_null(c.na4)},
                     {"er", num_or_null(c.er)}}}};
     }
     if (a.in_phase) j["in_phase"] = in_phase_json(*a.in_phase, a.planets);
@@ -191,7 +221,9 @@ json gear_train_json(const input::GearTrain& train) {
   json freqs = json::array();
   for (const CharacteristicFrequency& f : train.frequencies.frequencies)
     freqs.push_back({{"key", f.key}, {"name", f.name}, {"value_hz", f.value_hz}, {"formula", f.formula}});
-  return {{"kind", train.planetary ? "planetary" : train.internal_pair ? "internal pair" : "external pair"},
+  return {{"kind", train.planetary       ? "planetary"
+                   : train.internal_pair ? "internal pair"
+                                         : "external pair"},
           {"mesh_hz", train.frequencies.mesh_hz},
           {"characteristic_frequencies", freqs}};
 }
@@ -217,10 +249,11 @@ json analysis_json(const RunAnalysis& a, const input::GearTrain& train, const st
     if (p.zero_force_share > 0 || p.steps_without_force_share.value_or(0) > 0) separating.push_back(pair_name(p.pair));
   if (!separating.empty())
     j["contact_loss"] = {{"pairs", separating},
-                         {"note", "the teeth of these pairs separate (steps or samples without force) and strike again: the mesh-harmonic "
-                                  "amplitudes of such a run depend on the time step more than those of a run that stays in mesh "
-                                  "(the paper's faulty set: within 1.8 % between dt 2e-5, 1e-5 and 5e-6 s, the healthy set 1.1 %; "
-                                  "docs/solver.md); check them by rerunning at half solver.time_step_s"}};
+                         {"note",
+                          "the teeth of these pairs separate (steps or samples without force) and strike again: the mesh-harmonic "
+                          "amplitudes of such a run depend on the time step more than those of a run that stays in mesh "
+                          "(the paper's faulty set: within 1.8 % between dt 2e-5, 1e-5 and 5e-6 s, the healthy set 1.1 %; "
+                          "docs/solver.md); check them by rerunning at half solver.time_step_s"}};
   if (a.te) {
     j["transmission_error"] = te_json(a.te->rad);
     if (a.te_samples_peak_to_peak_rad) j["transmission_error"]["samples_peak_to_peak_rad"] = *a.te_samples_peak_to_peak_rad;

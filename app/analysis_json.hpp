@@ -20,7 +20,6 @@ std::string pair_name(const PairId& pair);
 // "3xcarrier_shaft": a sideband's match as analysis.json and sidebands.csv write it.
 std::string match_label(const SidebandMatch& match);
 
-nlohmann::ordered_json analysis_json(const RunAnalysis& analysis, const input::GearTrain& train,
-                                     const std::string& scenario_name);
+nlohmann::ordered_json analysis_json(const RunAnalysis& analysis, const input::GearTrain& train, const std::string& scenario_name);
 
 }  // namespace gearsim::app

@@ -21,10 +21,13 @@ json faulty_teeth(const RunAnalysis& a) {
   if (!a.tooth_loads) return faulty;
   for (const ToothLoads& t : *a.tooth_loads)
     for (int k : t.flagged)
-      faulty.push_back({{"pair", pair_name(t.pair)}, {"gear", t.gear}, {"tooth", k},
+      faulty.push_back({{"pair", pair_name(t.pair)},
+                        {"gear", t.gear},
+                        {"tooth", k},
                         {"z_score", t.z_score.at(static_cast<std::size_t>(k))},
                         {"mean_force_N", t.mean_force_N.at(static_cast<std::size_t>(k))},
-                        {"z_threshold", t.z_threshold}, {"min_relative_deviation", t.min_relative_deviation}});
+                        {"z_threshold", t.z_threshold},
+                        {"min_relative_deviation", t.min_relative_deviation}});
   return faulty;
 }
 
@@ -54,9 +57,9 @@ void write_sidebands_csv(const std::filesystem::path& path, const RunAnalysis& a
       for (const MeshHarmonic& h : p.mesh.harmonics) {
         if (!h.peak) continue;
         for (const Sideband& b : h.sidebands)
-          f << pair_name(p.pair) << ',' << h.order << ',' << h.peak->frequency_hz << ',' << b.offset_hz << ','
-            << b.peak.frequency_hz << ',' << b.peak.amplitude << ',' << b.level_db_re_harmonic << ','
-            << b.height_over_floor_db << ',' << (b.match ? match_label(*b.match) : "") << '\n';
+          f << pair_name(p.pair) << ',' << h.order << ',' << h.peak->frequency_hz << ',' << b.offset_hz << ',' << b.peak.frequency_hz << ','
+            << b.peak.amplitude << ',' << b.level_db_re_harmonic << ',' << b.height_over_floor_db << ','
+            << (b.match ? match_label(*b.match) : "") << '\n';
       }
   });
 }
@@ -94,8 +97,8 @@ void add_to_summary(json& summary, const RunAnalysis& a, double mesh_hz) {
   summary["peaks_hz"] = peaks;
   summary["sidebands"] = sidebands;
   if (a.te)
-    summary["te"] = {{"min_rad", a.te->rad.min}, {"max_rad", a.te->rad.max}, {"p2p_rad", a.te->rad.peak_to_peak},
-                     {"rms_rad", a.te->rad.rms}};
+    summary["te"] = {
+        {"min_rad", a.te->rad.min}, {"max_rad", a.te->rad.max}, {"p2p_rad", a.te->rad.peak_to_peak}, {"rms_rad", a.te->rad.rms}};
   summary["faulty_teeth"] = faulty_teeth(a);
 }
 

@@ -19,7 +19,8 @@ void print_analysis(const nlohmann::ordered_json& j, std::ostream& out) {
   for (const auto& [pair, p] : j["pairs"].items()) {
     out << "  " << pair << ": mean " << p["mean_force_N"].get<double>() << " N, zero-force samples "
         << 100 * p["zero_force_share"].get<double>() << " %";
-    if (p.contains("steps_without_force_share")) out << ", steps without force " << 100 * p["steps_without_force_share"].get<double>() << " %";
+    if (p.contains("steps_without_force_share"))
+      out << ", steps without force " << 100 * p["steps_without_force_share"].get<double>() << " %";
     out << "; harmonics";
     for (const auto& h : p["mesh_harmonics"])
       if (h.contains("peak_hz"))
@@ -33,7 +34,8 @@ void print_analysis(const nlohmann::ordered_json& j, std::ostream& out) {
   }
   if (j.contains("transmission_error"))
     out << "  transmission error: peak-to-peak " << std::scientific << std::setprecision(3)
-        << j["transmission_error"]["peak_to_peak_rad"].get<double>() << " rad\n" << std::fixed << std::setprecision(2);
+        << j["transmission_error"]["peak_to_peak_rad"].get<double>() << " rad\n"
+        << std::fixed << std::setprecision(2);
   if (j.contains("tooth_loads"))
     for (const auto& t : j["tooth_loads"]) {
       if (t["flagged_teeth"].empty()) continue;
@@ -48,8 +50,9 @@ void print_analysis(const nlohmann::ordered_json& j, std::ostream& out) {
 void register_analyze(CLI::App& app) {
   auto dir = std::make_shared<std::string>();
   auto from = std::make_shared<double>(-1);
-  CLI::App* sub = app.add_subcommand("analyze", "Analyse a run folder: force spectra, mesh harmonics, sidebands, "
-                                                "fault-frequency family, transmission error, per-tooth loads.");
+  CLI::App* sub = app.add_subcommand("analyze",
+                                     "Analyse a run folder: force spectra, mesh harmonics, sidebands, "
+                                     "fault-frequency family, transmission error, per-tooth loads.");
   sub->add_option("dir", *dir, "A folder written by `gearsim run --out`.")->required()->check(CLI::ExistingDirectory);
   sub->add_option("--from", *from, "Start of the analysed window, s (default: the end of the motors' ramp).")
       ->check(input::cli_within(input::limits::kRunTime_s));

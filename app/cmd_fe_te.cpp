@@ -54,9 +54,8 @@ json stats(const std::vector<double>& v) {
   return json{{"mean", mean}, {"min", *lo}, {"max", *hi}, {"count", x.size()}};
 }
 
-void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
-                   const std::vector<std::optional<fe::PlanetaryFePosition>>& done, double rbs,
-                   json& summary, bool plots) {
+void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def, const std::vector<std::optional<fe::PlanetaryFePosition>>& done,
+                   double rbs, json& summary, bool plots) {
   const int n = def.spec.planets;
   const double mesh_period = 2.0 * M_PI / def.spec.sun.teeth;
   OutputFile te(dir / "te_loaded.csv", Durability::Record);
@@ -68,8 +67,8 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   ms << "position,sun_turn_rad,mesh_phase";
   for (int k = 0; k < n; ++k) {
     const std::string p = "planet_" + std::to_string(k);
-    ms << ",sun_" << p << "_force_N," << p << "_ring_force_N,sun_" << p << "_stiffness_N_per_m," << p
-       << "_ring_stiffness_N_per_m," << p << "_load_share";
+    ms << ",sun_" << p << "_force_N," << p << "_ring_force_N,sun_" << p << "_stiffness_N_per_m," << p << "_ring_stiffness_N_per_m," << p
+       << "_load_share";
   }
   ms << '\n';
   // The tracked tooth (the faulty one, else planet 0's tooth 0): its sun-side force and root stresses.
@@ -94,10 +93,9 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     const fe::PlanetaryFePosition& p = *done[i];
     if (std::isnan(first_turn)) first_turn = p.sun_turn_rad;
     const double phase = (p.sun_turn_rad - first_turn) / mesh_period;
-    te << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.te_geometric_rad << ',' << p.te_elastic_rad << ','
-       << p.te_loaded_rad << ',' << p.te_loaded_rad * 1e6 << ',' << p.te_loaded_rad * rbs * 1e6 << ','
-       << p.te_fe_low_rad << ',' << p.te_fe_full_rad << ',' << p.sun_mesh_torque_low_N_m << ','
-       << p.sun_mesh_torque_N_m << ',' << p.wall_time_s << '\n';
+    te << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.te_geometric_rad << ',' << p.te_elastic_rad << ',' << p.te_loaded_rad
+       << ',' << p.te_loaded_rad * 1e6 << ',' << p.te_loaded_rad * rbs * 1e6 << ',' << p.te_fe_low_rad << ',' << p.te_fe_full_rad << ','
+       << p.sun_mesh_torque_low_N_m << ',' << p.sun_mesh_torque_N_m << ',' << p.wall_time_s << '\n';
     mesh_torque_fraction.push_back(p.sun_mesh_torque_N_m / def.sun_torque_N_m);
     te_loaded.push_back(p.te_loaded_rad);
     te_elastic.push_back(p.te_elastic_rad);
@@ -110,8 +108,8 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     for (int k = 0; k < n; ++k) {
       const double share = total > 0 ? p.sun_planet_force_N[k] * n / total : 0.0;
       smax = std::max(smax, share);
-      ms << ',' << p.sun_planet_force_N[k] << ',' << p.planet_ring_force_N[k] << ','
-         << p.sun_planet_stiffness_N_per_m[k] << ',' << p.planet_ring_stiffness_N_per_m[k] << ',' << share;
+      ms << ',' << p.sun_planet_force_N[k] << ',' << p.planet_ring_force_N[k] << ',' << p.sun_planet_stiffness_N_per_m[k] << ','
+         << p.planet_ring_stiffness_N_per_m[k] << ',' << share;
       k_sp.push_back(p.sun_planet_stiffness_N_per_m[k]);
       // Loaded tooth pairs of this sun–planet mesh: teeth carrying more than kLoadedPairShare of
       // the planet's sun-mesh force.
@@ -133,15 +131,18 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     for (const fe::RootStress& r : p.tracked_root_stress) {
       const bool ccw = r.side == Flank::Ccw;
       const double f = tracked_planet_force[r.tooth];
-      rs << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.tracked.planet << ',' << r.tooth << ','
-         << (ccw ? "ccw" : "cw") << ',' << f << ',' << r.sigma1_max_Pa << ',' << r.sigma2_min_Pa << ','
-         << r.von_mises_max_Pa << ',' << r.sigma1_max_low_Pa << ',' << r.elements << '\n';
-      sigma1_of_tooth[r.tooth] = sigma1_of_tooth.contains(r.tooth) ? std::max(sigma1_of_tooth[r.tooth], r.sigma1_max_Pa)
-                                                                   : r.sigma1_max_Pa;
+      rs << i << ',' << p.sun_turn_rad << ',' << phase << ',' << p.tracked.planet << ',' << r.tooth << ',' << (ccw ? "ccw" : "cw") << ','
+         << f << ',' << r.sigma1_max_Pa << ',' << r.sigma2_min_Pa << ',' << r.von_mises_max_Pa << ',' << r.sigma1_max_low_Pa << ','
+         << r.elements << '\n';
+      sigma1_of_tooth[r.tooth] = sigma1_of_tooth.contains(r.tooth) ? std::max(sigma1_of_tooth[r.tooth], r.sigma1_max_Pa) : r.sigma1_max_Pa;
       json& peak = root_peaks[std::to_string(r.tooth)];
       if (!peak.contains("sigma1_max_Pa") || r.sigma1_max_Pa > peak["sigma1_max_Pa"].get<double>())
-        peak = {{"sigma1_max_Pa", r.sigma1_max_Pa}, {"side", ccw ? "ccw" : "cw"}, {"position", i},
-                {"mesh_phase", phase}, {"tooth_force_N", f}, {"von_mises_max_Pa", r.von_mises_max_Pa}};
+        peak = {{"sigma1_max_Pa", r.sigma1_max_Pa},
+                {"side", ccw ? "ccw" : "cw"},
+                {"position", i},
+                {"mesh_phase", phase},
+                {"tooth_force_N", f},
+                {"von_mises_max_Pa", r.von_mises_max_Pa}};
     }
     for (const auto& [tooth, s1] : sigma1_of_tooth) root_by_tooth[tooth].push_back(s1 * 1e-6);
     share_max.push_back(smax);
@@ -151,7 +152,10 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   auto range = [&](const std::vector<double>& v) {
     if (v.empty()) return json{{"count", 0}};
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    return json{{"min_rad", *lo}, {"max_rad", *hi}, {"p2p_rad", *hi - *lo}, {"p2p_urad", (*hi - *lo) * 1e6},
+    return json{{"min_rad", *lo},
+                {"max_rad", *hi},
+                {"p2p_rad", *hi - *lo},
+                {"p2p_urad", (*hi - *lo) * 1e6},
                 {"p2p_base_um", (*hi - *lo) * rbs * 1e6}};
   };
   summary["positions_solved"] = te_loaded.size();
@@ -168,8 +172,11 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   summary["sun_mesh_torque_over_applied"] = stats(mesh_torque_fraction);
   if (!tracked_force.empty()) {
     const fe::TrackedTooth t = fe::tracked_tooth(def);
-    summary["tracked_tooth"] = {{"planet", t.planet}, {"tooth", t.tooth}, {"faulty", t.faulty},
-                                {"sun_force_N", stats(tracked_force)}, {"root_stress_peak_by_tooth", root_peaks}};
+    summary["tracked_tooth"] = {{"planet", t.planet},
+                                {"tooth", t.tooth},
+                                {"faulty", t.faulty},
+                                {"sun_force_N", stats(tracked_force)},
+                                {"root_stress_peak_by_tooth", root_peaks}};
   }
 
   // Stiffness tables for the dynamics (contact.stiffness_tables). The FE mesh compliance is the
@@ -183,8 +190,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
   constexpr double kMinSeriesSpread = 1.05;
   // body_a, body_b: the planetary macro's body names (sun, planet, ring) for the scenario entry.
   auto table = [&](const char* file, const char* body_a, const char* body_b, const GearSpec& a, const GearSpec& b,
-                   const std::vector<double>& ks,
-                   std::vector<int> ns, const char* count_source) {
+                   const std::vector<double>& ks, std::vector<int> ns, const char* count_source) {
     std::vector<double> k;
     std::vector<int> pairs_of;
     if (ns.empty()) {  // split by range
@@ -204,8 +210,12 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     const auto [lo, hi] = std::minmax_element(k.begin(), k.end());
     const double mean = std::accumulate(k.begin(), k.end(), 0.0) / static_cast<double>(k.size());
     const MeshGeometry g = analyse_mesh(a, b, zero_backlash_centre_distance(a, b));
-    json info = {{"gear_a", a.name}, {"gear_b", b.name}, {"k_min_N_per_m", *lo}, {"k_max_N_per_m", *hi},
-                 {"samples", k.size()}, {"effective_contact_ratio", g.effective_contact_ratio},
+    json info = {{"gear_a", a.name},
+                 {"gear_b", b.name},
+                 {"k_min_N_per_m", *lo},
+                 {"k_max_N_per_m", *hi},
+                 {"samples", k.size()},
+                 {"effective_contact_ratio", g.effective_contact_ratio},
                  {"mean_over_contact_ratio_N_per_m_per_m", mean / (g.effective_contact_ratio * face)}};
     // Least squares y = s x + c with x = 1/n, y = 1/k.
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -228,8 +238,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
         const double fit = 1.0 / (slope / pairs_of[i] + icpt);  // 1/(1/(n k_pair) + 1/k_body)
         rms += std::pow(k[i] / fit - 1.0, 2) / m;
       }
-      info["least_squares"] = {{"k_pair_N_per_m", 1.0 / slope}, {"k_body_N_per_m", 1.0 / icpt},
-                               {"fit_rms_relative", std::sqrt(rms)}};
+      info["least_squares"] = {{"k_pair_N_per_m", 1.0 / slope}, {"k_body_N_per_m", 1.0 / icpt}, {"fit_rms_relative", std::sqrt(rms)}};
     }
     // The table: the series model through the softest sample (one pair) and the stiffest (two
     // pairs), 1/k_min − 1/k_max = 1/(2 k_pair). The loaded TE's ripple is set by these two
@@ -245,8 +254,7 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
       info["k_body_N_per_m"] = k_body;
       // The entry for contact.stiffness_tables: the tooth part per pair, the bodies in series.
       char entry[256];
-      std::snprintf(entry, sizeof entry, "{gears: [%s, %s], file: %s, body_stiffness_N_per_m: %.6g}", body_a,
-                    body_b, file, k_body);
+      std::snprintf(entry, sizeof entry, "{gears: [%s, %s], file: %s, body_stiffness_N_per_m: %.6g}", body_a, body_b, file, k_body);
       info["scenario_entry"] = entry;
     } else {
       c = mean / (g.effective_contact_ratio * face);
@@ -255,42 +263,51 @@ void write_outputs(const fs::path& dir, const fe::PlanetaryFeDef& def,
     info["stiffness_N_per_m_per_m"] = c;
     const GearDimensions d = gear_dimensions(a);
     OutputFile t(dir / file);
-    t << std::setprecision(12) << "radius_a_m,stiffness_N_per_m_per_m\n" << d.root_radius_m << ',' << c << '\n' << d.tip_radius_m << ',' << c << '\n';
+    t << std::setprecision(12) << "radius_a_m,stiffness_N_per_m_per_m\n"
+      << d.root_radius_m << ',' << c << '\n'
+      << d.tip_radius_m << ',' << c << '\n';
     t.commit();
     summary["stiffness_tables"][file] = info;
   };
-  table("fe_stiffness_sun_planet.csv", "sun", "planet", def.spec.sun, def.spec.planet, k_sp, n_sp, "FE: teeth carrying > 2 % of the mesh force");
-  table("fe_stiffness_planet_ring.csv", "planet", "ring", def.spec.planet, def.spec.ring, k_pr, {}, "softer/stiffer half of the sampled range");
+  table("fe_stiffness_sun_planet.csv", "sun", "planet", def.spec.sun, def.spec.planet, k_sp, n_sp,
+        "FE: teeth carrying > 2 % of the mesh force");
+  table("fe_stiffness_planet_ring.csv", "planet", "ring", def.spec.planet, def.spec.ring, k_pr, {},
+        "softer/stiffer half of the sampled range");
   if (plots && te_loaded.size() >= 2) {
-    write_output_file(dir / "te_loaded.svg", gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
-                       "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'TE, µrad'; set grid\n"
-                       "set y2label 'elastic part, µrad'; set y2tics; set ytics nomirror\n"
-                       "plot $d using 1:2 with linespoints title 'loaded TE (θ_s − i θ_c)', "
-                       "$d using 1:3 axes x1y2 with linespoints title 'elastic part'\n"));
+    write_output_file(dir / "te_loaded.svg",
+                      gnuplot_svg(data_block("d", {phase_col, te_col, tel_col}) +
+                                  "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'TE, µrad'; set grid\n"
+                                  "set y2label 'elastic part, µrad'; set y2tics; set ytics nomirror\n"
+                                  "plot $d using 1:2 with linespoints title 'loaded TE (θ_s − i θ_c)', "
+                                  "$d using 1:3 axes x1y2 with linespoints title 'elastic part'\n"));
     if (root_by_tooth.size() == 3) {
       const fe::TrackedTooth t = fe::tracked_tooth(def);
       const int z = def.planet_gears.empty() ? def.spec.planet.teeth : def.planet_gears[0].teeth;
       const int before = (t.tooth + z - 1) % z, after = (t.tooth + 1) % z;
-      write_output_file(dir / "root_stress.svg", gnuplot_svg(data_block("d", {phase_col, root_by_tooth[before], root_by_tooth[t.tooth], root_by_tooth[after],
-                                          tracked_force}) +
-                         "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'largest root σ1, MPa'; set grid\n"
-                         "set y2label 'sun force on the tracked tooth, N'; set y2tics; set ytics nomirror\n"
-                         "plot $d using 1:2 with linespoints title 'tooth " + std::to_string(before) +
-                         "', $d using 1:3 with linespoints title 'tooth " + std::to_string(t.tooth) +
-                         (t.faulty ? " (faulty)" : "") + "', $d using 1:4 with linespoints title 'tooth " +
-                         std::to_string(after) + "', $d using 1:5 axes x1y2 with linespoints title 'force on tooth " +
-                         std::to_string(t.tooth) + "'\n"));
+      write_output_file(
+          dir / "root_stress.svg",
+          gnuplot_svg(data_block("d", {phase_col, root_by_tooth[before], root_by_tooth[t.tooth], root_by_tooth[after], tracked_force}) +
+                      "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'largest root σ1, MPa'; set grid\n"
+                      "set y2label 'sun force on the tracked tooth, N'; set y2tics; set ytics nomirror\n"
+                      "plot $d using 1:2 with linespoints title 'tooth " +
+                      std::to_string(before) + "', $d using 1:3 with linespoints title 'tooth " + std::to_string(t.tooth) +
+                      (t.faulty ? " (faulty)" : "") + "', $d using 1:4 with linespoints title 'tooth " + std::to_string(after) +
+                      "', $d using 1:5 axes x1y2 with linespoints title 'force on tooth " + std::to_string(t.tooth) + "'\n"));
     }
-    write_output_file(dir / "mesh_stiffness.svg", gnuplot_svg(data_block("d", {phase_col, kcol}) +
-                       "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"
-                       "plot $d using 1:2 with linespoints title 'sun–planet 0 secant mesh stiffness'\n"));
+    write_output_file(dir / "mesh_stiffness.svg",
+                      gnuplot_svg(data_block("d", {phase_col, kcol}) +
+                                  "set xlabel 'sun turn relative to the carrier, mesh periods'; set ylabel 'N/m'; set grid\n"
+                                  "plot $d using 1:2 with linespoints title 'sun–planet 0 secant mesh stiffness'\n"));
   }
 }
 
 void fe_te(const FeTeOptions& o) {
   const physics::Scenario s = input::load_scenario(o.scenario, o.sets);
-  if (!s.fe) throw InputError(o.scenario + ": no fe: section (fe-te needs its settings; see the fe: section of assets/scenarios/paper_te_loaded.yaml)");
-  if (!s.planetary) throw InputError(o.scenario + ": fe-te solves planetary trains of generated gears (the planetary: macro with a spec's gear names)");
+  if (!s.fe)
+    throw InputError(o.scenario +
+                     ": no fe: section (fe-te needs its settings; see the fe: section of assets/scenarios/paper_te_loaded.yaml)");
+  if (!s.planetary)
+    throw InputError(o.scenario + ": fe-te solves planetary trains of generated gears (the planetary: macro with a spec's gear names)");
   if (fe::find_executable(o.ccx).empty())
     throw InputError("CalculiX solver '" + o.ccx + "' not found on PATH (Debian package calculix-ccx; or give --ccx PATH)");
   const physics::FeTeDef& f = *s.fe;
@@ -298,9 +315,8 @@ void fe_te(const FeTeOptions& o) {
   // The outputs in the manifest; ccx/ is CalculiX's work folder (a deck, log and results per
   // position, written by ccx itself), kept for inspection and not listed.
   OutputFolder folder(dir, "gearsim fe-te");
-  folder.declare({"te_loaded.csv", "mesh_stiffness.csv", "tooth_forces.csv", "root_stress.csv", "te_loaded.svg",
-                  "root_stress.svg", "mesh_stiffness.svg", "fe_stiffness_sun_planet.csv", "fe_stiffness_planet_ring.csv",
-                  "summary.json"});
+  folder.declare({"te_loaded.csv", "mesh_stiffness.csv", "tooth_forces.csv", "root_stress.csv", "te_loaded.svg", "root_stress.svg",
+                  "mesh_stiffness.svg", "fe_stiffness_sun_planet.csv", "fe_stiffness_planet_ring.csv", "summary.json"});
   std::error_code ec;
   fs::create_directories(dir / "ccx", ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
@@ -324,8 +340,8 @@ void fe_te(const FeTeOptions& o) {
 
   const auto wall0 = std::chrono::steady_clock::now();
   auto since = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(); };
-  std::cerr << s.name << ": meshing (flank " << f.flank_size_m * 1e3 << " mm, sagitta ≤ " << f.max_sagitta_m * 1e6
-            << " µm)..." << std::flush;
+  std::cerr << s.name << ": meshing (flank " << f.flank_size_m * 1e3 << " mm, sagitta ≤ " << f.max_sagitta_m * 1e6 << " µm)..."
+            << std::flush;
   const fe::PlanetaryFeMeshes meshes = fe::mesh_planetary(def);
   const double mesh_wall = since();
   std::cerr << " sun " << meshes.sun.quality.quads << ", planet " << meshes.planets[0].quality.quads << ", ring "
@@ -337,17 +353,22 @@ void fe_te(const FeTeOptions& o) {
   summary["scenario"] = s.name;
   summary["scenario_file"] = fs::absolute(o.scenario).lexically_normal().string();
   summary["overrides"] = o.sets;
-  summary["fe"] = {{"flank_size_m", f.flank_size_m}, {"core_size_m", f.core_size_m}, {"transition_m", f.transition_m},
-                   {"max_sagitta_m", f.max_sagitta_m}, {"thinning_per_flank_m", f.thinning_per_flank_m},
-                   {"sun_torque_N_m", f.sun_torque_N_m}, {"torque_source", f.torque_source},
-                   {"friction", f.friction}, {"element_type", f.element_type},
-                   {"positions_per_mesh", f.positions_per_mesh}, {"mesh_periods", f.mesh_periods}, {"jobs", f.jobs},
+  summary["fe"] = {{"flank_size_m", f.flank_size_m},
+                   {"core_size_m", f.core_size_m},
+                   {"transition_m", f.transition_m},
+                   {"max_sagitta_m", f.max_sagitta_m},
+                   {"thinning_per_flank_m", f.thinning_per_flank_m},
+                   {"sun_torque_N_m", f.sun_torque_N_m},
+                   {"torque_source", f.torque_source},
+                   {"friction", f.friction},
+                   {"element_type", f.element_type},
+                   {"positions_per_mesh", f.positions_per_mesh},
+                   {"mesh_periods", f.mesh_periods},
+                   {"jobs", f.jobs},
                    {"low_load_fraction", fe::kLowLoadFraction}};
-  summary["quads"] = {{"sun", meshes.sun.quality.quads}, {"planet", meshes.planets[0].quality.quads},
-                      {"ring", meshes.ring.quality.quads}};
-  summary["min_scaled_jacobian"] = std::min({meshes.sun.quality.min_scaled_jacobian,
-                                             meshes.planets[0].quality.min_scaled_jacobian,
-                                             meshes.ring.quality.min_scaled_jacobian});
+  summary["quads"] = {{"sun", meshes.sun.quality.quads}, {"planet", meshes.planets[0].quality.quads}, {"ring", meshes.ring.quality.quads}};
+  summary["min_scaled_jacobian"] = std::min(
+      {meshes.sun.quality.min_scaled_jacobian, meshes.planets[0].quality.min_scaled_jacobian, meshes.ring.quality.min_scaled_jacobian});
   summary["sun_base_radius_m"] = rbs;
   summary["positions"] = turns.size();
 
@@ -362,8 +383,8 @@ void fe_te(const FeTeOptions& o) {
       ccx_total += p.wall_time_s;
       std::cerr << "  position " << finished << "/" << turns.size() << " (pos_" << std::setw(3) << std::setfill('0') << i
                 << std::setfill(' ') << "): TE " << std::setprecision(2) << p.te_loaded_rad * 1e6 << " µrad, elastic "
-                << p.te_elastic_rad * 1e6 << " µrad, sun–planet " << std::setprecision(1) << p.sun_planet_force_N[0]
-                << " N; ccx " << p.wall_time_s << " s, elapsed " << since() << " s\n";
+                << p.te_elastic_rad * 1e6 << " µrad, sun–planet " << std::setprecision(1) << p.sun_planet_force_N[0] << " N; ccx "
+                << p.wall_time_s << " s, elapsed " << since() << " s\n";
     });
   } catch (const std::exception& e) {
     status = "failed";

@@ -27,9 +27,7 @@ struct GearsOptions {
 };
 
 // The file name ending of a --formats value.
-std::string extension_of(const std::string& format) {
-  return format == "obj" ? ".obj" : format == "stl-ascii" ? ".ascii.stl" : ".stl";
-}
+std::string extension_of(const std::string& format) { return format == "obj" ? ".obj" : format == "stl-ascii" ? ".ascii.stl" : ".stl"; }
 
 void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
   const std::filesystem::path dir(o.out_dir);
@@ -57,8 +55,10 @@ void write_outputs(const GearsOptions& o, const GearSetAnalysis& a) {
 void run(const GearsOptions& o) {
   const input::GearSetFile file = input::load_gearset(o.spec);
   const GearSetAnalysis a = analyse_gearset(file, o.hausdorff_spacing_mm * 1e-3);
-  if (o.json_only) std::cout << a.doc.dump(2) << "\n";
-  else print_gearset(std::cout, a.doc);
+  if (o.json_only)
+    std::cout << a.doc.dump(2) << "\n";
+  else
+    print_gearset(std::cout, a.doc);
   if (!o.out_dir.empty()) {
     write_outputs(o, a);
     if (!o.json_only) std::cout << "\nWrote meshes (mm) and gearset.json to " << o.out_dir << "\n";
@@ -69,11 +69,10 @@ void run(const GearsOptions& o) {
 
 void register_gears(CLI::App& app) {
   auto o = std::make_shared<GearsOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "gears",
-      "Generate the gears of a gear-set spec file (YAML): gear table from first principles, "
-      "mesh and train checks (contact ratio, interference, assembly), exact convex "
-      "decomposition, tolerances, and STL/OBJ meshes.");
+  CLI::App* sub = app.add_subcommand("gears",
+                                     "Generate the gears of a gear-set spec file (YAML): gear table from first principles, "
+                                     "mesh and train checks (contact ratio, interference, assembly), exact convex "
+                                     "decomposition, tolerances, and STL/OBJ meshes.");
   sub->add_option("spec", o->spec, "Gear-set spec file (YAML), e.g. assets/specs/paper_gearset.yaml.")
       ->required()
       ->check(CLI::ExistingFile);

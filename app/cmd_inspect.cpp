@@ -31,12 +31,12 @@ void print(const json& j, const std::string& indent = "  ") {
 
 void register_inspect(CLI::App& app) {
   auto o = std::make_shared<InspectCliOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "inspect",
-      "Inspect a CAD mesh (any format Assimp reads: STL, OBJ, PLY, ...): topology checks, mass "
-      "properties, the convex decomposition Bullet would get with its measured deviation, and the gear "
-      "recognised from the outline (tooth count, tooth 0, involute fit, module, pressure angle, thickness) with "
-      "the departure of the contact's flank table from it.");
+  CLI::App* sub =
+      app.add_subcommand("inspect",
+                         "Inspect a CAD mesh (any format Assimp reads: STL, OBJ, PLY, ...): topology checks, mass "
+                         "properties, the convex decomposition Bullet would get with its measured deviation, and the gear "
+                         "recognised from the outline (tooth count, tooth 0, involute fit, module, pressure angle, thickness) with "
+                         "the departure of the contact's flank table from it.");
   sub->add_option("mesh", o->mesh, "Mesh file.")->required()->check(CLI::ExistingFile);
   sub->add_option("--unit", o->unit, "Length unit of the file's coordinates: m, cm, mm, um, in, ft. Default mm (CAD).");
   using namespace input::limits;
@@ -50,13 +50,17 @@ void register_inspect(CLI::App& app) {
                   "How far, in µm, a vertex may lie off the two cap planes and still count as a prism. Default 2, "
                   "as for scenario meshes (STL stores float32: ~0.003 µm at gear scale; CAD noise ~1 µm).")
       ->check(input::cli_within(kPrismTolerance_um));
-  sub->add_option("--hausdorff-spacing", o->spacing_mm, "Sample spacing, in mm, of the deviation measurement (every vertex is sampled; edges and faces at this spacing). Default 0.5.")
+  sub->add_option(
+         "--hausdorff-spacing", o->spacing_mm,
+         "Sample spacing, in mm, of the deviation measurement (every vertex is sampled; edges and faces at this spacing). Default 0.5.")
       ->check(input::cli_within(kSampleSpacing_mm));
   sub->add_flag("--json", o->json_only, "Print JSON instead of a list.");
   sub->callback([o] {
     const json j = inspect_mesh(*o);
-    if (o->json_only) std::cout << j.dump(2) << "\n";
-    else print(j);
+    if (o->json_only)
+      std::cout << j.dump(2) << "\n";
+    else
+      print(j);
   });
 }
 

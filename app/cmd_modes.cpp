@@ -53,10 +53,11 @@ void print_table(const linear::LumpedModel& m, const linear::ModalAnalysis& a, c
     }
     std::cout << "\n";
   }
-  if (!c.why_not.empty()) std::cout << "Campbell: " << c.why_not << "\n";
+  if (!c.why_not.empty())
+    std::cout << "Campbell: " << c.why_not << "\n";
   else if (c.operating_speed_rad_s && !c.rates.empty())
-    std::cout << "mesh frequency at the motor's " << *c.operating_speed_rad_s << " rad/s: " << c.rates.front().hz_per_rad_s * *c.operating_speed_rad_s
-              << " Hz\n";
+    std::cout << "mesh frequency at the motor's " << *c.operating_speed_rad_s
+              << " rad/s: " << c.rates.front().hz_per_rad_s * *c.operating_speed_rad_s << " Hz\n";
 }
 
 void modes(const ModesOptions& o) {
@@ -66,8 +67,10 @@ void modes(const ModesOptions& o) {
   const linear::ModalAnalysis& a = r.modes;
   const linear::Campbell& c = r.campbell;
   const nlohmann::json j = modes_json(s.name, model, a, c);
-  if (o.json_only) std::cout << j.dump(2) << "\n";
-  else print_table(model, a, c);
+  if (o.json_only)
+    std::cout << j.dump(2) << "\n";
+  else
+    print_table(model, a, c);
   if (o.out_dir.empty()) return;
   const std::filesystem::path dir(o.out_dir);
   OutputFolder folder(dir, "gearsim modes");
@@ -83,12 +86,14 @@ void modes(const ModesOptions& o) {
 
 void register_modes(CLI::App& app) {
   auto o = std::make_shared<ModesOptions>();
-  CLI::App* sub = app.add_subcommand("modes", "Natural frequencies, mode types and shapes of a scenario's model linearised about its start.");
+  CLI::App* sub =
+      app.add_subcommand("modes", "Natural frequencies, mode types and shapes of a scenario's model linearised about its start.");
   sub->add_option("scenario", o->scenario, "Scenario file (YAML).")->required()->check(CLI::ExistingFile);
   sub->add_option("--out", o->out_dir, "Also write modes.json, mode_shapes.csv, campbell.csv and modes.svg here.");
   sub->add_option("--set", o->sets, "Override a scenario value: key.path=value (repeatable).");
-  sub->add_option("--drive", o->drive, "The gear whose torque drives the train and its sense, BODY=ccw|cw (default: the motor's body, "
-                                       "else the transmission input's load).");
+  sub->add_option("--drive", o->drive,
+                  "The gear whose torque drives the train and its sense, BODY=ccw|cw (default: the motor's body, "
+                  "else the transmission input's load).");
   sub->add_flag("--json", o->json_only, "Print the JSON (modes.json) instead of the table.");
   sub->add_option("--harmonics", o->harmonics, "Mesh harmonics in the Campbell table (default 3).")
       ->check(input::cli_within(input::limits::kModeHarmonics));

@@ -30,15 +30,14 @@ void register_render(CLI::App& app) {
       ->check(input::cli_within(input::limits::kSlowMotion));
   sub->add_option("--from", o->from_s, "First simulated time, s (default: the first logged sample).")
       ->check(input::cli_within(input::limits::kRunTime_s));
-  sub->add_option("--to", o->to_s, "Last simulated time, s (default: the last logged sample).")->check(input::cli_within(input::limits::kRunTime_s));
+  sub->add_option("--to", o->to_s, "Last simulated time, s (default: the last logged sample).")
+      ->check(input::cli_within(input::limits::kRunTime_s));
   sub->add_option("--width", o->def.width_px, "Frame width, px (even).")->check(input::cli_within(input::limits::kFrameSize_px));
   sub->add_option("--height", o->def.height_px, "Frame height, px (even).")->check(input::cli_within(input::limits::kFrameSize_px));
-  sub->add_option("--msaa", o->def.msaa,
-                  "Multisampling with this many samples (2 to 16) instead of the default edge anti-aliasing (0).")
+  sub->add_option("--msaa", o->def.msaa, "Multisampling with this many samples (2 to 16) instead of the default edge anti-aliasing (0).")
       ->check(CLI::Range(0, 16))
       ->check([](const std::string& v) { return v == "1" ? std::string("one sample is no multisampling: 0 or 2 to 16") : ""; });
-  sub->add_option("--png-every", o->def.png_every, "Write every Nth frame as PNG to DIR/frames/ (0: none).")
-      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--png-every", o->def.png_every, "Write every Nth frame as PNG to DIR/frames/ (0: none).")->check(CLI::NonNegativeNumber);
   sub->callback([o] {
     physics::RenderDef def = o->def;
     if (o->from_s >= 0) def.from_s = o->from_s;

@@ -34,8 +34,12 @@ void write_report_html(const std::filesystem::path& out, const std::string& html
 void register_report(CLI::App& app) {
   auto dir = std::make_shared<std::string>();
   auto compare = std::make_shared<std::string>();
-  CLI::App* sub = app.add_subcommand("report", "Write DIR/report.html: the run against the paper, in one self-contained page; for a sweep folder, its table and metric plots.");
-  sub->add_option("dir", *dir, "A folder written by `gearsim run --out` or `gearsim sweep --out`.")->required()->check(CLI::ExistingDirectory);
+  CLI::App* sub = app.add_subcommand(
+      "report",
+      "Write DIR/report.html: the run against the paper, in one self-contained page; for a sweep folder, its table and metric plots.");
+  sub->add_option("dir", *dir, "A folder written by `gearsim run --out` or `gearsim sweep --out`.")
+      ->required()
+      ->check(CLI::ExistingDirectory);
   sub->add_option("--compare", *compare, "A second run folder (e.g. the healthy twin) overlaid on spectra and tooth loads.")
       ->check(CLI::ExistingDirectory);
   sub->callback([dir, compare] {

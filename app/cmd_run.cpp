@@ -43,17 +43,16 @@ void throw_if_stopped(const sim::RunSummary& r, const std::filesystem::path& dir
   if (r.status == sim::RunStatus::OutputFailed) {
     std::string what;
     for (const std::string& w : r.not_written) what += (what.empty() ? "" : "; ") + w;
-    throw OutputError("the run stopped at t = " + std::to_string(r.sim_seconds) + " s: " + what +
-                      " (summary.json in " + dir.string() + " says what was written)");
+    throw OutputError("the run stopped at t = " + std::to_string(r.sim_seconds) + " s: " + what + " (summary.json in " + dir.string() +
+                      " says what was written)");
   }
   if (const auto& d = r.divergence)
-    throw RunStopped(kExitDiverged, "diverged at t = " + std::to_string(d->time_s) + " s (step " +
-                                        std::to_string(d->step) + "): " + d->message +
-                                        ". Logs up to that step are in " + dir.string());
+    throw RunStopped(kExitDiverged, "diverged at t = " + std::to_string(d->time_s) + " s (step " + std::to_string(d->step) +
+                                        "): " + d->message + ". Logs up to that step are in " + dir.string());
   if (r.status == sim::RunStatus::Interrupted) {
     throw RunStopped(r.stop_signal == SIGTERM ? kExitSigterm : kExitSigint,
-                     "interrupted by " + signal_name(r.stop_signal) + ": the logs hold the run up to t = " +
-                         std::to_string(r.sim_seconds) + " s in " + dir.string() + " (not analysed)");
+                     "interrupted by " + signal_name(r.stop_signal) + ": the logs hold the run up to t = " + std::to_string(r.sim_seconds) +
+                         " s in " + dir.string() + " (not analysed)");
   }
 }
 
@@ -63,8 +62,7 @@ void run(const RunOptions& o) {
   const std::filesystem::path dir(o.out_dir);
   // Held until the command ends: the run, its analysis and its renders write into it.
   OutputFolder folder(dir, "gearsim run", OutputFolder::ForNewRun{o.force});
-  if (const int n = folder.removed(); n > 0)
-    std::cout << "removed " << n << " outputs of a previous run in " << dir.string() << "\n";
+  if (const int n = folder.removed(); n > 0) std::cout << "removed " << n << " outputs of a previous run in " << dir.string() << "\n";
   const bool tty = isatty(STDERR_FILENO);
   int last_percent = -1;
   sim::SimOptions options;
@@ -81,8 +79,8 @@ void run(const RunOptions& o) {
   const DirRun run = run_into_dir(s, RunSource{o.scenario, o.sets}, folder, options);
   if (tty) std::cerr << "\n";
   const sim::RunSummary& r = run.result;
-  std::cout << s.name << ": " << sim::status_name(r.status) << ", " << r.sim_seconds << " s simulated in "
-            << std::setprecision(3) << r.wall_seconds << " s wall; logs in " << dir.string() << "\n";
+  std::cout << s.name << ": " << sim::status_name(r.status) << ", " << r.sim_seconds << " s simulated in " << std::setprecision(3)
+            << r.wall_seconds << " s wall; logs in " << dir.string() << "\n";
   for (const std::string& w : r.warnings) std::cout << "warning: " << w << "\n";
   for (const physics::PairTableDef& t : s.pair_tables)
     if (!t.placement_note.empty()) std::cout << "note: " << t.placement_note << "\n";
@@ -100,8 +98,8 @@ void run(const RunOptions& o) {
   // after it is not started.
   if (const int sig = stop_signal())
     throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint,
-                     std::string("interrupted by ") + signal_name(sig) + " after the run and its analysis" + (s.render ? ": not rendered" : "") +
-                         " (the run is complete in " + dir.string() + ")");
+                     std::string("interrupted by ") + signal_name(sig) + " after the run and its analysis" +
+                         (s.render ? ": not rendered" : "") + " (the run is complete in " + dir.string() + ")");
   if (!s.render) return;
   try {
     const RenderResult rendered = render_run(open_run_dir(dir), *s.render, stop_signal);

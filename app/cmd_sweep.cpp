@@ -36,9 +36,12 @@ int sweep_stop_requested() { return static_cast<int>(g_sweep_stop); }
 std::string sweep_duration_text(double s) {
   std::ostringstream o;
   if (s < 0) return "?";
-  if (s < 90) o << std::fixed << std::setprecision(0) << s << " s";
-  else if (s < 5400) o << std::fixed << std::setprecision(1) << s / 60 << " min";
-  else o << std::fixed << std::setprecision(1) << s / 3600 << " h";
+  if (s < 90)
+    o << std::fixed << std::setprecision(0) << s << " s";
+  else if (s < 5400)
+    o << std::fixed << std::setprecision(1) << s / 60 << " min";
+  else
+    o << std::fixed << std::setprecision(1) << s / 3600 << " h";
   return o.str();
 }
 
@@ -47,33 +50,29 @@ void print_sweep_progress(const sweep::Progress& p) {
   const sweep::CaseRecord& r = *p.last;
   std::cerr << "sweep: case " << r.index << " " << sweep::status_name(r.status);
   if (r.status != sweep::CaseStatus::Completed) std::cerr << " (exit " << r.exit_code << ")";
-  std::cerr << "; " << p.done << "/" << p.to_run << " done, " << p.failed << " not completed, ETA "
-            << sweep_duration_text(p.eta_s) << "\n";
+  std::cerr << "; " << p.done << "/" << p.to_run << " done, " << p.failed << " not completed, ETA " << sweep_duration_text(p.eta_s) << "\n";
 }
 
-sweep::CaseContext sweep_case_context() {
-  return {sweep::self_executable(), collect_case_metrics, sweep_stop_requested};
-}
+sweep::CaseContext sweep_case_context() { return {sweep::self_executable(), collect_case_metrics, sweep_stop_requested}; }
 
 // The end of a sweep: what it did, and the exit code it ends with.
 void finish_sweep(const sweep::SweepOutcome& out) {
   const sweep::StatusCounts& c = out.statuses;
-  std::cout << "sweep: " << out.cases << " cases (" << out.ran << " run now, " << out.skipped << " finished before): "
-            << c.completed << " completed, " << c.diverged << " diverged, " << c.failed << " failed, " << c.interrupted
-            << " interrupted, " << c.not_run << " not run\n"
+  std::cout << "sweep: " << out.cases << " cases (" << out.ran << " run now, " << out.skipped << " finished before): " << c.completed
+            << " completed, " << c.diverged << " diverged, " << c.failed << " failed, " << c.interrupted << " interrupted, " << c.not_run
+            << " not run\n"
             << "written: " << out.csv.string() << ", " << out.h5.string() << "\n";
   if (const int sig = sweep_stop_requested())
-    throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint, std::string("sweep stopped by ") +
-                                                                    (sig == SIGTERM ? "SIGTERM" : "SIGINT") +
-                                                                    "; run it again to resume");
+    throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint,
+                     std::string("sweep stopped by ") + (sig == SIGTERM ? "SIGTERM" : "SIGINT") + "; run it again to resume");
   if (c.completed != out.cases)
     throw RunStopped(kExitSweepCasesFailed, std::to_string(out.cases - c.completed) + " of " + std::to_string(out.cases) +
                                                 " cases did not complete; see their case.json (status, error) and sweep.csv");
 }
 
 void announce_sweep(std::size_t cases, std::size_t to_run, const std::string& where) {
-  std::cerr << "sweep: " << cases << " cases validated; " << to_run << " to run " << where << " ("
-            << cases - to_run << " finished before)\n";
+  std::cerr << "sweep: " << cases << " cases validated; " << to_run << " to run " << where << " (" << cases - to_run
+            << " finished before)\n";
 }
 
 // Under mpirun: rank 0 runs the sweep and hands out the cases, the other ranks run them.
@@ -115,10 +114,11 @@ void run_sweep_cli(const SweepCliOptions& o) {
 
 void register_sweep(CLI::App& app) {
   auto o = std::make_shared<SweepCliOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "sweep", "Run a parameter sweep: each case a `gearsim run` in DIR/cases/<index>/, the table in DIR/sweep.csv and "
-               "DIR/sweep.h5. Under mpirun, rank 0 hands the cases out to the other ranks. Exit 5 when some cases did "
-               "not complete (each recorded in its case.json).");
+  CLI::App* sub =
+      app.add_subcommand("sweep",
+                         "Run a parameter sweep: each case a `gearsim run` in DIR/cases/<index>/, the table in DIR/sweep.csv and "
+                         "DIR/sweep.h5. Under mpirun, rank 0 hands the cases out to the other ranks. Exit 5 when some cases did "
+                         "not complete (each recorded in its case.json).");
   sub->add_option("sweep_file", o->file, "Sweep file (YAML), e.g. assets/sweeps/spur_speed_sweep.yaml.")
       ->required()
       ->check(CLI::ExistingFile);

@@ -24,11 +24,10 @@ struct ToleranceOptions {
 };
 
 // The text report: inputs, the paper's formulas per standard, ISO's own formulas, the answer.
-void print_text(const ToleranceOptions& o, const std::vector<ToleranceResult>& paper,
-                const ToleranceResult* iso_own) {
+void print_text(const ToleranceOptions& o, const std::vector<ToleranceResult>& paper, const ToleranceResult* iso_own) {
   const ToleranceInput& in = o.input;
-  std::cout << "Gear accuracy tolerances: m_n = " << in.module_mm << " mm, z = " << in.teeth
-            << ", d = " << in.reference_diameter_mm << " mm, quality class " << in.quality;
+  std::cout << "Gear accuracy tolerances: m_n = " << in.module_mm << " mm, z = " << in.teeth << ", d = " << in.reference_diameter_mm
+            << " mm, quality class " << in.quality;
   if (in.contact_ratio) std::cout << ", contact ratio ε_γ = " << *in.contact_ratio;
   std::cout << "\n\nPaper eqs (1)-(5) (reference 000, section 3), class-5 values graded by:\n";
   for (const ToleranceResult& r : paper) print_tolerance_grading(std::cout, r);
@@ -39,8 +38,7 @@ void print_text(const ToleranceOptions& o, const std::vector<ToleranceResult>& p
     print_tolerance_grading(std::cout, *iso_own);
     print_tolerance_table(std::cout, {*iso_own});
     if (iso_own->composite_k) {
-      std::cout << "  Annex A factor K = 0.2(ε_γ + 4)/ε_γ (0.4 from ε_γ = 4) = "
-                << fixed(*iso_own->composite_k, 4) << "\n";
+      std::cout << "  Annex A factor K = 0.2(ε_γ + 4)/ε_γ (0.4 from ε_γ = 4) = " << fixed(*iso_own->composite_k, 4) << "\n";
     } else {
       std::cout << "  f_i' and F_i' (Annex A) need the contact ratio: pass --contact-ratio.\n";
     }
@@ -48,14 +46,12 @@ void print_text(const ToleranceOptions& o, const std::vector<ToleranceResult>& p
 
   std::cout << "\n";
   for (const ToleranceResult& r : paper) {
-    std::cout << "Single flank error F_i' (paper eq 5) = " << fixed(*r.single_flank_error_um, 1)
-              << " µm  [" << standard_name(r.standard) << ", class " << r.quality
-              << ", step factor " << fixed(r.step_factor, 4) << " from class 5, unrounded "
+    std::cout << "Single flank error F_i' (paper eq 5) = " << fixed(*r.single_flank_error_um, 1) << " µm  [" << standard_name(r.standard)
+              << ", class " << r.quality << ", step factor " << fixed(r.step_factor, 4) << " from class 5, unrounded "
               << fixed(r.at("single_flank_composite").unrounded_um, 3) << " µm]\n";
   }
   if (iso_own != nullptr && iso_own->single_flank_error_um) {
-    std::cout << "Total single-flank composite F_i' (ISO 1328-1 formulas) = "
-              << fixed(*iso_own->single_flank_error_um, 1) << " µm\n";
+    std::cout << "Total single-flank composite F_i' (ISO 1328-1 formulas) = " << fixed(*iso_own->single_flank_error_um, 1) << " µm\n";
   }
 }
 
@@ -80,30 +76,24 @@ void run(ToleranceOptions& o, bool has_contact_ratio) {
 
 void register_tolerance(CLI::App& app) {
   auto opts = std::make_shared<ToleranceOptions>();
-  CLI::App* sub = app.add_subcommand(
-      "tolerance",
-      "Gear accuracy tolerances (DIN 3961/3962, ISO 1328-1:1995) for one gear at one quality "
-      "class, in µm, with every intermediate value.");
-  sub->add_option("--module", opts->input.module_mm,
-                  "Normal module m_n, in mm (ISO 1328-1: 0.5 to 70 mm).")
-      ->required();
-  sub->add_option("--teeth", opts->input.teeth, "Number of teeth z (an integer, at least 1).")
-      ->required();
+  CLI::App* sub = app.add_subcommand("tolerance",
+                                     "Gear accuracy tolerances (DIN 3961/3962, ISO 1328-1:1995) for one gear at one quality "
+                                     "class, in µm, with every intermediate value.");
+  sub->add_option("--module", opts->input.module_mm, "Normal module m_n, in mm (ISO 1328-1: 0.5 to 70 mm).")->required();
+  sub->add_option("--teeth", opts->input.teeth, "Number of teeth z (an integer, at least 1).")->required();
   sub->add_option("--diameter", opts->input.reference_diameter_mm,
                   "Reference diameter d = z·m_n/cos β, in mm: at least z·m_n (ISO 1328-1: 5 to "
                   "10000 mm).")
       ->required();
-  sub->add_option("--quality", opts->input.quality,
-                  "Quality class Q (DIN 3961: 1 to 12; ISO 1328-1: 0 to 12). Lower is finer.")
+  sub->add_option("--quality", opts->input.quality, "Quality class Q (DIN 3961: 1 to 12; ISO 1328-1: 0 to 12). Lower is finer.")
       ->required();
   sub->add_option("--standard", opts->standard,
                   "Which class step and rounding: din (1.4 per class), iso (√2 per class, "
                   "plus ISO's own formulas) or both, side by side. Default: both.")
       ->check(CLI::IsMember({"din", "iso", "both"}));
-  CLI::Option* contact = sub->add_option(
-      "--contact-ratio", opts->contact_ratio,
-      "Total contact ratio ε_γ of the mesh, dimensionless (at least 1). Needed only for ISO "
-      "1328-1 Annex A f_i' and F_i'; without it they are left out, never guessed.");
+  CLI::Option* contact = sub->add_option("--contact-ratio", opts->contact_ratio,
+                                         "Total contact ratio ε_γ of the mesh, dimensionless (at least 1). Needed only for ISO "
+                                         "1328-1 Annex A f_i' and F_i'; without it they are left out, never guessed.");
   sub->add_flag("--json", opts->json,
                 "Print JSON instead of a table: every tolerance in µm under keys ending in _um, "
                 "plus standard, step_factor, quality and single_flank_error_um (with both "

@@ -40,20 +40,21 @@ json gear_json(const GearBody& b, double spacing) {
                  {"profile_slopes", s.errors.profile_slopes.size()},
                  {"eccentricity_m", s.errors.eccentricity.eccentricity_m}};
   const MeshReport r = validate_mesh(b.mesh);
-  g["mesh"] = {{"triangles", r.triangle_count},       {"vertices", r.vertex_count},
-               {"watertight", r.watertight()},        {"manifold", r.manifold()},
-               {"outward_oriented", r.outward_oriented()}, {"chordal_deviation_m", s.chordal_deviation_m},
-               {"volume_m3", b.mass.volume_m3},       {"mass_kg", b.mass.mass_kg},
+  g["mesh"] = {{"triangles", r.triangle_count},
+               {"vertices", r.vertex_count},
+               {"watertight", r.watertight()},
+               {"manifold", r.manifold()},
+               {"outward_oriented", r.outward_oriented()},
+               {"chordal_deviation_m", s.chordal_deviation_m},
+               {"volume_m3", b.mass.volume_m3},
+               {"mass_kg", b.mass.mass_kg},
                {"inertia_zz_kg_m2", b.mass.inertia_com_kg_m2(2, 2)}};
   const DecompositionDeviation dev = decomposition_deviation(b.mesh, b.pieces, spacing);
   std::size_t max_vertices = 0;
   for (const ConvexPiece2& p : b.decomposition.pieces) max_vertices = std::max(max_vertices, p.polygon.points.size());
-  g["decomposition"] = {{"pieces", b.decomposition.pieces.size()},
-                        {"sectors_exact", b.decomposition.sectors_exact},
-                        {"max_piece_vertices", max_vertices},
-                        {"hausdorff_m", dev.hausdorff_m},
-                        {"hausdorff_sample_spacing_m", spacing},
-                        {"relative_volume_error", dev.relative_volume_error}};
+  g["decomposition"] = {{"pieces", b.decomposition.pieces.size()}, {"sectors_exact", b.decomposition.sectors_exact},
+                        {"max_piece_vertices", max_vertices},      {"hausdorff_m", dev.hausdorff_m},
+                        {"hausdorff_sample_spacing_m", spacing},   {"relative_volume_error", dev.relative_volume_error}};
   return g;
 }
 
@@ -114,8 +115,7 @@ GearSetAnalysis analyse_gearset(const input::GearSetFile& f, double spacing) {
   } else if (f.pair) {
     const GearSpec &a1 = f.gear(f.pair->first), &b1 = f.gear(f.pair->second);
     const MeshGeometry m = analyse_mesh(a1, b1, zero_backlash_centre_distance(a1, b1));
-    doc["train"] = {{"type", "pair"}, {"driver", a1.name}, {"driven", b1.name},
-                    {"ratio", m.ratio}, {"mesh", mesh_json(m)}};
+    doc["train"] = {{"type", "pair"}, {"driver", a1.name}, {"driven", b1.name}, {"ratio", m.ratio}, {"mesh", mesh_json(m)}};
   }
   if (f.tolerance_quality) {
     json tol = json::object();
@@ -134,10 +134,10 @@ GearSetAnalysis analyse_gearset(const input::GearSetFile& f, double spacing) {
         const double ours = g[key].get<double>();
         const std::string same = matching_diameter(g, value);
         std::string note = std::abs(ours - value) < 1e-6 ? "agrees"
-                           : !same.empty() ? "the published value is our " + same
-                                           : "matches none of our diameters";
-        rows.push_back({{"gear", name}, {"key", key}, {"published_m", value}, {"ours_m", ours},
-                        {"difference_m", value - ours}, {"note", note}});
+                           : !same.empty()               ? "the published value is our " + same
+                                                         : "matches none of our diameters";
+        rows.push_back(
+            {{"gear", name}, {"key", key}, {"published_m", value}, {"ours_m", ours}, {"difference_m", value - ours}, {"note", note}});
       }
     doc["reference"] = {{"source", f.reference_source}, {"rows", rows}};
   }

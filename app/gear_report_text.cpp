@@ -51,12 +51,14 @@ void print_gear_table(std::ostream& out, const json& gears) {
       }));
   row(out, "volume (mm³)", cells([](const json& g) { return fixed(g["mesh"]["volume_m3"].get<double>() * 1e9, 2); }));
   row(out, "mass (g)", cells([](const json& g) { return fixed(g["mesh"]["mass_kg"].get<double>() * 1e3, 3); }));
-  row(out, "J_zz about the axis (kg·mm²)", cells([](const json& g) { return fixed(g["mesh"]["inertia_zz_kg_m2"].get<double>() * 1e6, 4); }));
+  row(out, "J_zz about the axis (kg·mm²)",
+      cells([](const json& g) { return fixed(g["mesh"]["inertia_zz_kg_m2"].get<double>() * 1e6, 4); }));
   row(out, "convex pieces (sectors exact)", cells([](const json& g) {
         const json& d = g["decomposition"];
         return std::to_string(d["pieces"].get<int>()) + (d["sectors_exact"].get<bool>() ? " (yes)" : " (no)");
       }));
-  row(out, "union vs mesh, Hausdorff (µm)", cells([](const json& g) { return fixed(g["decomposition"]["hausdorff_m"].get<double>() * 1e6, 6); }));
+  row(out, "union vs mesh, Hausdorff (µm)",
+      cells([](const json& g) { return fixed(g["decomposition"]["hausdorff_m"].get<double>() * 1e6, 6); }));
 }
 
 void print_mesh(std::ostream& out, const std::string& label, const json& m) {
@@ -68,15 +70,15 @@ void print_mesh(std::ostream& out, const std::string& label, const json& m) {
 }  // namespace
 
 void print_gearset(std::ostream& out, const json& doc) {
-  out << "Gear set '" << doc["name"].get<std::string>() << "' (" << doc["spec_file"].get<std::string>()
-      << "), density " << fixed(doc["density_kg_m3"], 0) << " kg/m³\n\n";
+  out << "Gear set '" << doc["name"].get<std::string>() << "' (" << doc["spec_file"].get<std::string>() << "), density "
+      << fixed(doc["density_kg_m3"], 0) << " kg/m³\n\n";
   print_gear_table(out, doc["gears"]);
   if (doc.contains("reference")) {
     out << "\nCompared with " << doc["reference"]["source"].get<std::string>() << " (mm):\n";
     for (const json& r : doc["reference"]["rows"])
       out << "  " << pad(r["gear"].get<std::string>(), 8) << pad(r["key"].get<std::string>(), 22) << " published "
-          << pad(mm(r["published_m"], 3), 8, true) << "  ours " << pad(mm(r["ours_m"], 3), 8, true) << "  "
-          << r["note"].get<std::string>() << "\n";
+          << pad(mm(r["published_m"], 3), 8, true) << "  ours " << pad(mm(r["ours_m"], 3), 8, true) << "  " << r["note"].get<std::string>()
+          << "\n";
   }
   if (doc.contains("train")) {
     const json& t = doc["train"];
@@ -95,8 +97,8 @@ void print_gearset(std::ostream& out, const json& doc) {
         out << " planet at " << fixed(p["carrier_angle_deg"], 1) << "° spun " << fixed(p["spin_angle_deg"], 4) << "°;";
       out << "\n";
     } else {
-      out << "Gear pair '" << t["driver"].get<std::string>() << "' → '" << t["driven"].get<std::string>()
-          << "', ratio " << fixed(t["ratio"], 4) << "\n";
+      out << "Gear pair '" << t["driver"].get<std::string>() << "' → '" << t["driven"].get<std::string>() << "', ratio "
+          << fixed(t["ratio"], 4) << "\n";
       print_mesh(out, "mesh", t["mesh"]);
     }
     const json& problems = t["type"] == "planetary" ? t["problems"] : t["mesh"]["problems"];
@@ -104,8 +106,8 @@ void print_gearset(std::ostream& out, const json& doc) {
   }
   if (doc.contains("tolerance")) {
     out << "\nSingle flank error (paper eqs 1–5) at quality " << doc["tolerance"]["quality"].get<int>() << ", µm:\n";
-    out << "  " << pad("gear", 16) << pad("f_f", 8, true) << pad("f_Hα", 8, true) << pad("F_p", 8, true)
-        << pad("F_α", 8, true) << pad("F_i'", 8, true) << "   standard, step factor\n";
+    out << "  " << pad("gear", 16) << pad("f_f", 8, true) << pad("f_Hα", 8, true) << pad("F_p", 8, true) << pad("F_α", 8, true)
+        << pad("F_i'", 8, true) << "   standard, step factor\n";
     for (const auto& [name, g] : doc["tolerance"]["gears"].items())
       for (const char* std_key : {"din3961", "iso1328"}) {
         const json& r = g[std_key];

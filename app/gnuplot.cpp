@@ -91,9 +91,12 @@ std::string gnuplot_string(const std::string& text) {
   std::string out = "'";
   for (char c : text) {
     const auto u = static_cast<unsigned char>(c);
-    if (c == '\'') out += "''";
-    else if (u < 0x20 || u == 0x7f) out += '?';
-    else out += c;
+    if (c == '\'')
+      out += "''";
+    else if (u < 0x20 || u == 0x7f)
+      out += '?';
+    else
+      out += c;
   }
   return out + "'";
 }

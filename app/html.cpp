@@ -13,12 +13,23 @@ std::string html_escape(const std::string& s) {
   std::string out;
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -54,8 +65,7 @@ std::string html_png(const std::filesystem::path& png, const std::string& alt, i
     const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8);
     b64 += {kB64[(v >> 18) & 63], kB64[(v >> 12) & 63], kB64[(v >> 6) & 63], '='};
   }
-  return "<img alt=\"" + html_escape(alt) + "\" width=\"" + std::to_string(width_px) + "\" src=\"data:image/png;base64," + b64 +
-         "\">";
+  return "<img alt=\"" + html_escape(alt) + "\" width=\"" + std::to_string(width_px) + "\" src=\"data:image/png;base64," + b64 + "\">";
 }
 
 std::string num(double v, int digits) {

@@ -113,8 +113,7 @@ json inspect_mesh(const InspectOptions& o) {
   j["mass_kg"] = m.mass_kg;
   j["centre_of_mass_mm"] = {m.centre_of_mass_m.x() * 1e3, m.centre_of_mass_m.y() * 1e3, m.centre_of_mass_m.z() * 1e3};
   json inertia = json::array();
-  for (int i = 0; i < 3; ++i)
-    inertia.push_back({m.inertia_com_kg_m2(i, 0), m.inertia_com_kg_m2(i, 1), m.inertia_com_kg_m2(i, 2)});
+  for (int i = 0; i < 3; ++i) inertia.push_back({m.inertia_com_kg_m2(i, 0), m.inertia_com_kg_m2(i, 1), m.inertia_com_kg_m2(i, 2)});
   j["inertia_com_kg_m2"] = inertia;
   j["principal_moments_kg_m2"] = {m.principal_moments_kg_m2.x(), m.principal_moments_kg_m2.y(), m.principal_moments_kg_m2.z()};
 

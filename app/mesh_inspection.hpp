@@ -15,13 +15,13 @@
 namespace gearsim::app {
 
 struct InspectOptions {
-  std::string mesh;                                            // the mesh file
-  std::string unit = "mm";                                     // its length unit: m, cm, mm, um, in, ft
+  std::string mesh;  // the mesh file
+  std::string unit = "mm";  // its length unit: m, cm, mm, um, in, ft
   double density_kg_m3 = constants::kPaperSteelDensity_kg_m3;  // for the mass properties, kg/m³
-  int teeth = 0;                                               // > 0: cut the decomposition into tooth sectors
-  double tooth0_deg = 0;                                       // tooth 0's centre line, deg
-  double prism_tolerance_um = kCadPrismTolerance_m * 1e6;      // vertices off the cap planes, µm
-  double spacing_mm = 0.5;                                     // deviation sample spacing, mm
+  int teeth = 0;  // > 0: cut the decomposition into tooth sectors
+  double tooth0_deg = 0;  // tooth 0's centre line, deg
+  double prism_tolerance_um = kCadPrismTolerance_m * 1e6;  // vertices off the cap planes, µm
+  double spacing_mm = 0.5;  // deviation sample spacing, mm
 };
 
 // InputError naming the unit, or the file and its first offending face or edge when the mesh is

@@ -10,7 +10,8 @@ std::optional<std::pair<std::string, int>> parse_drive(const std::string& text) 
   const auto eq = text.rfind('=');
   const std::string sense = eq == std::string::npos ? "" : text.substr(eq + 1);
   if (eq == std::string::npos || eq == 0 || (sense != "ccw" && sense != "cw"))
-    throw InputError("--drive: expected BODY=ccw or BODY=cw (the gear whose torque drives the train, and its sense about +z), got '" + text + "'");
+    throw InputError("--drive: expected BODY=ccw or BODY=cw (the gear whose torque drives the train, and its sense about +z), got '" +
+                     text + "'");
   return std::make_pair(text.substr(0, eq), sense == "ccw" ? 1 : -1);
 }
 

@@ -19,7 +19,7 @@ namespace gearsim::app {
 struct ModesSettings {
   std::string drive;  // BODY=ccw|cw, or empty: the motor's body, else the transmission input's load
   int harmonics = 3;  // mesh harmonics in the Campbell table
-  int phases = 64;    // mesh positions per pitch the mean mesh stiffness is taken over
+  int phases = 64;  // mesh positions per pitch the mean mesh stiffness is taken over
   double max_speed_rad_s = std::numeric_limits<double>::infinity();  // crossings above it left out
 };
 

@@ -14,7 +14,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-
 Json shape_json(const linear::LumpedModel& m, const Eigen::VectorXd& phi) {
   Json j = Json::object();
   for (const linear::BodyInfo& b : m.bodies)
@@ -24,16 +23,20 @@ Json shape_json(const linear::LumpedModel& m, const Eigen::VectorXd& phi) {
 
 const char* kind_name(linear::Element::Kind k) {
   switch (k) {
-    case linear::Element::Kind::Mesh: return "mesh";
-    case linear::Element::Kind::Bearing: return "bearing";
-    case linear::Element::Kind::Torsion: return "torsion";
+    case linear::Element::Kind::Mesh:
+      return "mesh";
+    case linear::Element::Kind::Bearing:
+      return "bearing";
+    case linear::Element::Kind::Torsion:
+      return "torsion";
   }
   return "";
 }
 
 }  // namespace
 
-nlohmann::json modes_json(const std::string& scenario, const linear::LumpedModel& m, const linear::ModalAnalysis& a, const linear::Campbell& c) {
+nlohmann::json modes_json(const std::string& scenario, const linear::LumpedModel& m, const linear::ModalAnalysis& a,
+                          const linear::Campbell& c) {
   Json j;
   j["scenario"] = scenario;
   j["drive"] = m.drive;
@@ -78,8 +81,10 @@ nlohmann::json modes_json(const std::string& scenario, const linear::LumpedModel
   Json supports = Json::array();
   for (const linear::Element& e : m.elements)
     if (e.kind != linear::Element::Kind::Mesh)
-      supports.push_back({{"body", e.name}, {"kind", kind_name(e.kind)},
-                          {e.kind == linear::Element::Kind::Bearing ? "radial_stiffness_N_per_m" : "torsional_stiffness_N_m_per_rad", e.value}});
+      supports.push_back(
+          {{"body", e.name},
+           {"kind", kind_name(e.kind)},
+           {e.kind == linear::Element::Kind::Bearing ? "radial_stiffness_N_per_m" : "torsional_stiffness_N_m_per_rad", e.value}});
   j["supports"] = supports;
   Json cj;
   cj["drive"] = c.drive;
@@ -87,13 +92,17 @@ nlohmann::json modes_json(const std::string& scenario, const linear::LumpedModel
   if (c.operating_speed_rad_s) cj["operating_speed_rad_s"] = *c.operating_speed_rad_s;
   Json rates = Json::array();
   for (const linear::MeshRate& r : c.rates)
-    rates.push_back({{"gears", {m.bodies[m.meshes[r.mesh].a].name, m.bodies[m.meshes[r.mesh].b].name}}, {"mesh_hz_per_rad_s", r.hz_per_rad_s}});
+    rates.push_back(
+        {{"gears", {m.bodies[m.meshes[r.mesh].a].name, m.bodies[m.meshes[r.mesh].b].name}}, {"mesh_hz_per_rad_s", r.hz_per_rad_s}});
   cj["mesh_rates"] = rates;
   Json cross = Json::array();
   for (const linear::Crossing& x : c.crossings)
-    cross.push_back({{"natural_frequency_hz", x.natural_frequency_hz}, {"mode", x.group}, {"harmonic", x.harmonic},
+    cross.push_back({{"natural_frequency_hz", x.natural_frequency_hz},
+                     {"mode", x.group},
+                     {"harmonic", x.harmonic},
                      {"gears", {m.bodies[m.meshes[x.mesh].a].name, m.bodies[m.meshes[x.mesh].b].name}},
-                     {"drive_speed_rad_s", x.drive_speed_rad_s}, {"mesh_frequency_hz", x.natural_frequency_hz / x.harmonic}});
+                     {"drive_speed_rad_s", x.drive_speed_rad_s},
+                     {"mesh_frequency_hz", x.natural_frequency_hz / x.harmonic}});
   cj["crossings"] = cross;
   j["campbell"] = cj;
   return j;
@@ -131,8 +140,8 @@ void write_modes_svg(const std::filesystem::path& file, const linear::LumpedMode
     if (a.groups[g].frequency_hz > 0) shown.push_back(static_cast<int>(g));
   const int panel = 320, cols = 3, rows = static_cast<int>((shown.size() + cols - 1) / cols);
   std::ostringstream svg;
-  svg << std::setprecision(6) << "<svg xmlns='http://www.w3.org/2000/svg' width='" << panel * cols << "' height='" << panel * std::max(rows, 1)
-      << "' font-family='sans-serif' font-size='12'>\n";
+  svg << std::setprecision(6) << "<svg xmlns='http://www.w3.org/2000/svg' width='" << panel * cols << "' height='"
+      << panel * std::max(rows, 1) << "' font-family='sans-serif' font-size='12'>\n";
   const double px_per_m = 0.42 * panel / extent;
   for (std::size_t s = 0; s < shown.size(); ++s) {
     const linear::ModeGroup& g = a.groups[static_cast<std::size_t>(shown[s])];
@@ -140,18 +149,19 @@ void write_modes_svg(const std::filesystem::path& file, const linear::LumpedMode
     // Scale: the largest rim motion |u| + r|θ| drawn as 8 % of the panel.
     double largest = 0;
     for (const linear::BodyInfo& b : m.bodies)
-      if (b.first_dof >= 0) largest = std::max(largest, phi.segment<2>(b.first_dof).norm() + std::max(b.radius_m, 1e-3) * std::abs(phi(b.first_dof + 2)));
+      if (b.first_dof >= 0)
+        largest = std::max(largest, phi.segment<2>(b.first_dof).norm() + std::max(b.radius_m, 1e-3) * std::abs(phi(b.first_dof + 2)));
     const double k = largest > 0 ? 0.08 * panel / px_per_m / largest : 0;
     const int col = static_cast<int>(s) % cols, row = static_cast<int>(s) / cols;
     const double ox = col * panel + panel / 2.0, oy = row * panel + panel / 2.0 + 10;
-    svg << "<text x='" << col * panel + 8 << "' y='" << row * panel + 16 << "'>" << num(g.frequency_hz, 5) << " Hz ×"
-        << g.multiplicity << " " << linear::to_string(g.type) << "</text>\n";
+    svg << "<text x='" << col * panel + 8 << "' y='" << row * panel + 16 << "'>" << num(g.frequency_hz, 5) << " Hz ×" << g.multiplicity
+        << " " << linear::to_string(g.type) << "</text>\n";
     for (const linear::BodyInfo& b : m.bodies) {
       const double r = std::max(b.radius_m, 2e-3) * px_per_m;
       const double x0 = ox + b.centre_of_mass_m.x() * px_per_m, y0 = oy - b.centre_of_mass_m.y() * px_per_m;
       const char* dash = b.gear ? "" : " stroke-dasharray='4 3'";
-      svg << "<circle cx='" << x0 << "' cy='" << y0 << "' r='" << r << "' fill='none' stroke='#ccc'" << dash << "><title>" << html_escape(b.name)
-          << "</title></circle>\n";
+      svg << "<circle cx='" << x0 << "' cy='" << y0 << "' r='" << r << "' fill='none' stroke='#ccc'" << dash << "><title>"
+          << html_escape(b.name) << "</title></circle>\n";
       if (b.first_dof < 0) continue;
       const double x = x0 + k * phi(b.first_dof) * px_per_m, y = y0 - k * phi(b.first_dof + 1) * px_per_m;
       const double t = k * phi(b.first_dof + 2);

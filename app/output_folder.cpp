@@ -27,8 +27,7 @@ namespace {
 // InputError when DIR holds files but no manifest (`has_manifest`) and `force` is not given.
 void refuse_foreign(const std::filesystem::path& dir, bool has_manifest, bool force) {
   if (force || has_manifest || !holds_other_files(dir)) return;
-  throw InputError(dir.string() + ": the folder holds files that gearsim did not write (it has no " +
-                   FolderManifest::kFileName +
+  throw InputError(dir.string() + ": the folder holds files that gearsim did not write (it has no " + FolderManifest::kFileName +
                    "): choose an empty or new folder, or give --force to write beside them (none is removed)");
 }
 

@@ -41,10 +41,10 @@ PoseReplay::PoseReplay(const physics::Scenario& scenario, input::CsvTable state)
 
 std::vector<Eigen::Isometry3d> PoseReplay::poses(double t) const {
   if (t < time_.front() || t > time_.back())
-    throw InputError(state_.path.string() + ": time " + std::to_string(t) + " s is outside the logged " +
-                     std::to_string(time_.front()) + "–" + std::to_string(time_.back()) + " s");
-  const std::size_t i = std::min<std::size_t>(
-      static_cast<std::size_t>(std::upper_bound(time_.begin(), time_.end(), t) - time_.begin()), time_.size() - 1);
+    throw InputError(state_.path.string() + ": time " + std::to_string(t) + " s is outside the logged " + std::to_string(time_.front()) +
+                     "–" + std::to_string(time_.back()) + " s");
+  const std::size_t i =
+      std::min<std::size_t>(static_cast<std::size_t>(std::upper_bound(time_.begin(), time_.end(), t) - time_.begin()), time_.size() - 1);
   const std::size_t i0 = i == 0 ? 0 : i - 1;
   const double w = time_[i] > time_[i0] ? (t - time_[i0]) / (time_[i] - time_[i0]) : 0.0;
   const std::size_t n = s_.bodies.size();

@@ -29,9 +29,9 @@ class PoseReplay {
   const physics::Scenario& s_;
   std::vector<double> time_;
   std::vector<const std::vector<double>*> angle_;  // per body, null for a body without a joint
-  std::vector<int> parent_;                         // body index of the joint parent, −1: ground/none
-  std::vector<Eigen::Vector3d> pivot0_;             // joint pivot, world at t = 0
-  std::vector<double> angle0_;                      // body frame's angle about z at t = 0
+  std::vector<int> parent_;  // body index of the joint parent, −1: ground/none
+  std::vector<Eigen::Vector3d> pivot0_;  // joint pivot, world at t = 0
+  std::vector<double> angle0_;  // body frame's angle about z at t = 0
   input::CsvTable state_;
 };
 

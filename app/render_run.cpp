@@ -65,8 +65,8 @@ static std::string frame_name(const std::string& camera, long k) {
 render::Image render_run_frame(const RunDir& run, const physics::RenderDef& o, double t_s) {
   const PoseReplay replay(run.scenario, input::read_csv(run.dir / "state.csv"));
   if (!(t_s >= replay.start_s() && t_s <= replay.end_s()))
-    throw InputError("t_s: " + shortest(t_s) + " s is outside the logged " + shortest(replay.start_s()) + "–" +
-                     shortest(replay.end_s()) + " s of " + (run.dir / "state.csv").string());
+    throw InputError("t_s: " + shortest(t_s) + " s is outside the logged " + shortest(replay.start_s()) + "–" + shortest(replay.end_s()) +
+                     " s of " + (run.dir / "state.csv").string());
   const RunMeshes meshes = run_meshes(run.scenario);
   render::Renderer renderer(frame_settings(o));
   return draw_frame(renderer, meshes, replay, run, o, t_s);
@@ -80,8 +80,8 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
   const std::string span = std::to_string(r.from_s) + "–" + std::to_string(r.to_s) + " s";
   if (!(r.to_s > r.from_s)) throw InputError("--from/--to (render.from_s/to_s): the span " + span + " is empty");
   if (r.from_s < replay.start_s() || r.to_s > replay.end_s())
-    throw InputError("--from/--to (render.from_s/to_s): " + span + " is outside the logged " + std::to_string(replay.start_s()) +
-                     "–" + std::to_string(replay.end_s()) + " s");
+    throw InputError("--from/--to (render.from_s/to_s): " + span + " is outside the logged " + std::to_string(replay.start_s()) + "–" +
+                     std::to_string(replay.end_s()) + " s");
   const double dt = 1.0 / (o.fps * o.slowmo);  // simulated seconds per frame
   r.frames = static_cast<long>(std::floor((r.to_s - r.from_s) / dt + 1e-9)) + 1;
   const RunMeshes meshes = run_meshes(run.scenario);
@@ -130,8 +130,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
   part.commit();
   r.frames_drawn = r.frames;
   if (!sheet.empty())
-    render::write_png(render::contact_sheet(sheet, {4, 4, 4, {255, 255, 255}, 1}, labels),
-                      run.dir / "frames" / (o.camera + "_sheet.png"));
+    render::write_png(render::contact_sheet(sheet, {4, 4, 4, {255, 255, 255}, 1}, labels), run.dir / "frames" / (o.camera + "_sheet.png"));
   return r;
 }
 

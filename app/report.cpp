@@ -24,8 +24,7 @@ std::string frames_section(const RunDir& run) {
   std::sort(pngs.begin(), pngs.end());
   std::sort(sheets.begin(), sheets.end());
   for (const auto& p : sheets) h += "<p>" + html_png(p, p.filename().string(), 960) + "</p>\n";
-  for (std::size_t i = 0; sheets.empty() && i < pngs.size() && i < 4; ++i)
-    h += html_png(pngs[i], pngs[i].filename().string(), 440) + "\n";
+  for (std::size_t i = 0; sheets.empty() && i < pngs.size() && i < 4; ++i) h += html_png(pngs[i], pngs[i].filename().string(), 440) + "\n";
   return h;
 }
 
@@ -50,7 +49,8 @@ std::string run_section(const RunDir& run) {
 
 std::string build_report(const RunDir& run, const std::optional<RunDir>& compare) {
   std::string body = "<h1>Gearsim report: " + html_escape(run.scenario.name) + "</h1>\n";
-  if (compare) body += "<p>Compared with <b>" + html_escape(compare->scenario.name) + "</b> (" + html_escape(compare->dir.string()) + ").</p>\n";
+  if (compare)
+    body += "<p>Compared with <b>" + html_escape(compare->scenario.name) + "</b> (" + html_escape(compare->dir.string()) + ").</p>\n";
   body += run_section(run) + report_paper_section(run) + report_gears_section(run) + report_signals_section(run, compare) +
           report_sensors_section(run, compare) + report_sampling_section(run) + frames_section(run);
   return html_document("Gearsim report: " + run.scenario.name, body);

@@ -76,16 +76,14 @@ std::string ringing_prediction(const RunDir& run) {
     const double k = p["stiffness_N_per_m"].get<double>(), m = p["reduced_mass_kg"].get<double>();
     const double f1 = std::sqrt(k / m) / (2 * std::numbers::pi), f2 = std::sqrt(2 * k / m) / (2 * std::numbers::pi);
     const double zeta = run.scenario.contact.damping_ratio;
-    rows.push_back({html_escape(p["a"].get<std::string>() + "–" + p["b"].get<std::string>()), num(k, 4), num(m, 4),
-                    num(f1, 4), num(f2, 4),
+    rows.push_back({html_escape(p["a"].get<std::string>() + "–" + p["b"].get<std::string>()), num(k, 4), num(m, 4), num(f1, 4), num(f2, 4),
                     zeta > 0 ? num(1e3 / (zeta * 2 * std::numbers::pi * f1), 3) : "none (undamped)"});
   }
   if (rows.empty()) return "";
-  return html_table({"pair", "k per tooth pair, N/m", "reduced mass along the line of action, kg",
-                     "ringing, one pair in contact, Hz", "two pairs, Hz", "decay to 1/e, one pair, ms"},
+  return html_table({"pair", "k per tooth pair, N/m", "reduced mass along the line of action, kg", "ringing, one pair in contact, Hz",
+                     "two pairs, Hz", "decay to 1/e, one pair, ms"},
                     rows) +
-         "<p>f = √(n·k/m)/2π for n tooth pairs in contact; the damping ratio " +
-         num(run.scenario.contact.damping_ratio, 3) +
+         "<p>f = √(n·k/m)/2π for n tooth pairs in contact; the damping ratio " + num(run.scenario.contact.damping_ratio, 3) +
          " of critical (scenario <code>contact.damping_ratio</code>) gives the decay time 1/(ζ·2π·f). Every tooth "
          "entering or leaving the mesh changes the stiffness and restarts it.</p>\n";
 }
@@ -135,13 +133,15 @@ std::string report_sampling_section(const RunDir& run) {
   const json& ff = run.summary["force_filter"];
   const double fs = ff["output_rate_hz"].get<double>(), stop = ff["stopband_edge_hz"].get<double>();
   h += "<p>The paper kept the contact force every 25th step (2 kHz) of a 50 kHz simulation. Everything the force "
-       "holds above " + num(fs / 2, 4) + " Hz then folds onto 0–" + num(fs / 2, 4) +
+       "holds above " +
+       num(fs / 2, 4) + " Hz then folds onto 0–" + num(fs / 2, 4) +
        " Hz: the 24th mesh harmonic (7680 Hz = 4·2000 − 320 Hz) lands exactly on the 320 Hz mesh line, and the "
        "contact ringing lands wherever its frequency folds. Those point samples change with the time step and no "
        "spectral figure taken from them converges. This run's <code>contacts.csv</code> force is instead every "
-       "step's force through a zero-phase low-pass (" + std::to_string(ff["taps"].get<long>()) + " taps, passband to " +
-       num(ff["passband_edge_hz"].get<double>(), 4) + " Hz, " + num(ff["stopband_attenuation_dB"].get<double>(), 4) +
-       " dB from " + num(stop, 4) + " Hz; docs/decimation.md); the point samples are kept as "
+       "step's force through a zero-phase low-pass (" +
+       std::to_string(ff["taps"].get<long>()) + " taps, passband to " + num(ff["passband_edge_hz"].get<double>(), 4) + " Hz, " +
+       num(ff["stopband_attenuation_dB"].get<double>(), 4) + " dB from " + num(stop, 4) +
+       " Hz; docs/decimation.md); the point samples are kept as "
        "<code>_force_point_N</code>. Mesh harmonics over the analysed window:</p>\n";
   h += aliasing_table(run, a);
   h += "<h3>Contact ringing above the band</h3>\n" + ringing_prediction(run) + full_rate_lines(run, a, stop);

@@ -59,8 +59,10 @@ std::string one_sensor(const RunDir& run, const physics::SensorDef& d, const jso
   if (xw.size() < 64) return h + "<p class=\"note\">Too few samples after the ramp for a spectrum.</p>\n";
   std::vector<double> tz, xz;  // 50 ms of the signal
   for (std::size_t i = 0; i < tw.size() && tw[i] < from + 0.05; ++i) tz.push_back(tw[i]), xz.push_back(xw[i]);
-  h += gnuplot_svg(data_block("d", {tz, xz}) + "set xlabel 'time, s'; set ylabel 'acceleration, m/s²'; set grid\n"
-                   "plot $d using 1:2 with lines lw 1 title '50 ms after the ramp'\n", 900, 280);
+  h += gnuplot_svg(data_block("d", {tz, xz}) +
+                       "set xlabel 'time, s'; set ylabel 'acceleration, m/s²'; set grid\n"
+                       "plot $d using 1:2 with lines lw 1 title '50 ms after the ramp'\n",
+                   900, 280);
   const Spectrum sp = amplitude_spectrum(xw, d.sample_rate_hz);
   // The train: which planet-pass components survive at k·f_m + n·f_c.
   const input::GearTrain train = input::gear_train_of(run.scenario);
@@ -78,9 +80,14 @@ std::string one_sensor(const RunDir& run, const physics::SensorDef& d, const jso
       marks += "set arrow from " + num(k * fm + n * fc, 8) + ", graph 0 to " + num(k * fm + n * fc, 8) + ", graph 1 nohead dt " +
                (keeps ? "2 lc rgb '#228833'" : "3 lc rgb '#cccccc'") + "\n";
     }
-    h += "<p>Around " + std::to_string(k) + "·f<sub>m</sub> = " + num(k * fm, 5) + " Hz: green dashed, the components k·f<sub>m</sub> + n·f<sub>c</sub> that survive at a fixed sensor (n ≡ −k·z<sub>r</sub> mod N); grey, those that cancel.</p>\n";
-    h += gnuplot_svg(data_block("s", {f, amp}) + marks + "set logscale y; set xlabel 'frequency, Hz'; set ylabel 'amplitude, m/s²'; set grid\n"
-                     "plot $s using 1:2 with lines lw 1 title " + gnuplot_string(run.scenario.name) + "\n", 900, 280);
+    h += "<p>Around " + std::to_string(k) + "·f<sub>m</sub> = " + num(k * fm, 5) +
+         " Hz: green dashed, the components k·f<sub>m</sub> + n·f<sub>c</sub> that survive at a fixed sensor (n ≡ −k·z<sub>r</sub> mod N); "
+         "grey, those that cancel.</p>\n";
+    h += gnuplot_svg(data_block("s", {f, amp}) + marks +
+                         "set logscale y; set xlabel 'frequency, Hz'; set ylabel 'amplitude, m/s²'; set grid\n"
+                         "plot $s using 1:2 with lines lw 1 title " +
+                         gnuplot_string(run.scenario.name) + "\n",
+                     900, 280);
   }
   return h;
 }
@@ -100,7 +107,8 @@ std::string report_sensors_section(const RunDir& run, const std::optional<RunDir
                            compare ? compare->scenario.name + " (" + compare->dir.filename().string() + ")" : "");
       if (s->contains("fault") && !(*s)["fault"].is_null())
         h += "<p><b>From the sensor alone:</b> " + html_escape((*s)["fault"]["gear"].get<std::string>()) + ", tooth " +
-             std::to_string((*s)["fault"]["tooth"].get<int>()) + ": " + html_escape((*s)["fault"]["evidence"].get<std::string>()) + ".</p>\n";
+             std::to_string((*s)["fault"]["tooth"].get<int>()) + ": " + html_escape((*s)["fault"]["evidence"].get<std::string>()) +
+             ".</p>\n";
       else if (s->contains("note"))
         h += "<p><b>From the sensor alone:</b> no planet named: " + html_escape((*s)["note"].get<std::string>()) + ".</p>\n";
     }
@@ -108,7 +116,8 @@ std::string report_sensors_section(const RunDir& run, const std::optional<RunDir
   if (a.contains("diagnosis")) {
     std::string sentence;
     for (const json& f : a["diagnosis"]["faults"])
-      sentence += (sentence.empty() ? "" : "; ") + html_escape(f["gear"].get<std::string>()) + " tooth " + std::to_string(f["tooth"].get<int>()) +
+      sentence += (sentence.empty() ? "" : "; ") + html_escape(f["gear"].get<std::string>()) + " tooth " +
+                  std::to_string(f["tooth"].get<int>()) +
                   (f["flank"].get<std::string>().empty() ? "" : " (" + html_escape(f["flank"].get<std::string>()) + " flank)") + " from " +
                   html_escape(f["source"].get<std::string>()) + ", confidence " + num(f["confidence"].get<double>(), 2);
     h += "<p><b>Diagnosis:</b> " + (sentence.empty() ? std::string("no fault found") : sentence) + ".</p>\n";

@@ -15,9 +15,7 @@ namespace gearsim::app {
 using json = nlohmann::ordered_json;
 namespace {
 
-json read_analysis(const RunDir& r) {
-  return read_json_record(r.dir / "analysis.json");
-}
+json read_analysis(const RunDir& r) { return read_json_record(r.dir / "analysis.json"); }
 
 std::string first_force_pair(const json& a) { return a["pairs"].begin().key(); }
 
@@ -38,10 +36,14 @@ std::string force_plots(const RunDir& run, const json& a, const std::string& pai
   for (std::size_t i = 0; i < t.size(); ++i)
     if (t[i] >= from && t[i] < from + 0.025) tz.push_back(t[i]), fz.push_back(f[i]);
   std::string h = "<h3>Contact force, " + html_escape(pair) + " (paper Fig. 4)</h3>\n";
-  h += gnuplot_svg(data_block("d", {t, f}) + "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
-                   "plot $d using 1:2 with lines lw 1 title " + gnuplot_string(pair) + "\n");
-  h += gnuplot_svg(data_block("d", {tz, fz}) + "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
-                   "plot $d using 1:2 with linespoints pt 7 ps 0.3 title '25 ms at speed (output samples)'\n", 900, 300);
+  h += gnuplot_svg(data_block("d", {t, f}) +
+                   "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
+                   "plot $d using 1:2 with lines lw 1 title " +
+                   gnuplot_string(pair) + "\n");
+  h += gnuplot_svg(data_block("d", {tz, fz}) +
+                       "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
+                       "plot $d using 1:2 with linespoints pt 7 ps 0.3 title '25 ms at speed (output samples)'\n",
+                   900, 300);
   return h;
 }
 
@@ -58,16 +60,18 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
   std::string marks;
   for (int k = 1; k <= 3; ++k)
     marks += "set arrow from " + num(k * fm, 6) + ", graph 0 to " + num(k * fm, 6) + ", graph 1 nohead dt 2 lc rgb 'gray'\n";
-  std::string h = "<h3>Spectrum of the contact force to 1000 Hz, harmonics of f<sub>m</sub> = " + num(fm, 5) +
-                  " Hz dashed (paper Fig. 5)</h3>\n";
-  h += gnuplot_svg(script + marks + "set logscale y; set xrange [0:1000]; set xlabel 'frequency, Hz'; set ylabel 'amplitude, N'; set grid\n" + plot + "\n");
+  std::string h =
+      "<h3>Spectrum of the contact force to 1000 Hz, harmonics of f<sub>m</sub> = " + num(fm, 5) + " Hz dashed (paper Fig. 5)</h3>\n";
+  h += gnuplot_svg(script + marks +
+                   "set logscale y; set xrange [0:1000]; set xlabel 'frequency, Hz'; set ylabel 'amplitude, N'; set grid\n" + plot + "\n");
   h += "<h3>Around each harmonic, sidebands labelled by the characteristic frequency they match (paper Fig. 6)</h3>\n";
   const json& p = a["pairs"][pair];
   for (const auto& hm : p["mesh_harmonics"]) {
     if (!hm.contains("peak_hz")) continue;
     const double c = hm["peak_hz"].get<double>(), span = std::min(60.0, 0.5 * fm);
     std::vector<json> sb(hm["sidebands"].begin(), hm["sidebands"].end());
-    std::sort(sb.begin(), sb.end(), [](const json& x, const json& y) { return x["amplitude_N"].get<double>() > y["amplitude_N"].get<double>(); });
+    std::sort(sb.begin(), sb.end(),
+              [](const json& x, const json& y) { return x["amplitude_N"].get<double>() > y["amplitude_N"].get<double>(); });
     std::string labels;
     int n = 0;
     for (const json& b : sb) {
@@ -76,8 +80,7 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
       labels += "set label " +
                 gnuplot_string(num(b["offset_hz"].get<double>(), 3) + " Hz" +
                                (b.contains("match") ? " " + b["match"].get<std::string>() : std::string(" (unmatched)"))) +
-                " at " +
-                num(b["frequency_hz"].get<double>(), 6) + "," + num(b["amplitude_N"].get<double>(), 6) +
+                " at " + num(b["frequency_hz"].get<double>(), 6) + "," + num(b["amplitude_N"].get<double>(), 6) +
                 " rotate by 60 font ',8' offset 0,0.5\n";
     }
     h += gnuplot_svg(script + labels + "set logscale y; set xrange [" + num(c - span, 6) + ":" + num(c + span, 6) +
@@ -92,7 +95,8 @@ std::string te_plot(const RunDir& run) {
   if (!st.has("te_rad")) return "";
   return "<h3>Transmission error θ<sub>in</sub> − i·θ<sub>out</sub> (paper Fig. 7)</h3>\n" +
          gnuplot_svg(data_block("d", {st.column("time_s"), st.column("te_rad")}) +
-                     "set xlabel 'time, s'; set ylabel 'TE, rad'; set grid\nplot $d using 1:2 with lines title 'te_rad'\n", 900, 320);
+                         "set xlabel 'time, s'; set ylabel 'TE, rad'; set grid\nplot $d using 1:2 with lines title 'te_rad'\n",
+                     900, 320);
 }
 
 std::string tooth_plot(const json& a, const std::optional<json>& other, const std::string& other_name) {
@@ -107,18 +111,22 @@ std::string tooth_plot(const json& a, const std::optional<json>& other, const st
     flag.push_back(fl ? e["mean_force_N"].get<double>() : NAN);
   }
   std::string script = data_block("t", {k, f, flag});
-  std::string plot = "plot $t using 1:2 with boxes fs solid 0.5 lc rgb '#4477aa' title 'mean force per tooth', "
-                     "$t using 1:3 with boxes fs solid 0.9 lc rgb '#cc3311' title 'flagged'";
+  std::string plot =
+      "plot $t using 1:2 with boxes fs solid 0.5 lc rgb '#4477aa' title 'mean force per tooth', "
+      "$t using 1:3 with boxes fs solid 0.9 lc rgb '#cc3311' title 'flagged'";
   if (other && other->contains("tooth_loads") && !(*other)["tooth_loads"].empty()) {
     std::vector<double> k2, f2;
-    for (const auto& e : (*other)["tooth_loads"][0]["teeth"]) k2.push_back(e["tooth"].get<double>()), f2.push_back(e["mean_force_N"].get<double>());
+    for (const auto& e : (*other)["tooth_loads"][0]["teeth"])
+      k2.push_back(e["tooth"].get<double>()), f2.push_back(e["mean_force_N"].get<double>());
     script += data_block("o", {k2, f2});
     plot += ", $o using 1:2 with linespoints pt 7 ps 0.5 lc rgb 'black' title " + gnuplot_string(other_name);
   }
   return "<h3>Per-tooth load, " + html_escape(t["gear"].get<std::string>()) + " in " + html_escape(t["pair"].get<std::string>()) +
          " (over " + num(t["revolutions"].get<double>()) + " whole revolutions; flagged: |z| &gt; " + num(t["z_threshold"].get<double>()) +
          " and more than " + num(100 * t["min_relative_deviation"].get<double>()) + " % apart)</h3>\n" +
-         gnuplot_svg(script + "set style fill solid; set boxwidth 0.8; set xlabel 'tooth'; set ylabel 'mean force, N'; set grid\n" + plot + "\n", 900, 320);
+         gnuplot_svg(
+             script + "set style fill solid; set boxwidth 0.8; set xlabel 'tooth'; set ylabel 'mean force, N'; set grid\n" + plot + "\n",
+             900, 320);
 }
 
 }  // namespace
@@ -134,17 +142,23 @@ std::string report_signals_section(const RunDir& run, const std::optional<RunDir
        " s: the record resolves " + num(p["resolution_hz"].get<double>(), 3) +
        " Hz (1/T); with the Hann window, tones closer than about twice that merge into one peak. A 1 s record "
        "cannot separate 6.67 Hz (2·f<sub>c</sub>), 8.89 Hz (f<sub>m</sub>/36) and 10 Hz (3·f<sub>c</sub>): the spectrum is "
-       "zero-padded to a " + num(p["bin_width_hz"].get<double>(), 3) + " Hz grid, which places peaks, not resolves them.</p>\n";
+       "zero-padded to a " +
+       num(p["bin_width_hz"].get<double>(), 3) + " Hz grid, which places peaks, not resolves them.</p>\n";
   h += "<h2>Signals</h2>\n" + force_plots(run, a, pair) + spectrum_plots(run, a, pair, compare) + te_plot(run);
   std::vector<std::vector<std::string>> rows;
   for (const auto& [name, q] : a["pairs"].items()) {
-    std::vector<std::string> r{html_escape(name), num(q["mean_force_N"].get<double>(), 5), num(100 * q["zero_force_share"].get<double>(), 3),
-                               q.contains("steps_without_force_share") ? num(100 * q["steps_without_force_share"].get<double>(), 3) : "no per-step log"};
+    std::vector<std::string> r{
+        html_escape(name), num(q["mean_force_N"].get<double>(), 5), num(100 * q["zero_force_share"].get<double>(), 3),
+        q.contains("steps_without_force_share") ? num(100 * q["steps_without_force_share"].get<double>(), 3) : "no per-step log"};
     for (const auto& hm : q["mesh_harmonics"])
-      r.push_back(hm.contains("peak_hz") ? num(hm["peak_hz"].get<double>(), 6) + " Hz, +" + num(hm["over_median_floor_0_1000_hz_db"].get<double>(), 3) + " dB" : "not found");
+      r.push_back(hm.contains("peak_hz")
+                      ? num(hm["peak_hz"].get<double>(), 6) + " Hz, +" + num(hm["over_median_floor_0_1000_hz_db"].get<double>(), 3) + " dB"
+                      : "not found");
     rows.push_back(r);
   }
-  h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "mean force, N", "zero-force samples, %", "steps without force, %", "f<sub>m</sub> over floor", "2·f<sub>m</sub>", "3·f<sub>m</sub>"}, rows);
+  h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "mean force, N", "zero-force samples, %", "steps without force, %",
+                                                  "f<sub>m</sub> over floor", "2·f<sub>m</sub>", "3·f<sub>m</sub>"},
+                                                 rows);
   if (a.contains("contact_loss")) {
     std::string pairs;
     for (const auto& q : a["contact_loss"]["pairs"]) pairs += (pairs.empty() ? "" : ", ") + html_escape(q.get<std::string>());
@@ -154,7 +168,8 @@ std::string report_signals_section(const RunDir& run, const std::optional<RunDir
     rows.clear();
     for (std::size_t k = 0; k < p["planet_fault_family"].size(); ++k) {
       const json& e = p["planet_fault_family"][k];
-      std::vector<std::string> r{num(e["expected_hz"].get<double>(), 4), e.contains("amplitude_N") ? num(e["amplitude_N"].get<double>(), 3) : "no line"};
+      std::vector<std::string> r{num(e["expected_hz"].get<double>(), 4),
+                                 e.contains("amplitude_N") ? num(e["amplitude_N"].get<double>(), 3) : "no line"};
       if (other) {
         const json& o = (*other)["pairs"][pair]["planet_fault_family"][k];
         r.push_back(o.contains("amplitude_N") ? num(o["amplitude_N"].get<double>(), 3) : "no line");

@@ -53,7 +53,8 @@ ModeLines natural_frequencies(const fs::path& dir) {
     const json j = json::parse(text);
     if (j.contains("campbell") && j.at("campbell").contains("crossings"))
       for (const json& c : j.at("campbell").at("crossings")) lines.harmonics = std::max(lines.harmonics, c.at("harmonic").get<int>());
-    if (j.contains("natural_frequencies_hz")) f = j.at("natural_frequencies_hz").get<std::vector<double>>();
+    if (j.contains("natural_frequencies_hz"))
+      f = j.at("natural_frequencies_hz").get<std::vector<double>>();
     else
       for (const json& m : j.at("modes")) f.push_back(m.at("frequency_hz").get<double>());
   } catch (const json::exception& e) {
@@ -116,8 +117,7 @@ std::optional<XAxis> x_axis(const sweep::SweepTable& t) {
 std::string series_label(const sweep::SweepTable& t, const sweep::TableRow& r, const XAxis& x) {
   std::string s;
   for (std::size_t k = 0; k < t.parameter_columns.size(); ++k)
-    if (!x.sets_x[k])
-      s += (s.empty() ? "" : ", ") + t.parameter_columns[k] + " = " + r.parameters[k];
+    if (!x.sets_x[k]) s += (s.empty() ? "" : ", ") + t.parameter_columns[k] + " = " + r.parameters[k];
   return s;
 }
 
@@ -194,9 +194,8 @@ std::string build_sweep_report(const fs::path& dir) {
   body += html_table({"", ""}, {{"sweep file", "<code>" + html_escape(s.value("sweep_file", std::string())) + "</code>"},
                                 {"base scenario", "<code>" + html_escape(s.value("scenario", std::string())) + "</code>"},
                                 {"cases", std::to_string(t.rows.size()) + ": " + std::to_string(c.completed) + " completed, " +
-                                              std::to_string(c.diverged) + " diverged, " + std::to_string(c.failed) +
-                                              " failed, " + std::to_string(c.interrupted) + " interrupted, " +
-                                              std::to_string(c.not_run) + " not run"}});
+                                              std::to_string(c.diverged) + " diverged, " + std::to_string(c.failed) + " failed, " +
+                                              std::to_string(c.interrupted) + " interrupted, " + std::to_string(c.not_run) + " not run"}});
   const std::optional<XAxis> x = x_axis(t);
   const ModeLines fn = natural_frequencies(dir);
   body += "<h2>Metrics</h2>\n";

@@ -32,8 +32,7 @@ std::vector<PairId> gear_pairs_of(const RunDir& run) {
   for (std::size_t i = 0; i < list.size(); ++i) {
     const json& p = list[i];
     const auto body = [&](const char* key) { return p.is_object() && p.contains(key) && p.at(key).is_string(); };
-    if (!body("a") || !body("b"))
-      throw InputError(where + "[" + std::to_string(i) + "]: expected {\"a\": body name, \"b\": body name}");
+    if (!body("a") || !body("b")) throw InputError(where + "[" + std::to_string(i) + "]: expected {\"a\": body name, \"b\": body name}");
     pairs.push_back({p.at("a").get<std::string>(), p.at("b").get<std::string>()});
   }
   if (pairs.empty()) throw InputError(where + ": empty (a run with no gear pairs has nothing to analyse)");
@@ -68,9 +67,8 @@ std::vector<PairForce> pair_forces(const input::CsvTable& contacts, const std::v
   for (const PairId& p : pairs) {
     const std::string column = pair_name(p) + "_force_N";
     if (!contacts.has(column))
-      throw InputError(contacts.path.string() + ": no <pair>_force_N column '" + column + "' for the gear pair " +
-                       pair_label(p) + " of summary.json's gear_pairs: expected one contact-force column per gear " +
-                       "pair, as gearsim run writes them");
+      throw InputError(contacts.path.string() + ": no <pair>_force_N column '" + column + "' for the gear pair " + pair_label(p) +
+                       " of summary.json's gear_pairs: expected one contact-force column per gear " + "pair, as gearsim run writes them");
     const std::string point = pair_name(p) + "_force_point_N";  // runs that filter the force keep it
     forces.push_back({p, contacts.column(column), contacts.has(point) ? contacts.column(point) : std::vector<double>{}});
     for (const auto& [name, values] : {std::pair{column, &forces.back().force_N}, std::pair{point, &forces.back().point_force_N}})
@@ -90,9 +88,8 @@ ToothContactLog tooth_contacts(const std::filesystem::path& path, const std::vec
                      std::to_string(pairs.size()) + ": not the logs of one run");
   for (std::size_t p = 0; p < pairs.size(); ++p)
     if (log.pairs[p] != pair_name(pairs[p]))
-      throw InputError(path.string() + ": pair " + std::to_string(p) + " is '" + log.pairs[p] +
-                       "', summary.json's gear_pairs[" + std::to_string(p) + "] is " + pair_label(pairs[p]) +
-                       ": not the logs of one run");
+      throw InputError(path.string() + ": pair " + std::to_string(p) + " is '" + log.pairs[p] + "', summary.json's gear_pairs[" +
+                       std::to_string(p) + "] is " + pair_label(pairs[p]) + ": not the logs of one run");
   ToothContactLog t;
   t.pairs = pairs;
   t.time_s = std::move(log.time_s);
@@ -220,7 +217,8 @@ std::vector<TrainDescription::LoadedFlank> loaded_flanks(const RunDir& run) {
     const json& m = p.at("mean_normal_force_N");
     if (!m.contains("ccw_flanks_of_a") || !m.contains("cw_flanks_of_a") || !m.at("ccw_flanks_of_a").is_number() ||
         !m.at("cw_flanks_of_a").is_number())
-      throw InputError((run.dir / "summary.json").string() + ": gear_pairs[].mean_normal_force_N: expected {ccw_flanks_of_a, cw_flanks_of_a} in N");
+      throw InputError((run.dir / "summary.json").string() +
+                       ": gear_pairs[].mean_normal_force_N: expected {ccw_flanks_of_a, cw_flanks_of_a} in N");
     const double ccw = m.at("ccw_flanks_of_a").get<double>(), cw = m.at("cw_flanks_of_a").get<double>();
     TrainDescription::LoadedFlank l{{p.at("a").get<std::string>(), p.at("b").get<std::string>()}, "", false};
     if (ccw > 0 || cw > 0) l.flank_of_a = ccw >= cw ? "ccw" : "cw";

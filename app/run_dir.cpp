@@ -40,8 +40,6 @@ nlohmann::ordered_json read_json_record(const std::filesystem::path& file) {
   }
 }
 
-void save_summary(const RunDir& run) {
-  write_output_file(run.dir / "summary.json", run.summary.dump(2) + "\n", Durability::Record);
-}
+void save_summary(const RunDir& run) { write_output_file(run.dir / "summary.json", run.summary.dump(2) + "\n", Durability::Record); }
 
 }  // namespace gearsim::app

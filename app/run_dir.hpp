@@ -17,8 +17,8 @@ namespace gearsim::app {
 
 struct RunDir {
   std::filesystem::path dir;
-  nlohmann::ordered_json summary;   // DIR/summary.json as written by run (and added to later)
-  physics::Scenario scenario;       // the run's own, from DIR/scenario.json
+  nlohmann::ordered_json summary;  // DIR/summary.json as written by run (and added to later)
+  physics::Scenario scenario;  // the run's own, from DIR/scenario.json
 };
 
 // Reads DIR/summary.json and DIR/scenario.json. InputError (naming the file and key) when DIR is

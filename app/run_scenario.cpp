@@ -20,9 +20,10 @@ using json = nlohmann::ordered_json;
 
 // summary.json's description of the anti-aliasing filter of contacts.csv's force columns.
 json force_filter_json(const DecimationFilter& f) {
-  return {{"what", "contacts.csv <pair>_force_N: every step's force through a zero-phase "
-                   "Kaiser-windowed sinc low-pass, decimated to the output rate; "
-                   "<pair>_force_point_N is the point sample"},
+  return {{"what",
+           "contacts.csv <pair>_force_N: every step's force through a zero-phase "
+           "Kaiser-windowed sinc low-pass, decimated to the output rate; "
+           "<pair>_force_point_N is the point sample"},
           {"input_rate_hz", f.input_rate_hz},
           {"output_rate_hz", f.output_rate_hz},
           {"passband_edge_hz", f.passband_edge_hz},
@@ -87,12 +88,14 @@ json summary_json(const RunSource& source, const physics::Scenario& s, const sim
                          {"logging_and_output", r.wall_seconds - r.setup_wall_seconds - r.profile.step_total_s}};
   json pairs = json::array();
   for (const sim::PairResult& p : r.pairs) {
-    pairs.push_back({{"a", p.info.body_a}, {"b", p.info.body_b}, {"stiffness_N_per_m", p.info.stiffness_N_per_m},
-                     {"damping_N_s_per_m", p.info.damping_N_s_per_m}, {"reduced_mass_kg", p.info.reduced_mass_kg}});
+    pairs.push_back({{"a", p.info.body_a},
+                     {"b", p.info.body_b},
+                     {"stiffness_N_per_m", p.info.stiffness_N_per_m},
+                     {"damping_N_s_per_m", p.info.damping_N_s_per_m},
+                     {"reduced_mass_kg", p.info.reduced_mass_kg}});
     if (!p.info.stiffness_table.empty()) pairs.back()["stiffness_table"] = p.info.stiffness_table;
     if (r.steady_steps)
-      pairs.back()["mean_normal_force_N"] = {{"ccw_flanks_of_a", p.mean_ccw_flank_force_N},
-                                             {"cw_flanks_of_a", p.mean_cw_flank_force_N}};
+      pairs.back()["mean_normal_force_N"] = {{"ccw_flanks_of_a", p.mean_ccw_flank_force_N}, {"cw_flanks_of_a", p.mean_cw_flank_force_N}};
   }
   j["gear_pairs"] = pairs;
   // The pair macro's gear table at the centre distance it used (mesh members: from their fits).
@@ -116,8 +119,7 @@ json summary_json(const RunSource& source, const physics::Scenario& s, const sim
   return j;
 }
 
-DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, OutputFolder& folder,
-                    const sim::SimOptions& options) {
+DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, OutputFolder& folder, const sim::SimOptions& options) {
   const std::filesystem::path& dir = folder.dir();
   // Every name this run may write, in the manifest before any is written.
   std::vector<std::string> logs{"state.csv", "contacts.csv"};

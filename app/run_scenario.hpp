@@ -41,7 +41,6 @@ nlohmann::ordered_json summary_json(const RunSource& source, const physics::Scen
 // it; OutputError when the record cannot be written. A log that could not be written ends the run
 // with status OutputFailed, summary.json naming it under not_written (and leaving it out of
 // outputs).
-DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, OutputFolder& folder,
-                    const sim::SimOptions& options);
+DirRun run_into_dir(const physics::Scenario& s, const RunSource& source, OutputFolder& folder, const sim::SimOptions& options);
 
 }  // namespace gearsim::app

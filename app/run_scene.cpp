@@ -55,8 +55,7 @@ RunMeshes run_meshes(const physics::Scenario& s) {
   return m;
 }
 
-render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>& poses,
-                        const std::vector<std::string>& overlay) {
+render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>& poses, const std::vector<std::string>& overlay) {
   render::Scene scene;
   scene.bodies = m.bodies;
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) scene.bodies[k].pose = poses.at(static_cast<std::size_t>(m.body_index[k]));
@@ -73,8 +72,7 @@ render::Camera run_camera(const std::string& preset, const physics::Scenario& s,
     // The faulty planet (the first whose gear carries an error), planet 0 without one.
     std::string planet = t.planetary ? t.planets.front() : t.driven;
     for (const physics::BodyDef& b : s.bodies)
-      if (b.gear && !b.gear->errors.flank_offsets.empty() &&
-          std::find(t.planets.begin(), t.planets.end(), b.name) != t.planets.end()) {
+      if (b.gear && !b.gear->errors.flank_offsets.empty() && std::find(t.planets.begin(), t.planets.end(), b.name) != t.planets.end()) {
         planet = b.name;
         break;
       }

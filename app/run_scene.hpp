@@ -18,15 +18,14 @@ namespace gearsim::app {
 
 struct RunMeshes {
   std::vector<render::SceneBody> bodies;  // one per drawn body, in scenario order
-  std::vector<int> body_index;            // scenario body of each
+  std::vector<int> body_index;  // scenario body of each
 };
 
 // InputError naming the body when a mesh file cannot be read.
 RunMeshes run_meshes(const physics::Scenario& s);
 
 // The scene at one set of poses (scenario order, PoseReplay::poses), with overlay lines.
-render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>& poses,
-                        const std::vector<std::string>& overlay);
+render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>& poses, const std::vector<std::string>& overlay);
 
 // Cameras: "overview" (along −z), "tilted" (30° toward −y), "sun_mesh" and "ring_mesh" (close-ups,
 // 6 mm tall, on the pitch point of the faulty planet — the first planet whose gear carries an

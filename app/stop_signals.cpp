@@ -30,8 +30,8 @@ StopSignals::~StopSignals() {
 void throw_if_render_stopped(const RenderResult& r, const std::filesystem::path& dir) {
   if (!r.stopped_by) return;
   throw RunStopped(r.stopped_by == SIGTERM ? kExitSigterm : kExitSigint,
-                   "interrupted by " + signal_name(r.stopped_by) + " while rendering, after " + std::to_string(r.frames_drawn) +
-                       " of " + std::to_string(r.frames) + " frames: no video written (" + r.video.filename().string() +
+                   "interrupted by " + signal_name(r.stopped_by) + " while rendering, after " + std::to_string(r.frames_drawn) + " of " +
+                       std::to_string(r.frames) + " frames: no video written (" + r.video.filename().string() +
                        "); the PNG frames drawn stay in " + (dir / "frames").string());
 }
 

@@ -16,7 +16,7 @@ std::string signal_name(int sig);  // "SIGINT" or "SIGTERM"
 
 class StopSignals {
  public:
-  StopSignals();   // clears the latch, installs the handlers
+  StopSignals();  // clears the latch, installs the handlers
   ~StopSignals();  // puts the previous handlers back
   StopSignals(const StopSignals&) = delete;
   StopSignals& operator=(const StopSignals&) = delete;

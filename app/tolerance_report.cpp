@@ -21,10 +21,8 @@ std::string fixed(double v, int digits) {
 }
 
 void print_tolerance_grading(std::ostream& out, const ToleranceResult& r) {
-  out << "  " << standard_key(r.standard) << " = " << standard_name(r.standard)
-            << ", class " << r.quality << ": step factor " << step_rule(r.standard) << " = "
-            << fixed(r.step_factor, 4) << "\n            rounding: " << rounding_rule(r.standard)
-            << "\n";
+  out << "  " << standard_key(r.standard) << " = " << standard_name(r.standard) << ", class " << r.quality << ": step factor "
+      << step_rule(r.standard) << " = " << fixed(r.step_factor, 4) << "\n            rounding: " << rounding_rule(r.standard) << "\n";
 }
 
 void print_tolerance_table(std::ostream& out, const std::vector<ToleranceResult>& results) {
@@ -37,12 +35,10 @@ void print_tolerance_table(std::ostream& out, const std::vector<ToleranceResult>
   out << "   class-5 formula (m, d in mm)\n";
   for (std::size_t i = 0; i < first.components.size(); ++i) {
     const ToleranceComponent& c = first.components[i];
-    out << "  " << pad(c.symbol, 7) << pad(c.name, 45)
-              << pad(fixed(c.class5_um, 3), 10, true);
+    out << "  " << pad(c.symbol, 7) << pad(c.name, 45) << pad(fixed(c.class5_um, 3), 10, true);
     for (const ToleranceResult& r : results) {
       const ToleranceComponent& rc = r.components[i];
-      out << "  " << pad(fixed(rc.unrounded_um, 3), 16, true)
-                << pad(fixed(rc.value_um, 1), 9, true);
+      out << "  " << pad(fixed(rc.unrounded_um, 3), 16, true) << pad(fixed(rc.value_um, 1), 9, true);
     }
     out << "   " << c.formula << "\n";
   }
@@ -58,8 +54,7 @@ json tolerance_result_json(const ToleranceResult& r) {
   j["step_factor"] = r.step_factor;
   j["step_rule"] = step_rule(r.standard);
   j["rounding_rule"] = rounding_rule(r.standard);
-  j["single_flank_error_um"] =
-      r.single_flank_error_um ? json(*r.single_flank_error_um) : json(nullptr);
+  j["single_flank_error_um"] = r.single_flank_error_um ? json(*r.single_flank_error_um) : json(nullptr);
   if (r.composite_k) j["composite_k"] = *r.composite_k;
   json components = json::array();
   for (const ToleranceComponent& c : r.components) {

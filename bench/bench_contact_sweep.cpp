@@ -69,12 +69,16 @@ int compare(const char* fa, const char* fb) {
     max_point = std::max(max_point, std::hypot(x.point_x - y.point_x, x.point_y - y.point_y));
     max_normal = std::max(max_normal, std::abs(x.normal_x * y.normal_y - x.normal_y * y.normal_x));
   }
-  std::printf("contacts: %zu in A, %zu in B; %zu matched (%zu bit-identical), %zu only in A, %zu only in B\n", a.size(),
-              b.size(), matched, same_bits, only_a, only_b);
-  std::printf("largest differences of matched contacts: depth %.3e m (at a depth of %.3e m; relative %.2e), "
-              "point %.3e m, normal %.3e rad\n", max_depth, max_depth_at, max_rel_depth, max_point, max_normal);
-  std::printf("depth differences over 1e-13 / 1e-12 / 1e-11 / 1e-10 / 1e-9 m: %zu / %zu / %zu / %zu / %zu; "
-              "deepest unmatched contact %.3e m\n", above[0], above[1], above[2], above[3], above[4], deepest_unmatched);
+  std::printf("contacts: %zu in A, %zu in B; %zu matched (%zu bit-identical), %zu only in A, %zu only in B\n", a.size(), b.size(), matched,
+              same_bits, only_a, only_b);
+  std::printf(
+      "largest differences of matched contacts: depth %.3e m (at a depth of %.3e m; relative %.2e), "
+      "point %.3e m, normal %.3e rad\n",
+      max_depth, max_depth_at, max_rel_depth, max_point, max_normal);
+  std::printf(
+      "depth differences over 1e-13 / 1e-12 / 1e-11 / 1e-10 / 1e-9 m: %zu / %zu / %zu / %zu / %zu; "
+      "deepest unmatched contact %.3e m\n",
+      above[0], above[1], above[2], above[3], above[4], deepest_unmatched);
   return 0;
 }
 
@@ -86,11 +90,16 @@ int main(int argc, char** argv) {
   bool coherent = false, continued = false;
   double press_offset_m = 0;  // added to every press: takes up a CAD gear's backlash
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--dump" && i + 1 < argc) dump = argv[++i];
-    else if (std::string(argv[i]) == "--coherent") coherent = true;
-    else if (std::string(argv[i]) == "--continued") coherent = continued = true;
-    else if (std::string(argv[i]) == "--press-offset-um" && i + 1 < argc) press_offset_m = 1e-6 * std::stod(argv[++i]);
-    else file = argv[i];
+    if (std::string(argv[i]) == "--dump" && i + 1 < argc)
+      dump = argv[++i];
+    else if (std::string(argv[i]) == "--coherent")
+      coherent = true;
+    else if (std::string(argv[i]) == "--continued")
+      coherent = continued = true;
+    else if (std::string(argv[i]) == "--press-offset-um" && i + 1 < argc)
+      press_offset_m = 1e-6 * std::stod(argv[++i]);
+    else
+      file = argv[i];
   }
   bench::MeshSweep sw;
   if (!sw.load(file)) return 1;
@@ -110,8 +119,10 @@ int main(int argc, char** argv) {
           PlanarPose pa, pb;
           sw.poses(ga, gb, i, press + press_offset_m, shift, &pa, &pb);
           const auto t0 = Clock::now();
-          if (coherent) search.find(*ga.table, pa, *gb.table, pb, found);
-          else find_tooth_contacts(*ga.table, pa, *gb.table, pb, found);
+          if (coherent)
+            search.find(*ga.table, pa, *gb.table, pb, found);
+          else
+            find_tooth_contacts(*ga.table, pa, *gb.table, pb, found);
           seconds += std::chrono::duration<double>(Clock::now() - t0).count();
           for (const ToothContact& c : found) {
             const Record r = bench::record_of(calls, c);
@@ -123,13 +134,14 @@ int main(int argc, char** argv) {
         flanks += search.counts();
       }
   }
-  std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n",
-              sw.name.c_str(), sw.pairs.size(), calls, sw.steps, sw.step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
+  std::printf("%s: %zu meshing pairs, %ld calls (%ld steps of %.3g rad each), %.2f contacts/call, %.2f us/call\n", sw.name.c_str(),
+              sw.pairs.size(), calls, sw.steps, sw.step_rad, static_cast<double>(contacts) / static_cast<double>(calls),
               1e6 * seconds / static_cast<double>(calls));
   if (coherent)
     std::printf("coherent search: %ld flanks searched in full, %ld tracked, %ld skipped (%.1f %%), %ld renewed, %ld continued\n",
                 flanks.searched, flanks.tracked, flanks.skipped,
-                100.0 * static_cast<double>(flanks.skipped) / static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped + flanks.renewed),
+                100.0 * static_cast<double>(flanks.skipped) /
+                    static_cast<double>(flanks.searched + flanks.tracked + flanks.skipped + flanks.renewed),
                 flanks.renewed, flanks.continued);
   return 0;
 }

@@ -86,8 +86,7 @@ int main(int argc, char** argv) {
   if (!a.log) sets.push_back("output.per_step_log=false");
   const gearsim::physics::Scenario s = gearsim::input::load_scenario(a.scenario, sets);
   const auto t1 = Clock::now();
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("gearsim_bench_dynamics_" + std::to_string(getpid()));
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("gearsim_bench_dynamics_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   Stopwatch watch;
   sim::CsvLogs csv(dir, s);
@@ -104,27 +103,28 @@ int main(int argc, char** argv) {
   const double rest = wall - r.profile.step_total_s;  // bounds, steady sums, observers (logs)
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  std::printf("scenario %s: dt = %g s, %ld steps (%g s simulated), %s, status %s\n", s.name.c_str(), s.solver.time_step_s,
-              r.steps, sim_s, a.log ? "with the logs (CSV + steps.h5)" : "without logs", sim::status_name(r.status));
+  std::printf("scenario %s: dt = %g s, %ld steps (%g s simulated), %s, status %s\n", s.name.c_str(), s.solver.time_step_s, r.steps, sim_s,
+              a.log ? "with the logs (CSV + steps.h5)" : "without logs", sim::status_name(r.status));
   std::printf("load + expand scenario  %8.3f s\n", sec(t0, t1));
   std::printf("build world             %8.3f s\n", r.setup_wall_seconds);
-  std::printf("stepping                %8.3f s = %.2f s per simulated second (%.1f us per step)\n", wall, wall / sim_s,
-              1e6 * wall / n);
-  std::printf("stepping, CPU time      %8.3f s = %.2f s per simulated second (%.1f us per step)\n", cpu, cpu / sim_s,
-              1e6 * cpu / n);
+  std::printf("stepping                %8.3f s = %.2f s per simulated second (%.1f us per step)\n", wall, wall / sim_s, 1e6 * wall / n);
+  std::printf("stepping, CPU time      %8.3f s = %.2f s per simulated second (%.1f us per step)\n", cpu, cpu / sim_s, 1e6 * cpu / n);
   std::printf("  tooth contact         %8.3f s (%.0f %%, %.1f us per step)\n", contact, 100 * contact / wall, 1e6 * contact / n);
   if (const auto& v = r.profile.flank_visits; v.searched + v.tracked + v.skipped + v.continued + v.shared + v.parked > 0) {
     auto per = [&](long c) { return static_cast<double>(c) / n; };
-    std::printf("    flanks per step     %.1f skipped by their records, %.1f renewed, %.1f continued (%.2f at a tip circle), %.2f shared, "
-                "%.1f parked near pairs, %.2f searched, %.2f tracked\n",
-                per(v.skipped), per(v.renewed), per(v.continued), per(v.crossings), per(v.shared), per(v.parked), per(v.searched), per(v.tracked));
+    std::printf(
+        "    flanks per step     %.1f skipped by their records, %.1f renewed, %.1f continued (%.2f at a tip circle), %.2f shared, "
+        "%.1f parked near pairs, %.2f searched, %.2f tracked\n",
+        per(v.skipped), per(v.renewed), per(v.continued), per(v.crossings), per(v.shared), per(v.parked), per(v.searched), per(v.tracked));
   }
   std::printf("  Bullet + measuring    %8.3f s (%.0f %%, %.1f us per step)\n", bullet, 100 * bullet / wall, 1e6 * bullet / n);
   if (r.profile.row_solve_s > 0) {
     const double rows = r.profile.row_solve_s;
-    std::printf("    of it rows + solve  %8.3f s (%.0f %%, %.1f us per step: Jacobians, M⁻¹, the solve)\n", rows, 100 * rows / wall, 1e6 * rows / n);
-    std::printf("    row solves          %ld by the active set, %ld by Dantzig, %ld again at slip reversals; %ld steps split at contact onsets\n",
-                r.profile.active_set_solves, r.profile.dantzig_solves, r.profile.friction_rounds, r.profile.onset_splits);
+    std::printf("    of it rows + solve  %8.3f s (%.0f %%, %.1f us per step: Jacobians, M⁻¹, the solve)\n", rows, 100 * rows / wall,
+                1e6 * rows / n);
+    std::printf(
+        "    row solves          %ld by the active set, %ld by Dantzig, %ld again at slip reversals; %ld steps split at contact onsets\n",
+        r.profile.active_set_solves, r.profile.dantzig_solves, r.profile.friction_rounds, r.profile.onset_splits);
   }
   std::printf("  bounds, means, logs   %8.3f s (%.0f %%, %.1f us per step)\n", rest, 100 * rest / wall, 1e6 * rest / n);
   if (a.log) std::printf("per-step log            %8.1f MB per simulated second\n", log_bytes / sim_s / 1e6);

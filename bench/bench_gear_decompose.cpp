@@ -41,8 +41,7 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   const int repeats = argc > 1 ? std::atoi(argv[1]) : 20;
-  std::printf("%-8s %8s %10s %10s %10s %10s %8s\n", "gear", "outline", "outline_ms", "extrude_ms", "decomp_ms",
-              "total_ms", "pieces");
+  std::printf("%-8s %8s %10s %10s %10s %10s %8s\n", "gear", "outline", "outline_ms", "extrude_ms", "decomp_ms", "total_ms", "pieces");
   for (const GearSpec& s : {gear("sun", 24, false), gear("planet", 36, false), gear("ring", 96, true)}) {
     std::vector<double> t_outline, t_extrude, t_decomp, t_total;
     std::size_t pieces = 0, outline_points = 0;
@@ -67,8 +66,8 @@ int main(int argc, char** argv) {
       for (const Polygon2& h : o.outline.holes) outline_points += h.points.size();
       if (m.triangles.empty()) return 1;
     }
-    std::printf("%-8s %8zu %10.2f %10.2f %10.2f %10.2f %8zu\n", s.name.c_str(), outline_points, median(t_outline),
-                median(t_extrude), median(t_decomp), median(t_total), pieces);
+    std::printf("%-8s %8zu %10.2f %10.2f %10.2f %10.2f %8zu\n", s.name.c_str(), outline_points, median(t_outline), median(t_extrude),
+                median(t_decomp), median(t_total), pieces);
   }
   return 0;
 }

@@ -37,13 +37,11 @@ GearSpec gear(const char* name, int teeth, bool internal, double bore_or_rim_m) 
 int main(int argc, char** argv) {
   const int repeats = argc > 1 ? std::max(1, std::atoi(argv[1])) : 3;
   const double deg = 180.0 / std::numbers::pi;
-  std::printf("%-7s %8s %7s %7s %9s %9s %7s %10s\n", "gear", "flank_mm", "nodes", "quads",
-              "min_deg", "max_deg", "min_SJ", "median_ms");
+  std::printf("%-7s %8s %7s %7s %9s %9s %7s %10s\n", "gear", "flank_mm", "nodes", "quads", "min_deg", "max_deg", "min_SJ", "median_ms");
   const double sagitta = argc > 2 ? std::atof(argv[2]) : fe::MeshSizingDef{}.max_sagitta_m;
   std::printf("toothed-loop sagitta limit %.2f um\n", sagitta * 1e6);
   for (double flank : {0.4e-3, 0.2e-3}) {
-    for (const GearSpec& s : {gear("sun", 24, false, 8e-3), gear("planet", 36, false, 10e-3),
-                              gear("ring", 96, true, 110e-3)}) {
+    for (const GearSpec& s : {gear("sun", 24, false, 8e-3), gear("planet", 36, false, 10e-3), gear("ring", 96, true, 110e-3)}) {
       const GearOutline outline = make_gear_outline(s);
       fe::MeshSizingDef sizing;
       sizing.flank_size_m = flank;
@@ -57,9 +55,8 @@ int main(int argc, char** argv) {
       }
       std::sort(ms.begin(), ms.end());
       const auto& q = m.quality;
-      std::printf("%-7s %8.1f %7d %7d %9.1f %9.1f %7.3f %10.0f%s\n", s.name.c_str(), flank * 1e3,
-                  q.nodes, q.quads, q.min_angle_rad * deg, q.max_angle_rad * deg,
-                  q.min_scaled_jacobian, ms[ms.size() / 2], m.subdivided ? "  (subdivided)" : "");
+      std::printf("%-7s %8.1f %7d %7d %9.1f %9.1f %7.3f %10.0f%s\n", s.name.c_str(), flank * 1e3, q.nodes, q.quads, q.min_angle_rad * deg,
+                  q.max_angle_rad * deg, q.min_scaled_jacobian, ms[ms.size() / 2], m.subdivided ? "  (subdivided)" : "");
     }
   }
 }

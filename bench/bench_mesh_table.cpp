@@ -51,13 +51,13 @@ struct PairTable {
   double d0 = 0, ratio = 0, psi_y0 = 0, pitch_y = 0, dpsi = 0;
   int teeth_y = 0, samples = 0;
   std::vector<std::vector<Entry>> at;  // per sample of ψ_X over one turn
-  long uncovered = 0;                  // contacts missing from some of a sample's six evaluations
+  long uncovered = 0;  // contacts missing from some of a sample's six evaluations
 };
 
 struct Config {
   double psi_x, eps, dd, alpha;
   Vector2d origin;  // b's centre
-  int shift_y;      // Y's tooth numbers: actual = table − shift_y (mod teeth)
+  int shift_y;  // Y's tooth numbers: actual = table − shift_y (mod teeth)
 };
 
 // (ψ_X, ε, ΔD) of a pose pair: the line of centres from b's centre to a's, each gear's angle
@@ -94,7 +94,8 @@ PairTable build(const FlankTable& ta, const PlanarPose& pa0, const FlankTable& t
   const Vector2d c = pa0.centre_m - pb0.centre_m;
   t.d0 = c.norm();
   const double alpha = std::atan2(c.y(), c.x());
-  const double psi_x0 = (t.x_is_a ? pa0.angle_rad : pb0.angle_rad) - alpha, psi_y_start = (t.x_is_a ? pb0.angle_rad : pa0.angle_rad) - alpha;
+  const double psi_x0 = (t.x_is_a ? pa0.angle_rad : pb0.angle_rad) - alpha,
+               psi_y_start = (t.x_is_a ? pb0.angle_rad : pa0.angle_rad) - alpha;
   t.psi_y0 = psi_y_start - t.ratio * psi_x0;  // conjugate at the start pose
   t.samples = tx.teeth() * per_pitch;
   t.dpsi = kTwoPi / t.samples;
@@ -114,7 +115,8 @@ PairTable build(const FlankTable& ta, const PlanarPose& pa0, const FlankTable& t
       for (const std::vector<ToothContact>* list : {&found, &near})
         for (const ToothContact& ct : *list) {
           const auto key = std::make_tuple(ct.tooth_a, ct.tooth_b, static_cast<int>(ct.flank_a));
-          got[key][static_cast<std::size_t>(e)] = {ct.depth_m, ct.point_m.x(), ct.point_m.y(), std::atan2(ct.normal_on_b.y(), ct.normal_on_b.x())};
+          got[key][static_cast<std::size_t>(e)] = {ct.depth_m, ct.point_m.x(), ct.point_m.y(),
+                                                   std::atan2(ct.normal_on_b.y(), ct.normal_on_b.x())};
           seen[key] |= 1 << e;
         }
     }
@@ -178,7 +180,8 @@ void read(const PairTable& t, const PlanarPose& pa, const PlanarPose& pb, std::v
     out.push_back(ct);
   }
   std::sort(out.begin(), out.end(), [](const ToothContact& x, const ToothContact& y) {
-    return std::make_tuple(x.tooth_a, x.tooth_b, static_cast<int>(x.flank_a)) < std::make_tuple(y.tooth_a, y.tooth_b, static_cast<int>(y.flank_a));
+    return std::make_tuple(x.tooth_a, x.tooth_b, static_cast<int>(x.flank_a)) <
+           std::make_tuple(y.tooth_a, y.tooth_b, static_cast<int>(y.flank_a));
   });
 }
 
@@ -188,9 +191,12 @@ int main(int argc, char** argv) {
   std::string file = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml", dump;
   int per_pitch = 64;
   for (int i = 1; i < argc; ++i) {
-    if (std::string(argv[i]) == "--dump" && i + 1 < argc) dump = argv[++i];
-    else if (std::string(argv[i]) == "--samples-per-pitch" && i + 1 < argc) per_pitch = std::stoi(argv[++i]);
-    else file = argv[i];
+    if (std::string(argv[i]) == "--dump" && i + 1 < argc)
+      dump = argv[++i];
+    else if (std::string(argv[i]) == "--samples-per-pitch" && i + 1 < argc)
+      per_pitch = std::stoi(argv[++i]);
+    else
+      file = argv[i];
   }
   bench::MeshSweep sw;
   if (!sw.load(file)) return 1;

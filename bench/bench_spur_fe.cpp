@@ -25,8 +25,8 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-constexpr int kWorkers = 2;            // ccx processes at once (2 shared cores)
-constexpr double kPerWidth = 1e-9;     // N/m² → N/(mm·µm)
+constexpr int kWorkers = 2;  // ccx processes at once (2 shared cores)
+constexpr double kPerWidth = 1e-9;  // N/m² → N/(mm·µm)
 
 }  // namespace
 
@@ -38,26 +38,27 @@ int main(int argc, char** argv) {
   std::vector<double> sizes_mm;
   for (int i = 4; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "CPS4" || a == "CPS4R") def.element_type = a;
-    else sizes_mm.push_back(std::atof(argv[i]));
+    if (a == "CPS4" || a == "CPS4R")
+      def.element_type = a;
+    else
+      sizes_mm.push_back(std::atof(argv[i]));
   }
   if (sizes_mm.empty()) sizes_mm = {0.8, 0.4, 0.2};
 
   const SpurPairPath path = spur_pair_path(def.pair);
   const SpurPairReferences ref = spur_pair_references(def.pair);
   const double b = def.pair.face_width_m, rb1 = path.pinion_base_radius_m;
-  std::printf("pair z%d/%d m %.2f mm b %.1f mm thinning %.0f um/flank, bores %.2f of root, T %.2f/%.2f N m, "
-              "friction %.3f, %s\n", def.pair.pinion_teeth, def.pair.wheel_teeth, def.pair.module_m * 1e3,
-              b * 1e3, def.pair.thinning_per_flank_m * 1e6, def.pair.bore_over_root,
-              def.low_load_fraction * def.pinion_torque_N_m, def.pinion_torque_N_m, def.friction,
-              def.element_type.c_str());
-  std::printf("path: start %.4f end %.4f pitch %.4f mm, p_b %.4f mm, eps_alpha %.4f, T/r_b1 = %.1f N\n",
-              path.start_roll_m * 1e3, path.end_roll_m * 1e3, path.pitch_roll_m * 1e3, path.base_pitch_m * 1e3,
-              path.contact_ratio, def.pinion_torque_N_m / rb1);
+  std::printf(
+      "pair z%d/%d m %.2f mm b %.1f mm thinning %.0f um/flank, bores %.2f of root, T %.2f/%.2f N m, "
+      "friction %.3f, %s\n",
+      def.pair.pinion_teeth, def.pair.wheel_teeth, def.pair.module_m * 1e3, b * 1e3, def.pair.thinning_per_flank_m * 1e6,
+      def.pair.bore_over_root, def.low_load_fraction * def.pinion_torque_N_m, def.pinion_torque_N_m, def.friction,
+      def.element_type.c_str());
+  std::printf("path: start %.4f end %.4f pitch %.4f mm, p_b %.4f mm, eps_alpha %.4f, T/r_b1 = %.1f N\n", path.start_roll_m * 1e3,
+              path.end_roll_m * 1e3, path.pitch_roll_m * 1e3, path.base_pitch_m * 1e3, path.contact_ratio, def.pinion_torque_N_m / rb1);
   std::printf("ISO c' %.2f  c'_th %.2f  c_ga %.2f  c_ga,th %.2f  PE mean %.2f  PE pitch point %.2f  [N/(mm um)]\n",
-              ref.iso_single_N_per_m2 * kPerWidth, ref.iso_single_theory_N_per_m2 * kPerWidth,
-              ref.iso_mesh_N_per_m2 * kPerWidth, ref.iso_mesh_theory_N_per_m2 * kPerWidth,
-              ref.pe_mean_N_per_m2 * kPerWidth, ref.pe_pitch_point_N_per_m2 * kPerWidth);
+              ref.iso_single_N_per_m2 * kPerWidth, ref.iso_single_theory_N_per_m2 * kPerWidth, ref.iso_mesh_N_per_m2 * kPerWidth,
+              ref.iso_mesh_theory_N_per_m2 * kPerWidth, ref.pe_mean_N_per_m2 * kPerWidth, ref.pe_pitch_point_N_per_m2 * kPerWidth);
 
   // The n positions over one base pitch, then the pitch point.
   std::vector<double> rolls = rolls_over_base_pitch(path, n);
@@ -80,13 +81,19 @@ int main(int argc, char** argv) {
     auto worker = [&] {
       for (int i = next++; i < static_cast<int>(rolls.size()); i = next++) {
         try {
-          if (i == -2) tp = solve_gear_body_torsion(def, meshes, true, dir / "torsion_pinion");
-          else if (i == -1) tw = solve_gear_body_torsion(def, meshes, false, dir / "torsion_wheel");
-          else pos[static_cast<size_t>(i)] = solve_spur_pair_position(def, meshes, rolls[static_cast<size_t>(i)], dir / ("pos" + std::to_string(i)));
+          if (i == -2)
+            tp = solve_gear_body_torsion(def, meshes, true, dir / "torsion_pinion");
+          else if (i == -1)
+            tw = solve_gear_body_torsion(def, meshes, false, dir / "torsion_wheel");
+          else
+            pos[static_cast<size_t>(i)] =
+                solve_spur_pair_position(def, meshes, rolls[static_cast<size_t>(i)], dir / ("pos" + std::to_string(i)));
         } catch (const std::runtime_error& e) {
           std::lock_guard<std::mutex> lock(mu);
-          if (i >= 0) failed[static_cast<size_t>(i)] = e.what();  // a solver failure: reported in its row
-          else errors.push_back("torsion job " + std::to_string(i) + ": " + e.what());
+          if (i >= 0)
+            failed[static_cast<size_t>(i)] = e.what();  // a solver failure: reported in its row
+          else
+            errors.push_back("torsion job " + std::to_string(i) + ": " + e.what());
         } catch (const std::exception& e) {
           std::lock_guard<std::mutex> lock(mu);
           errors.push_back("job " + std::to_string(i) + ": " + e.what());
@@ -100,17 +107,17 @@ int main(int argc, char** argv) {
     for (const auto& e : errors) std::printf("ERROR %s\n", e.c_str());
     if (!errors.empty()) return 1;
 
-    std::printf("\nflank %.2f mm: pinion %d quads, wheel %d quads (min SJ %.2f / %.2f), meshing %.1f s\n",
-                size_mm, meshes.pinion.quality.quads, meshes.wheel.quality.quads,
-                meshes.pinion.quality.min_scaled_jacobian, meshes.wheel.quality.min_scaled_jacobian, mesh_s);
-    std::printf("body torsion [rad/(N m)]: pinion FE %.4e (annulus %.4e), wheel FE %.4e (annulus %.4e); "
-                "along the line of action %.3e + %.3e m/N\n",
-                tp.rotation_per_torque_rad_per_N_m, tp.annulus_closed_form_rad_per_N_m,
-                tw.rotation_per_torque_rad_per_N_m, tw.annulus_closed_form_rad_per_N_m,
-                tp.line_of_action_compliance_m_per_N, tw.line_of_action_compliance_m_per_N);
-    std::printf("%8s %5s %6s %11s %11s %8s %8s %7s %7s %7s %6s %6s  %-26s %-22s %6s\n", "roll_mm", "PEprs",
-                "loaded", "th_low_rad", "th_full_rad", "F_low_N", "F_full_N", "F/Frb", "k_FE", "k_noTor",
-                "k_PE", "FE/PE", "pair forces N (roll mm)", "FE gaps um", "ccx_s");
+    std::printf("\nflank %.2f mm: pinion %d quads, wheel %d quads (min SJ %.2f / %.2f), meshing %.1f s\n", size_mm,
+                meshes.pinion.quality.quads, meshes.wheel.quality.quads, meshes.pinion.quality.min_scaled_jacobian,
+                meshes.wheel.quality.min_scaled_jacobian, mesh_s);
+    std::printf(
+        "body torsion [rad/(N m)]: pinion FE %.4e (annulus %.4e), wheel FE %.4e (annulus %.4e); "
+        "along the line of action %.3e + %.3e m/N\n",
+        tp.rotation_per_torque_rad_per_N_m, tp.annulus_closed_form_rad_per_N_m, tw.rotation_per_torque_rad_per_N_m,
+        tw.annulus_closed_form_rad_per_N_m, tp.line_of_action_compliance_m_per_N, tw.line_of_action_compliance_m_per_N);
+    std::printf("%8s %5s %6s %11s %11s %8s %8s %7s %7s %7s %6s %6s  %-26s %-22s %6s\n", "roll_mm", "PEprs", "loaded", "th_low_rad",
+                "th_full_rad", "F_low_N", "F_full_N", "F/Frb", "k_FE", "k_noTor", "k_PE", "FE/PE", "pair forces N (roll mm)", "FE gaps um",
+                "ccx_s");
     double sum = 0, sum_nt = 0, sum_pe = 0;
     int solved = 0;
     for (size_t i = 0; i < pos.size(); ++i) {
@@ -136,23 +143,24 @@ int main(int argc, char** argv) {
           gaps += buf;
         }
       }
-      std::printf("%8.4f %5d %6d %11.4e %11.4e %8.1f %8.1f %7.4f %7.2f %7.2f %6.2f %6.3f  %-26s %-22s %6.1f%s\n",
-                  p.roll_m * 1e3, p.pe_pairs, p.loaded_pairs, p.pinion_rotation_low_rad,
-                  p.pinion_rotation_full_rad, p.contact_force_low_N, p.contact_force_full_N,
-                  p.contact_force_full_N / (p.torque_full_N_m / rb1), k / b * kPerWidth, knt / b * kPerWidth,
-                  p.pe_stiffness_N_per_m / b * kPerWidth, k / p.pe_stiffness_N_per_m, forces.c_str(),
-                  gaps.c_str(), p.wall_time_s, i == pos.size() - 1 ? "  (pitch point)" : "");
+      std::printf("%8.4f %5d %6d %11.4e %11.4e %8.1f %8.1f %7.4f %7.2f %7.2f %6.2f %6.3f  %-26s %-22s %6.1f%s\n", p.roll_m * 1e3,
+                  p.pe_pairs, p.loaded_pairs, p.pinion_rotation_low_rad, p.pinion_rotation_full_rad, p.contact_force_low_N,
+                  p.contact_force_full_N, p.contact_force_full_N / (p.torque_full_N_m / rb1), k / b * kPerWidth, knt / b * kPerWidth,
+                  p.pe_stiffness_N_per_m / b * kPerWidth, k / p.pe_stiffness_N_per_m, forces.c_str(), gaps.c_str(), p.wall_time_s,
+                  i == pos.size() - 1 ? "  (pitch point)" : "");
     }
-    std::printf("mean over %d of %d positions [N/(mm um)]: FE %.2f, FE without body torsion %.2f, PE at the same "
-                "positions %.2f (PE mean %.2f); ISO c_ga %.2f, c_ga,th %.2f\n",
-                solved, n, sum / solved / b * kPerWidth, sum_nt / solved / b * kPerWidth, sum_pe / solved / b * kPerWidth,
-                ref.pe_mean_N_per_m2 * kPerWidth, ref.iso_mesh_N_per_m2 * kPerWidth,
-                ref.iso_mesh_theory_N_per_m2 * kPerWidth);
+    std::printf(
+        "mean over %d of %d positions [N/(mm um)]: FE %.2f, FE without body torsion %.2f, PE at the same "
+        "positions %.2f (PE mean %.2f); ISO c_ga %.2f, c_ga,th %.2f\n",
+        solved, n, sum / solved / b * kPerWidth, sum_nt / solved / b * kPerWidth, sum_pe / solved / b * kPerWidth,
+        ref.pe_mean_N_per_m2 * kPerWidth, ref.iso_mesh_N_per_m2 * kPerWidth, ref.iso_mesh_theory_N_per_m2 * kPerWidth);
     if (failed.back().empty()) {
       const double kp = pos.back().stiffness_N_per_m, kpnt = stiffness_without_body_torsion(kp, tp, tw);
-      std::printf("pitch point (single pair) [N/(mm um)]: FE %.2f, without body torsion %.2f, PE %.2f; ISO c' %.2f, "
-                  "c'_th %.2f\n", kp / b * kPerWidth, kpnt / b * kPerWidth, ref.pe_pitch_point_N_per_m2 * kPerWidth,
-                  ref.iso_single_N_per_m2 * kPerWidth, ref.iso_single_theory_N_per_m2 * kPerWidth);
+      std::printf(
+          "pitch point (single pair) [N/(mm um)]: FE %.2f, without body torsion %.2f, PE %.2f; ISO c' %.2f, "
+          "c'_th %.2f\n",
+          kp / b * kPerWidth, kpnt / b * kPerWidth, ref.pe_pitch_point_N_per_m2 * kPerWidth, ref.iso_single_N_per_m2 * kPerWidth,
+          ref.iso_single_theory_N_per_m2 * kPerWidth);
     }
     std::printf("wall: study %.0f s (2 workers), ccx per position median %.1f s\n", study_s, [&] {
       std::vector<double> w;

@@ -56,8 +56,7 @@ int main(int argc, char** argv) {
     contacts += static_cast<long>(find_tooth_contacts(ts, s, tp, p).size());
   }
   const double us = std::chrono::duration<double, std::micro>(Clock::now() - t_calls).count() / steps;
-  std::printf("sun-planet find_tooth_contacts: %.2f us/call, %.2f contacts/call\n", us,
-              static_cast<double>(contacts) / steps);
+  std::printf("sun-planet find_tooth_contacts: %.2f us/call, %.2f contacts/call\n", us, static_cast<double>(contacts) / steps);
   // Planet–ring, in the carrier frame: the ring turns by −φ, the planet by −φ·96/36 (same sense).
   const FlankTable tr = table_of(ring);
   const PlanarPose ring0{{0, 0}, g.ring_angle_rad};
@@ -71,8 +70,7 @@ int main(int argc, char** argv) {
     contacts += static_cast<long>(find_tooth_contacts(tp, p, tr, r).size());
   }
   const double us_ring = std::chrono::duration<double, std::micro>(Clock::now() - t_ring).count() / steps;
-  std::printf("planet-ring find_tooth_contacts: %.2f us/call, %.2f contacts/call\n", us_ring,
-              static_cast<double>(contacts) / steps);
+  std::printf("planet-ring find_tooth_contacts: %.2f us/call, %.2f contacts/call\n", us_ring, static_cast<double>(contacts) / steps);
   // The probe alone: points swept across a tooth space of the planet.
   const int n = 1 << 20;
   double sink = 0;

@@ -42,8 +42,8 @@ struct MeshSweep {
   std::string name;  // the scenario's
   std::vector<SweepGear> gears;
   std::vector<std::pair<int, int>> pairs;  // (external gear, its mate)
-  double step_rad = 0;                     // sun relative to the carrier, per step
-  long steps = 0;                          // one relative planet turn
+  double step_rad = 0;  // sun relative to the carrier, per step
+  long steps = 0;  // one relative planet turn
   static constexpr double presses_m[5] = {-0.5e-6, 0.0, 0.5e-6, 1e-6, 2e-6};
   static constexpr double shifts_m[3] = {0.0, 1e-6, -1e-6};
 
@@ -70,7 +70,7 @@ struct MeshSweep {
         if (i == j || gears[i].table->internal()) continue;
         const double d = (gears[i].pose.centre_m - gears[j].pose.centre_m).norm();
         const bool meshes = gears[j].table->internal() ? d + gears[i].table->r_max_m() > gears[j].table->r_min_m()
-                                                        : i < j && d < gears[i].table->r_max_m() + gears[j].table->r_max_m();
+                                                       : i < j && d < gears[i].table->r_max_m() + gears[j].table->r_max_m();
         if (meshes) pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
       }
     // One relative planet turn in sun steps of ω·dt (104.7 rad/s in the paper's run).
@@ -97,7 +97,16 @@ struct MeshSweep {
 };
 
 inline Record record_of(long call, const contact::ToothContact& c) {
-  return {call, c.tooth_a, c.tooth_b, c.flank_a == Flank::Ccw ? 0 : 1, 0, c.point_m.x(), c.point_m.y(), c.normal_on_b.x(), c.normal_on_b.y(), c.depth_m};
+  return {call,
+          c.tooth_a,
+          c.tooth_b,
+          c.flank_a == Flank::Ccw ? 0 : 1,
+          0,
+          c.point_m.x(),
+          c.point_m.y(),
+          c.normal_on_b.x(),
+          c.normal_on_b.y(),
+          c.depth_m};
 }
 
 }  // namespace gearsim::bench

@@ -38,8 +38,19 @@ using Search = CoherentToothSearch;
         spacing <= xy.y.table.probe_radius(1) - xy.y.table.probe_radius(0)))
     return false;
   ++counts.shared;
-  sol = {static_cast<signed char>(Hit::kInterior), sol.tooth_y, sol.flank_y, first.s_y, first.r_x, calls, sol.r_x, sol.s_y,
-         sol.r_prev, sol.s_prev, sol.parked ? 0 : std::min(sol.history + 1, 2), sol.face, false};
+  sol = {static_cast<signed char>(Hit::kInterior),
+         sol.tooth_y,
+         sol.flank_y,
+         first.s_y,
+         first.r_x,
+         calls,
+         sol.r_x,
+         sol.s_y,
+         sol.r_prev,
+         sol.s_prev,
+         sol.parked ? 0 : std::min(sol.history + 1, 2),
+         sol.face,
+         false};
   if (park) bound = swapped(first_bounds[at]);
   rec.travel_m = -1;  // searched in full when the continuation ends
   rec.tracked = false;
@@ -70,7 +81,7 @@ using Search = CoherentToothSearch;
                                 : Search::ParkedPair{sol.tooth_y, k, sol.flank_y, gap_bound, closing});
   }
   sol.call = calls;  // still live next call
-  sol.history = 0;   // solved again from the last solve's radii
+  sol.history = 0;  // solved again from the last solve's radii
   sol.parked = true;
   rec.travel_m = -1;
   rec.tracked = false;
@@ -88,12 +99,8 @@ using Search = CoherentToothSearch;
 [[gnu::always_inline]] inline bool continue_solution(const XY& xy, int k, Flank f, bool tip_only, Search::Continuation continuation,
                                                      bool park, long calls, Search::Solution& sol, Search::NearBound& bound,
                                                      Search::FlankRecord& rec, Search::Counts& counts, int& hint, Hit& h) {
-  const double r0 = sol.history >= 2   ? 3 * (sol.r_x - sol.r_prev) + sol.r_prev2
-                    : sol.history == 1 ? 2 * sol.r_x - sol.r_prev
-                                       : sol.r_x;
-  const double s0 = sol.history >= 2   ? 3 * (sol.s_y - sol.s_prev) + sol.s_prev2
-                    : sol.history == 1 ? 2 * sol.s_y - sol.s_prev
-                                       : sol.s_y;
+  const double r0 = sol.history >= 2 ? 3 * (sol.r_x - sol.r_prev) + sol.r_prev2 : sol.history == 1 ? 2 * sol.r_x - sol.r_prev : sol.r_x;
+  const double s0 = sol.history >= 2 ? 3 * (sol.s_y - sol.s_prev) + sol.s_prev2 : sol.history == 1 ? 2 * sol.s_y - sol.s_prev : sol.s_y;
   Search::FaceReference face = sol.face;
   h = continued_hit(xy, k, f, static_cast<Hit::Solved>(sol.solved), sol.tooth_y, sol.flank_y, sol.r_x, sol.s_y, r0, s0, tip_only, face,
                     hint);
@@ -102,9 +109,19 @@ using Search = CoherentToothSearch;
   counts.crossings += h.solved == Hit::kCrossing;
   // The same maximum continued: its history predicts the next start.
   const bool same = h.solved == sol.solved && h.tooth_y == sol.tooth_y && h.flank_y == sol.flank_y && !sol.parked;
-  sol = {static_cast<signed char>(h.solved), h.tooth_y, h.flank_y, h.r_x, h.s_y, calls, sol.r_x, sol.s_y,
-         sol.r_prev, sol.s_prev, same ? std::min(sol.history + 1, continuation == Search::Continuation::replace ? 2 : 1) : 0,
-         face, false};
+  sol = {static_cast<signed char>(h.solved),
+         h.tooth_y,
+         h.flank_y,
+         h.r_x,
+         h.s_y,
+         calls,
+         sol.r_x,
+         sol.s_y,
+         sol.r_prev,
+         sol.s_prev,
+         same ? std::min(sol.history + 1, continuation == Search::Continuation::replace ? 2 : 1) : 0,
+         face,
+         false};
   if (continuation == Search::Continuation::replace) {
     if (park) keep_near_snapshot(bound, xy, k, f, h);
     rec.travel_m = -1;
@@ -118,13 +135,24 @@ using Search = CoherentToothSearch;
 // (`deeper` searches every flank anyway), and only on the first gear's flanks
 // (samples_see_crossing() reproduces probe_flank()'s view, not probe_tip()'s).
 [[gnu::always_inline]] inline void keep_sampled_solution(const XY& xy, int k, Flank f, int pass, const Hit& sampled,
-                                                         Search::Continuation continuation, bool park, long calls,
-                                                         Search::Solution& sol, Search::NearBound& bound) {
+                                                         Search::Continuation continuation, bool park, long calls, Search::Solution& sol,
+                                                         Search::NearBound& bound) {
   using C = Search::Continuation;
   if (continuation != C::off && sampled.solved != Hit::kSampled &&
       (sampled.solved != Hit::kCrossing || (continuation == C::replace && pass == 0))) {
-    sol = {static_cast<signed char>(sampled.solved), sampled.tooth_y, sampled.flank_y, sampled.r_x, sampled.s_y, calls, 0, 0, 0, 0, 0,
-           Search::FaceReference{}, false};
+    sol = {static_cast<signed char>(sampled.solved),
+           sampled.tooth_y,
+           sampled.flank_y,
+           sampled.r_x,
+           sampled.s_y,
+           calls,
+           0,
+           0,
+           0,
+           0,
+           0,
+           Search::FaceReference{},
+           false};
     if (park && continuation == C::replace) keep_near_snapshot(bound, xy, k, f, sampled);
   } else {
     sol = Search::Solution{};
@@ -135,8 +163,10 @@ using Search = CoherentToothSearch;
 // and flank, b's tooth (pass 0: x is a; pass 1: x is b).
 [[gnu::always_inline]] inline void emit(std::vector<ToothContact>& best, std::vector<ToothContact>* near, int pass, int k, Flank f,
                                         const Hit& h) {
-  if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true, near);
-  else keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
+  if (pass == 0)
+    keep_contact(best, k, h.tooth_y, f, h, true, near);
+  else
+    keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
 }
 
 }  // namespace
@@ -225,9 +255,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         } else {
           continued = Hit{};
         }
-        const Hit sampled =
-            sampled_hit(xy, k, f, tip_only, centre, turn, reach, rec, travels_[pass][at], pass == 0 ? &tracks_[at] : nullptr, hint, counts_,
-                        skip_tested);
+        const Hit sampled = sampled_hit(xy, k, f, tip_only, centre, turn, reach, rec, travels_[pass][at],
+                                        pass == 0 ? &tracks_[at] : nullptr, hint, counts_, skip_tested);
         if (continued.depth > kNone && !(sampled.depth > continued.depth)) {
           emit(best, near, pass, k, f, continued);  // deeper: the continued maximum, which goes on being continued
         } else if (sampled.tooth_y >= 0) {
@@ -236,7 +265,8 @@ void CoherentToothSearch::find(const FlankTable& ta, const PlanarPose& pa, const
         }
       }
       if (continuation_ != Continuation::deeper)
-        tooth_rec = tooth_record(records[static_cast<std::size_t>(k) * 2], records[static_cast<std::size_t>(k) * 2 + 1], centre, turn, reach);
+        tooth_rec =
+            tooth_record(records[static_cast<std::size_t>(k) * 2], records[static_cast<std::size_t>(k) * 2 + 1], centre, turn, reach);
     });
   }
   sort_contacts(best);

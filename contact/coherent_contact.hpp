@@ -39,8 +39,8 @@ class CoherentToothSearch {
     PlanarTwist a, b;
     double step_s = 0;  // the time step the poses advance by
   };
-  void find(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb,
-            std::vector<ToothContact>& out, std::vector<ToothContact>* near = nullptr, const Motion* motion = nullptr);
+  void find(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb, std::vector<ToothContact>& out,
+            std::vector<ToothContact>* near = nullptr, const Motion* motion = nullptr);
   // Forget every measurement: the next call searches every flank.
   void reset();
 
@@ -67,7 +67,7 @@ class CoherentToothSearch {
   struct ParkedPair {
     int tooth_a = -1, tooth_b = -1;
     Flank flank_a = Flank::Ccw;
-    double bound_m = 0;      // ≤ the pair's gap
+    double bound_m = 0;  // ≤ the pair's gap
     double closing_m_s = 0;  // the circles' rate of approach (with `motion`)
   };
   void record_parked(bool on) { record_parked_ = on; }
@@ -99,7 +99,7 @@ class CoherentToothSearch {
   // probe sample's first-order depth.
   struct FlankRecord {
     Eigen::Vector2d tooth_centre_in_y_m = Eigen::Vector2d::Zero();  // its tooth's centre then
-    double turn_rad = 0;   // the probed gear's angle less the other's, then
+    double turn_rad = 0;  // the probed gear's angle less the other's, then
     double travel_m = -1;  // > 0: no contact within this travel
     bool tracked = false;  // the flank's TrackedFlank holds
   };
@@ -126,7 +126,7 @@ class CoherentToothSearch {
     // kBounded: top bounds F then; path: how much longer than the travel a path inside the
     // teeth' annulus may be (1, or π/2 around the tips).
     std::array<double, n> top, slope, growth, growth_factor, jump, path;
-    std::array<double, n> free_m;                                  // kFree: distance to the teeth's circle
+    std::array<double, n> free_m;  // kFree: distance to the teeth's circle
   };
 
   // A near pair as its last solve left it (x: the flank searched, y: the other gear; each in its
@@ -139,9 +139,9 @@ class CoherentToothSearch {
     double gap_m = 0;
     Eigen::Vector2d centre_x = Eigen::Vector2d::Zero(), centre_y = Eigen::Vector2d::Zero();  // m
     double rho_x = 0, rho_y = 0;  // signed radii of curvature, m (> 0 convex)
-    double c_x = 0, c_y = 0;      // the convexities 1/rho, 1/m (0 at a corner)
-    double dist0_m = 0;           // the centres' distance then
-    double side = 1;              // +1: convex against convex (gap = dist − rho_x − rho_y); −1: one concave
+    double c_x = 0, c_y = 0;  // the convexities 1/rho, 1/m (0 at a corner)
+    double dist0_m = 0;  // the centres' distance then
+    double side = 1;  // +1: convex against convex (gap = dist − rho_x − rho_y); −1: one concave
     Eigen::Vector2d n_x = Eigen::Vector2d::Zero(), n_y = Eigen::Vector2d::Zero();  // the normal from y toward x
     Eigen::Vector2d point_x = Eigen::Vector2d::Zero(), point_y = Eigen::Vector2d::Zero();  // the two closest points
     Eigen::Vector2d into_flank_x = Eigen::Vector2d::Zero();  // a corner: unit tangent from it into its flank
@@ -180,7 +180,7 @@ class CoherentToothSearch {
   const FlankTable* tables_[2] = {nullptr, nullptr};
   std::vector<FlankRecord> records_[2];  // per pass, [tooth * 2 + (flank == Cw)]
   std::vector<ToothRecord> tooth_records_[2];  // per pass, per tooth
-  std::vector<TrackedFlank> tracks_;     // pass 0's flanks, indexed as records_[0]
+  std::vector<TrackedFlank> tracks_;  // pass 0's flanks, indexed as records_[0]
   std::vector<SampleTravels> travels_[2];  // per pass, indexed as records_
   std::vector<Solution> solutions_[2];  // per pass, indexed as records_
   // Per pass, indexed as records_: a near pair's last solve, for parking it (valid where the

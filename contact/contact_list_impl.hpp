@@ -34,8 +34,10 @@ void keep_contact(std::vector<ToothContact>& best, int tooth_a, int tooth_b, Fla
   c.point_m = h.point + 0.5 * h.depth * h.normal_into_x;
   auto same = [&](const ToothContact& o) { return o.tooth_a == tooth_a && o.tooth_b == tooth_b && o.flank_a == flank_a; };
   auto it = std::find_if(into.begin(), into.end(), same);
-  if (it == into.end()) into.push_back(c);
-  else if (it->depth_m < c.depth_m) *it = c;
+  if (it == into.end())
+    into.push_back(c);
+  else if (it->depth_m < c.depth_m)
+    *it = c;
 }
 
 // In a fixed order (as the map keyed by teeth and flank gave before), independent of probing order.
@@ -51,9 +53,8 @@ void sort_contacts(std::vector<ToothContact>& best) {
 void finish_near(const std::vector<ToothContact>& best, std::vector<ToothContact>* near) {
   if (!near) return;
   std::erase_if(*near, [&](const ToothContact& n) {
-    return std::any_of(best.begin(), best.end(), [&](const ToothContact& c) {
-      return c.tooth_a == n.tooth_a && c.tooth_b == n.tooth_b && c.flank_a == n.flank_a;
-    });
+    return std::any_of(best.begin(), best.end(),
+                       [&](const ToothContact& c) { return c.tooth_a == n.tooth_a && c.tooth_b == n.tooth_b && c.flank_a == n.flank_a; });
   });
   sort_contacts(*near);
 }

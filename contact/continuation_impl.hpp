@@ -98,8 +98,8 @@ Hit continued_crossing(const XY& xy, int k, Flank f, double r0, int j, Flank g, 
 // foot is on the flank the point faces): the caller searches the flank in full then.
 // (r0, s0): where to start, last step's radii (r_x, s_y) or a prediction from them.
 // `face`: the facing check's reference (still_faces()), updated.
-Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, double r0,
-                  double s0, bool tip_only, FaceReference& face, int& hint) {
+Hit continued_hit(const XY& xy, int k, Flank f, Hit::Solved solved, int j, Flank g, double r_x, double s_y, double r0, double s0,
+                  bool tip_only, FaceReference& face, int& hint) {
   double lo, hi;
   xy.x.table.flank_extent(k, f, &lo, &hi);
   const double spacing = xy.spacing_m, window = xy.window_m;

@@ -12,8 +12,8 @@
 namespace gearsim::contact {
 namespace {
 
-using gearsim::constants::kPi;
 using gearsim::constants::kNaN;
+using gearsim::constants::kPi;
 
 // A step along a flank rises in radius by more than this share of its length: sin 1°. A tip land
 // or root arc is flat (its noise, even 1 µm over 0.1 mm, stays below 0.01); an involute's chords
@@ -187,8 +187,8 @@ void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double
       continue;
     }
     // The knot interval [x[j], x[j+1]] holding r (its stencil of four knots, s, chosen once per interval).
-    const std::size_t j = std::min<std::size_t>(
-        static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), r) - x.begin()), x.size() - 1) - 1;
+    const std::size_t j =
+        std::min<std::size_t>(static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), r) - x.begin()), x.size() - 1) - 1;
     if (j != interval) {
       // Does the Lagrange cubic stay within the interval's knot range at every sample in it?
       interval = j;
@@ -206,8 +206,10 @@ void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double
         checked_to = m + 1;
       }
     }
-    if (shape_preserving) out[i] = hermite(x, y, j, pchip_slope(x, y, j), pchip_slope(x, y, j + 1), r);
-    else if (!(i >= checked_from && i < checked_to)) out[i] = lagrange(x, y, s, r);
+    if (shape_preserving)
+      out[i] = hermite(x, y, j, pchip_slope(x, y, j), pchip_slope(x, y, j + 1), r);
+    else if (!(i >= checked_from && i < checked_to))
+      out[i] = lagrange(x, y, s, r);
   }
 }
 

@@ -15,7 +15,7 @@
 namespace gearsim::contact {
 
 struct FlankKnots {
-  std::vector<double> r_m;        // ascending, m
+  std::vector<double> r_m;  // ascending, m
   std::vector<double> theta_rad;  // flank angle from the tooth's centre line at each r_m
 };
 

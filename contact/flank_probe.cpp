@@ -80,7 +80,6 @@ void FlankTable::build_rise_bands() {
   fill_band_runs(rise_flat_.data(), bands, rise_level_start_, larger_rise);
 }
 
-
 int FlankTable::nearest_tooth(const Eigen::Vector2d& p) const {
   return wrap_tooth(static_cast<int>(round_to_even((rough_atan2(p.y(), p.x()) - layout_.tooth0_angle_rad) * inv_pitch_)));
 }

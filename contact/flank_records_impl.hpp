@@ -302,8 +302,8 @@ bool record_holds(const CoherentToothSearch::ToothRecord& rec, const Vector2d& c
 // makes the record afresh. No hit: depth kNone, tooth_y −1. `skip_tested`: record_holds() was
 // found false already (find()).
 Hit sampled_hit(const XY& xy, int k, Flank f, bool tip_only, const Vector2d& centre, double turn, double reach,
-                CoherentToothSearch::FlankRecord& rec, SampleTravels& travels, CoherentToothSearch::TrackedFlank* track_of,
-                int& hint, CoherentToothSearch::Counts& counts, bool skip_tested) {
+                CoherentToothSearch::FlankRecord& rec, SampleTravels& travels, CoherentToothSearch::TrackedFlank* track_of, int& hint,
+                CoherentToothSearch::Counts& counts, bool skip_tested) {
   if (rec.travel_m > 0) {
     if (!skip_tested && record_holds(rec, centre, turn, reach)) {
       ++counts.skipped;

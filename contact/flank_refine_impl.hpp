@@ -9,8 +9,7 @@ namespace {
 
 // Radius of the deepest point near r_b, the best of samples spaced `step` apart whose
 // neighbours' depths are d_lo and d_hi: successive parabola fits on shrinking brackets.
-double parabola_refine(const XY& xy, int k, Flank f, double r, double step, double d_lo, double d0, double d_hi,
-                       int& hint) {
+double parabola_refine(const XY& xy, int k, Flank f, double r, double step, double d_lo, double d0, double d_hi, int& hint) {
   double h = step;
   for (int fit = 0; fit < kParabolaFits; ++fit) {
     const double curvature = d_lo - 2 * d0 + d_hi;
@@ -153,8 +152,7 @@ double refined_radius(FlankSamples& s, bool crossing_tried, Crossing& crossing) 
   const int best_i = s.best_i;
   const double r_b = table.probe_radius(best_i), step = s.step;
   const bool interior = best_i > 0 && best_i < n - 1 && s.depth[best_i - 1] > kNone && s.depth[best_i + 1] > kNone;
-  if (interior)
-    return parabola_refine(s.xy, s.k, s.f, r_b, step, s.depth[best_i - 1], s.depth[best_i], s.depth[best_i + 1], s.hint);
+  if (interior) return parabola_refine(s.xy, s.k, s.f, r_b, step, s.depth[best_i - 1], s.depth[best_i], s.depth[best_i + 1], s.hint);
   const double lo = std::max(r_b - step, table.probe_radius(0)), hi = std::min(r_b + step, table.probe_radius(n - 1));
   // Best at an end of the bracket (a tip corner, or the flank's end): where the depth still
   // rises toward that end at golden section's last point, a search with one maximum in the
@@ -231,8 +229,8 @@ Hit sharper_side_hit(const XY& xy, int k, Flank f, const Hit& probed) {
   for (const bool high : {true, false}) {
     const double end = high ? hi : lo;
     if (!(std::abs(r_y - end) <= 2 * w)) continue;
-    const Hit e = corner_solve(yx, probed.tooth_y, probed.flank_y, end, high, k, f,
-                               xy.x.to_local(c.point + c.depth * c.normal_into_x).norm());
+    const Hit e =
+        corner_solve(yx, probed.tooth_y, probed.flank_y, end, high, k, f, xy.x.to_local(c.point + c.depth * c.normal_into_x).norm());
     if (e.depth > c.depth && e.tooth_y == k && e.flank_y == f) c = e;
   }
   const Vector2d foot_x = xy.x.to_local(c.point + c.depth * c.normal_into_x);

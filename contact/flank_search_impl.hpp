@@ -216,9 +216,7 @@ Hit probe_at(const XY& xy, int k, Flank f, double r) {
 
 // First-order depth of a point of x (gear frame of x) inside y, kNone where there is nothing to
 // measure. `hint`: a tooth of y near the point (or −1), updated to the one it faces.
-double depth_of(const XY& xy, const Vector2d& p_x, int& hint) {
-  return xy.y.table.first_order_depth(xy.in_y(p_x), hint);
-}
+double depth_of(const XY& xy, const Vector2d& p_x, int& hint) { return xy.y.table.first_order_depth(xy.in_y(p_x), hint); }
 
 // First-order depth of x's flank point at radius r, kNone where the flank has no material.
 double depth_at(const XY& xy, int k, Flank f, double r, int& hint) {
@@ -231,8 +229,7 @@ double depth_at(const XY& xy, int k, Flank f, double r, int& hint) {
 struct FlankSamples {
   static constexpr int n = FlankTable::kProbeRadii;
   FlankSamples(const XY& xy_, int k_, Flank f_, int& hint_)
-      : xy(xy_), k(k_), f(f_), hint(hint_), material(xy_.x.table.probe_material(k_, f_)),
-        step(xy_.spacing_m), window(xy_.window_m) {
+      : xy(xy_), k(k_), f(f_), hint(hint_), material(xy_.x.table.probe_material(k_, f_)), step(xy_.spacing_m), window(xy_.window_m) {
     depth.fill(kNone);
   }
   bool missing(int i) const { return i < 0 || i >= n || !((material >> i) & 1u); }
@@ -331,8 +328,7 @@ bool probe_flank(FlankSamples& s) {
   if (s.best_i < 0 || depth[s.best_i] < -4 * window) return false;
   // The rest: where they could be the best or lift it into the refinement window.
   for (int i = 1; i < n - 1; i += 2)
-    if (!((probed >> i) & 1u) && has(i) && needed(i, i - 1, i + 1, 4 * window, std::max(depth[s.best_i], -window)))
-      probe_at_i(i);
+    if (!((probed >> i) & 1u) && has(i) && needed(i, i - 1, i + 1, 4 * window, std::max(depth[s.best_i], -window))) probe_at_i(i);
   return depth[s.best_i] >= -window;
 }
 

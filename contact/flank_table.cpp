@@ -12,8 +12,8 @@
 namespace gearsim::contact {
 namespace {
 
-using gearsim::constants::kPi;
 using gearsim::constants::kNaN;
+using gearsim::constants::kPi;
 
 // Radial margin kept inside the loop's extent, as a share of it: the root and tip arcs are
 // chords whose sagitta dips below the nominal circle; 1e-4 of a 2 mm tooth is 0.2 µm.
@@ -59,8 +59,7 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
   // few times the outline's measured noise are merged before the cubic sees them.
   std::vector<FlankKnots> flanks = flank_knots(loop, layout, internal, kKnotSpacing_m);
   knot_resolution_m_ = contact::knot_resolution_m(flanks);
-  if (kNoiseMerge * knot_resolution_m_ > kKnotSpacing_m)
-    flanks = flank_knots(loop, layout, internal, kNoiseMerge * knot_resolution_m_);
+  if (kNoiseMerge * knot_resolution_m_ > kKnotSpacing_m) flanks = flank_knots(loop, layout, internal, kNoiseMerge * knot_resolution_m_);
   for (int t = 0; t < layout.teeth; ++t)
     for (int side = 0; side < 2; ++side) {
       const FlankKnots& k = flanks[static_cast<std::size_t>(t) * 2 + side];
@@ -134,8 +133,7 @@ double FlankTable::sample(const std::vector<double>& table, int tooth, double r,
     // Central difference over ±kSlopeSpan samples of the cubic knots' interpolant; where the
     // span leaves the tooth, the one interval.
     const int lo = std::max(i - kSlopeSpan, 0), hi = std::min(i + 1 + kSlopeSpan, samples_ - 1);
-    *slope = (std::isnan(row[lo]) || std::isnan(row[hi])) ? (row[i + 1] - row[i]) * inv_dr_
-                                                          : (row[hi] - row[lo]) * inv_dr_ / (hi - lo);
+    *slope = (std::isnan(row[lo]) || std::isnan(row[hi])) ? (row[i + 1] - row[i]) * inv_dr_ : (row[hi] - row[lo]) * inv_dr_ / (hi - lo);
   }
   return row[i] + f * (row[i + 1] - row[i]);
 }
@@ -212,7 +210,8 @@ void FlankTable::build_extents() {
 namespace {
 // The cubic Hermite of sample interval i of a flank's row at t ∈ [0, 1] (flank_jet()): θ and
 // its first two derivatives in r. False where either end lacks material.
-[[gnu::always_inline]] inline bool hermite(const double* row, int samples, int i, double t, double inv_dr, double* theta, double* th1, double* th2) {
+[[gnu::always_inline]] inline bool hermite(const double* row, int samples, int i, double t, double inv_dr, double* theta, double* th1,
+                                           double* th2) {
   const double y0 = row[i], y1 = row[i + 1];
   if (std::isnan(y0) || std::isnan(y1)) return false;
   // Slopes per sample step at i and i + 1: central where both neighbours have material.
@@ -224,7 +223,7 @@ namespace {
   const double c2 = 3 * (y1 - y0) - 2 * m0 - m1, c3 = 2 * (y0 - y1) + m0 + m1;
   *theta = y0 + t * (m0 + t * (c2 + t * c3));
   *th1 = (m0 + t * (2 * c2 + 3 * t * c3)) * inv_dr;  // dθ/dr
-  *th2 = (2 * c2 + 6 * t * c3) * inv_dr * inv_dr;    // d²θ/dr²
+  *th2 = (2 * c2 + 6 * t * c3) * inv_dr * inv_dr;  // d²θ/dr²
   return true;
 }
 }  // namespace
@@ -266,8 +265,10 @@ void FlankTable::build_convexity_bands() {
         for (double t : {0.0, 1.0 / 3, 2.0 / 3, 1.0}) {
           FlankJet jet;
           const double c = interval_jet(tooth_of_row_[row], f, i, t, &jet, r_min_ + (i + t) * dr_) ? convexity(f, jet) : kNaN;
-          if (!std::isfinite(c)) band = {-kInfinity, kInfinity};                  // no material: unbounded
-          else if (band.lo != -kInfinity) band = {std::min(band.lo, c), std::max(band.hi, c)};  // not already unbounded
+          if (!std::isfinite(c))
+            band = {-kInfinity, kInfinity};  // no material: unbounded
+          else if (band.lo != -kInfinity)
+            band = {std::min(band.lo, c), std::max(band.hi, c)};  // not already unbounded
         }
       }
       fill_band_runs(out, bands, convexity_level_start_, wider_convexity);
@@ -277,10 +278,12 @@ void FlankTable::build_convexity_bands() {
 FlankTable::ConvexityRange FlankTable::convexity_range(int tooth, Flank flank, double r_lo_m, double r_hi_m) const {
   if (!(r_lo_m >= r_min_ && r_hi_m <= r_max_ && r_lo_m <= r_hi_m)) return {};
   const int last = samples_ - 2;
-  const int i_lo = std::min(static_cast<int>((r_lo_m - r_min_) * inv_dr_), last), i_hi = std::min(static_cast<int>((r_hi_m - r_min_) * inv_dr_), last);
+  const int i_lo = std::min(static_cast<int>((r_lo_m - r_min_) * inv_dr_), last),
+            i_hi = std::min(static_cast<int>((r_hi_m - r_min_) * inv_dr_), last);
   const int b_lo = i_lo / kConvexityBand, b_hi = i_hi / kConvexityBand;
-  const ConvexityRange* block = convexity_bands_.data() +
-                                (static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)) * convexity_block_;
+  const ConvexityRange* block =
+      convexity_bands_.data() +
+      (static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)) * convexity_block_;
   return band_range(block, convexity_level_start_, b_lo, b_hi, wider_convexity);
 }
 

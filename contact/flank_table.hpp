@@ -49,9 +49,9 @@ class FlankTable {
     auto same_bits = [](const std::vector<double>& u, const std::vector<double>& v) {
       return u.size() == v.size() && (u.empty() || std::memcmp(u.data(), v.data(), u.size() * sizeof(double)) == 0);
     };
-    return layout_.teeth == o.layout_.teeth && layout_.tooth0_angle_rad == o.layout_.tooth0_angle_rad &&
-           internal_ == o.internal_ && r_min_ == o.r_min_ && r_max_ == o.r_max_ && samples_ == o.samples_ &&
-           row_of_ == o.row_of_ && same_bits(ccw_, o.ccw_) && same_bits(cw_, o.cw_);
+    return layout_.teeth == o.layout_.teeth && layout_.tooth0_angle_rad == o.layout_.tooth0_angle_rad && internal_ == o.internal_ &&
+           r_min_ == o.r_min_ && r_max_ == o.r_max_ && samples_ == o.samples_ && row_of_ == o.row_of_ && same_bits(ccw_, o.ccw_) &&
+           same_bits(cw_, o.cw_);
   }
   // Distinct tooth shapes the table holds (identical teeth share one), for memory accounting.
   int distinct_teeth() const { return static_cast<int>(ccw_.size()) / samples_; }
@@ -69,11 +69,11 @@ class FlankTable {
 
   // Where a point in the gear frame lies against the material.
   struct Probe {
-    bool inside = false;     // in tooth material (or the solid body beyond the teeth)
+    bool inside = false;  // in tooth material (or the solid body beyond the teeth)
     bool has_flank = false;  // depth_m and normal refer to a flank (also for a point in a gap)
-    int tooth = -1;          // nearest tooth
+    int tooth = -1;  // nearest tooth
     Flank flank = Flank::Ccw;  // nearest flank
-    double depth_m = 0;      // distance to that flank along its normal (> 0 inside, < 0 in a gap)
+    double depth_m = 0;  // distance to that flank along its normal (> 0 inside, < 0 in a gap)
     Eigen::Vector2d normal = Eigen::Vector2d::Zero();  // outward flank normal, gear frame
   };
   Probe probe(const Eigen::Vector2d& p) const;
@@ -173,7 +173,8 @@ class FlankTable {
   }
   // The radii of a flank's first and last sample with material (its root and tip ends), m.
   void flank_extent(int tooth, Flank flank, double* r_lo, double* r_hi) const {
-    const std::pair<double, double>& e = extents_[static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)];
+    const std::pair<double, double>& e =
+        extents_[static_cast<std::size_t>(row_of_[static_cast<std::size_t>(tooth)]) * 2 + (flank == Flank::Cw)];
     *r_lo = e.first;
     *r_hi = e.second;
   }
@@ -183,7 +184,7 @@ class FlankTable {
   static double convexity(Flank flank, const FlankJet& jet) {
     const double cross = jet.d1.x() * jet.d2.y() - jet.d1.y() * jet.d2.x(), norm = jet.d1.norm();
     const double turn_left = cross / (norm * norm * norm);  // toward d1 turned by +90°
-    return flank == Flank::Ccw ? -turn_left : turn_left;    // the outward normal is d1 turned by +90° on Ccw
+    return flank == Flank::Ccw ? -turn_left : turn_left;  // the outward normal is d1 turned by +90° on Ccw
   }
   // The least and largest convexity of a flank's interpolant over radii [r_lo, r_hi], 1/m: from
   // bands of kConvexityBand sample intervals, each interval's cubic evaluated at its two ends and
@@ -216,7 +217,7 @@ class FlankTable {
   // cos ψ, so that a probe needs no trigonometry (see flank_probe.cpp).
   struct Knot {
     double cos_a, sin_a;  // direction of the flank point at this radius, tooth frame (NaN: no material)
-    double cos_psi;       // cosine of the flank's angle to the radial: 1/√(1 + (r·dθ/dr)²)
+    double cos_psi;  // cosine of the flank's angle to the radial: 1/√(1 + (r·dθ/dr)²)
   };
   // Both flanks' knots of one radius side by side: a probe reads both at once (one cache line
   // pair instead of two).
@@ -261,9 +262,9 @@ class FlankTable {
   double r_min_, r_max_, dr_, inv_dr_, inv_pitch_;
   int samples_;
   std::vector<double> ccw_, cw_;  // [row * samples + i], rad relative to the tooth centre
-  std::vector<int> row_of_;        // tooth → its row (identical teeth share one)
+  std::vector<int> row_of_;  // tooth → its row (identical teeth share one)
   std::vector<int> tooth_of_row_;  // a tooth of each row
-  std::vector<KnotPair> knots_;                 // [row * samples + i]
+  std::vector<KnotPair> knots_;  // [row * samples + i]
   // first_order_rise() per band of kRiseBand knot intervals (max over rows and flanks), and over
   // runs of bands: rise_flat_[rise_level_start_[l] + b] over bands b to b + 2^l − 1.
   static constexpr int kRiseBand = 32;
@@ -288,8 +289,8 @@ class FlankTable {
     return merge(runs[b_lo], runs[b_hi - (1 << level) + 1]);
   }
   static FirstOrderRise larger_rise(const FirstOrderRise& u, const FirstOrderRise& v) {
-    return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth,
-            u.jump > v.jump ? u.jump : v.jump, u.side > v.side ? u.side : v.side};
+    return {u.slope > v.slope ? u.slope : v.slope, u.growth > v.growth ? u.growth : v.growth, u.jump > v.jump ? u.jump : v.jump,
+            u.side > v.side ? u.side : v.side};
   }
   static ConvexityRange wider_convexity(const ConvexityRange& u, const ConvexityRange& v) {
     return {std::min(u.lo, v.lo), std::max(u.hi, v.hi)};
@@ -310,8 +311,8 @@ class FlankTable {
   bool interval_jet(int tooth, Flank flank, int i, double t, FlankJet* jet, double r) const;
 
   double tan_half_pitch_ = 0;
-  std::vector<Eigen::Vector2d> tooth_axis_;     // (cos, sin) of each tooth's centre-line angle
-  Eigen::Vector2d pitch_axis_;                  // (cos, sin) of the pitch angle
+  std::vector<Eigen::Vector2d> tooth_axis_;  // (cos, sin) of each tooth's centre-line angle
+  Eigen::Vector2d pitch_axis_;  // (cos, sin) of the pitch angle
   std::vector<Eigen::Vector2d> probe_points_;  // [(tooth * 2 + cw) * kProbeRadii + i]
   std::vector<std::uint32_t> probe_material_;  // [tooth * 2 + cw]
   std::vector<Eigen::Vector2d> tooth_centres_;

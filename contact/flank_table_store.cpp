@@ -37,8 +37,8 @@ std::uint64_t hash_of(const Polygon2& loop, const ToothLayout& layout, bool inte
 
 bool same_inputs(const Entry& e, const Polygon2& loop, const ToothLayout& layout, bool internal, int samples) {
   auto same_bits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
-  return e.layout.teeth == layout.teeth && same_bits(e.layout.tooth0_angle_rad, layout.tooth0_angle_rad) &&
-         e.internal == internal && e.samples == samples && e.points.size() == loop.points.size() &&
+  return e.layout.teeth == layout.teeth && same_bits(e.layout.tooth0_angle_rad, layout.tooth0_angle_rad) && e.internal == internal &&
+         e.samples == samples && e.points.size() == loop.points.size() &&
          std::memcmp(e.points.data(), loop.points.data(), loop.points.size() * sizeof(Eigen::Vector2d)) == 0;
 }
 

@@ -7,8 +7,7 @@
 
 namespace gearsim::contact {
 
-MeshCycleOverlap mesh_cycle_overlap(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
-                                    const PlanarPose& pb, int steps) {
+MeshCycleOverlap mesh_cycle_overlap(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb, int steps) {
   // θ_b = ∓(z_a/z_b)·θ_a about fixed centres: opposite senses unless one of them is a ring.
   const double sense = (a.internal() || b.internal()) ? 1.0 : -1.0;
   const double ratio = sense * a.teeth() / static_cast<double>(b.teeth());

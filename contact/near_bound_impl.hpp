@@ -84,8 +84,10 @@ double cross2(const Vector2d& v, const Vector2d& w) { return v.x() * w.y() - v.y
 // A flank's bound after a solve `h`: its snapshot where the solve left a gap, else none (only
 // the flag is cleared: the rest is not read without it).
 void keep_near_snapshot(NearBound& bound, const XY& xy, int k, Flank f, const Hit& h) {
-  if (h.depth < 0) bound = near_snapshot(xy, k, f, h);
-  else bound.valid = false;
+  if (h.depth < 0)
+    bound = near_snapshot(xy, k, f, h);
+  else
+    bound.valid = false;
 }
 
 // The same near pair seen from y (the second pass's flank sharing the first pass's solution).
@@ -133,7 +135,8 @@ bool convexity_spread(const FlankTable& t, int tooth, Flank f, double r, double 
 //    1.5 probe spacings of the tip with its slide, as the continuation keeps it (continued_hit()).
 //  - The solved gap's own error, kNearSolve_m.
 [[gnu::noinline]] double near_bound(const XY& xy, int k, Flank f, const NearBound& b, int j, Flank g, bool tip_only,
-                  const CoherentToothSearch::PlanarTwist* vx, const CoherentToothSearch::PlanarTwist* vy, double* closing) {
+                                    const CoherentToothSearch::PlanarTwist* vx, const CoherentToothSearch::PlanarTwist* vy,
+                                    double* closing) {
   constexpr double kNo = -std::numeric_limits<double>::infinity();
   const Frame &x = xy.x, &y = xy.y;
   const Vector2d ox = x.to_world(b.centre_x), oy = y.to_world(b.centre_y), d = ox - oy;

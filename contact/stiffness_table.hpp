@@ -13,9 +13,9 @@
 namespace gearsim::contact {
 
 struct StiffnessTable {
-  std::string source;                            // where it came from (a file), for messages
-  std::vector<double> radius_m;                  // contact radius on the table's gear, strictly increasing
-  std::vector<double> stiffness_N_per_m_per_m;   // single-pair stiffness per face width, > 0, one per radius
+  std::string source;  // where it came from (a file), for messages
+  std::vector<double> radius_m;  // contact radius on the table's gear, strictly increasing
+  std::vector<double> stiffness_N_per_m_per_m;  // single-pair stiffness per face width, > 0, one per radius
 };
 
 // Whether a table is sound, else what is wrong: fewer than two rows, columns of unequal length,

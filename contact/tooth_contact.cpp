@@ -7,8 +7,7 @@
 
 namespace gearsim::contact {
 
-std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb,
-                                              const PlanarPose& pb) {
+std::vector<ToothContact> find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb) {
   std::vector<ToothContact> found;
   find_tooth_contacts(ta, pa, tb, pb, found);
   return found;
@@ -34,8 +33,10 @@ void find_tooth_contacts(const FlankTable& ta, const PlanarPose& pa, const Flank
         const Hit h = deepest_on_flank(xy, k, f, pass == 1, hint);
         if (h.tooth_y < 0) continue;
         // Name the contact by a's tooth and the flank of a that is touched.
-        if (pass == 0) keep_contact(best, k, h.tooth_y, f, h, true, near);
-        else keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
+        if (pass == 0)
+          keep_contact(best, k, h.tooth_y, f, h, true, near);
+        else
+          keep_contact(best, h.tooth_y, k, h.flank_y, h, false, near);
       }
     });
   }

@@ -42,21 +42,20 @@ inline PlanarPose with_rotation(PlanarPose p) {
 
 struct ToothContact {
   int tooth_a = -1, tooth_b = -1;
-  Flank flank_a = Flank::Ccw;           // which flank of a's tooth is touched
-  Eigen::Vector2d point_m;              // mid-point of the overlap, plane coordinates
-  Eigen::Vector2d normal_on_b;          // unit, from b toward a (pushes a away from b)
-  double depth_m = 0;                   // penetration, > 0 (a near pair's gap: ≤ 0)
+  Flank flank_a = Flank::Ccw;  // which flank of a's tooth is touched
+  Eigen::Vector2d point_m;  // mid-point of the overlap, plane coordinates
+  Eigen::Vector2d normal_on_b;  // unit, from b toward a (pushes a away from b)
+  double depth_m = 0;  // penetration, > 0 (a near pair's gap: ≤ 0)
 };
 
 // All tooth-pair contacts between gear a and gear b, at most one per (tooth_a, tooth_b).
-std::vector<ToothContact> find_tooth_contacts(const FlankTable& a, const PlanarPose& pa,
-                                              const FlankTable& b, const PlanarPose& pb);
+std::vector<ToothContact> find_tooth_contacts(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb);
 // The same into `out` (cleared first), which keeps its storage from call to call. With `near`,
 // also the tooth pairs whose refinement measured a gap (depth ≤ 0, ToothContact::depth_m then
 // the gap's negative, within a few µm of touching: the refinement window of flank_search_impl.hpp)
 // and that do not touch, into `near` (cleared first) in the same order: where contacts may start.
-void find_tooth_contacts(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
-                         const PlanarPose& pb, std::vector<ToothContact>& out, std::vector<ToothContact>* near = nullptr);
+void find_tooth_contacts(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb,
+                         std::vector<ToothContact>& out, std::vector<ToothContact>* near = nullptr);
 
 }  // namespace gearsim::contact
 
@@ -67,12 +66,11 @@ namespace gearsim::contact {
 // external gears, the same sense for an external gear in a ring), from their poses pa and pb:
 // interference of tip and fillet, or flanks fuller than conjugate, shows here before a run.
 struct MeshCycleOverlap {
-  ToothContact deepest;       // depth_m 0 when the teeth never overlap
-  double turn_a_rad = 0;      // a's turn from pa at which it is deepest
-  double radius_a_m = 0;      // of the contact point on a, and on b
+  ToothContact deepest;  // depth_m 0 when the teeth never overlap
+  double turn_a_rad = 0;  // a's turn from pa at which it is deepest
+  double radius_a_m = 0;  // of the contact point on a, and on b
   double radius_b_m = 0;
 };
-MeshCycleOverlap mesh_cycle_overlap(const FlankTable& a, const PlanarPose& pa, const FlankTable& b,
-                                    const PlanarPose& pb, int steps);
+MeshCycleOverlap mesh_cycle_overlap(const FlankTable& a, const PlanarPose& pa, const FlankTable& b, const PlanarPose& pb, int steps);
 
 }  // namespace gearsim::contact

@@ -26,15 +26,13 @@ class InternalError : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
-[[noreturn]] inline void internal_check_failed(const char* expr, const char* file, int line,
-                                               const std::string& msg) {
-  throw InternalError(std::string("internal check failed: ") + expr + " (" + file + ":" +
-                      std::to_string(line) + "): " + msg);
+[[noreturn]] inline void internal_check_failed(const char* expr, const char* file, int line, const std::string& msg) {
+  throw InternalError(std::string("internal check failed: ") + expr + " (" + file + ":" + std::to_string(line) + "): " + msg);
 }
 
 }  // namespace gearsim
 
-#define GEARSIM_CHECK(cond, msg)                                                  \
-  do {                                                                            \
+#define GEARSIM_CHECK(cond, msg)                                                   \
+  do {                                                                             \
     if (!(cond)) ::gearsim::internal_check_failed(#cond, __FILE__, __LINE__, msg); \
   } while (0)

@@ -33,9 +33,7 @@ std::string refusal(const std::string& name) {
 }
 
 // True for ".NAME.partial-…" (core/output_file.cpp's temporaries of NAME).
-bool is_leftover_of(const std::string& entry, const std::string& name) {
-  return entry.starts_with("." + name + ".partial-");
-}
+bool is_leftover_of(const std::string& entry, const std::string& name) { return entry.starts_with("." + name + ".partial-"); }
 
 }  // namespace
 
@@ -80,8 +78,7 @@ int FolderManifest::remove_listed(const fs::path& dir) {
     const fs::file_status st = fs::symlink_status(p, ec);
     if (fs::is_regular_file(st) || fs::is_symlink(st)) removed += fs::remove(p, ec) ? 1 : 0;
     for (const fs::directory_entry& e : fs::directory_iterator(parent, ec))
-      if (is_leftover_of(e.path().filename().string(), p.filename().string()) && !e.is_directory(ec))
-        fs::remove(e.path(), ec);
+      if (is_leftover_of(e.path().filename().string(), p.filename().string()) && !e.is_directory(ec)) fs::remove(e.path(), ec);
   }
   for (const fs::path& f : folders) fs::remove(f, ec);  // only when empty: a user's file keeps it
   files_.clear();

@@ -24,12 +24,10 @@ std::string kind_of(mode_t mode) {
 }
 
 // The opened descriptor of a regular file of at most max_bytes, and its size.
-int open_regular(const std::filesystem::path& path, std::size_t max_bytes, const std::string& what,
-                 std::size_t& size) {
+int open_regular(const std::filesystem::path& path, std::size_t max_bytes, const std::string& what, std::size_t& size) {
   // O_NONBLOCK: opening a FIFO for reading does not wait for a writer; cleared again below.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0)
-    throw InputError(path.string() + ": cannot open " + what + ": " + std::strerror(errno));
+  if (fd < 0) throw InputError(path.string() + ": cannot open " + what + ": " + std::strerror(errno));
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     const int err = errno;
@@ -42,8 +40,8 @@ int open_regular(const std::filesystem::path& path, std::size_t max_bytes, const
   }
   if (static_cast<std::uintmax_t>(st.st_size) > max_bytes) {
     ::close(fd);
-    throw InputError(path.string() + ": " + std::to_string(st.st_size) + " bytes: larger than the " +
-                     std::to_string(max_bytes) + " bytes " + what + " may have");
+    throw InputError(path.string() + ": " + std::to_string(st.st_size) + " bytes: larger than the " + std::to_string(max_bytes) +
+                     " bytes " + what + " may have");
   }
   ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   size = static_cast<std::size_t>(st.st_size);
@@ -71,8 +69,7 @@ std::string read_input_file(const std::filesystem::path& path, std::size_t max_b
     // The file may grow while it is read: the bound holds for what is read, not only the size.
     if (text.size() > max_bytes) {
       ::close(fd);
-      throw InputError(path.string() + ": grew past the " + std::to_string(max_bytes) + " bytes " + what +
-                       " may have while it was read");
+      throw InputError(path.string() + ": grew past the " + std::to_string(max_bytes) + " bytes " + what + " may have while it was read");
     }
   }
   ::close(fd);
@@ -110,8 +107,7 @@ class InputFile::Buffer : public std::streambuf {
   std::vector<char> data_;
 };
 
-InputFile::InputFile(const std::filesystem::path& path, std::size_t max_bytes, const std::string& what)
-    : std::istream(nullptr) {
+InputFile::InputFile(const std::filesystem::path& path, std::size_t max_bytes, const std::string& what) : std::istream(nullptr) {
   const int fd = open_regular(path, max_bytes, what, size_);
   buffer_ = std::make_unique<Buffer>(fd, size_);
   rdbuf(buffer_.get());

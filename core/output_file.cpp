@@ -85,9 +85,12 @@ class OutputFile::Buffer : public std::streambuf {
     while (left > 0 && !error_) {
       const ssize_t n = ::write(fd_, p, left);
       if (n < 0 && errno == EINTR) continue;
-      if (n < 0) error_ = errno;
-      else if (n == 0) error_ = EIO;
-      else p += n, left -= static_cast<std::size_t>(n);
+      if (n < 0)
+        error_ = errno;
+      else if (n == 0)
+        error_ = EIO;
+      else
+        p += n, left -= static_cast<std::size_t>(n);
     }
     setp(data_.data(), data_.data() + data_.size());
     return !error_;
@@ -117,8 +120,7 @@ class OutputFile::Buffer : public std::streambuf {
   std::vector<char> data_;
 };
 
-OutputFile::OutputFile(fs::path target, Durability durability)
-    : std::ostream(nullptr), staged_(std::move(target), durability) {
+OutputFile::OutputFile(fs::path target, Durability durability) : std::ostream(nullptr), staged_(std::move(target), durability) {
   ::unlink(staged_.temp().c_str());  // a leftover of a process that had this pid, never followed
   const int fd = ::open(staged_.temp().c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd < 0) fail_output(staged_.target(), "cannot create", errno);

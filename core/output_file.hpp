@@ -19,7 +19,7 @@ namespace gearsim {
 
 // How much a committed output is worth keeping through a power cut.
 enum class Durability {
-  Plain,   // renamed into place; the system writes it back when it will (plots, tables)
+  Plain,  // renamed into place; the system writes it back when it will (plots, tables)
   Record,  // fsynced (the file, then its folder) before commit() returns: run records, logs
 };
 
@@ -85,8 +85,7 @@ void write_output(const std::filesystem::path& target, Fill&& fill, Durability d
 }
 
 // Writes `text` to `target` as one OutputFile and commits it.
-void write_output_file(const std::filesystem::path& target, const std::string& text,
-                       Durability durability = Durability::Plain);
+void write_output_file(const std::filesystem::path& target, const std::string& text, Durability durability = Durability::Plain);
 
 // Points the file descriptor `fd` at /dev/null, so that a library holding a file whose writes
 // failed (HDF5 flushes its metadata when it closes, and crashes at exit when that fails) can

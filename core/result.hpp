@@ -20,13 +20,13 @@ namespace gearsim {
 
 struct Refusal {
   std::string reason;  // one sentence: what is wrong, with the figures
-  int index = -1;      // the item at fault (row, tooth, loop), −1 when not one item's
+  int index = -1;  // the item at fault (row, tooth, loop), −1 when not one item's
 };
 
 template <class T>
 class [[nodiscard]] Result {
  public:
-  Result(T value) : v_(std::move(value)) {}         // NOLINT: implicit, as `return value;`
+  Result(T value) : v_(std::move(value)) {}  // NOLINT: implicit, as `return value;`
   Result(Refusal refusal) : v_(std::move(refusal)) {}  // NOLINT: implicit, as `return Refusal{…};`
   bool ok() const { return v_.index() == 0; }
   explicit operator bool() const { return ok(); }
@@ -58,7 +58,7 @@ class [[nodiscard]] Result {
 template <>
 class [[nodiscard]] Result<void> {
  public:
-  Result() = default;                                      // passed
+  Result() = default;  // passed
   Result(Refusal refusal) : refusal_(std::move(refusal)) {}  // NOLINT: implicit
   bool ok() const { return !refusal_; }
   explicit operator bool() const { return ok(); }

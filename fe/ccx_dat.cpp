@@ -47,8 +47,7 @@ std::vector<DatBlock> read_dat(const std::filesystem::path& dat) {
       try {
         v.push_back(std::stod(tok));
       } catch (const std::exception&) {
-        throw InputError(dat.string() + ":" + std::to_string(line_no) + ": expected numbers, got '" +
-                         tok + "'");
+        throw InputError(dat.string() + ":" + std::to_string(line_no) + ": expected numbers, got '" + tok + "'");
       }
     }
     blocks.back().rows[id] = v;
@@ -69,8 +68,7 @@ std::vector<ContactTotals> read_contact_totals(const std::filesystem::path& dat)
   auto finish = [&] {
     if (out.empty() || rows.empty()) return;
     if (rows.size() < 4 || rows[0].size() < 6 || rows[1].size() < 3 || rows[3].size() < 3)
-      throw InputError(dat.string() + ":" + std::to_string(line_no) +
-                       ": incomplete contact statistics block");
+      throw InputError(dat.string() + ":" + std::to_string(line_no) + ": incomplete contact statistics block");
     ContactTotals& c = out.back();
     for (int k = 0; k < 3; ++k) {
       c.force[k] = rows[0][k];
@@ -127,8 +125,7 @@ std::vector<ContactTotals> read_contact_totals(const std::filesystem::path& dat)
   return out;
 }
 
-const DatBlock& last_block(const std::vector<DatBlock>& blocks, const std::string& quantity,
-                           const std::string& set) {
+const DatBlock& last_block(const std::vector<DatBlock>& blocks, const std::string& quantity, const std::string& set) {
   auto upper = [](std::string s) {
     for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return s;

@@ -20,8 +20,7 @@ double closing_turn(const std::function<bool(double)>& touching, double sense, c
     lo = delta;
   }
   if (hi == 0)
-    throw InputError(who + ": no touching position within " + std::to_string(kMaxClosingTurn_rad) +
-                     " rad (the gears do not mesh)");
+    throw InputError(who + ": no touching position within " + std::to_string(kMaxClosingTurn_rad) + " rad (the gears do not mesh)");
   // Bisection; return the touching side's bound.
   while (std::abs(hi - lo) > kClosingTolerance_rad) {
     const double mid = 0.5 * (lo + hi);

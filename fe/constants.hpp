@@ -5,8 +5,8 @@
 namespace gearsim::fe {
 
 // Steel, the gears' material (paper and ISO 6336 reference material).
-inline constexpr double kYoungModulus_Pa = 210e9;   // normally 210 GPa
-inline constexpr double kPoissonRatio = 0.3;        // normally 0.3
+inline constexpr double kYoungModulus_Pa = 210e9;  // normally 210 GPa
+inline constexpr double kPoissonRatio = 0.3;  // normally 0.3
 
 // ISO 6336-1:2019 eq. (74)–(76), method B: theoretical single-tooth stiffness coefficients,
 // 1/q' = c'_th with q' in mm·µm/N.
@@ -106,8 +106,8 @@ namespace gearsim::fe {
 
 // Deck units: ccx is unit-free; the decks use mm, N, MPa (contact search tolerances and penalty
 // values are tuned for geometry of order 1–100).
-inline constexpr double kDeckLength_per_m = 1e3;   // m → mm
-inline constexpr double kDeckStress_per_Pa = 1e-6; // Pa → MPa
+inline constexpr double kDeckLength_per_m = 1e3;  // m → mm
+inline constexpr double kDeckStress_per_Pa = 1e-6;  // Pa → MPa
 // Contact pressure of an open contact at large clearance ("σ∞" of ccx's linear pressure-
 // overclosure law): a small tension keeps open pairs from leaving free rigid-body modes.
 // 0.1 MPa is 1e-4 of a flank's Hertzian pressure (~1 GPa).
@@ -157,7 +157,6 @@ inline constexpr int kDefaultPositionsPerMesh = 8;
 // ccx processes solving positions at once (normally 2: the reference machine's cores; each ccx
 // runs single-threaded).
 inline constexpr int kDefaultFeJobs = 2;
-
 
 // Spur pair FE stiffness (spur_pair_fe.hpp).
 // Bore diameter over root diameter of both gears, dimensionless. Normally 0.5: Sainsot's

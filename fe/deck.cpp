@@ -28,14 +28,12 @@ std::string real(double v) {
 void check_name(const std::string& what, const std::string& name) {
   if (name.empty()) throw InputError(what + " name is empty");
   for (char c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)))
-      throw InputError(what + " name '" + name + "' must be letters and digits only");
+    if (!std::isalnum(static_cast<unsigned char>(c))) throw InputError(what + " name '" + name + "' must be letters and digits only");
 }
 
 // Writes "a, b, c, …" in rows of at most 8 entries (ccx reads 16 per line).
 void write_id_list(std::ostringstream& o, const std::vector<int>& ids) {
-  for (size_t i = 0; i < ids.size(); ++i)
-    o << ids[i] << ((i + 1) % 8 == 0 || i + 1 == ids.size() ? "\n" : ", ");
+  for (size_t i = 0; i < ids.size(); ++i) o << ids[i] << ((i + 1) % 8 == 0 || i + 1 == ids.size() ? "\n" : ", ");
 }
 
 void validate(const DeckDef& def) {
@@ -59,8 +57,7 @@ void validate(const DeckDef& def) {
     const int nb = static_cast<int>(def.bodies.size());
     if (c.slave < 0 || c.slave >= nb || c.master < 0 || c.master >= nb || c.slave == c.master)
       throw InputError("contact " + c.name + ": slave and master must be two different bodies");
-    if (c.slave_edges.empty() || c.master_edges.empty())
-      throw InputError("contact " + c.name + ": a surface has no edges");
+    if (c.slave_edges.empty() || c.master_edges.empty()) throw InputError("contact " + c.name + ": a surface has no edges");
   }
   if (!(def.young_modulus_Pa > 0) || !(def.poisson_ratio > -1 && def.poisson_ratio < 0.5))
     throw InputError("deck: E must be > 0 and −1 < ν < 0.5");
@@ -94,9 +91,9 @@ void validate(const DeckDef& def) {
 
 Deck write_deck(const DeckDef& def) {
   validate(def);
-  const double L = kDeckLength_per_m;             // m → mm
-  const double P = kDeckStress_per_Pa;            // Pa → MPa
-  const double M = kDeckLength_per_m;             // N·m → N·mm
+  const double L = kDeckLength_per_m;  // m → mm
+  const double P = kDeckStress_per_Pa;  // Pa → MPa
+  const double M = kDeckLength_per_m;  // N·m → N·mm
   Deck deck;
   std::ostringstream o;
   o << "** Gearsim plane-stress contact deck. Units: mm, N, MPa.\n";
@@ -122,8 +119,7 @@ Deck write_deck(const DeckDef& def) {
     for (size_t i = 0; i < b.mesh.nodes_m.size(); ++i) {
       const Eigen::Vector2d p = b.centre_m + rot * b.mesh.nodes_m[i];
       placed[bi].push_back(p);
-      o << deck.layout[bi].first_node + static_cast<int>(i) << ", " << num(p.x() * L) << ", "
-        << num(p.y() * L) << ", 0\n";
+      o << deck.layout[bi].first_node + static_cast<int>(i) << ", " << num(p.x() * L) << ", " << num(p.y() * L) << ", 0\n";
     }
   }
   for (size_t bi = 0; bi < def.bodies.size(); ++bi) {
@@ -133,8 +129,7 @@ Deck write_deck(const DeckDef& def) {
   }
 
   // Elements and sections, one element set per body.
-  o << "*MATERIAL, NAME=STEEL\n*ELASTIC\n" << num(def.young_modulus_Pa * P) << ", "
-    << num(def.poisson_ratio) << "\n";
+  o << "*MATERIAL, NAME=STEEL\n*ELASTIC\n" << num(def.young_modulus_Pa * P) << ", " << num(def.poisson_ratio) << "\n";
   for (size_t bi = 0; bi < def.bodies.size(); ++bi) {
     const FeBody& b = def.bodies[bi];
     o << "*ELEMENT, TYPE=" << def.element_type << ", ELSET=E" << b.name << "\n";
@@ -143,8 +138,7 @@ Deck write_deck(const DeckDef& def) {
       for (int n : b.mesh.quads[e]) o << ", " << deck.layout[bi].first_node + n;
       o << "\n";
     }
-    o << "*SOLID SECTION, ELSET=E" << b.name << ", MATERIAL=STEEL\n" << num(def.thickness_m * L)
-      << "\n";
+    o << "*SOLID SECTION, ELSET=E" << b.name << ", MATERIAL=STEEL\n" << num(def.thickness_m * L) << "\n";
   }
 
   // Node sets: centres, rotation nodes, fixed rims.
@@ -180,10 +174,8 @@ Deck write_deck(const DeckDef& def) {
     for (int n : b.mesh.hub_nodes) {
       const Eigen::Vector2d d = (placed[bi][n] - b.centre_m) * L;
       const int id = l.first_node + n;
-      o << "3\n" << id << ", 1, 1., " << l.centre_node << ", 1, -1., " << l.rotation_node << ", 1, "
-        << num(d.y()) << "\n";
-      o << "3\n" << id << ", 2, 1., " << l.centre_node << ", 2, -1., " << l.rotation_node << ", 1, "
-        << num(-d.x()) << "\n";
+      o << "3\n" << id << ", 1, 1., " << l.centre_node << ", 1, -1., " << l.rotation_node << ", 1, " << num(d.y()) << "\n";
+      o << "3\n" << id << ", 2, 1., " << l.centre_node << ", 2, -1., " << l.rotation_node << ", 1, " << num(-d.x()) << "\n";
     }
   }
 
@@ -209,20 +201,20 @@ Deck write_deck(const DeckDef& def) {
     o << "*SURFACE, NAME=" << name << "\n";
     for (const auto& [q, e] : edges) {
       if (q < 0 || q >= static_cast<int>(def.bodies[bi].mesh.quads.size()) || e < 0 || e > 3)
-        throw InputError("contact surface " + name + ": edge (" + std::to_string(q) + ", " +
-                         std::to_string(e) + ") is not an edge of body " + def.bodies[bi].name);
+        throw InputError("contact surface " + name + ": edge (" + std::to_string(q) + ", " + std::to_string(e) +
+                         ") is not an edge of body " + def.bodies[bi].name);
       o << deck.layout[bi].first_element + q << ", S" << e + 1 << "\n";
     }
   };
-  if (!def.contacts.empty()) o << "*SURFACE INTERACTION, NAME=FLANKS\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
-    << num(def.contact_penalty_Pa_per_m * P / L) << ", " << num(kOpenContactTension_Pa * P) << "\n";
+  if (!def.contacts.empty())
+    o << "*SURFACE INTERACTION, NAME=FLANKS\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n"
+      << num(def.contact_penalty_Pa_per_m * P / L) << ", " << num(kOpenContactTension_Pa * P) << "\n";
   if (def.friction > 0 && !def.contacts.empty())
     o << "*FRICTION\n" << num(def.friction) << ", " << num(def.stick_slope_Pa_per_m * P / L) << "\n";
   for (const FeContact& c : def.contacts) {
     surface("S" + c.name, c.slave, c.slave_edges);
     surface("M" + c.name, c.master, c.master_edges);
-    o << "*CONTACT PAIR, INTERACTION=FLANKS, TYPE=SURFACE TO SURFACE\nS" << c.name << ", M" << c.name
-      << "\n";
+    o << "*CONTACT PAIR, INTERACTION=FLANKS, TYPE=SURFACE TO SURFACE\nS" << c.name << ", M" << c.name << "\n";
   }
 
   // Supports common to every step: centres held, rotation nodes turn about z only, rims held.
@@ -237,23 +229,22 @@ Deck write_deck(const DeckDef& def) {
   };
   auto prints = [&] {
     o << "*NODE PRINT, NSET=NROT\nU\n*NODE PRINT, NSET=NCENTRE\nRF\n";
-    for (const FeContact& c : def.contacts)
-      o << "*CONTACT PRINT, SLAVE=S" << c.name << ", MASTER=M" << c.name << "\nCF\n";
+    for (const FeContact& c : def.contacts) o << "*CONTACT PRINT, SLAVE=S" << c.name << ", MASTER=M" << c.name << "\nCF\n";
     for (const FeElementSet& es : def.stress_sets) o << "*EL PRINT, ELSET=" << es.name << "\nS\n";
   };
 
   // Step 1: the driving body turned by closing_rotation_rad closes the contacts.
   supports(false);
-  o << "*STEP, INC=" << kStepMaxIncrements << "\n*STATIC\n" << num(kFirstIncrement) << ", 1, "
-    << num(kMinIncrement) << ", " << num(kMaxIncrement) << "\n*BOUNDARY\n" << driving_rot
-    << ", 1, 1, " << num(def.closing_rotation_rad) << "\n";
+  o << "*STEP, INC=" << kStepMaxIncrements << "\n*STATIC\n"
+    << num(kFirstIncrement) << ", 1, " << num(kMinIncrement) << ", " << num(kMaxIncrement) << "\n*BOUNDARY\n"
+    << driving_rot << ", 1, 1, " << num(def.closing_rotation_rad) << "\n";
   prints();
   o << "*END STEP\n";
 
   // Steps 2…: rotation released, torque stages.
   for (double f : def.load_fractions) {
-    o << "*STEP, INC=" << kStepMaxIncrements << "\n*STATIC\n" << num(kFirstIncrement) << ", 1, "
-      << num(kMinIncrement) << ", " << num(kMaxIncrement) << "\n";
+    o << "*STEP, INC=" << kStepMaxIncrements << "\n*STATIC\n"
+      << num(kFirstIncrement) << ", 1, " << num(kMinIncrement) << ", " << num(kMaxIncrement) << "\n";
     supports(true);
     o << "*CLOAD, OP=NEW\n" << driving_rot << ", 1, " << num(f * def.torque_N_m * M) << "\n";
     prints();

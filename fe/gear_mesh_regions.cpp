@@ -18,10 +18,8 @@ constexpr double kOnCircle_m = 1e-6;
 
 }  // namespace
 
-std::vector<ToothedEdgeTag> tag_toothed_edges(const QuadMesh2& mesh, const GearSpec& spec,
-                                              const GearDimensions& dims) {
-  if (spec.teeth <= 0)
-    throw InputError("tag_toothed_edges: gear '" + spec.name + "' teeth must be positive");
+std::vector<ToothedEdgeTag> tag_toothed_edges(const QuadMesh2& mesh, const GearSpec& spec, const GearDimensions& dims) {
+  if (spec.teeth <= 0) throw InputError("tag_toothed_edges: gear '" + spec.name + "' teeth must be positive");
   const double pitch_angle = 2.0 * std::numbers::pi / spec.teeth;
   const double r_lo = std::min(dims.form_radius_m, dims.tip_radius_m);
   const double r_hi = std::max(dims.form_radius_m, dims.tip_radius_m);
@@ -39,17 +37,14 @@ std::vector<ToothedEdgeTag> tag_toothed_edges(const QuadMesh2& mesh, const GearS
     if (t.tooth < 0) t.tooth += spec.teeth;
     t.side = off >= 0 ? Flank::Ccw : Flank::Cw;
     const double r = mid.norm();
-    const bool tip_land = std::abs(a.norm() - dims.tip_radius_m) < kOnCircle_m &&
-                          std::abs(b.norm() - dims.tip_radius_m) < kOnCircle_m;
+    const bool tip_land = std::abs(a.norm() - dims.tip_radius_m) < kOnCircle_m && std::abs(b.norm() - dims.tip_radius_m) < kOnCircle_m;
     t.on_flank = !tip_land && r > r_lo && r < r_hi;
     tags.push_back(t);
   }
   return tags;
 }
 
-std::vector<QuadEdge> select_tooth_edges(const QuadMesh2& mesh,
-                                         const std::vector<ToothedEdgeTag>& tags,
-                                         const ToothEdgeSelection& which) {
+std::vector<QuadEdge> select_tooth_edges(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags, const ToothEdgeSelection& which) {
   GEARSIM_CHECK(tags.size() == mesh.toothed_edges.size(), "edge tags not made for this mesh");
   std::vector<QuadEdge> out;
   for (std::size_t i = 0; i < tags.size(); ++i) {
@@ -62,8 +57,8 @@ std::vector<QuadEdge> select_tooth_edges(const QuadMesh2& mesh,
   return out;
 }
 
-std::vector<int> root_elements(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags,
-                               const GearDimensions& dims, GearKind kind, int tooth, Flank side) {
+std::vector<int> root_elements(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags, const GearDimensions& dims, GearKind kind,
+                               int tooth, Flank side) {
   GEARSIM_CHECK(tags.size() == mesh.toothed_edges.size(), "edge tags not made for this mesh");
   std::vector<int> out;
   for (std::size_t i = 0; i < tags.size(); ++i) {

@@ -24,8 +24,7 @@ struct ToothedEdgeTag {
 
 // Tags parallel to mesh.toothed_edges. `spec` supplies z and tooth0_angle_rad; `dims` the form
 // and tip radii (gear_dimensions(spec)). Eccentricity is ignored (polar angles about the origin).
-std::vector<ToothedEdgeTag> tag_toothed_edges(const QuadMesh2& mesh, const GearSpec& spec,
-                                              const GearDimensions& dims);
+std::vector<ToothedEdgeTag> tag_toothed_edges(const QuadMesh2& mesh, const GearSpec& spec, const GearDimensions& dims);
 
 // The toothed edges on the given teeth; only flank edges when flanks_only, and only one side's
 // flank when side is given.
@@ -35,15 +34,13 @@ struct ToothEdgeSelection {
   bool one_side = false;
   Flank side = Flank::Ccw;  // used when one_side
 };
-std::vector<QuadEdge> select_tooth_edges(const QuadMesh2& mesh,
-                                         const std::vector<ToothedEdgeTag>& tags,
-                                         const ToothEdgeSelection& which);
+std::vector<QuadEdge> select_tooth_edges(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags, const ToothEdgeSelection& which);
 
 // The quads that own the toothed-loop edges of one tooth's root on one side of its centre line:
 // the fillet and root land between the form circle and the root circle (not flank, not tip
 // land). Their stresses are the tooth-root (bending) stresses on that side. Sorted, unique.
 // `kind` says on which side of the form circle the root lies (inside for external gears).
-std::vector<int> root_elements(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags,
-                               const GearDimensions& dims, GearKind kind, int tooth, Flank side);
+std::vector<int> root_elements(const QuadMesh2& mesh, const std::vector<ToothedEdgeTag>& tags, const GearDimensions& dims, GearKind kind,
+                               int tooth, Flank side);
 
 }  // namespace gearsim::fe

@@ -28,8 +28,7 @@ void validate_sizing(const MeshSizingDef& s) {
   require(std::isfinite(s.flank_size_m) && s.flank_size_m > 0, "flank_size_m",
           "must be a positive length in m, got " + std::to_string(s.flank_size_m));
   require(std::isfinite(s.core_size_m) && s.core_size_m >= s.flank_size_m, "core_size_m",
-          "must be at least flank_size_m (" + std::to_string(s.flank_size_m) + " m), got " +
-              std::to_string(s.core_size_m));
+          "must be at least flank_size_m (" + std::to_string(s.flank_size_m) + " m), got " + std::to_string(s.core_size_m));
   require(std::isfinite(s.transition_m) && s.transition_m >= 0, "transition_m",
           "must be a length ≥ 0 in m, got " + std::to_string(s.transition_m));
   require(std::isfinite(s.max_sagitta_m) && s.max_sagitta_m >= 0, "max_sagitta_m",
@@ -144,8 +143,7 @@ RawMesh run_gmsh(const std::vector<Loop>& loops, SizeFn size_of) {
     const int surface = add_gmsh_geometry(loops, point_tags);
 
     // Size only from size_of (radial rule and boundary grading); quads by Blossom recombination of Delaunay triangles (kGmshAlgorithm2D).
-    gmsh::model::mesh::setSizeCallback(
-        [size_of](int, int, double x, double y, double) { return size_of(x, y); });
+    gmsh::model::mesh::setSizeCallback([size_of](int, int, double x, double y, double) { return size_of(x, y); });
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
@@ -169,13 +167,10 @@ RawMesh run_gmsh(const std::vector<Loop>& loops, SizeFn size_of) {
 }  // namespace
 }  // namespace mesher_detail
 
-double mesh_size_at_radius(const GearOutline& gear, GearKind kind, const MeshSizingDef& sizing,
-                           double radius_m) {
+double mesh_size_at_radius(const GearOutline& gear, GearKind kind, const MeshSizingDef& sizing, double radius_m) {
   // Depth below the root circle, into the body.
-  const double depth = kind == GearKind::External ? gear.dims.root_radius_m - radius_m
-                                                  : radius_m - gear.dims.root_radius_m;
-  const double f = sizing.transition_m > 0 ? std::clamp(depth / sizing.transition_m, 0.0, 1.0)
-                                           : (depth > 0 ? 1.0 : 0.0);
+  const double depth = kind == GearKind::External ? gear.dims.root_radius_m - radius_m : radius_m - gear.dims.root_radius_m;
+  const double f = sizing.transition_m > 0 ? std::clamp(depth / sizing.transition_m, 0.0, 1.0) : (depth > 0 ? 1.0 : 0.0);
   return sizing.flank_size_m + (sizing.core_size_m - sizing.flank_size_m) * f;
 }
 
@@ -185,8 +180,7 @@ GearMesh mesh_gear_outline(const GearOutline& gear, GearKind kind, const MeshSiz
   const Outline2& o = gear.outline;
   const bool external = kind == GearKind::External;
   if (external && o.holes.size() > 1)
-    throw InputError("mesh_gear_outline: an external gear outline has at most one hole (the bore), got " +
-                     std::to_string(o.holes.size()));
+    throw InputError("mesh_gear_outline: an external gear outline has at most one hole (the bore), got " + std::to_string(o.holes.size()));
   if (!external && o.holes.size() != 1)
     throw InputError("mesh_gear_outline: an internal gear outline has exactly one hole (the toothed loop), got " +
                      std::to_string(o.holes.size()));
@@ -194,25 +188,21 @@ GearMesh mesh_gear_outline(const GearOutline& gear, GearKind kind, const MeshSiz
     throw InputError("mesh_gear_outline: outline loops need at least 3 points");
   const double quads_bound = area(o) / (sizing.flank_size_m * sizing.flank_size_m);
   if (quads_bound > kMaxQuadCount)
-    throw InputError("mesh sizing: flank_size_m = " + std::to_string(sizing.flank_size_m) +
-                     " m would make up to " + std::to_string(quads_bound) + " quads (limit " +
-                     std::to_string(kMaxQuadCount) + ")");
+    throw InputError("mesh sizing: flank_size_m = " + std::to_string(sizing.flank_size_m) + " m would make up to " +
+                     std::to_string(quads_bound) + " quads (limit " + std::to_string(kMaxQuadCount) + ")");
 
   // The loops in gmsh's order (outer first), each with its role.
   std::vector<Loop> loops;
   loops.push_back({external ? LoopRole::Toothed : LoopRole::Rim, make_arc_polygon(o.outer), {}});
-  if (!o.holes.empty())
-    loops.push_back({external ? LoopRole::Bore : LoopRole::Toothed, make_arc_polygon(o.holes.front()), {}});
+  if (!o.holes.empty()) loops.push_back({external ? LoopRole::Bore : LoopRole::Toothed, make_arc_polygon(o.holes.front()), {}});
 
   // Mesh, at twice the size and split when asked or when Blossom left triangles.
   auto attempt = [&](bool split) {
     const double scale = split ? 2.0 : 1.0;
     for (Loop& l : loops) {
-      const double h = l.role == LoopRole::Toothed
-                           ? sizing.flank_size_m
-                           : mesh_size_at_radius(gear, kind, sizing, mean_radius(Polygon2{l.poly.points}));
-      l.nodes = resample_loop(l.poly, scale * h,
-                              l.role == LoopRole::Toothed ? scale * scale * sizing.max_sagitta_m : 0.0);
+      const double h =
+          l.role == LoopRole::Toothed ? sizing.flank_size_m : mesh_size_at_radius(gear, kind, sizing, mean_radius(Polygon2{l.poly.points}));
+      l.nodes = resample_loop(l.poly, scale * h, l.role == LoopRole::Toothed ? scale * scale * sizing.max_sagitta_m : 0.0);
     }
     const BoundaryGrading grading(loops, scale * sizing.flank_size_m);
     RawMesh raw = run_gmsh(loops, [&](double x, double y) {
@@ -231,9 +221,8 @@ GearMesh mesh_gear_outline(const GearOutline& gear, GearKind kind, const MeshSiz
   }
   result.mesh = assemble(std::move(raw), loops);
   result.quality = quad_mesh_quality(result.mesh);
-  GEARSIM_CHECK(result.quality.min_scaled_jacobian > 0,
-                "gmsh made an inverted or degenerate quad (min scaled Jacobian " +
-                    std::to_string(result.quality.min_scaled_jacobian) + ")");
+  GEARSIM_CHECK(result.quality.min_scaled_jacobian > 0, "gmsh made an inverted or degenerate quad (min scaled Jacobian " +
+                                                            std::to_string(result.quality.min_scaled_jacobian) + ")");
   return result;
 }
 

@@ -16,8 +16,8 @@ namespace gearsim::fe {
 // circle into the body: inward for external gears, outward for internal ones.
 struct MeshSizingDef {
   double flank_size_m = kDefaultFlankElementSize_m;  // m, normally 0.4 mm (paper's converged size)
-  double core_size_m = kDefaultCoreElementSize_m;    // m, normally 2 mm; ≥ flank_size_m
-  double transition_m = kDefaultSizeTransition_m;    // m, normally 3 mm; ≥ 0
+  double core_size_m = kDefaultCoreElementSize_m;  // m, normally 2 mm; ≥ flank_size_m
+  double transition_m = kDefaultSizeTransition_m;  // m, normally 3 mm; ≥ 0
   // Largest distance of a toothed-loop edge from the true outline, m (default kDefaultMaxSagitta_m,
   // 5 µm; paper_te_loaded.yaml gives 1 µm; 0 turns the limit off and keeps flank_size_m along the
   // whole loop). Edges shorten where the outline
@@ -36,8 +36,7 @@ struct GearMesh {
 };
 
 // Element size at radius r from the gear centre, m (the sizing rule above).
-double mesh_size_at_radius(const GearOutline& gear, GearKind kind, const MeshSizingDef& sizing,
-                           double radius_m);
+double mesh_size_at_radius(const GearOutline& gear, GearKind kind, const MeshSizingDef& sizing, double radius_m);
 
 // Meshes the outline. Throws InputError naming the field for a bad sizing or an outline that does
 // not match `kind`, and InputError quoting gmsh's message when gmsh fails. Deterministic: the

@@ -45,17 +45,15 @@ QuadMesh2 assemble(RawMesh raw, const std::vector<Loop>& loops) {
                                                                      : m.outer_edges;
     for (std::size_t i = 0; i < ids.size(); ++i) {
       const auto it = edges.find(edge_key(ids[i], ids[(i + 1) % ids.size()]));
-      GEARSIM_CHECK(it != edges.end() && it->second.second == 1,
-                    "outline segment is not a boundary edge of the mesh");
+      GEARSIM_CHECK(it != edges.end() && it->second.second == 1, "outline segment is not a boundary edge of the mesh");
       list.push_back(it->second.first);
     }
     on_loops += ids.size();
     if (loops[k].role == LoopRole::Bore) m.bore_nodes = ids;
     if (loops[k].role == LoopRole::Rim) m.rim_nodes = ids;
   }
-  GEARSIM_CHECK(boundary == on_loops, "mesh has " + std::to_string(boundary) +
-                                          " boundary edges but its outline loops have " +
-                                          std::to_string(on_loops));
+  GEARSIM_CHECK(boundary == on_loops,
+                "mesh has " + std::to_string(boundary) + " boundary edges but its outline loops have " + std::to_string(on_loops));
   return m;
 }
 

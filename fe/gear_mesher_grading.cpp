@@ -8,8 +8,7 @@
 
 namespace gearsim::fe::mesher_detail {
 
-BoundaryGrading::BoundaryGrading(const std::vector<Loop>& loops, double coarsest_m)
-    : cell_(coarsest_m / kSpacingGrading) {
+BoundaryGrading::BoundaryGrading(const std::vector<Loop>& loops, double coarsest_m) : cell_(coarsest_m / kSpacingGrading) {
   for (const Loop& l : loops) {
     const auto& p = l.nodes.points;
     const std::size_t n = p.size();

@@ -42,8 +42,7 @@ ArcPoint point_at_arc_length(const ArcPolygon& poly, double s_m, double snap_m) 
   double s = std::fmod(s_m, poly.perimeter_m);
   if (s < 0) s += poly.perimeter_m;
   const int n = static_cast<int>(poly.points.size());
-  const int i = static_cast<int>(std::upper_bound(poly.s_m.begin(), poly.s_m.end(), s) -
-                                 poly.s_m.begin()) - 1;
+  const int i = static_cast<int>(std::upper_bound(poly.s_m.begin(), poly.s_m.end(), s) - poly.s_m.begin()) - 1;
   const int j = (i + 1) % n;
   const double s_i = poly.s_m[i];
   const double s_j = (j == 0) ? poly.perimeter_m : poly.s_m[j];
@@ -153,8 +152,7 @@ ResampledLoop resample_loop(const ArcPolygon& poly, double spacing_m, double max
       const double f = (target - d_un[k]) / (d_un[k + 1] - d_un[k]);
       const double s_local = s_un[k] + f * (s_un[k + 1] - s_un[k]);
       const double h_local = h[(v0 + k) % n] + f * (h[(v0 + k + 1) % n] - h[(v0 + k) % n]);
-      const ArcPoint a = point_at_arc_length(poly, poly.s_m[v0] + s_local,
-                                             kSnapToVertexFraction * step * h_local);
+      const ArcPoint a = point_at_arc_length(poly, poly.s_m[v0] + s_local, kSnapToVertexFraction * step * h_local);
       r.points.push_back(a.p);
       r.s_m.push_back(a.s_m);
     }

@@ -14,7 +14,7 @@ namespace gearsim::fe {
 // A closed polygon with its arc-length coordinate: s of vertex i is the length from vertex 0.
 struct ArcPolygon {
   std::vector<Eigen::Vector2d> points;  // m
-  std::vector<double> s_m;              // m, s_m[i] for points[i]; s_m[0] = 0
+  std::vector<double> s_m;  // m, s_m[i] for points[i]; s_m[0] = 0
   double perimeter_m = 0.0;
 };
 
@@ -23,7 +23,7 @@ ArcPolygon make_arc_polygon(const Polygon2& polygon);
 // A point on the polygon and its arc-length coordinate.
 struct ArcPoint {
   Eigen::Vector2d p;  // m
-  double s_m = 0.0;   // m, in [0, perimeter)
+  double s_m = 0.0;  // m, in [0, perimeter)
 };
 
 // The point at arc length s (taken modulo the perimeter). It is the nearest vertex when one lies
@@ -33,7 +33,7 @@ ArcPoint point_at_arc_length(const ArcPolygon& poly, double s_m, double snap_m);
 // Resampled nodes in the polygon's order, with their arc-length coordinates.
 struct ResampledLoop {
   std::vector<Eigen::Vector2d> points;  // m
-  std::vector<double> s_m;              // m, arc-length coordinate of each node on the polygon
+  std::vector<double> s_m;  // m, arc-length coordinate of each node on the polygon
 };
 
 // Nodes about spacing_m apart along the polygon: corners (vertices turning the boundary by more

@@ -75,8 +75,7 @@ TrackedTooth tracked_tooth(const PlanetaryFeDef& def) {
 
 PlanetaryFeMeshes mesh_planetary(const PlanetaryFeDef& def) {
   if (!def.planet_gears.empty() && static_cast<int>(def.planet_gears.size()) != def.spec.planets)
-    throw InputError("planetary FE: planet_gears must list one gear per planet (" +
-                     std::to_string(def.spec.planets) + ")");
+    throw InputError("planetary FE: planet_gears must list one gear per planet (" + std::to_string(def.spec.planets) + ")");
   PlanetaryFeMeshes m;
   m.sun = mesh_gear_outline(make_gear_outline(def.spec.sun), GearKind::External, def.sizing);
   m.ring = mesh_gear_outline(make_gear_outline(def.spec.ring), GearKind::Internal, def.sizing);
@@ -85,8 +84,8 @@ PlanetaryFeMeshes mesh_planetary(const PlanetaryFeDef& def) {
   return m;
 }
 
-PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes,
-                                   double sun_turn_rad, const std::filesystem::path& work_dir) {
+PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes, double sun_turn_rad,
+                                   const std::filesystem::path& work_dir) {
   using namespace planetary_detail;
   const PositionDeck p = build_position_deck(def, meshes, sun_turn_rad);
   // Solve, unless this folder already holds a finished solve of the very same deck (a resumed
@@ -125,10 +124,9 @@ std::vector<double> sweep_turns(const PlanetaryFeDef& def, int positions_per_mes
   return turns;
 }
 
-std::vector<PlanetaryFePosition> solve_positions(
-    const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes, const std::vector<double>& turns_rad,
-    const std::filesystem::path& work_dir, int jobs,
-    const std::function<void(std::size_t, const PlanetaryFePosition&)>& on_done) {
+std::vector<PlanetaryFePosition> solve_positions(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes,
+                                                 const std::vector<double>& turns_rad, const std::filesystem::path& work_dir, int jobs,
+                                                 const std::function<void(std::size_t, const PlanetaryFePosition&)>& on_done) {
   if (jobs < 1) throw InputError("planetary FE: jobs must be at least 1, got " + std::to_string(jobs));
   std::vector<PlanetaryFePosition> out(turns_rad.size());
   std::atomic<std::size_t> next{0};

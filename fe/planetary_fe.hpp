@@ -15,13 +15,13 @@
 namespace gearsim::fe {
 
 struct PlanetaryFeDef {
-  PlanetarySpec spec;                  // sun, healthy planet, ring, planet count
+  PlanetarySpec spec;  // sun, healthy planet, ring, planet count
   std::vector<GearSpec> planet_gears;  // one per planet (errors included); empty: all spec.planet
-  MeshSizingDef sizing;                // element sizes (paper: 0.4 mm at the flanks)
-  double sun_torque_N_m = 4.0;         // input torque on the sun about +z, N·m
-  double friction = 0.03;              // flank Coulomb coefficient (paper: 0.03)
+  MeshSizingDef sizing;  // element sizes (paper: 0.4 mm at the flanks)
+  double sun_torque_N_m = 4.0;  // input torque on the sun about +z, N·m
+  double friction = 0.03;  // flank Coulomb coefficient (paper: 0.03)
   std::string element_type = "CPS4R";  // paper: CPS4R
-  std::string ccx = "ccx";             // solver executable
+  std::string ccx = "ccx";  // solver executable
 };
 
 // The tooth a sweep follows: the first planet tooth with a manufacturing error (flank offset,
@@ -38,13 +38,13 @@ TrackedTooth tracked_tooth(const PlanetaryFeDef& def);
 // integration points: CPS4R has one, at the element centre, so a fillet value lies half an
 // element inside the surface), Pa. Plane stress: σ1 ≥ σ2 the in-plane principal stresses.
 struct RootStress {
-  int tooth = 0;              // tooth of the tracked planet
-  Flank side = Flank::Ccw;    // side of the tooth's centre line
-  double sigma1_max_Pa = 0;   // largest tensile principal stress
-  double sigma2_min_Pa = 0;   // most compressive principal stress
+  int tooth = 0;  // tooth of the tracked planet
+  Flank side = Flank::Ccw;  // side of the tooth's centre line
+  double sigma1_max_Pa = 0;  // largest tensile principal stress
+  double sigma2_min_Pa = 0;  // most compressive principal stress
   double von_mises_max_Pa = 0;
   double sigma1_max_low_Pa = 0;  // largest σ1 at the low load stage
-  int elements = 0;           // quads in the set
+  int elements = 0;  // quads in the set
 };
 
 // One solved position. TE = θ_sun − i·θ_carrier with the carrier held: the sun's rotation from
@@ -61,12 +61,12 @@ struct RootStress {
 //   te_loaded  = te_geometric + te_elastic.
 // The raw FE values are kept beside it.
 struct PlanetaryFePosition {
-  double sun_turn_rad = 0;        // kinematic sun turn relative to the carrier
-  double te_geometric_rad = 0;    // rigid teeth, exact outlines: the clearance the sun closed
-  double te_fe_low_rad = 0;       // FE at kLowLoadFraction of the torque (raw, FE boundary)
-  double te_fe_full_rad = 0;      // FE at the full torque (raw)
-  double te_elastic_rad = 0;      // load-dependent part at the full torque (see above)
-  double te_loaded_rad = 0;       // te_geometric_rad + te_elastic_rad
+  double sun_turn_rad = 0;  // kinematic sun turn relative to the carrier
+  double te_geometric_rad = 0;  // rigid teeth, exact outlines: the clearance the sun closed
+  double te_fe_low_rad = 0;  // FE at kLowLoadFraction of the torque (raw, FE boundary)
+  double te_fe_full_rad = 0;  // FE at the full torque (raw)
+  double te_elastic_rad = 0;  // load-dependent part at the full torque (see above)
+  double te_loaded_rad = 0;  // te_geometric_rad + te_elastic_rad
   // Torque the teeth take off the sun (moment of the contact forces about its centre), N·m, at
   // the full and the low stage. Below the applied torque by ccx's spurious hub stiffness of
   // CPS4R bodies times the sun's turn (measured 0.3–0.5 kN·m/rad for the paper's sun).
@@ -87,7 +87,7 @@ struct PlanetaryFePosition {
   // Root stresses at the full torque of the tracked tooth's neighbour before it, the tracked
   // tooth and the neighbour after it (teeth t−1, t, t+1 of the tracked planet), Ccw then Cw side.
   std::vector<RootStress> tracked_root_stress;
-  double wall_time_s = 0;         // ccx wall time
+  double wall_time_s = 0;  // ccx wall time
 };
 
 // The meshes of the set (made once; positions only move them).
@@ -102,8 +102,8 @@ PlanetaryFeMeshes mesh_planetary(const PlanetaryFeDef& def);
 // the solve's wall time) is read instead of solved again: an interrupted sweep resumes where it
 // stopped. Throws InputError for
 // a bad definition and std::runtime_error quoting ccx when the solve fails.
-PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes,
-                                   double sun_turn_rad, const std::filesystem::path& work_dir);
+PlanetaryFePosition solve_position(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes, double sun_turn_rad,
+                                   const std::filesystem::path& work_dir);
 
 // Sun turns of a loaded-TE sweep over `mesh_periods` mesh periods (2π/z_s of sun turn relative
 // to the carrier each), `positions_per_mesh` per period, centred on the turn at which the flank of
@@ -115,9 +115,8 @@ std::vector<double> sweep_turns(const PlanetaryFeDef& def, int positions_per_mes
 // Solves the positions, `jobs` ccx processes at a time, each in work_dir/pos_NNN. on_done(i, p)
 // runs (one call at a time) as position i finishes. When a solve fails the running ones finish,
 // then the first failure is rethrown; positions finished before stay reported through on_done.
-std::vector<PlanetaryFePosition> solve_positions(
-    const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes, const std::vector<double>& turns_rad,
-    const std::filesystem::path& work_dir, int jobs,
-    const std::function<void(std::size_t, const PlanetaryFePosition&)>& on_done = {});
+std::vector<PlanetaryFePosition> solve_positions(const PlanetaryFeDef& def, const PlanetaryFeMeshes& meshes,
+                                                 const std::vector<double>& turns_rad, const std::filesystem::path& work_dir, int jobs,
+                                                 const std::function<void(std::size_t, const PlanetaryFePosition&)>& on_done = {});
 
 }  // namespace gearsim::fe

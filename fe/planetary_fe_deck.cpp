@@ -27,8 +27,8 @@ FeMesh to_fe_mesh(const QuadMesh2& q) {
 }
 
 // Toothed edges of a placed mesh whose mid-points lie within `radius` of `centre` (world, m).
-std::vector<std::pair<int, int>> edges_near(const QuadMesh2& q, const contact::PlanarPose& pose,
-                                            const Eigen::Vector2d& centre, double radius) {
+std::vector<std::pair<int, int>> edges_near(const QuadMesh2& q, const contact::PlanarPose& pose, const Eigen::Vector2d& centre,
+                                            double radius) {
   std::vector<std::pair<int, int>> out;
   const Eigen::Rotation2Dd rot(pose.angle_rad);
   for (const QuadEdge& e : q.toothed_edges) {
@@ -57,8 +57,8 @@ void add_bodies(DeckDef& deck, const PlanetarySpec& ps, const PlanetaryPosition&
   deck.bodies.push_back({"SUN", to_fe_mesh(meshes.sun.mesh), pos.sun.centre_m, pos.sun.angle_rad, FeSupport::Driving});
   for (int k = 0; k < ps.planets; ++k) {
     const auto& pp = pos.planets[static_cast<size_t>(k)];
-    deck.bodies.push_back({"P" + std::to_string(k), to_fe_mesh(meshes.planets[static_cast<size_t>(k)].mesh),
-                           pp.centre_m, pp.angle_rad, FeSupport::Idler});
+    deck.bodies.push_back(
+        {"P" + std::to_string(k), to_fe_mesh(meshes.planets[static_cast<size_t>(k)].mesh), pp.centre_m, pp.angle_rad, FeSupport::Idler});
   }
   deck.bodies.push_back({"RING", to_fe_mesh(meshes.ring.mesh), pos.ring.centre_m, pos.ring.angle_rad, FeSupport::Fixed});
 }
@@ -103,8 +103,8 @@ void add_contacts(PositionDeck& p, const PlanetaryFeDef& def, const PlanetaryFeM
       const auto [a, b] = edge_points(pm, e);
       if ((pp.centre_m + rot * (0.5 * (a + b))).norm() > rd.tip_radius_m - band) ring_side.push_back(e);
     }
-    deck.contacts.push_back({"PR" + std::to_string(k), k + 1, ring, ring_side,
-                             edges_near(meshes.ring.mesh, pos.ring, pp.centre_m, pd.tip_radius_m + band)});
+    deck.contacts.push_back(
+        {"PR" + std::to_string(k), k + 1, ring, ring_side, edges_near(meshes.ring.mesh, pos.ring, pp.centre_m, pd.tip_radius_m + band)});
   }
 }
 
@@ -123,11 +123,10 @@ void add_root_sets(PositionDeck& p, const PlanetaryFeDef& def, const PlanetaryFe
     for (Flank side : {Flank::Ccw, Flank::Cw}) {
       RootSet rs{"ROOT" + std::to_string(tooth) + (side == Flank::Ccw ? "C" : "W"), tooth, side};
       std::vector<int> els = root_elements(meshes.planets[static_cast<size_t>(tracked.planet)].mesh,
-                                           planet_tags[static_cast<size_t>(tracked.planet)],
-                                           tracked_dims, GearKind::External, tooth, side);
+                                           planet_tags[static_cast<size_t>(tracked.planet)], tracked_dims, GearKind::External, tooth, side);
       if (els.empty())
-        throw InputError("planetary FE: tooth " + std::to_string(tooth) + " of planet " +
-                         std::to_string(tracked.planet) + " has no root elements in its mesh");
+        throw InputError("planetary FE: tooth " + std::to_string(tooth) + " of planet " + std::to_string(tracked.planet) +
+                         " has no root elements in its mesh");
       deck.stress_sets.push_back({rs.name, tracked.planet + 1, std::move(els)});
       root_sets.push_back(rs);
     }
@@ -148,8 +147,8 @@ PositionDeck build_position_deck(const PlanetaryFeDef& def, const PlanetaryFeMes
   add_bodies(p.deck, ps, p.pos, meshes);
   std::vector<std::vector<ToothedEdgeTag>> planet_tags;
   for (int k = 0; k < ps.planets; ++k)
-    planet_tags.push_back(tag_toothed_edges(meshes.planets[static_cast<size_t>(k)].mesh, planet_gear(def, k),
-                                            gear_dimensions(planet_gear(def, k))));
+    planet_tags.push_back(
+        tag_toothed_edges(meshes.planets[static_cast<size_t>(k)].mesh, planet_gear(def, k), gear_dimensions(planet_gear(def, k))));
   add_contacts(p, def, meshes, planet_tags, band);
   add_root_sets(p, def, meshes, planet_tags);
   DeckDef& deck = p.deck;

@@ -29,8 +29,8 @@ struct RootSet {
 struct PositionDeck {
   PlanetaryPosition pos;  // the set placed and its clearances closed (rigid flank tables)
   GearDimensions sun_dims, ring_dims, planet_dims;  // the sun's, the ring's, the healthy planet's
-  DeckDef deck;           // bodies, contact pairs, root-stress sets, loads
-  Deck written;           // the deck's text and body layout
+  DeckDef deck;  // bodies, contact pairs, root-stress sets, loads
+  Deck written;  // the deck's text and body layout
   // Per planet: the teeth with a contact pair of their own against the sun (pair "SPkTj").
   std::vector<std::vector<int>> sun_mesh_teeth;
   TrackedTooth tracked;
@@ -45,7 +45,6 @@ PositionDeck build_position_deck(const PlanetaryFeDef& def, const PlanetaryFeMes
 
 // The solved position from ccx's results (run.dat_path) at the end of the low (time 2) and full
 // (time 3) load stages. Throws std::runtime_error naming the file when a result is missing.
-PlanetaryFePosition read_position(const PositionDeck& p, const PlanetaryFeDef& def, const CcxRunResult& run,
-                                  double sun_turn_rad);
+PlanetaryFePosition read_position(const PositionDeck& p, const PlanetaryFeDef& def, const CcxRunResult& run, double sun_turn_rad);
 
 }  // namespace gearsim::fe::planetary_detail

@@ -40,8 +40,8 @@ StressSummary summarise_stress(const DatBlock& b) {
 // Contact forces (per planet, per sun-side tooth), secant mesh stiffnesses, the torque the teeth
 // take off the sun and the loaded TE, from the contact totals in run.dat_path; sun_low and
 // sun_full are the sun's rotations at the low and the full stage, rad.
-void read_forces(PlanetaryFePosition& out, const PositionDeck& p, const PlanetaryFeDef& def, const CcxRunResult& run,
-                 double sun_low, double sun_full) {
+void read_forces(PlanetaryFePosition& out, const PositionDeck& p, const PlanetaryFeDef& def, const CcxRunResult& run, double sun_low,
+                 double sun_full) {
   const PlanetarySpec& ps = def.spec;
   const PlanetaryPosition& pos = p.pos;
   const GearDimensions &sd = p.sun_dims, &pd = p.planet_dims;
@@ -50,8 +50,8 @@ void read_forces(PlanetaryFePosition& out, const PositionDeck& p, const Planetar
   auto totals_of = [&](const std::string& slave, double time) -> const ContactTotals& {
     for (auto it = totals.rbegin(); it != totals.rend(); ++it)
       if (it->slave == slave && std::abs(it->time - time) < 1e-6) return *it;
-    throw std::runtime_error("ccx results lack the contact force of " + slave + " at time " +
-                             std::to_string(time) + " (" + run.dat_path.string() + ")");
+    throw std::runtime_error("ccx results lack the contact force of " + slave + " at time " + std::to_string(time) + " (" +
+                             run.dat_path.string() + ")");
   };
   auto force_vector = [&](const std::string& slave, double time) -> Eigen::Vector3d {
     const ContactTotals& t = totals_of(slave, time);
@@ -61,14 +61,11 @@ void read_forces(PlanetaryFePosition& out, const PositionDeck& p, const Planetar
   // The sun's force on a planet: the sum over its teeth's pairs.
   auto sun_force = [&](int k, double time) {
     Eigen::Vector3d f = Eigen::Vector3d::Zero();
-    for (int j : sun_mesh_teeth[static_cast<size_t>(k)])
-      f += force_vector("SSP" + std::to_string(k) + "T" + std::to_string(j), time);
+    for (int j : sun_mesh_teeth[static_cast<size_t>(k)]) f += force_vector("SSP" + std::to_string(k) + "T" + std::to_string(j), time);
     return f.norm();
   };
   const double rbs = sd.base_radius_m, rbp = pd.base_radius_m;
-  auto secant = [](double dF, double approach) {
-    return approach != 0 ? dF / approach : std::numeric_limits<double>::quiet_NaN();
-  };
+  auto secant = [](double dF, double approach) { return approach != 0 ? dF / approach : std::numeric_limits<double>::quiet_NaN(); };
   for (int k = 0; k < ps.planets; ++k) {
     const std::string n = std::to_string(k);
     out.sun_planet_force_N.push_back(sun_force(k, 3.0));
@@ -78,8 +75,7 @@ void read_forces(PlanetaryFePosition& out, const PositionDeck& p, const Planetar
     const double dp = out.planet_rotation_rad[k] - out.planet_rotation_low_rad[k];
     out.sun_planet_stiffness_N_per_m.push_back(
         secant(out.sun_planet_force_N[k] - out.sun_planet_force_low_N[k], rbs * (sun_full - sun_low) + rbp * dp));
-    out.planet_ring_stiffness_N_per_m.push_back(
-        secant(out.planet_ring_force_N[k] - out.planet_ring_force_low_N[k], -rbp * dp));
+    out.planet_ring_stiffness_N_per_m.push_back(secant(out.planet_ring_force_N[k] - out.planet_ring_force_low_N[k], -rbp * dp));
   }
   // The torque the teeth take off the sun: the moment about the sun's centre of the contact
   // forces on the planet teeth, reversed. CPS4R bodies in ccx resist a rigid turn of their hub a
@@ -100,8 +96,7 @@ void read_forces(PlanetaryFePosition& out, const PositionDeck& p, const Planetar
   out.sun_mesh_torque_low_N_m = sun_mesh_torque(2.0);
   out.sun_mesh_torque_N_m = sun_mesh_torque(3.0);
   const double dm = out.sun_mesh_torque_N_m - out.sun_mesh_torque_low_N_m;
-  out.te_elastic_rad = dm > 0 ? (sun_full - sun_low) / dm * def.sun_torque_N_m
-                              : std::numeric_limits<double>::quiet_NaN();
+  out.te_elastic_rad = dm > 0 ? (sun_full - sun_low) / dm * def.sun_torque_N_m : std::numeric_limits<double>::quiet_NaN();
   out.te_loaded_rad = out.te_geometric_rad + out.te_elastic_rad;
   for (int k = 0; k < ps.planets; ++k) {
     std::vector<std::pair<int, double>> per_tooth;
@@ -112,8 +107,7 @@ void read_forces(PlanetaryFePosition& out, const PositionDeck& p, const Planetar
 }
 
 // Root stresses of the tracked tooth's sets at the full torque (and σ1 at the low stage).
-void read_root_stresses(PlanetaryFePosition& out, const PositionDeck& p, const std::vector<DatBlock>& blocks,
-                        const CcxRunResult& run) {
+void read_root_stresses(PlanetaryFePosition& out, const PositionDeck& p, const std::vector<DatBlock>& blocks, const CcxRunResult& run) {
   const std::vector<RootSet>& root_sets = p.root_sets;
   const DeckDef& deck = p.deck;
   for (std::size_t i = 0; i < root_sets.size(); ++i) {
@@ -121,8 +115,8 @@ void read_root_stresses(PlanetaryFePosition& out, const PositionDeck& p, const s
     auto stress_at = [&](double time) -> const DatBlock& {
       for (const DatBlock& b : blocks)
         if (b.quantity == "stresses" && b.set == set && std::abs(b.time - time) < 1e-6) return b;
-      throw std::runtime_error("ccx results lack the stresses of " + set + " at time " + std::to_string(time) +
-                               " (" + run.dat_path.string() + ")");
+      throw std::runtime_error("ccx results lack the stresses of " + set + " at time " + std::to_string(time) + " (" +
+                               run.dat_path.string() + ")");
     };
     const StressSummary full = summarise_stress(stress_at(3.0)), low = summarise_stress(stress_at(2.0));
     RootStress r;
@@ -139,8 +133,7 @@ void read_root_stresses(PlanetaryFePosition& out, const PositionDeck& p, const s
 
 }  // namespace
 
-PlanetaryFePosition read_position(const PositionDeck& p, const PlanetaryFeDef& def, const CcxRunResult& run,
-                                  double sun_turn_rad) {
+PlanetaryFePosition read_position(const PositionDeck& p, const PlanetaryFeDef& def, const CcxRunResult& run, double sun_turn_rad) {
   const PlanetarySpec& ps = def.spec;
   const PlanetaryPosition& pos = p.pos;
   const Deck& d = p.written;
@@ -150,8 +143,7 @@ PlanetaryFePosition read_position(const PositionDeck& p, const PlanetaryFeDef& d
     for (const DatBlock& b : blocks)
       if (b.quantity == "displacements" && b.set == "NROT" && std::abs(b.time - time) < 1e-6)
         return b.rows.at(d.layout[static_cast<size_t>(body)].rotation_node).at(0);
-    throw std::runtime_error("ccx results lack the rotations at time " + std::to_string(time) + " (" +
-                             run.dat_path.string() + ")");
+    throw std::runtime_error("ccx results lack the rotations at time " + std::to_string(time) + " (" + run.dat_path.string() + ")");
   };
   PlanetaryFePosition out;
   out.sun_turn_rad = sun_turn_rad;

@@ -24,16 +24,16 @@ bool touches_on(const std::vector<contact::ToothContact>& contacts, Flank flank)
 contact::FlankTable flank_table_of(const GearSpec& spec) {
   const GearOutline g = make_gear_outline(spec);
   const bool internal = spec.kind == GearKind::Internal;
-  return contact::FlankTable(internal ? g.outline.holes.front() : g.outline.outer,
-                             ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankTableSamples);
+  return contact::FlankTable(internal ? g.outline.holes.front() : g.outline.outer, ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal,
+                             kFlankTableSamples);
 }
 
-PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometry& geo,
-                               const PlanetaryTables& tables, double sun_turn_rad) {
+PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometry& geo, const PlanetaryTables& tables,
+                               double sun_turn_rad) {
   if (!tables.sun || !tables.ring || static_cast<int>(tables.planets.size()) != spec.planets ||
       static_cast<int>(geo.placements.size()) != spec.planets)
-    throw InputError("planetary FE position: tables and placements must cover the sun, ring and " +
-                     std::to_string(spec.planets) + " planets");
+    throw InputError("planetary FE position: tables and placements must cover the sun, ring and " + std::to_string(spec.planets) +
+                     " planets");
   const double zs = spec.sun.teeth, zp = spec.planet.teeth, zr = spec.ring.teeth;
   PlanetaryPosition pos;
   pos.sun_turn_rad = sun_turn_rad;
@@ -67,8 +67,9 @@ PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometr
     contact::PlanarPose s = pos.sun;
     s.angle_rad = base + d;
     for (int k = 0; k < spec.planets; ++k)
-      if (touches_on(contact::find_tooth_contacts(*tables.sun, s, *tables.planets[static_cast<size_t>(k)],
-                                                  pos.planets[static_cast<size_t>(k)]), Flank::Ccw))
+      if (touches_on(
+              contact::find_tooth_contacts(*tables.sun, s, *tables.planets[static_cast<size_t>(k)], pos.planets[static_cast<size_t>(k)]),
+              Flank::Ccw))
         return true;
     return false;
   };
@@ -78,8 +79,9 @@ PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometr
   pos.sun.angle_rad = base + pos.sun_closing_rad;
   contact::PlanarPose s = pos.sun;
   for (int k = 0; k < spec.planets; ++k)
-    if (touches_on(contact::find_tooth_contacts(*tables.sun, s, *tables.planets[static_cast<size_t>(k)],
-                                                pos.planets[static_cast<size_t>(k)]), Flank::Ccw)) {
+    if (touches_on(
+            contact::find_tooth_contacts(*tables.sun, s, *tables.planets[static_cast<size_t>(k)], pos.planets[static_cast<size_t>(k)]),
+            Flank::Ccw)) {
       pos.touching_planet = k;
       break;
     }

@@ -23,12 +23,12 @@ struct PlanetaryTables {
 };
 
 struct PlanetaryPosition {
-  double sun_turn_rad = 0;    // sun turned relative to the carrier from the assembled position
+  double sun_turn_rad = 0;  // sun turned relative to the carrier from the assembled position
   contact::PlanarPose sun, ring;
   std::vector<contact::PlanarPose> planets;
-  double sun_closing_rad = 0;               // extra sun rotation that closed its clearance
-  std::vector<double> planet_closing_rad;   // per planet, rotation that closed the ring side
-  int touching_planet = -1;                 // the planet the sun touches first
+  double sun_closing_rad = 0;  // extra sun rotation that closed its clearance
+  std::vector<double> planet_closing_rad;  // per planet, rotation that closed the ring side
+  int touching_planet = -1;  // the planet the sun touches first
 };
 
 // Builds the flank table of a generated gear (as physics/ does for a scenario's gears).
@@ -37,7 +37,6 @@ contact::FlankTable flank_table_of(const GearSpec& spec);
 // The set placed at sun_turn_rad (positive: the sun turns counter-clockwise relative to the
 // carrier, driving; input torque +z). Throws InputError when a clearance cannot be closed within
 // kMaxClosingTurn_rad (the gears do not mesh).
-PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometry& geo,
-                               const PlanetaryTables& tables, double sun_turn_rad);
+PlanetaryPosition place_closed(const PlanetarySpec& spec, const PlanetaryGeometry& geo, const PlanetaryTables& tables, double sun_turn_rad);
 
 }  // namespace gearsim::fe

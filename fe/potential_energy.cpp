@@ -19,15 +19,18 @@ void validate(const PotentialEnergyPairDef& d) {
   const std::string w = "potential-energy stiffness: ";
   if (d.z1 < 5) throw InputError(w + "z1 must be an external gear with >= 5 teeth, got " + std::to_string(d.z1));
   if (d.z2 == 0 || std::abs(d.z2) < 5) throw InputError(w + "|z2| must be >= 5, got " + std::to_string(d.z2));
-  if (d.z2 < 0 && -d.z2 <= d.z1) throw InputError(w + "internal pair needs |z2| > z1, got z1 = " + std::to_string(d.z1) + ", z2 = " + std::to_string(d.z2));
+  if (d.z2 < 0 && -d.z2 <= d.z1)
+    throw InputError(w + "internal pair needs |z2| > z1, got z1 = " + std::to_string(d.z1) + ", z2 = " + std::to_string(d.z2));
   if (!(d.module_m > 0.0 && std::isfinite(d.module_m))) throw InputError(w + "module_m must be > 0 (m)");
   if (!(d.pressure_angle_rad > 0.1 && d.pressure_angle_rad < 0.6)) throw InputError(w + "pressure_angle_rad must be in (0.1, 0.6)");
   if (!(d.face_width_m > 0.0 && std::isfinite(d.face_width_m))) throw InputError(w + "face_width_m must be > 0 (m)");
   if (!(d.addendum_over_module > 0.0 && d.addendum_over_module < 2.0)) throw InputError(w + "addendum_over_module must be in (0, 2)");
-  if (!(d.dedendum_over_module > d.addendum_over_module && d.dedendum_over_module < 2.5)) throw InputError(w + "dedendum_over_module must be in (addendum_over_module, 2.5)");
+  if (!(d.dedendum_over_module > d.addendum_over_module && d.dedendum_over_module < 2.5))
+    throw InputError(w + "dedendum_over_module must be in (addendum_over_module, 2.5)");
   if (!(d.young_modulus_Pa > 0.0 && std::isfinite(d.young_modulus_Pa))) throw InputError(w + "young_modulus_Pa must be > 0 (Pa)");
   if (!(d.poisson_ratio >= 0.0 && d.poisson_ratio < 0.5)) throw InputError(w + "poisson_ratio must be in [0, 0.5)");
-  if (!(d.rack_tip_radius_over_module >= 0.0 && d.rack_tip_radius_over_module < 0.5)) throw InputError(w + "rack_tip_radius_over_module must be in [0, 0.5)");
+  if (!(d.rack_tip_radius_over_module >= 0.0 && d.rack_tip_radius_over_module < 0.5))
+    throw InputError(w + "rack_tip_radius_over_module must be in [0, 0.5)");
   if (!(d.root_over_bore1 > 1.0 && d.root_over_bore2 > 1.0)) throw InputError(w + "root_over_bore1/2 (r_f / r_int) must be > 1");
 }
 
@@ -38,14 +41,14 @@ void validate(const PotentialEnergyPairDef& d) {
 // the external gear, c0 = π/(2z) − inv α, s = +1.
 struct Tooth {
   bool internal = false;
-  double rb = 0, ra = 0, rf = 0;   // base, tip, root radii, in m
-  double c0 = 0, s = 0;            // half angle at the base circle (rad), flank sign
-  double y_root = 0;               // centre-line coordinate of the clamped section, in m
-  double t_root = 0;               // roll angle where the involute part of the cantilever starts
-  double h_uniform = 0;            // half thickness of the straight part below r_b (external, r_f < r_b), in m
-  double y_base = 0;               // centre-line coordinate where that straight part ends, in m
-  double theta_f = 0;              // half angle of the tooth at the root circle (fillets included), in rad
-  double root_over_bore = 0;       // Sainsot's h_f
+  double rb = 0, ra = 0, rf = 0;  // base, tip, root radii, in m
+  double c0 = 0, s = 0;  // half angle at the base circle (rad), flank sign
+  double y_root = 0;  // centre-line coordinate of the clamped section, in m
+  double t_root = 0;  // roll angle where the involute part of the cantilever starts
+  double h_uniform = 0;  // half thickness of the straight part below r_b (external, r_f < r_b), in m
+  double y_base = 0;  // centre-line coordinate where that straight part ends, in m
+  double theta_f = 0;  // half angle of the tooth at the root circle (fillets included), in rad
+  double root_over_bore = 0;  // Sainsot's h_f
 };
 
 double psi(const Tooth& g, double t) { return g.c0 + g.s * (t - std::atan(t)); }
@@ -97,10 +100,8 @@ Tooth make_tooth(const PotentialEnergyPairDef& d, int z_signed, double root_over
 }
 
 // Gauss–Legendre nodes and weights on [−1, 1], 5 points.
-constexpr std::array<double, 5> kGlX = {-0.9061798459386640, -0.5384693101056831, 0.0,
-                                        0.5384693101056831, 0.9061798459386640};
-constexpr std::array<double, 5> kGlW = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                        0.4786286704993665, 0.2369268850561891};
+constexpr std::array<double, 5> kGlX = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+constexpr std::array<double, 5> kGlW = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
 
 // ∫_a^b f(u) du by composite Gauss–Legendre.
 template <class F>
@@ -135,13 +136,35 @@ ToothCompliance tooth_compliance(const PotentialEnergyPairDef& d, const Tooth& g
   };
   ToothCompliance c;
   auto add = [&](double a, double bnd, auto section) {  // section(u) -> {y, h, |dy/du|}
-    c.bending_m_per_N += integrate(a, bnd, [&](double u) { double y, h, j; section(u, y, h, j); double kb, ks, ka; density(y, h, kb, ks, ka); return kb * j; });
-    c.shear_m_per_N += integrate(a, bnd, [&](double u) { double y, h, j; section(u, y, h, j); double kb, ks, ka; density(y, h, kb, ks, ka); return ks * j; });
-    c.axial_m_per_N += integrate(a, bnd, [&](double u) { double y, h, j; section(u, y, h, j); double kb, ks, ka; density(y, h, kb, ks, ka); return ka * j; });
+    c.bending_m_per_N += integrate(a, bnd, [&](double u) {
+      double y, h, j;
+      section(u, y, h, j);
+      double kb, ks, ka;
+      density(y, h, kb, ks, ka);
+      return kb * j;
+    });
+    c.shear_m_per_N += integrate(a, bnd, [&](double u) {
+      double y, h, j;
+      section(u, y, h, j);
+      double kb, ks, ka;
+      density(y, h, kb, ks, ka);
+      return ks * j;
+    });
+    c.axial_m_per_N += integrate(a, bnd, [&](double u) {
+      double y, h, j;
+      section(u, y, h, j);
+      double kb, ks, ka;
+      density(y, h, kb, ks, ka);
+      return ka * j;
+    });
   };
   // Straight part below the base circle (external tooth with r_f < r_b).
   if (g.y_base > g.y_root) {
-    add(g.y_root, g.y_base, [&](double y, double& yy, double& h, double& j) { yy = y; h = g.h_uniform; j = 1.0; });
+    add(g.y_root, g.y_base, [&](double y, double& yy, double& h, double& j) {
+      yy = y;
+      h = g.h_uniform;
+      j = 1.0;
+    });
   }
   // Involute part from the clamp (or the base circle) to the contact, parametrised by roll angle.
   add(std::min(g.t_root, t_c), std::max(g.t_root, t_c), [&](double t, double& y, double& h, double& j) {
@@ -190,7 +213,8 @@ ContactPath contact_path(const PotentialEnergyPairDef& d) {
   const Tooth p = make_tooth(d, d.z1, d.root_over_bore1), w = make_tooth(d, d.z2, d.root_over_bore2);
   const double span = std::abs(tangent_span(d));
   const double wheel_tip_roll = std::sqrt(std::max(w.ra * w.ra - w.rb * w.rb, 0.0));
-  if (w.internal && w.ra <= w.rb) throw InputError("potential-energy stiffness: ring tip circle inside its base circle (|z2| too small for this pressure angle)");
+  if (w.internal && w.ra <= w.rb)
+    throw InputError("potential-energy stiffness: ring tip circle inside its base circle (|z2| too small for this pressure angle)");
   ContactPath c;
   c.pinion_base_radius_m = p.rb;
   c.base_pitch_m = kPi * d.module_m * std::cos(d.pressure_angle_rad);
@@ -198,11 +222,16 @@ ContactPath contact_path(const PotentialEnergyPairDef& d) {
   c.start_roll_m = w.internal ? wheel_tip_roll - span : span - wheel_tip_roll;
   // Contact must stay on both involutes above each cantilever's clamp.
   const double pinion_min_roll = std::max(p.t_root, 0.0) * p.rb;
-  if (c.start_roll_m < pinion_min_roll) throw InputError("potential-energy stiffness: the wheel tip reaches below the pinion's involute (interference; z1 = " + std::to_string(d.z1) + " too small)");
+  if (c.start_roll_m < pinion_min_roll)
+    throw InputError("potential-energy stiffness: the wheel tip reaches below the pinion's involute (interference; z1 = " +
+                     std::to_string(d.z1) + " too small)");
   const double wheel_end_roll = w.internal ? c.end_roll_m + span : span - c.end_roll_m;
-  if (!w.internal && wheel_end_roll < std::max(w.t_root, 0.0) * w.rb) throw InputError("potential-energy stiffness: the pinion tip reaches below the wheel's involute (interference; z2 = " + std::to_string(d.z2) + " too small)");
+  if (!w.internal && wheel_end_roll < std::max(w.t_root, 0.0) * w.rb)
+    throw InputError("potential-energy stiffness: the pinion tip reaches below the wheel's involute (interference; z2 = " +
+                     std::to_string(d.z2) + " too small)");
   c.contact_ratio = (c.end_roll_m - c.start_roll_m) / c.base_pitch_m;
-  if (!(c.contact_ratio >= 1.0 && c.contact_ratio < kPeMaxPairsInContact)) throw InputError("potential-energy stiffness: contact ratio " + std::to_string(c.contact_ratio) + " outside [1, 3)");
+  if (!(c.contact_ratio >= 1.0 && c.contact_ratio < kPeMaxPairsInContact))
+    throw InputError("potential-energy stiffness: contact ratio " + std::to_string(c.contact_ratio) + " outside [1, 3)");
   return c;
 }
 
@@ -224,9 +253,7 @@ PairCompliance single_pair_compliance(const PotentialEnergyPairDef& d, double r1
   return c;
 }
 
-double single_pair_stiffness(const PotentialEnergyPairDef& d, double r1) {
-  return single_pair_compliance(d, r1).stiffness_N_per_m;
-}
+double single_pair_stiffness(const PotentialEnergyPairDef& d, double r1) { return single_pair_compliance(d, r1).stiffness_N_per_m; }
 
 std::vector<StiffnessSample> mesh_stiffness_curve(const PotentialEnergyPairDef& d, int n) {
   if (n < 10) throw InputError("potential-energy stiffness: samples_per_period must be >= 10, got " + std::to_string(n));

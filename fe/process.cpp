@@ -39,8 +39,7 @@ std::string error_excerpt(const std::string& log) {
 }  // namespace
 
 fs::path find_executable(const std::string& name) {
-  if (name.find('/') != std::string::npos)
-    return ::access(name.c_str(), X_OK) == 0 ? fs::path(name) : fs::path();
+  if (name.find('/') != std::string::npos) return ::access(name.c_str(), X_OK) == 0 ? fs::path(name) : fs::path();
   const char* path = std::getenv("PATH");
   std::istringstream dirs(path ? path : "");
   std::string dir;
@@ -55,8 +54,7 @@ CcxRunResult run_ccx(const CcxRunDef& def) {
   // Demand the solver and the deck before starting anything.
   const fs::path exe = find_executable(def.executable);
   if (exe.empty())
-    throw InputError("ccx executable '" + def.executable +
-                     "' not found on PATH (install calculix-ccx, scripts/install-deps.sh)");
+    throw InputError("ccx executable '" + def.executable + "' not found on PATH (install calculix-ccx, scripts/install-deps.sh)");
   const fs::path deck = def.work_dir / (def.job + ".inp");
   if (!fs::exists(deck)) throw InputError("ccx deck not found: " + deck.string());
 
@@ -88,8 +86,7 @@ CcxRunResult run_ccx(const CcxRunDef& def) {
   const bool failed_exit = !WIFEXITED(status) || WEXITSTATUS(status) != 0;
   const bool has_error = log.find("*ERROR") != std::string::npos;
   if (has_error || failed_exit || !fs::exists(res.dat_path))
-    throw std::runtime_error("ccx failed on " + deck.string() + " (log " + res.log_path.string() +
-                             "):\n" + error_excerpt(log));
+    throw std::runtime_error("ccx failed on " + deck.string() + " (log " + res.log_path.string() + "):\n" + error_excerpt(log));
   return res;
 }
 

@@ -10,16 +10,16 @@ namespace gearsim::fe {
 
 // How to run ccx.
 struct CcxRunDef {
-  std::string executable = "ccx";   // name looked up on PATH, or a path
-  std::filesystem::path work_dir;   // holds <job>.inp; ccx writes <job>.dat/.frd/.log here
-  std::string job = "job";          // job name (deck file without .inp)
+  std::string executable = "ccx";  // name looked up on PATH, or a path
+  std::filesystem::path work_dir;  // holds <job>.inp; ccx writes <job>.dat/.frd/.log here
+  std::string job = "job";  // job name (deck file without .inp)
 };
 
 // What a finished run left behind.
 struct CcxRunResult {
   std::filesystem::path dat_path;  // <job>.dat, node/element prints
   std::filesystem::path log_path;  // <job>.log, ccx's stdout and stderr
-  double wall_time_s = 0.0;        // solver wall time, in s
+  double wall_time_s = 0.0;  // solver wall time, in s
 };
 
 // Finds an executable on PATH (or checks a given path); empty when absent.

@@ -15,14 +15,14 @@ namespace gearsim::fe {
 using QuadEdge = std::pair<int, int>;
 
 struct QuadMesh2 {
-  std::vector<Eigen::Vector2d> nodes;    // m, in the gear's plane (body frame)
+  std::vector<Eigen::Vector2d> nodes;  // m, in the gear's plane (body frame)
   std::vector<std::array<int, 4>> quads;  // 0-based node indices, counter-clockwise (area > 0)
   // Boundary edges in the order they follow their loop:
   std::vector<QuadEdge> toothed_edges;  // the toothed loop (flanks, fillets, tips, roots)
-  std::vector<QuadEdge> inner_edges;    // the bore of an external gear (empty if solid or internal)
-  std::vector<QuadEdge> outer_edges;    // the rim of an internal gear (empty for external)
-  std::vector<int> bore_nodes;          // nodes on the bore circle, in loop order
-  std::vector<int> rim_nodes;           // nodes on the rim circle, in loop order
+  std::vector<QuadEdge> inner_edges;  // the bore of an external gear (empty if solid or internal)
+  std::vector<QuadEdge> outer_edges;  // the rim of an internal gear (empty for external)
+  std::vector<int> bore_nodes;  // nodes on the bore circle, in loop order
+  std::vector<int> rim_nodes;  // nodes on the rim circle, in loop order
 };
 
 // Shape numbers over all quads. Interior angles in rad; the scaled Jacobian at a corner is the

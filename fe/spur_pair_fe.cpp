@@ -19,13 +19,10 @@ namespace {
 constexpr int kPeSamplesPerPeriod = 400;
 
 // The pinion's rotation (dof 1 of its rotation node) at the end of the step ending at `time`.
-double rotation_at(const std::vector<DatBlock>& blocks, int rotation_node, double time,
-                   const std::filesystem::path& dat) {
+double rotation_at(const std::vector<DatBlock>& blocks, int rotation_node, double time, const std::filesystem::path& dat) {
   for (const DatBlock& b : blocks)
-    if (b.quantity == "displacements" && b.set == "NROT" && std::abs(b.time - time) < 1e-6)
-      return b.rows.at(rotation_node).at(0);
-  throw std::runtime_error(std::string("ccx results lack the rotations at time ") + std::to_string(time) + " (" +
-                           dat.string() + ")");
+    if (b.quantity == "displacements" && b.set == "NROT" && std::abs(b.time - time) < 1e-6) return b.rows.at(rotation_node).at(0);
+  throw std::runtime_error(std::string("ccx results lack the rotations at time ") + std::to_string(time) + " (" + dat.string() + ")");
 }
 
 // Total contact force of one pair at `time` (the last increment printed then), N; zero vector when
@@ -70,8 +67,8 @@ SpurPairMeshes mesh_spur_pair(const SpurPairFeDef& def) {
           mesh_gear_outline(make_gear_outline(wheel_spec(def.pair)), GearKind::External, def.sizing)};
 }
 
-SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const SpurPairMeshes& meshes,
-                                            double roll_m, const std::filesystem::path& work_dir) {
+SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const SpurPairMeshes& meshes, double roll_m,
+                                            const std::filesystem::path& work_dir) {
   validate_spur_pair_fe(def);
   const SpurPairDef& pd = def.pair;
   const SpurPairPath path = spur_pair_path(pd);
@@ -134,8 +131,8 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   for (const SpurPairFePairLoad& p : out.pairs)
     if (p.force_full_N > kLoadedPairShare * out.contact_force_full_N) ++out.loaded_pairs;
   const double rb1 = path.pinion_base_radius_m;
-  out.stiffness_N_per_m = (out.torque_full_N_m - out.torque_low_N_m) /
-                          (rb1 * rb1 * (out.pinion_rotation_full_rad - out.pinion_rotation_low_rad));
+  out.stiffness_N_per_m =
+      (out.torque_full_N_m - out.torque_low_N_m) / (rb1 * rb1 * (out.pinion_rotation_full_rad - out.pinion_rotation_low_rad));
   out.stiffness_per_width_N_per_m2 = out.stiffness_N_per_m / pd.face_width_m;
   // The potential-energy model at the same contact points.
   const PotentialEnergyPairDef pe = potential_energy_def(pd);
@@ -148,8 +145,8 @@ SpurPairFePosition solve_spur_pair_position(const SpurPairFeDef& def, const Spur
   return out;
 }
 
-GearBodyTorsion solve_gear_body_torsion(const SpurPairFeDef& def, const SpurPairMeshes& meshes,
-                                        bool pinion, const std::filesystem::path& work_dir) {
+GearBodyTorsion solve_gear_body_torsion(const SpurPairFeDef& def, const SpurPairMeshes& meshes, bool pinion,
+                                        const std::filesystem::path& work_dir) {
   validate_spur_pair_fe(def);
   const QuadMesh2& q = pinion ? meshes.pinion.mesh : meshes.wheel.mesh;
   const GearDimensions dims = gear_dimensions(pinion ? pinion_spec(def.pair) : wheel_spec(def.pair));

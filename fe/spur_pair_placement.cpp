@@ -34,8 +34,8 @@ GearSpec spec_of(const SpurPairDef& d, const char* name, int teeth) {
 }
 
 // True when the pinion's Ccw flank touches the wheel (exact outlines, flank tables).
-bool touches(const contact::FlankTable& pinion, const contact::PlanarPose& pp,
-             const contact::FlankTable& wheel, const contact::PlanarPose& wp) {
+bool touches(const contact::FlankTable& pinion, const contact::PlanarPose& pp, const contact::FlankTable& wheel,
+             const contact::PlanarPose& wp) {
   for (const auto& c : contact::find_tooth_contacts(pinion, pp, wheel, wp))
     if (c.flank_a == Flank::Ccw) return true;
   return false;
@@ -48,8 +48,8 @@ double wrap_angle(double a) { return std::remainder(a, 2.0 * kPi); }
 struct Edge {
   Eigen::Vector2d a, b;
 };
-std::vector<Edge> placed_edges(const QuadMesh2& m, const std::vector<QuadEdge>& edges,
-                               const contact::PlanarPose& pose, const Eigen::Vector2d& origin) {
+std::vector<Edge> placed_edges(const QuadMesh2& m, const std::vector<QuadEdge>& edges, const contact::PlanarPose& pose,
+                               const Eigen::Vector2d& origin) {
   const Eigen::Rotation2Dd rot(pose.angle_rad);
   std::vector<Edge> out;
   for (const QuadEdge& e : edges) {
@@ -63,8 +63,7 @@ std::vector<Edge> placed_edges(const QuadMesh2& m, const std::vector<QuadEdge>& 
 // node crosses an edge of the other body into its material: sense +1, the nodes are the wheel's
 // (turning by δ) and the edges the pinion's; sense −1, the nodes are the pinion's and the edges
 // the wheel's (turning by δ). The smallest such turn is kept in `best`.
-void entering_turns(const std::vector<Edge>& nodes_of, const std::vector<Edge>& edges, double sense,
-                    double lo, double& best) {
+void entering_turns(const std::vector<Edge>& nodes_of, const std::vector<Edge>& edges, double sense, double lo, double& best) {
   std::vector<Eigen::Vector2d> nodes;
   for (const Edge& n : nodes_of) {
     nodes.push_back(n.a);
@@ -98,12 +97,11 @@ void entering_turns(const std::vector<Edge>& nodes_of, const std::vector<Edge>& 
 
 // First turn of the wheel (counter-clockwise, from `wheel`, not below lo) at which a node of one
 // mesh's edges enters the other's edges; +inf when none up to kMaxClosingTurn_rad.
-double polygon_closing_turn(const QuadMesh2& pm, const std::vector<QuadEdge>& pe, const contact::PlanarPose& pp,
-                            const QuadMesh2& wm, const std::vector<QuadEdge>& we, const contact::PlanarPose& wp,
-                            double lo) {
+double polygon_closing_turn(const QuadMesh2& pm, const std::vector<QuadEdge>& pe, const contact::PlanarPose& pp, const QuadMesh2& wm,
+                            const std::vector<QuadEdge>& we, const contact::PlanarPose& wp, double lo) {
   const std::vector<Edge> p = placed_edges(pm, pe, pp, wp.centre_m), w = placed_edges(wm, we, wp, wp.centre_m);
   double best = std::numeric_limits<double>::infinity();
-  entering_turns(w, p, 1.0, lo, best);   // wheel nodes turned onto pinion edges
+  entering_turns(w, p, 1.0, lo, best);  // wheel nodes turned onto pinion edges
   entering_turns(p, w, -1.0, lo, best);  // pinion nodes met by turned wheel edges
   return best;
 }
@@ -122,7 +120,8 @@ void validate_spur_pair(const SpurPairDef& d) {
   if (!(d.thinning_per_flank_m > 0 && d.thinning_per_flank_m < 0.1 * d.module_m))
     throw InputError(w + "thinning_per_flank_m must be in (0, 0.1 module) m, got " + std::to_string(d.thinning_per_flank_m) +
                      " (without backlash every tooth wedges in its mate's space and the contact forces are preload)");
-  if (!(d.bore_over_root > 0 && d.bore_over_root < 1)) throw InputError(w + "bore_over_root must be in (0, 1), got " + std::to_string(d.bore_over_root));
+  if (!(d.bore_over_root > 0 && d.bore_over_root < 1))
+    throw InputError(w + "bore_over_root must be in (0, 1), got " + std::to_string(d.bore_over_root));
 }
 
 GearSpec pinion_spec(const SpurPairDef& d) {
@@ -156,8 +155,7 @@ SpurPairPath spur_pair_path(const SpurPairDef& d) {
   if (span - p.end_roll_m < roll(wd.form_radius_m, wd.base_radius_m))
     throw InputError("spur pair: the pinion's tip reaches below the wheel's form circle (interference), z = " +
                      std::to_string(d.pinion_teeth) + "/" + std::to_string(d.wheel_teeth));
-  if (p.contact_ratio < 1.0)
-    throw InputError("spur pair: contact ratio " + std::to_string(p.contact_ratio) + " < 1");
+  if (p.contact_ratio < 1.0) throw InputError("spur pair: contact ratio " + std::to_string(p.contact_ratio) + " < 1");
   return p;
 }
 
@@ -171,9 +169,8 @@ std::vector<double> rolls_over_base_pitch(const SpurPairPath& path, int n) {
 SpurPairPlacement place_spur_pair(const SpurPairDef& d, const QuadMesh2& pm, const QuadMesh2& wm, double roll_m) {
   const SpurPairPath path = spur_pair_path(d);
   if (!(roll_m >= path.start_roll_m - kSpurRollSlack_m && roll_m <= path.end_roll_m + kSpurRollSlack_m))
-    throw InputError("spur pair position: roll length " + std::to_string(roll_m * 1e3) +
-                     " mm lies off the path of contact [" + std::to_string(path.start_roll_m * 1e3) + ", " +
-                     std::to_string(path.end_roll_m * 1e3) + "] mm");
+    throw InputError("spur pair position: roll length " + std::to_string(roll_m * 1e3) + " mm lies off the path of contact [" +
+                     std::to_string(path.start_roll_m * 1e3) + ", " + std::to_string(path.end_roll_m * 1e3) + "] mm");
   const GearSpec ps = pinion_spec(d), ws = wheel_spec(d);
   const GearDimensions pd = gear_dimensions(ps), wd = gear_dimensions(ws);
   const double z1 = d.pinion_teeth, z2 = d.wheel_teeth, alpha = d.pressure_angle_rad;
@@ -190,11 +187,13 @@ SpurPairPlacement place_spur_pair(const SpurPairDef& d, const QuadMesh2& pm, con
   wheel.angle_rad = kPi + kPi / z2 - out.pinion.angle_rad * z1 / z2;
   // Closed on the exact outlines (a reference: 2 t / r_b2 for standard gears).
   const contact::FlankTable pt = flank_table_of(ps), wt = flank_table_of(ws);
-  out.wheel_closing_exact_rad = closing_turn([&](double delta) {
-    contact::PlanarPose q = wheel;
-    q.angle_rad += delta;
-    return touches(pt, out.pinion, wt, q);
-  }, 1.0, "spur pair (exact outlines)");
+  out.wheel_closing_exact_rad = closing_turn(
+      [&](double delta) {
+        contact::PlanarPose q = wheel;
+        q.angle_rad += delta;
+        return touches(pt, out.pinion, wt, q);
+      },
+      1.0, "spur pair (exact outlines)");
   // Pinion teeth near the path, the wheel space each sits in, their contact edges.
   const auto ptags = tag_toothed_edges(pm, ps, pd), wtags = tag_toothed_edges(wm, ws, wd);
   const double margin = kSpurSlotMargin_basePitches * path.base_pitch_m;
@@ -208,8 +207,7 @@ SpurPairPlacement place_spur_pair(const SpurPairDef& d, const QuadMesh2& pm, con
     const double a = 2.0 * kPi * k / z1;
     const Eigen::Vector2d tip_w = to_world * (pd.tip_radius_m * Eigen::Vector2d(std::cos(a), std::sin(a)));
     const Eigen::Vector2d tip_in_wheel = to_wheel * (tip_w - wheel.centre_m);
-    s.wheel_space = wrap(static_cast<int>(std::floor(std::atan2(tip_in_wheel.y(), tip_in_wheel.x()) / (2.0 * kPi / z2))),
-                         d.wheel_teeth);
+    s.wheel_space = wrap(static_cast<int>(std::floor(std::atan2(tip_in_wheel.y(), tip_in_wheel.x()) / (2.0 * kPi / z2))), d.wheel_teeth);
     s.on_path = s.roll_m >= path.start_roll_m - kSpurRollSlack_m && s.roll_m <= path.end_roll_m + kSpurRollSlack_m;
     s.pinion_edges = select_tooth_edges(pm, ptags, {{s.pinion_tooth}, false, false, Flank::Ccw});
     s.wheel_edges = select_tooth_edges(wm, wtags, {{s.wheel_space}, false, true, Flank::Ccw});
@@ -218,16 +216,15 @@ SpurPairPlacement place_spur_pair(const SpurPairDef& d, const QuadMesh2& pm, con
     // This pair's own closing turn on the mesh boundaries (kept in fe_gap_m for now), searched
     // from half the exact closing back (an overlap of the boundaries at the kinematic position
     // shows as a negative turn; further back the trailing flanks would meet).
-    s.fe_gap_m = polygon_closing_turn(pm, s.pinion_edges, out.pinion, wm, s.wheel_edges, wheel,
-                                      -0.5 * out.wheel_closing_exact_rad);
+    s.fe_gap_m = polygon_closing_turn(pm, s.pinion_edges, out.pinion, wm, s.wheel_edges, wheel, -0.5 * out.wheel_closing_exact_rad);
     out.slots.push_back(s);
   }
   // Closed on the mesh boundaries: the first pair to touch; the others' gaps beyond it.
   double first = std::numeric_limits<double>::infinity();
   for (const SpurToothSlot& s : out.slots) first = std::min(first, s.fe_gap_m);
   if (!std::isfinite(first))
-    throw InputError("spur pair position at roll " + std::to_string(roll_m * 1e3) +
-                     " mm: the mesh boundaries do not touch within " + std::to_string(kMaxClosingTurn_rad) + " rad");
+    throw InputError("spur pair position at roll " + std::to_string(roll_m * 1e3) + " mm: the mesh boundaries do not touch within " +
+                     std::to_string(kMaxClosingTurn_rad) + " rad");
   out.wheel_closing_fe_rad = first;
   out.wheel = wheel;
   out.wheel.angle_rad += first;

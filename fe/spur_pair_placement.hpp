@@ -25,11 +25,11 @@ namespace gearsim::fe {
 
 // A standard (x = 0) external spur pair, both gears of the same steel.
 struct SpurPairDef {
-  int pinion_teeth = 20;               // z1, the driving gear
-  int wheel_teeth = 31;                // z2, held at its bore
-  double module_m = 1e-3;              // m, in m
+  int pinion_teeth = 20;  // z1, the driving gear
+  int wheel_teeth = 31;  // z2, held at its bore
+  double module_m = 1e-3;  // m, in m
   double pressure_angle_rad = 0.3490658503988659;  // α, normally 20°
-  double face_width_m = 10e-3;         // b (plane-stress thickness), in m
+  double face_width_m = 10e-3;  // b (plane-stress thickness), in m
   // Backlash allowance: every flank of both gears moved inward along its normal, m. Must be > 0:
   // without backlash each tooth wedges in its mate's space and the contact forces are preload.
   double thinning_per_flank_m = 20e-6;
@@ -46,10 +46,10 @@ GearSpec wheel_spec(const SpurPairDef& def);
 
 // The path of contact along the line of action, in roll lengths ℓ, m.
 struct SpurPairPath {
-  double start_roll_m = 0;   // the wheel's tip circle
-  double end_roll_m = 0;     // the pinion's tip circle
-  double pitch_roll_m = 0;   // the pitch point, r_b1 tan α
-  double base_pitch_m = 0;   // p_b
+  double start_roll_m = 0;  // the wheel's tip circle
+  double end_roll_m = 0;  // the pinion's tip circle
+  double pitch_roll_m = 0;  // the pitch point, r_b1 tan α
+  double base_pitch_m = 0;  // p_b
   double contact_ratio = 0;  // ε_α
   double pinion_base_radius_m = 0, wheel_base_radius_m = 0, centre_distance_m = 0;
 };
@@ -63,10 +63,10 @@ std::vector<double> rolls_over_base_pitch(const SpurPairPath& path, int n);
 // contact surfaces: the whole pinion tooth up to the centres of the spaces beside it; the wheel
 // space up to the centre lines of the two wheel teeth around it).
 struct SpurToothSlot {
-  int pinion_tooth = 0;      // 0..z1−1
-  int offset = 0;            // k: teeth ahead of the reference tooth (roll + k·p_b)
-  int wheel_space = 0;       // the space between wheel teeth s (its Ccw flank) and s+1 (Cw flank)
-  double roll_m = 0;         // roll length of this tooth's Ccw flank on the line of action, m
+  int pinion_tooth = 0;  // 0..z1−1
+  int offset = 0;  // k: teeth ahead of the reference tooth (roll + k·p_b)
+  int wheel_space = 0;  // the space between wheel teeth s (its Ccw flank) and s+1 (Cw flank)
+  double roll_m = 0;  // roll length of this tooth's Ccw flank on the line of action, m
   bool on_path = false;
   // Clearance of this pair's mesh boundaries when the pair is closed, as the wheel's further turn
   // to touch times r_b2, m (0 for the pair that touches first, +inf when it would not touch
@@ -76,11 +76,11 @@ struct SpurToothSlot {
 };
 
 struct SpurPairPlacement {
-  double roll_m = 0;                  // the reference tooth's roll length, m
+  double roll_m = 0;  // the reference tooth's roll length, m
   contact::PlanarPose pinion, wheel;  // wheel closed on the mesh boundaries
-  double wheel_closing_exact_rad = 0; // wheel turn from kinematic to touching, exact outlines
-  double wheel_closing_fe_rad = 0;    // the same on the mesh boundaries (chords between nodes)
-  std::vector<SpurToothSlot> slots;   // pinion teeth within kSpurSlotMargin_basePitches of the path
+  double wheel_closing_exact_rad = 0;  // wheel turn from kinematic to touching, exact outlines
+  double wheel_closing_fe_rad = 0;  // the same on the mesh boundaries (chords between nodes)
+  std::vector<SpurToothSlot> slots;  // pinion teeth within kSpurSlotMargin_basePitches of the path
 };
 
 // The pair placed with the reference tooth (pinion tooth 0) at roll_m, which must lie on the path
@@ -88,7 +88,6 @@ struct SpurPairPlacement {
 // flank tables, on the meshes' boundary polygons exactly (the first turn at which a node of one
 // mesh enters an edge of the other). Throws InputError for a roll off the path, or flanks that do
 // not close within kMaxClosingTurn_rad.
-SpurPairPlacement place_spur_pair(const SpurPairDef& def, const QuadMesh2& pinion_mesh,
-                                  const QuadMesh2& wheel_mesh, double roll_m);
+SpurPairPlacement place_spur_pair(const SpurPairDef& def, const QuadMesh2& pinion_mesh, const QuadMesh2& wheel_mesh, double roll_m);
 
 }  // namespace gearsim::fe

@@ -25,13 +25,14 @@ constexpr char kWheel[] =
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const gearsim::fuzz::InputFolder folder("set");
-  static const auto scenario =
-      folder.write("wheel.yaml", reinterpret_cast<const std::uint8_t*>(kWheel), sizeof kWheel - 1);
+  static const auto scenario = folder.write("wheel.yaml", reinterpret_cast<const std::uint8_t*>(kWheel), sizeof kWheel - 1);
   std::vector<std::string> overrides;
   std::string line;
   for (std::size_t i = 0; i < size; ++i) {
-    if (data[i] == '\n') overrides.push_back(line), line.clear();
-    else line += static_cast<char>(data[i]);
+    if (data[i] == '\n')
+      overrides.push_back(line), line.clear();
+    else
+      line += static_cast<char>(data[i]);
   }
   overrides.push_back(line);
   try {

@@ -31,9 +31,7 @@ constexpr double kUnionProbeRelative = 1e-10;
 // A union volume further than this fraction from the input's is worth a warning (dimensionless).
 constexpr double kUnionVolumeWarning = 0.01;
 
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string three_digits(double x) {
   std::ostringstream s;
@@ -48,8 +46,8 @@ void check_approx_input(const TriMesh& mesh, const ApproxDecompositionOptions& o
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (std::uint32_t v : mesh.triangles[t])
       if (v >= mesh.vertices.size())
-        throw InputError(who + "triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) +
-                         " of " + std::to_string(mesh.vertices.size()));
+        throw InputError(who + "triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) + " of " +
+                         std::to_string(mesh.vertices.size()));
   require_valid_solid(validate_mesh(mesh), "approximate_decomposition input");
   if (options.min_clusters < 1) throw InputError(who + "min_clusters must be >= 1");
   if (!(options.max_concavity_m > 0) || !std::isfinite(options.max_concavity_m))
@@ -64,8 +62,7 @@ void check_approx_input(const TriMesh& mesh, const ApproxDecompositionOptions& o
 
 // HACD on its own copies of the points and triangles (it normalises the points in place; they
 // outlive hacd), concavity in its units: hacd_per_m of them per metre.
-void run_hacd(HACD::HACD& hacd, std::vector<HACD::Vec3<HACD::Real>>& points,
-              std::vector<HACD::Vec3<long>>& triangles, double hacd_per_m,
+void run_hacd(HACD::HACD& hacd, std::vector<HACD::Vec3<HACD::Real>>& points, std::vector<HACD::Vec3<long>>& triangles, double hacd_per_m,
               const ApproxDecompositionOptions& options) {
   hacd.SetPoints(points.data());
   hacd.SetNPoints(points.size());
@@ -76,9 +73,9 @@ void run_hacd(HACD::HACD& hacd, std::vector<HACD::Vec3<HACD::Real>>& points,
   hacd.SetConcavity(options.max_concavity_m * hacd_per_m);
   hacd.SetNVerticesPerCH(std::size_t(options.max_vertices_per_hull));
   hacd.SetCompacityWeight(options.compactness_weight);
-  hacd.SetVolumeWeight(0.0);      // HACD's cost multiplies it by a local never set (0): only slows
-  hacd.SetConnectDist(-1.0);      // never bridge separate shells
-  hacd.SetAddFacesPoints(true);   // left uninitialised by HACD's constructor
+  hacd.SetVolumeWeight(0.0);  // HACD's cost multiplies it by a local never set (0): only slows
+  hacd.SetConnectDist(-1.0);  // never bridge separate shells
+  hacd.SetAddFacesPoints(true);  // left uninitialised by HACD's constructor
   hacd.SetAddNeighboursDistPoints(options.add_neighbour_points);
   hacd.SetAddExtraDistPoints(options.add_opposite_points);
   GEARSIM_CHECK(hacd.Compute(/*fullCH=*/false, /*exportDistPoints=*/false), "HACD::Compute failed");
@@ -87,7 +84,7 @@ void run_hacd(HACD::HACD& hacd, std::vector<HACD::Vec3<HACD::Real>>& points,
 // Our own hull of each HACD cluster's hull points, each also a piece of `out` (its tooth from
 // options.tooth_layout). Flat clusters are dropped with a warning; all of them flat is refused.
 std::vector<approx_detail::Hull> cluster_hulls(HACD::HACD& hacd, double diag_m, const ApproxDecompositionOptions& options,
-                                const std::string& who, ApproxDecomposition& out) {
+                                               const std::string& who, ApproxDecomposition& out) {
   std::vector<approx_detail::Hull> hulls;
   std::size_t flat = 0;
   for (std::size_t c = 0; c < hacd.GetNClusters(); ++c) {
@@ -97,15 +94,16 @@ std::vector<approx_detail::Hull> cluster_hulls(HACD::HACD& hacd, double diag_m, 
     std::vector<Vec3> pts;
     for (const auto& q : cp) pts.emplace_back(q.X(), q.Y(), q.Z());
     TriMesh h = approx_detail::hull_or_empty(pts, constants::kHullPlaneRelativeTolerance * diag_m);
-    if (h.triangles.empty()) { ++flat; continue; }
+    if (h.triangles.empty()) {
+      ++flat;
+      continue;
+    }
     hulls.push_back(approx_detail::make_hull(std::move(h)));
   }
   if (hulls.empty())
-    throw InputError(who + "every HACD cluster is flat (no volume) at max_concavity_m = " +
-                     std::to_string(options.max_concavity_m) + " m; try a larger one");
-  if (flat > 0)
-    out.warnings.push_back("approximate decomposition: " + std::to_string(flat) +
-                           " flat HACD cluster(s) dropped (no volume)");
+    throw InputError(who + "every HACD cluster is flat (no volume) at max_concavity_m = " + std::to_string(options.max_concavity_m) +
+                     " m; try a larger one");
+  if (flat > 0) out.warnings.push_back("approximate decomposition: " + std::to_string(flat) + " flat HACD cluster(s) dropped (no volume)");
   const double pitch_rad = options.tooth_layout ? 2.0 * std::numbers::pi / options.tooth_layout->teeth : 0.0;
   for (const approx_detail::Hull& h : hulls) {
     ConvexPiece3 piece{h.mesh.vertices, -1};
@@ -123,8 +121,7 @@ std::vector<approx_detail::Hull> cluster_hulls(HACD::HACD& hacd, double diag_m, 
 
 }  // namespace
 
-ApproxDecomposition approximate_decomposition(const TriMesh& mesh,
-                                              const ApproxDecompositionOptions& options) {
+ApproxDecomposition approximate_decomposition(const TriMesh& mesh, const ApproxDecompositionOptions& options) {
   const std::string who = "approximate_decomposition: ";
   check_approx_input(mesh, options, who);
   const double diag_m = approx_detail::diagonal(mesh.vertices);
@@ -137,9 +134,8 @@ ApproxDecomposition approximate_decomposition(const TriMesh& mesh,
   // Decimate a large mesh first: HACD's run time is superlinear (see max_hacd_triangles).
   TriMesh work = mesh.triangles.size() > options.max_hacd_triangles ? approx_detail::decimate(mesh, options.max_hacd_triangles) : mesh;
   if (work.triangles.size() != mesh.triangles.size())
-    out.warnings.push_back("approximate decomposition: " + std::to_string(mesh.triangles.size()) +
-                           " triangles decimated to " + std::to_string(work.triangles.size()) +
-                           " for HACD (quadric-error edge collapses)");
+    out.warnings.push_back("approximate decomposition: " + std::to_string(mesh.triangles.size()) + " triangles decimated to " +
+                           std::to_string(work.triangles.size()) + " for HACD (quadric-error edge collapses)");
   out.hacd_triangles = work.triangles.size();
 
   // HACD: its own copies (it normalises the points in place), concavity in its units.
@@ -159,26 +155,26 @@ ApproxDecomposition approximate_decomposition(const TriMesh& mesh,
   const std::vector<approx_detail::Hull> hulls = cluster_hulls(hacd, diag_m, options, who, out);
 
   // Measure: the input surface against the union's boundary.
-  const TriMesh boundary = approx_detail::union_surface(hulls, kUnionProbeRelative * diag_m, constants::kHullPlaneRelativeTolerance * diag_m);
+  const TriMesh boundary =
+      approx_detail::union_surface(hulls, kUnionProbeRelative * diag_m, constants::kHullPlaneRelativeTolerance * diag_m);
   out.deviation_m = hausdorff_distance(mesh, boundary, spacing_m);
   out.input_volume_m3 = signed_volume_m3(mesh);
   out.union_volume_m3 = signed_volume_m3(boundary);
   out.measure_seconds = seconds_since(t1);
   const double volume_error = out.union_volume_m3 / out.input_volume_m3 - 1.0;
   if (std::abs(volume_error) > kUnionVolumeWarning)
-    out.warnings.push_back("approximate decomposition: the union of the hulls is " +
-                           three_digits(100.0 * volume_error) + " % off the input's volume (> 0: " +
-                           "hulls bridge concavities; < 0: voids between hulls inside the solid)");
+    out.warnings.push_back("approximate decomposition: the union of the hulls is " + three_digits(100.0 * volume_error) +
+                           " % off the input's volume (> 0: " + "hulls bridge concavities; < 0: voids between hulls inside the solid)");
 
   std::ostringstream method;
-  method << "HACD (Bullet Extras libHACD): max concavity " << options.max_concavity_m * 1e3
-         << " mm, <= " << options.max_vertices_per_hull << " vertices per hull, neighbour points "
-         << (options.add_neighbour_points ? "on" : "off") << ", "
-         << out.hacd_triangles << " triangles in, " << out.pieces.pieces.size() << " hulls out";
+  method << "HACD (Bullet Extras libHACD): max concavity " << options.max_concavity_m * 1e3 << " mm, <= " << options.max_vertices_per_hull
+         << " vertices per hull, neighbour points " << (options.add_neighbour_points ? "on" : "off") << ", " << out.hacd_triangles
+         << " triangles in, " << out.pieces.pieces.size() << " hulls out";
   out.method = method.str();
   out.warnings.insert(out.warnings.begin(),
                       "approximate decomposition: µm-scale flank errors are not preserved "
-                      "(measured deviation " + three_digits(out.deviation_m * 1e6) + " µm)");
+                      "(measured deviation " +
+                          three_digits(out.deviation_m * 1e6) + " µm)");
   return out;
 }
 

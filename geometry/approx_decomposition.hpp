@@ -73,22 +73,21 @@ struct ApproxDecomposition {
   // hull's face is inside the union). It counts hulls bulging out of the solid, input surface
   // left uncovered or buried, and voids between hulls inside the solid.
   double deviation_m = 0.0;
-  double input_volume_m3 = 0.0;     // divergence theorem over the input, m^3
-  double union_volume_m3 = 0.0;     // divergence theorem over the union's boundary, m^3
+  double input_volume_m3 = 0.0;  // divergence theorem over the input, m^3
+  double union_volume_m3 = 0.0;  // divergence theorem over the union's boundary, m^3
   double hull_volume_sum_m3 = 0.0;  // sum of the hull volumes (overlaps counted twice), m^3
-  double sample_spacing_m = 0.0;    // the spacing used, m
-  std::size_t hacd_triangles = 0;   // triangles handed to HACD (after any decimation)
-  double hacd_seconds = 0.0;        // wall time in HACD, s
-  double measure_seconds = 0.0;     // wall time measuring the deviation, s
-  std::string method;               // what was run, with its parameters in SI units
+  double sample_spacing_m = 0.0;  // the spacing used, m
+  std::size_t hacd_triangles = 0;  // triangles handed to HACD (after any decimation)
+  double hacd_seconds = 0.0;  // wall time in HACD, s
+  double measure_seconds = 0.0;  // wall time measuring the deviation, s
+  std::string method;  // what was run, with its parameters in SI units
   std::vector<std::string> warnings;  // always the lost-µm-errors note, plus any trouble
 };
 
 // Decomposes a valid solid (see require_valid_solid) into convex hulls. Throws InputError for an
 // empty, non-finite or invalid mesh, for out-of-range options (naming the value), and when HACD
 // leaves no cluster with a volume. Not thread-safe: HACD keeps a global cancel flag.
-ApproxDecomposition approximate_decomposition(const TriMesh& mesh,
-                                              const ApproxDecompositionOptions& options = {});
+ApproxDecomposition approximate_decomposition(const TriMesh& mesh, const ApproxDecompositionOptions& options = {});
 
 // The convex hull of points_m: its vertices (a subset of the input, unmoved) and outward
 // counter-clockwise triangles; points within kHullPlaneRelativeTolerance of a face are dropped.

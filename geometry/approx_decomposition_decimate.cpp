@@ -43,7 +43,9 @@ TriMesh decimate(const TriMesh& m, std::size_t target) {
   for (std::uint32_t t = 0; t < tris.size(); ++t) push_edges(t);
   auto neighbours = [&](std::uint32_t v) {
     std::vector<std::uint32_t> n;
-    for (auto t : faces_of[v]) for (auto w : tris[t]) if (w != v) n.push_back(w);
+    for (auto t : faces_of[v])
+      for (auto w : tris[t])
+        if (w != v) n.push_back(w);
     std::sort(n.begin(), n.end());
     n.erase(std::unique(n.begin(), n.end()), n.end());
     return n;
@@ -61,16 +63,19 @@ TriMesh decimate(const TriMesh& m, std::size_t target) {
     for (auto t : faces_of[from]) {
       if (has(tris[t], to)) continue;
       auto moved = tris[t];
-      for (auto& v : moved) if (v == from) v = to;
+      for (auto& v : moved)
+        if (v == from) v = to;
       const Vec3 before = normal(tris[t]), after = normal(moved);
       if (!(after.dot(before) > 0.0) || after.squaredNorm() < 1e-6 * before.squaredNorm()) return false;
     }
     for (auto t : faces_of[from]) {
       if (has(tris[t], to)) {  // one of the two triangles on the edge: gone
-        for (auto v : tris[t]) if (v != from) std::erase(faces_of[v], t);
+        for (auto v : tris[t])
+          if (v != from) std::erase(faces_of[v], t);
         --alive;
       } else {
-        for (auto& v : tris[t]) if (v == from) v = to;
+        for (auto& v : tris[t])
+          if (v == from) v = to;
         faces_of[to].push_back(t);
       }
     }
@@ -83,8 +88,7 @@ TriMesh decimate(const TriMesh& m, std::size_t target) {
     const Item e = queue.top();
     queue.pop();
     if (e.from_stamp != stamp[e.from] || e.to_stamp != stamp[e.to] || faces_of[e.from].empty()) continue;
-    if (std::any_of(faces_of[e.from].begin(), faces_of[e.from].end(), [&](auto t) { return has(tris[t], e.to); }))
-      collapse(e.from, e.to);
+    if (std::any_of(faces_of[e.from].begin(), faces_of[e.from].end(), [&](auto t) { return has(tris[t], e.to); })) collapse(e.from, e.to);
   }
   TriMesh out;
   std::vector<std::uint32_t> index(m.vertices.size(), kNoIndex);

@@ -24,9 +24,9 @@ TriMesh hull_or_empty(const std::vector<Vec3>& p, double eps_m);
 // A hull with its face planes and bounding box, for clipping.
 struct Hull {
   TriMesh mesh;
-  std::vector<Vec3> n;    // unit outward face normals
+  std::vector<Vec3> n;  // unit outward face normals
   std::vector<double> d;  // n . x on each face, m
-  Vec3 lo, hi;            // bounding box, m
+  Vec3 lo, hi;  // bounding box, m
 };
 
 // The hull's face planes and bounding box; mesh is a convex hull with at least one triangle.

@@ -32,10 +32,12 @@ TriMesh hull_or_empty(const std::vector<Vec3>& p, double eps_m) {
   };
   if (p.size() < 4) return {};
   std::uint32_t i0 = 0, i1 = 0, i2 = 0, i3 = 0;
-  for (std::uint32_t i = 0; i < p.size(); ++i) if (p[i].x() < p[i0].x()) i0 = i;
+  for (std::uint32_t i = 0; i < p.size(); ++i)
+    if (p[i].x() < p[i0].x()) i0 = i;
   auto farthest = [&](auto&& dist) {
     std::uint32_t best = 0;
-    for (std::uint32_t i = 0; i < p.size(); ++i) if (dist(p[i]) > dist(p[best])) best = i;
+    for (std::uint32_t i = 0; i < p.size(); ++i)
+      if (dist(p[i]) > dist(p[best])) best = i;
     return best;
   };
   i1 = farthest([&](const Vec3& q) { return (q - p[i0]).norm(); });
@@ -94,8 +96,7 @@ TriMesh hull_or_empty(const std::vector<Vec3>& p, double eps_m) {
 
 TriMesh convex_hull(const std::vector<Eigen::Vector3d>& points_m) {
   for (std::size_t i = 0; i < points_m.size(); ++i)
-    if (!points_m[i].allFinite())
-      throw InputError("convex_hull: point " + std::to_string(i) + " is not finite");
+    if (!points_m[i].allFinite()) throw InputError("convex_hull: point " + std::to_string(i) + " is not finite");
   TriMesh hull;
   if (points_m.size() >= 4)
     hull = approx_detail::hull_or_empty(points_m, constants::kHullPlaneRelativeTolerance * approx_detail::diagonal(points_m));

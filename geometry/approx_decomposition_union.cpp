@@ -13,8 +13,7 @@ namespace {
 
 // Splits the convex polygon p by the plane n.x = offset into its parts in front (n.x > offset)
 // and behind; points on the plane go to both. Returns how far the front part reaches, m.
-double split(const std::vector<Vec3>& p, const Vec3& n, double offset, std::vector<Vec3>& front,
-             std::vector<Vec3>& back) {
+double split(const std::vector<Vec3>& p, const Vec3& n, double offset, std::vector<Vec3>& front, std::vector<Vec3>& back) {
   front.clear(), back.clear();
   double reach = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -68,8 +67,7 @@ TriMesh union_surface(const std::vector<Hull>& hulls, double probe_m, double eps
           }
           rest = poly;  // peel off the parts in front of each plane of o; what is left is covered
           for (std::size_t k = 0; k < o.n.size() && rest.size() >= 3; ++k) {
-            if (split(rest, o.n[k], o.d[k] - probe_m * o.n[k].dot(normal), front, back) > eps_m)
-              next.push_back(front);
+            if (split(rest, o.n[k], o.d[k] - probe_m * o.n[k].dot(normal), front, back) > eps_m) next.push_back(front);
             rest.swap(back);
           }
         }

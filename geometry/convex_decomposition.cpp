@@ -25,15 +25,12 @@ bool convex_corner(const Vec2& a, const Vec2& b, const Vec2& c) {
 
 // Hertel–Mehlhorn: starting from the triangles, removes each diagonal whose two sides merge into
 // a convex piece. Diagonals between non-reflex polygon corners (always removable) go first.
-std::vector<Polygon2> hertel_mehlhorn(const std::vector<Vec2>& pos,
-                                      const std::vector<std::array<int, 3>>& tris,
+std::vector<Polygon2> hertel_mehlhorn(const std::vector<Vec2>& pos, const std::vector<std::array<int, 3>>& tris,
                                       const std::vector<char>& reflex) {
   const int nh = 3 * static_cast<int>(tris.size());
   std::vector<int> from(nh), to(nh), next(nh), prev(nh), twin(nh, -1);
   std::unordered_map<std::uint64_t, int> by_ends;
-  auto key = [](int a, int b) {
-    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-  };
+  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
   for (int h = 0; h < nh; ++h) {
     const int t = h / 3, j = h % 3;
     from[h] = tris[t][j], to[h] = tris[t][(j + 1) % 3];
@@ -53,8 +50,7 @@ std::vector<Polygon2> hertel_mehlhorn(const std::vector<Vec2>& pos,
     for (int d : list) {
       const int t = twin[d];
       const int in_u = prev[d], out_u = next[t], in_v = prev[t], out_v = next[d];
-      if (!convex_corner(pos[from[in_u]], pos[from[d]], pos[to[out_u]]) ||
-          !convex_corner(pos[from[in_v]], pos[to[d]], pos[to[out_v]]))
+      if (!convex_corner(pos[from[in_u]], pos[from[d]], pos[to[out_u]]) || !convex_corner(pos[from[in_v]], pos[to[d]], pos[to[out_v]]))
         continue;
       next[in_u] = out_u, prev[out_u] = in_u, next[in_v] = out_v, prev[out_v] = in_v;
       removed[d] = removed[t] = 1;
@@ -73,8 +69,7 @@ std::vector<Polygon2> hertel_mehlhorn(const std::vector<Vec2>& pos,
 // Reflex flags of a loop's corners (interior on the left of the loop's direction).
 void mark_reflex(const std::vector<Vec2>& loop, std::vector<char>& reflex) {
   const std::size_t n = loop.size();
-  for (std::size_t i = 0; i < n; ++i)
-    reflex.push_back(cross2(loop[i] - loop[(i + n - 1) % n], loop[(i + 1) % n] - loop[i]) <= 0);
+  for (std::size_t i = 0; i < n; ++i) reflex.push_back(cross2(loop[i] - loop[(i + n - 1) % n], loop[(i + 1) % n] - loop[i]) <= 0);
 }
 
 // A loop, counter-clockwise about the origin, with every gap mid-line crossing inserted.
@@ -83,14 +78,11 @@ struct CutLoop {
   std::vector<int> cut;  // cut[k]: index in pts of the crossing with ray k
 };
 
-double ray_angle(const ToothLayout& lay, int k) {
-  return lay.tooth0_angle_rad + (k + 0.5) * 2.0 * std::numbers::pi / lay.teeth;
-}
+double ray_angle(const ToothLayout& lay, int k) { return lay.tooth0_angle_rad + (k + 0.5) * 2.0 * std::numbers::pi / lay.teeth; }
 
 // Inserts the crossings of every gap mid-line ray into `loop`, or says why a ray does not cross
 // it exactly once, counter-clockwise (the loop is then not star-shaped about the gear axis).
-Check cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, const std::string& name,
-                     CutLoop& out) {
+Check cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, const std::string& name, CutLoop& out) {
   const int z = lay.teeth;
   const double step = 2.0 * std::numbers::pi / z;
   auto wedge = [&](const Vec2& p) {  // sector index: between rays k - 1 and k
@@ -110,11 +102,10 @@ Check cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, const std:
     const int wp = wedge(p), wq = wedge(q);
     if (wp == wq) continue;
     if (cross2(p, q) <= 0)
-      return Refusal{"the " + name + " is not star-shaped about the gear axis: its edge " +
-             std::to_string(i) + " crosses a gap mid-line clockwise"};
+      return Refusal{"the " + name + " is not star-shaped about the gear axis: its edge " + std::to_string(i) +
+                     " crosses a gap mid-line clockwise"};
     for (int k = wp; k != wq; k = (k + 1) % z) {
-      if (++hits[std::size_t(k)] > 1)
-        return Refusal{"gap mid-line " + std::to_string(k) + " crosses the " + name + " more than once"};
+      if (++hits[std::size_t(k)] > 1) return Refusal{"gap mid-line " + std::to_string(k) + " crosses the " + name + " more than once"};
       const Vec2 d(std::cos(ray_angle(lay, k)), std::sin(ray_angle(lay, k)));
       const double sp = cross2(d, p), sq = cross2(d, q), len = (q - p).norm();
       const double t = std::clamp(sp == sq ? 0.5 : sp / (sp - sq), 0.0, 1.0);
@@ -130,8 +121,7 @@ Check cut_loop(const std::vector<Vec2>& loop, const ToothLayout& lay, const std:
   }
   int descents = 0;
   for (int k = 0; k < z; ++k) {
-    if (hits[std::size_t(k)] != 1)
-      return Refusal{"gap mid-line " + std::to_string(k) + " misses the " + name};
+    if (hits[std::size_t(k)] != 1) return Refusal{"gap mid-line " + std::to_string(k) + " misses the " + name};
     const int a = out.cut[std::size_t(k)], b = out.cut[std::size_t((k + 1) % z)];
     if (a == b) return Refusal{"two gap mid-lines meet the " + name + " at one point"};
     descents += b < a;
@@ -150,14 +140,11 @@ void append_arc(const CutLoop& c, int k0, int k1, std::vector<Vec2>& out) {
 }
 
 // Cuts the outline into tooth sectors and decomposes each, or refuses saying why not.
-Check decompose_sectors(const Outline2& outline, const ToothLayout& lay,
-                              std::vector<ConvexPiece2>& pieces) {
+Check decompose_sectors(const Outline2& outline, const ToothLayout& lay, std::vector<ConvexPiece2>& pieces) {
   if (outline.holes.size() > 1)
-    return Refusal{"the outline has " + std::to_string(outline.holes.size()) +
-           " holes; sector cutting allows at most one"};
+    return Refusal{"the outline has " + std::to_string(outline.holes.size()) + " holes; sector cutting allows at most one"};
   CutLoop outer, inner;
-  if (const Check why = cut_loop(outline.outer.points, lay, "outer boundary", outer); !why)
-    return why;
+  if (const Check why = cut_loop(outline.outer.points, lay, "outer boundary", outer); !why) return why;
   if (!outline.holes.empty()) {
     std::vector<Vec2> hole(outline.holes[0].points.rbegin(), outline.holes[0].points.rend());
     if (const Check why = cut_loop(hole, lay, "hole", inner); !why) return why;
@@ -176,16 +163,14 @@ Check decompose_sectors(const Outline2& outline, const ToothLayout& lay,
     if (const Check c = check_polygon(sector, true, "sector " + std::to_string(k)); !c) return c;
     std::vector<char> reflex;
     mark_reflex(sector.points, reflex);
-    for (Polygon2& p :
-         hertel_mehlhorn(sector.points, detail::triangulate_unchecked(sector), reflex))
+    for (Polygon2& p : hertel_mehlhorn(sector.points, detail::triangulate_unchecked(sector), reflex))
       pieces.push_back({std::move(p), k, 0.0});
   }
   return {};
 }
 
 // Decomposes the whole outline; tooth = sector of each piece's centroid (or -1).
-void decompose_whole(const Outline2& outline, const std::optional<ToothLayout>& lay,
-                     std::vector<ConvexPiece2>& pieces) {
+void decompose_whole(const Outline2& outline, const std::optional<ToothLayout>& lay, std::vector<ConvexPiece2>& pieces) {
   const OutlineTriangulation t = detail::triangulate_unchecked(outline);
   std::vector<char> reflex;
   mark_reflex(outline.outer.points, reflex);
@@ -224,8 +209,7 @@ ConvexDecomposition decompose(const Outline2& outline, const DecompositionOption
   require_valid(outline);
   const auto& lay = options.tooth_layout;
   if (lay && (lay->teeth < 3 || !std::isfinite(lay->tooth0_angle_rad)))
-    throw InputError("tooth layout: " + std::to_string(lay->teeth) + " teeth with tooth-0 angle " +
-                     std::to_string(lay->tooth0_angle_rad) +
+    throw InputError("tooth layout: " + std::to_string(lay->teeth) + " teeth with tooth-0 angle " + std::to_string(lay->tooth0_angle_rad) +
                      " rad; need at least 3 teeth and a finite angle");
   ConvexDecomposition result;
   if (lay) {
@@ -243,11 +227,10 @@ ConvexDecomposition decompose(const Outline2& outline, const DecompositionOption
   return result;
 }
 
-ConvexPieces3 extrude_pieces(const ConvexDecomposition& decomposition, const PrismFrame& frame,
-                             double w_min_m, double w_max_m) {
+ConvexPieces3 extrude_pieces(const ConvexDecomposition& decomposition, const PrismFrame& frame, double w_min_m, double w_max_m) {
   if (!(w_min_m < w_max_m) || !std::isfinite(w_min_m) || !std::isfinite(w_max_m))
-    throw InputError("piece extrusion range [" + std::to_string(w_min_m) + ", " +
-                     std::to_string(w_max_m) + "] m: need finite w_min_m < w_max_m");
+    throw InputError("piece extrusion range [" + std::to_string(w_min_m) + ", " + std::to_string(w_max_m) +
+                     "] m: need finite w_min_m < w_max_m");
   ConvexPieces3 out;
   out.pieces.reserve(decomposition.pieces.size());
   for (const ConvexPiece2& p : decomposition.pieces) {

@@ -27,7 +27,7 @@ inline constexpr double kCutSnap_m = 1e-12;
 // Where the teeth are: tooth k's centre line points at tooth0_angle_rad + k * 2*pi/teeth about
 // the origin (the gear axis); the gap mid-lines lie half a pitch either side.
 struct ToothLayout {
-  int teeth = 0;                  // >= 3
+  int teeth = 0;  // >= 3
   double tooth0_angle_rad = 0.0;  // rad, counter-clockwise from +x
 };
 
@@ -36,8 +36,8 @@ struct DecompositionOptions {
 };
 
 struct ConvexPiece2 {
-  Polygon2 polygon;      // convex, counter-clockwise, m
-  int tooth = -1;        // 0..teeth-1; -1 without a tooth layout
+  Polygon2 polygon;  // convex, counter-clockwise, m
+  int tooth = -1;  // 0..teeth-1; -1 without a tooth layout
   double area_m2 = 0.0;  // m^2
 };
 
@@ -46,12 +46,10 @@ struct ConvexDecomposition {
   // True when the outline was cut along the gap mid-lines, so every piece lies in its tooth's
   // sector. False without a layout, or after a fallback (tooth = sector of the piece centroid).
   bool sectors_exact = false;
-  std::string fallback_reason;     // why the sector cut was impossible; empty otherwise
+  std::string fallback_reason;  // why the sector cut was impossible; empty otherwise
   double piece_area_sum_m2 = 0.0;  // m^2
-  double outline_area_m2 = 0.0;    // m^2
-  double relative_area_error() const {
-    return (piece_area_sum_m2 - outline_area_m2) / outline_area_m2;
-  }
+  double outline_area_m2 = 0.0;  // m^2
+  double relative_area_error() const { return (piece_area_sum_m2 - outline_area_m2) / outline_area_m2; }
 };
 
 // Decomposes a valid outline (see triangulate.hpp) into convex pieces. The sector cut needs at
@@ -76,8 +74,7 @@ struct ConvexPieces3 {
 };
 
 // Extrudes every piece from w_min_m to w_max_m along frame.z, in the frame's world coordinates.
-ConvexPieces3 extrude_pieces(const ConvexDecomposition& decomposition, const PrismFrame& frame,
-                             double w_min_m, double w_max_m);
+ConvexPieces3 extrude_pieces(const ConvexDecomposition& decomposition, const PrismFrame& frame, double w_min_m, double w_max_m);
 
 // Extrudes every piece over a recovered prism, back in the mesh's own 3D frame.
 ConvexPieces3 extrude_pieces(const ConvexDecomposition& decomposition, const Prism& prism);

@@ -13,13 +13,11 @@ namespace {
 
 void require_z_range(double z_min_m, double z_max_m) {
   if (!std::isfinite(z_min_m) || !std::isfinite(z_max_m) || !(z_min_m < z_max_m))
-    throw InputError("extrusion range [" + std::to_string(z_min_m) + ", " +
-                     std::to_string(z_max_m) + "] m: need finite z_min_m < z_max_m");
+    throw InputError("extrusion range [" + std::to_string(z_min_m) + ", " + std::to_string(z_max_m) + "] m: need finite z_min_m < z_max_m");
 }
 
 // Bottom ring, top ring, caps from `triangles`, side quads along each loop (first index, size).
-TriMesh build_prism(const std::vector<Eigen::Vector2d>& points,
-                    const std::vector<std::array<int, 3>>& triangles,
+TriMesh build_prism(const std::vector<Eigen::Vector2d>& points, const std::vector<std::array<int, 3>>& triangles,
                     const std::vector<std::pair<int, int>>& loops, double z_min_m, double z_max_m) {
   TriMesh mesh;
   const auto n = static_cast<std::uint32_t>(points.size());
@@ -28,9 +26,8 @@ TriMesh build_prism(const std::vector<Eigen::Vector2d>& points,
     for (const Eigen::Vector2d& p : points) mesh.vertices.emplace_back(p.x(), p.y(), z);
   mesh.triangles.reserve(2 * triangles.size() + 2 * points.size());
   for (const auto& t : triangles) {
-    const auto a = static_cast<std::uint32_t>(t[0]), b = static_cast<std::uint32_t>(t[1]),
-               c = static_cast<std::uint32_t>(t[2]);
-    mesh.triangles.push_back({a, c, b});              // bottom cap faces -z
+    const auto a = static_cast<std::uint32_t>(t[0]), b = static_cast<std::uint32_t>(t[1]), c = static_cast<std::uint32_t>(t[2]);
+    mesh.triangles.push_back({a, c, b});  // bottom cap faces -z
     mesh.triangles.push_back({a + n, b + n, c + n});  // top cap faces +z
   }
   // The material lies left of each loop edge i -> j, so (i, j, j', i') faces outward.
@@ -62,11 +59,9 @@ TriMesh extrude_convex(const Polygon2& convex, double z_min_m, double z_max_m) {
   require_z_range(z_min_m, z_max_m);
   if (const Check c = check_polygon(convex, true, "convex polygon"); !c) throw InputError("cannot extrude: " + c.reason());
   if (!is_convex(convex, kConvexSineTolerance))
-    throw InputError("cannot extrude: polygon with " + std::to_string(convex.points.size()) +
-                     " points is not convex");
+    throw InputError("cannot extrude: polygon with " + std::to_string(convex.points.size()) + " points is not convex");
   const auto tris = detail::triangulate_unchecked(convex);
-  return build_prism(convex.points, tris, {{0, static_cast<int>(convex.points.size())}}, z_min_m,
-                     z_max_m);
+  return build_prism(convex.points, tris, {{0, static_cast<int>(convex.points.size())}}, z_min_m, z_max_m);
 }
 
 }  // namespace gearsim

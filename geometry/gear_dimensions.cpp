@@ -38,39 +38,29 @@ double rack_form_roll_length(const GearSpec& s) {
 
 void validate_gear_spec(const GearSpec& s) {
   const std::string who = gear_name(s);
-  auto fail = [&](const std::string& key, const std::string& what) {
-    throw InputError(who + ": " + key + ": " + what);
-  };
+  auto fail = [&](const std::string& key, const std::string& what) { throw InputError(who + ": " + key + ": " + what); };
   if (s.teeth < 3) fail("teeth", "expected an integer ≥ 3, got " + std::to_string(s.teeth));
-  if (!(s.module_m > 0) || !std::isfinite(s.module_m))
-    fail("module_m", "expected a positive length in m");
-  if (!(s.pressure_angle_rad > 0.0 && s.pressure_angle_rad < kPi / 4))
-    fail("pressure_angle", "expected an angle in (0°, 45°)");
+  if (!(s.module_m > 0) || !std::isfinite(s.module_m)) fail("module_m", "expected a positive length in m");
+  if (!(s.pressure_angle_rad > 0.0 && s.pressure_angle_rad < kPi / 4)) fail("pressure_angle", "expected an angle in (0°, 45°)");
   if (!(s.face_width_m > 0)) fail("face_width_m", "expected a positive length in m");
   if (!(s.addendum_coeff >= 0)) fail("addendum_coeff", "expected ≥ 0");
   if (!(s.dedendum_coeff > s.root_fillet_coeff * (1.0 - std::sin(s.pressure_angle_rad))))
     fail("dedendum_coeff", "must exceed the fillet's height ρ*(1 − sin α)");
   if (!(s.root_fillet_coeff >= 0)) fail("root_fillet_coeff", "expected ≥ 0");
   if (!(s.thinning_per_flank_m >= 0)) fail("thinning_per_flank_m", "expected ≥ 0 (tooth thinning)");
-  if (!(s.chordal_deviation_m >= constants::kMinChordalDeviation_m))
-    fail("chordal_deviation_m", "expected ≥ 1e-9 m");
-  if (s.kind == GearKind::Internal && !(s.rim_diameter_m > 0))
-    fail("rim_diameter_m", "an internal gear needs its outer rim diameter");
-  if (s.kind == GearKind::External && s.rim_diameter_m != 0)
-    fail("rim_diameter_m", "only internal gears have a rim; use bore_diameter_m");
-  if (s.kind == GearKind::Internal && s.bore_diameter_m != 0)
-    fail("bore_diameter_m", "internal gears have no bore; use rim_diameter_m");
+  if (!(s.chordal_deviation_m >= constants::kMinChordalDeviation_m)) fail("chordal_deviation_m", "expected ≥ 1e-9 m");
+  if (s.kind == GearKind::Internal && !(s.rim_diameter_m > 0)) fail("rim_diameter_m", "an internal gear needs its outer rim diameter");
+  if (s.kind == GearKind::External && s.rim_diameter_m != 0) fail("rim_diameter_m", "only internal gears have a rim; use bore_diameter_m");
+  if (s.kind == GearKind::Internal && s.bore_diameter_m != 0) fail("bore_diameter_m", "internal gears have no bore; use rim_diameter_m");
   if (!(s.bore_diameter_m >= 0)) fail("bore_diameter_m", "expected ≥ 0");
   auto check_tooth = [&](int k, const std::string& key) {
-    if (k < 0 || k >= s.teeth)
-      fail(key, "tooth index " + std::to_string(k) + " outside 0.." + std::to_string(s.teeth - 1));
+    if (k < 0 || k >= s.teeth) fail(key, "tooth index " + std::to_string(k) + " outside 0.." + std::to_string(s.teeth - 1));
   };
   for (const FlankOffset& f : s.errors.flank_offsets) check_tooth(f.tooth, "errors.flank_offsets.tooth");
   for (const PitchError& p : s.errors.pitch_errors) check_tooth(p.tooth, "errors.pitch_errors.tooth");
   for (const ProfileSlopeError& p : s.errors.profile_slopes)
     if (p.tooth >= 0) check_tooth(p.tooth, "errors.profile_slopes.tooth");
-  if (!(s.errors.eccentricity.eccentricity_m >= 0))
-    fail("errors.eccentricity_m", "expected ≥ 0 (use phase for the direction)");
+  if (!(s.errors.eccentricity.eccentricity_m >= 0)) fail("errors.eccentricity_m", "expected ≥ 0 (use phase for the direction)");
 }
 
 GearDimensions gear_dimensions(const GearSpec& s) {
@@ -101,22 +91,19 @@ GearDimensions gear_dimensions(const GearSpec& s) {
       throw InputError(msg.str());
     }
     d.form_radius_m = std::hypot(d.base_radius_m, form_roll);
-    if (s.bore_diameter_m / 2 >= d.root_radius_m)
-      throw InputError(who + ": bore_diameter_m: the bore reaches the root circle");
+    if (s.bore_diameter_m / 2 >= d.root_radius_m) throw InputError(who + ": bore_diameter_m: the bore reaches the root circle");
     // Span over k teeth: W = m cos α [π(k − ½) + z inv α] + 2 x m sin α, less the thinning.
     d.span_teeth = std::max(1, static_cast<int>(std::lround(z * a / kPi + 0.5)));
-    d.span_m = m * std::cos(a) * (kPi * (d.span_teeth - 0.5) + z * involute(a)) +
-               2 * x * m * std::sin(a) - 2 * s.thinning_per_flank_m;
+    d.span_m = m * std::cos(a) * (kPi * (d.span_teeth - 0.5) + z * involute(a)) + 2 * x * m * std::sin(a) - 2 * s.thinning_per_flank_m;
   } else {
     d.tip_radius_m = d.reference_radius_m - m * (s.addendum_coeff - x);
     d.root_radius_m = d.reference_radius_m + m * (s.dedendum_coeff + x);
     if (d.tip_radius_m <= d.base_radius_m)
-      throw InputError(who + ": internal tip circle lies inside the base circle; the tooth tip"
-                             " cannot be an involute (lower addendum_coeff or raise profile_shift)");
-    d.form_radius_m = std::hypot(d.base_radius_m,
-                                 internal_form_roll_length(s, d.base_radius_m, d.root_radius_m));
-    if (s.rim_diameter_m / 2 <= d.root_radius_m)
-      throw InputError(who + ": rim_diameter_m: the rim must lie outside the root circle");
+      throw InputError(who +
+                       ": internal tip circle lies inside the base circle; the tooth tip"
+                       " cannot be an involute (lower addendum_coeff or raise profile_shift)");
+    d.form_radius_m = std::hypot(d.base_radius_m, internal_form_roll_length(s, d.base_radius_m, d.root_radius_m));
+    if (s.rim_diameter_m / 2 <= d.root_radius_m) throw InputError(who + ": rim_diameter_m: the rim must lie outside the root circle");
   }
   // Tooth thickness on the tip circle from the involute: s_a = d_a (s/d + inv α − inv α_a).
   const double alpha_tip = pressure_angle_at(d.base_radius_m, d.tip_radius_m);
@@ -129,8 +116,7 @@ GearDimensions gear_dimensions(const GearSpec& s) {
     tip_half_angle = kPi / z - (space_half + involute(a) - involute(alpha_tip));
   }
   d.tip_thickness_m = 2.0 * tip_half_angle * d.tip_radius_m;
-  if (d.tip_thickness_m <= 0)
-    throw InputError(who + ": pointed teeth: the flanks cross below the tip circle");
+  if (d.tip_thickness_m <= 0) throw InputError(who + ": pointed teeth: the flanks cross below the tip circle");
   return d;
 }
 

@@ -9,13 +9,13 @@ namespace gearsim {
 
 struct GearDimensions {
   double reference_radius_m = 0;  // r = m·z/2
-  double base_radius_m = 0;       // r_b = r·cos α
-  double tip_radius_m = 0;        // external: r + m(h_a* + x); internal: r − m(h_a* − x)
-  double root_radius_m = 0;       // external: r − m(h_f* − x); internal: r + m(h_f* + x)
+  double base_radius_m = 0;  // r_b = r·cos α
+  double tip_radius_m = 0;  // external: r + m(h_a* + x); internal: r − m(h_a* − x)
+  double root_radius_m = 0;  // external: r − m(h_f* − x); internal: r + m(h_f* + x)
   // Where the involute meets the root fillet (the generated form circle, d_Ff/2).
   double form_radius_m = 0;
-  double pitch_m = 0;             // p = π·m
-  double base_pitch_m = 0;        // p_b = π·m·cos α
+  double pitch_m = 0;  // p = π·m
+  double base_pitch_m = 0;  // p_b = π·m·cos α
   // Arc tooth thickness and space width on the reference circle, thinning included.
   double tooth_thickness_m = 0;
   double space_width_m = 0;

@@ -78,7 +78,7 @@ class SignedDistance {
   static constexpr std::size_t kRun = 32;
   struct Run {
     std::size_t begin, end;  // segments (i − 1, i) for i in [begin, end)
-    Vector2d lo, hi;         // their bounding box
+    Vector2d lo, hi;  // their bounding box
   };
   const std::vector<Vector2d>& v_;
   std::vector<Run> runs_;
@@ -140,8 +140,7 @@ double zero_backlash_centre_distance(const GearSpec& a, const GearSpec& b) {
 MeshGeometry analyse_mesh(const GearSpec& a, const GearSpec& b, double centre_distance_m) {
   const std::string pair = "mesh " + a.name + "–" + b.name;
   if (a.kind != GearKind::External) throw InputError(pair + ": the first gear must be external");
-  if (std::abs(a.module_m - b.module_m) > 1e-12 ||
-      std::abs(a.pressure_angle_rad - b.pressure_angle_rad) > 1e-12)
+  if (std::abs(a.module_m - b.module_m) > 1e-12 || std::abs(a.pressure_angle_rad - b.pressure_angle_rad) > 1e-12)
     throw InputError(pair + ": gears of different module or pressure angle cannot mesh");
   const GearDimensions da = gear_dimensions(a), db = gear_dimensions(b);
   MeshGeometry m;
@@ -151,8 +150,8 @@ MeshGeometry analyse_mesh(const GearSpec& a, const GearSpec& b, double centre_di
   m.base_pitch_m = da.base_pitch_m;
   const double rb_sum = m.internal ? db.base_radius_m - da.base_radius_m : da.base_radius_m + db.base_radius_m;
   if (!(centre_distance_m > rb_sum))
-    throw InputError(pair + ": centre distance " + std::to_string(centre_distance_m * 1e3) +
-                     " mm does not exceed the base circles' " + std::to_string(rb_sum * 1e3) + " mm");
+    throw InputError(pair + ": centre distance " + std::to_string(centre_distance_m * 1e3) + " mm does not exceed the base circles' " +
+                     std::to_string(rb_sum * 1e3) + " mm");
   m.working_pressure_angle_rad = std::acos(rb_sum / centre_distance_m);
   const double line = centre_distance_m * std::sin(m.working_pressure_angle_rad);  // T1T2
   const double tip_roll_a = roll_length_at(da.base_radius_m, da.tip_radius_m);
@@ -173,8 +172,8 @@ MeshGeometry analyse_mesh(const GearSpec& a, const GearSpec& b, double centre_di
   } else {
     // Internal: the ring's roll length equals the pinion's plus T1T2; the ring's involute runs
     // from its tip (inside) out to its form circle.
-    m.active_start_roll_a_m = tip_roll_b - line;         // ring tip meets pinion here
-    m.active_start_roll_b_m = tip_roll_a + line;         // pinion tip meets ring here (deepest)
+    m.active_start_roll_a_m = tip_roll_b - line;  // ring tip meets pinion here
+    m.active_start_roll_b_m = tip_roll_a + line;  // pinion tip meets ring here (deepest)
     m.contact_length_m = tip_roll_a - tip_roll_b + line;
     const double start_a = std::max(m.active_start_roll_a_m, m.form_roll_a_m);
     const double end_a_limited = std::min(tip_roll_a, m.form_roll_b_m - line);
@@ -184,16 +183,15 @@ MeshGeometry analyse_mesh(const GearSpec& a, const GearSpec& b, double centre_di
   std::ostringstream note;
   note.precision(4);
   if (m.active_start_roll_a_m < m.form_roll_a_m) {
-    note << b.name << "'s tips reach " << a.name << " below its form circle (roll length "
-         << m.active_start_roll_a_m * 1e3 << " mm < " << m.form_roll_a_m * 1e3 << " mm): contact in the fillet region";
+    note << b.name << "'s tips reach " << a.name << " below its form circle (roll length " << m.active_start_roll_a_m * 1e3 << " mm < "
+         << m.form_roll_a_m * 1e3 << " mm): contact in the fillet region";
     m.problems.push_back(note.str());
     note.str("");
   }
-  const bool b_beyond = m.internal ? m.active_start_roll_b_m > m.form_roll_b_m
-                                   : m.active_start_roll_b_m < m.form_roll_b_m;
+  const bool b_beyond = m.internal ? m.active_start_roll_b_m > m.form_roll_b_m : m.active_start_roll_b_m < m.form_roll_b_m;
   if (b_beyond) {
-    note << a.name << "'s tips reach " << b.name << " beyond its form circle (roll length "
-         << m.active_start_roll_b_m * 1e3 << " mm vs form " << m.form_roll_b_m * 1e3 << " mm)";
+    note << a.name << "'s tips reach " << b.name << " beyond its form circle (roll length " << m.active_start_roll_b_m * 1e3
+         << " mm vs form " << m.form_roll_b_m * 1e3 << " mm)";
     m.problems.push_back(note.str());
     note.str("");
   }

@@ -11,9 +11,9 @@
 namespace gearsim {
 
 struct MeshGeometry {
-  bool internal = false;             // b is an internal gear
-  double ratio = 0;                  // z_b / z_a
-  double centre_distance_m = 0;      // operating centre distance
+  bool internal = false;  // b is an internal gear
+  double ratio = 0;  // z_b / z_a
+  double centre_distance_m = 0;  // operating centre distance
   double working_pressure_angle_rad = 0;
   double base_pitch_m = 0;
   // Length of the path of contact limited by the tip circles, and the contact ratio it gives.

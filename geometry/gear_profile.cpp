@@ -44,8 +44,7 @@ std::vector<ToothMods> collect_mods(const GearSpec& s, const GearDimensions& d) 
     t.cw.rotation_rad = +s.thinning_per_flank_m / d.base_radius_m;
   }
   for (const FlankOffset& f : s.errors.flank_offsets)
-    flank_of(mods[f.tooth], f.flank).rotation_rad +=
-        outward_sign(f.flank) * f.normal_offset_m / d.base_radius_m;
+    flank_of(mods[f.tooth], f.flank).rotation_rad += outward_sign(f.flank) * f.normal_offset_m / d.base_radius_m;
   for (const PitchError& p : s.errors.pitch_errors) {
     mods[p.tooth].ccw.rotation_rad += p.error_m / d.reference_radius_m;
     mods[p.tooth].cw.rotation_rad += p.error_m / d.reference_radius_m;
@@ -72,9 +71,13 @@ ToothFrame make_frame(const GearSpec& s, const GearDimensions& d) {
   const double nominal_half = (kPi / 2 + (internal ? -2 : 2) * s.profile_shift * std::tan(a)) / s.teeth;
   // External: Cw flank at polar angle −(ψ + inv α − inv α_r). Internal: the flank bounds the space
   // centred at −π/z, whose half angle is η + inv α − inv α_r with η = π/z − ψ.
-  const double start = internal ? -kPi / s.teeth + (kPi / s.teeth - nominal_half) + involute(a)
-                                : -(nominal_half + involute(a));
-  return {s, d, internal, d.base_radius_m, start, roll_length_at(d.base_radius_m, d.form_radius_m),
+  const double start = internal ? -kPi / s.teeth + (kPi / s.teeth - nominal_half) + involute(a) : -(nominal_half + involute(a));
+  return {s,
+          d,
+          internal,
+          d.base_radius_m,
+          start,
+          roll_length_at(d.base_radius_m, d.form_radius_m),
           roll_length_at(d.base_radius_m, d.tip_radius_m)};
 }
 
@@ -123,8 +126,7 @@ Trochoid make_trochoid(const GearSpec& s, const GearDimensions& d) {
   // reference line); the tip circle is tangent to it and to the tip line.
   const double v_ref = t.v_centre - s.profile_shift * m;
   t.u_centre = kPi * m / 4 - v_ref * std::tan(a) + t.rho / std::cos(a);
-  if (t.v_centre >= 0)
-    throw InputError("gear '" + s.name + "': profile_shift too large for the rack's fillet geometry");
+  if (t.v_centre >= 0) throw InputError("gear '" + s.name + "': profile_shift too large for the rack's fillet geometry");
   t.phi_root = -t.u_centre / t.r;
   t.phi_flank = (t.v_centre / std::tan(a) - t.u_centre) / t.r;
   return t;
@@ -199,19 +201,15 @@ std::vector<Vector2d> toothed_loop(const GearSpec& s, const GearDimensions& d) {
     const ToothMods& m = mods[k];
     // Cw half: fillet from the root, then the involute from form to tip circle.
     tessellate_curve(fillet(theta, m.cw, Flank::Cw), 0.0, 1.0, tol, loop);
-    tessellate_curve([&](double L) { return flank_at(f, theta, m.cw, Flank::Cw, L); }, f.roll_form,
-                     f.roll_tip, tol, loop);
+    tessellate_curve([&](double L) { return flank_at(f, theta, m.cw, Flank::Cw, L); }, f.roll_form, f.roll_tip, tol, loop);
     // Tip arc (top land of an external tooth, inner land of an internal one).
     const double tip0 = angle_of(flank_at(f, theta, m.cw, Flank::Cw, f.roll_tip));
     const double tip1 = angle_of(flank_at(f, theta, m.ccw, Flank::Ccw, f.roll_tip));
     const double tip_span = angle_between(tip0, tip1);
-    if (tip_span <= 0)
-      throw InputError("gear '" + s.name + "': tooth " + std::to_string(k) +
-                       ": flank errors make the tooth pointed");
+    if (tip_span <= 0) throw InputError("gear '" + s.name + "': tooth " + std::to_string(k) + ": flank errors make the tooth pointed");
     tessellate_arc(origin, d.tip_radius_m, tip0, tip0 + tip_span, tol, loop);
     // Ccw half: involute from tip down to form circle, then the fillet to the root.
-    tessellate_curve([&](double L) { return flank_at(f, theta, m.ccw, Flank::Ccw, L); }, f.roll_tip,
-                     f.roll_form, tol, loop);
+    tessellate_curve([&](double L) { return flank_at(f, theta, m.ccw, Flank::Ccw, L); }, f.roll_tip, f.roll_form, tol, loop);
     tessellate_curve(fillet(theta, m.ccw, Flank::Ccw), 0.0, 1.0, tol, loop);
     // Root arc to the next tooth's Cw fillet.
     const int next = (k + 1) % s.teeth;
@@ -219,8 +217,8 @@ std::vector<Vector2d> toothed_loop(const GearSpec& s, const GearDimensions& d) {
     const double root1 = angle_of(fillet(s.tooth0_angle_rad + next * step, mods[next].cw, Flank::Cw)(0.0));
     const double root_span = angle_between(root0, root1);
     if (root_span < 0)
-      throw InputError("gear '" + s.name + "': between teeth " + std::to_string(k) + " and " +
-                       std::to_string(next) + " the root fillets overlap: flank errors too large");
+      throw InputError("gear '" + s.name + "': between teeth " + std::to_string(k) + " and " + std::to_string(next) +
+                       " the root fillets overlap: flank errors too large");
     tessellate_arc(origin, root_r, root0, root0 + root_span, tol, loop);
   }
   // Geometric eccentricity shifts the toothing, not the rotation axis.
@@ -244,8 +242,7 @@ GearOutline make_gear_outline(const GearSpec& s) {
   Polygon2 teeth{toothed_loop(s, g.dims)};
   if (s.kind == GearKind::External) {
     g.outline.outer = std::move(teeth);
-    if (s.bore_diameter_m > 0)
-      g.outline.holes.push_back(circle(s.bore_diameter_m / 2, s.chordal_deviation_m, true));
+    if (s.bore_diameter_m > 0) g.outline.holes.push_back(circle(s.bore_diameter_m / 2, s.chordal_deviation_m, true));
   } else {
     g.outline.outer = circle(s.rim_diameter_m / 2, s.chordal_deviation_m, false);
     std::reverse(teeth.points.begin(), teeth.points.end());
@@ -254,24 +251,20 @@ GearOutline make_gear_outline(const GearSpec& s) {
   return g;
 }
 
-Vector2d flank_point(const GearSpec& s, const GearDimensions& d, int tooth, Flank flank,
-                     double radius_m) {
+Vector2d flank_point(const GearSpec& s, const GearDimensions& d, int tooth, Flank flank, double radius_m) {
   const ToothFrame f = make_frame(s, d);
   const ToothMods m = collect_mods(s, d).at(tooth);
   const double theta = s.tooth0_angle_rad + tooth * 2 * kPi / s.teeth;
-  Vector2d p = flank_at(f, theta, flank == Flank::Ccw ? m.ccw : m.cw, flank,
-                        roll_length_at(d.base_radius_m, radius_m));
+  Vector2d p = flank_at(f, theta, flank == Flank::Ccw ? m.ccw : m.cw, flank, roll_length_at(d.base_radius_m, radius_m));
   const Eccentricity& e = s.errors.eccentricity;
   return p + e.eccentricity_m * unit(e.phase_rad);
 }
 
-Vector2d flank_normal(const GearSpec& s, const GearDimensions& d, int tooth, Flank flank,
-                      double radius_m) {
+Vector2d flank_normal(const GearSpec& s, const GearDimensions& d, int tooth, Flank flank, double radius_m) {
   // Perpendicular to the flank's tangent, from a central difference over ±h along the radius
   // (h = 1e-4 of the radius: truncation error ~h²·curvature, far below 1e-9 in direction).
   const double h = 1e-4 * radius_m;
-  const Vector2d t = flank_point(s, d, tooth, flank, radius_m + h) -
-                     flank_point(s, d, tooth, flank, radius_m - h);
+  const Vector2d t = flank_point(s, d, tooth, flank, radius_m + h) - flank_point(s, d, tooth, flank, radius_m - h);
   Vector2d n(t.y(), -t.x());
   n.normalize();
   // Out of the tooth: a Cw flank faces decreasing polar angle, a Ccw flank increasing.

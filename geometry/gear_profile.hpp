@@ -24,11 +24,9 @@ GearOutline make_gear_outline(const GearSpec& spec);
 
 // The exact (untessellated) point of the involute of one flank of one tooth at a radius between
 // the form and tip circles, errors included: what the tessellated outline approximates.
-Eigen::Vector2d flank_point(const GearSpec& spec, const GearDimensions& dims, int tooth,
-                            Flank flank, double radius_m);
+Eigen::Vector2d flank_point(const GearSpec& spec, const GearDimensions& dims, int tooth, Flank flank, double radius_m);
 
 // Unit normal of that flank at that radius, pointing out of the tooth material.
-Eigen::Vector2d flank_normal(const GearSpec& spec, const GearDimensions& dims, int tooth,
-                             Flank flank, double radius_m);
+Eigen::Vector2d flank_normal(const GearSpec& spec, const GearDimensions& dims, int tooth, Flank flank, double radius_m);
 
 }  // namespace gearsim

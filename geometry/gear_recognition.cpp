@@ -25,8 +25,10 @@ Result<RecognisedGear> recognise_gear(const Outline2& outline) {
   std::ostringstream why;
   for (int l = -1; l < static_cast<int>(outline.holes.size()); ++l) {
     LoopTeeth lt = loop_teeth(l < 0 ? outline.outer : outline.holes[static_cast<std::size_t>(l)], l < 0);
-    if (lt.teeth > 0 && lt.amplitude_m > best.amplitude_m) best = std::move(lt), best_loop = l;
-    else if (lt.teeth == 0) why << (why.tellp() > 0 ? "; " : "") << (l < 0 ? "outer loop" : "hole " + std::to_string(l)) << ": " << lt.why;
+    if (lt.teeth > 0 && lt.amplitude_m > best.amplitude_m)
+      best = std::move(lt), best_loop = l;
+    else if (lt.teeth == 0)
+      why << (why.tellp() > 0 ? "; " : "") << (l < 0 ? "outer loop" : "hole " + std::to_string(l)) << ": " << lt.why;
   }
   if (best_loop == -2) return Refusal{"no loop of the outline has teeth (" + why.str() + ")"};
   RecognisedGear g;
@@ -50,8 +52,8 @@ Result<RecognisedGear> recognise_gear(const Outline2& outline) {
   }
   if (teeth.empty()) {
     std::ostringstream m;
-    m << "the toothed loop repeats " << g.teeth << " times but its mid-depth circle (r = "
-      << 0.5 * (best.r_min + best.r_max) * 1e3 << " mm) does not cross it twice per tooth";
+    m << "the toothed loop repeats " << g.teeth << " times but its mid-depth circle (r = " << 0.5 * (best.r_min + best.r_max) * 1e3
+      << " mm) does not cross it twice per tooth";
     return Refusal{m.str()};
   }
   g.axis_m = best.centre;

@@ -62,8 +62,10 @@ double best_base_radius(const FlankPoints& f, const std::vector<int>& use, doubl
   double x1 = b - g * (b - a), x2 = a + g * (b - a);
   double f1 = fit_at(f, use, sigma, x1, &c), f2 = fit_at(f, use, sigma, x2, &c);
   for (int it = 0; it < 100 && b - a > 1e-12 * r_lo; ++it) {
-    if (f1 < f2) b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = fit_at(f, use, sigma, x1, &c);
-    else a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = fit_at(f, use, sigma, x2, &c);
+    if (f1 < f2)
+      b = x2, x2 = x1, f2 = f1, x1 = b - g * (b - a), f1 = fit_at(f, use, sigma, x1, &c);
+    else
+      a = x1, x1 = x2, f1 = f2, x2 = a + g * (b - a), f2 = fit_at(f, use, sigma, x2, &c);
   }
   return 0.5 * (a + b);
 }
@@ -107,9 +109,7 @@ InvoluteFit fit_flank(const FlankPoints& f, const RecognisedGear& g) {
       if (radii[i] - radii[i - 1] > kDistinctRadius * depth) ++distinct;
     return distinct >= 3 && window.size() >= 4;
   };
-  if (!select(kTipMargin, g.internal ? kRootMarginInternal : kRootMarginExternal) &&
-      !select(kTipMarginWide, kRootMarginWide))
-    return fit;
+  if (!select(kTipMargin, g.internal ? kRootMarginInternal : kRootMarginExternal) && !select(kTipMarginWide, kRootMarginWide)) return fit;
   std::vector<int> use = window;
   double rb = 0, c = 0;
   for (int pass = 0; pass < 4; ++pass) {
@@ -138,7 +138,8 @@ InvoluteFit fit_flank(const FlankPoints& f, const RecognisedGear& g) {
   for (int i = 0; i < static_cast<int>(f.r.size()); ++i) {
     const double e = f.r[i] >= rb ? std::abs(f.y[i] + sigma * inv_at(rb, f.r[i]) - c) * rb : 1e300;
     const bool in_window = f.r[i] >= lo && f.r[i] <= hi;
-    if (e <= tol) fit.active_from_m = std::min(fit.active_from_m, f.r[i]), fit.active_to_m = std::max(fit.active_to_m, f.r[i]);
+    if (e <= tol)
+      fit.active_from_m = std::min(fit.active_from_m, f.r[i]), fit.active_to_m = std::max(fit.active_to_m, f.r[i]);
     else if (in_window) {
       if (std::find(fit.outlier_teeth.begin(), fit.outlier_teeth.end(), f.tooth[i]) == fit.outlier_teeth.end())
         fit.outlier_teeth.push_back(f.tooth[i]);

@@ -145,11 +145,12 @@ LoopTeeth loop_teeth(const Polygon2& p, bool outer) {
   if (lt.amplitude_m < kMinFundamental * depth)
     why << "no tooth wave (strongest " << best << "-fold amplitude " << lt.amplitude_m / depth << " of the depth)";
   else if (lt.residual_m > kMaxSymmetryResidual * depth)
-    why << "not " << best << "-fold symmetric (rms difference between neighbouring pitches " << lt.residual_m * 1e6
-        << " um, " << lt.residual_m / depth * 100 << " % of the depth)";
+    why << "not " << best << "-fold symmetric (rms difference between neighbouring pitches " << lt.residual_m * 1e6 << " um, "
+        << lt.residual_m / depth * 100 << " % of the depth)";
   else if (depth < kMinDepthToPitch * pitch_arc)
     why << "a " << best << "-sided polygon (depth " << depth / pitch_arc << " of the pitch), not teeth";
-  else lt.teeth = best;
+  else
+    lt.teeth = best;
   lt.why = why.str();
   return lt;
 }

@@ -67,8 +67,8 @@ struct GearSpec {
   double pressure_angle_rad = constants::kDefaultPressureAngle_rad;
   double face_width_m = 0.0;
   double profile_shift = 0.0;  // x, in modules; for internal gears + moves the profile outward
-  double addendum_coeff = constants::kAddendumCoeff;    // h_a*, in modules
-  double dedendum_coeff = constants::kDedendumCoeff;    // h_f*, in modules
+  double addendum_coeff = constants::kAddendumCoeff;  // h_a*, in modules
+  double dedendum_coeff = constants::kDedendumCoeff;  // h_f*, in modules
   double root_fillet_coeff = constants::kRootFilletCoeff;  // cutter tip radius ρ*, in modules
   double thinning_per_flank_m = 0.0;  // backlash allowance: each flank moved inward along its normal
   // External gears: bore diameter (0 = solid). Internal gears: outer rim diameter (required).

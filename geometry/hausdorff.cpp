@@ -22,14 +22,12 @@ using Vec3 = Eigen::Vector3d;
 constexpr double kMaxSamples = 2e8;
 
 void require_mesh(const TriMesh& m, const char* name) {
-  if (m.triangles.empty())
-    throw InputError(std::string("hausdorff: mesh ") + name + " has no triangles");
+  if (m.triangles.empty()) throw InputError(std::string("hausdorff: mesh ") + name + " has no triangles");
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (std::uint32_t v : m.triangles[t])
       if (v >= m.vertices.size())
-        throw InputError(std::string("hausdorff: mesh ") + name + " triangle " + std::to_string(t) +
-                         " uses vertex " + std::to_string(v) + " of " +
-                         std::to_string(m.vertices.size()));
+        throw InputError(std::string("hausdorff: mesh ") + name + " triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) +
+                         " of " + std::to_string(m.vertices.size()));
 }
 
 Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
@@ -42,11 +40,8 @@ Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
 Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   if (ab.cross(ac).squaredNorm() <= 1e-30 * ab.squaredNorm() * ac.squaredNorm()) {  // degenerate
-    const Vec3 q[3] = {closest_on_segment(p, a, b), closest_on_segment(p, b, c),
-                       closest_on_segment(p, c, a)};
-    return *std::min_element(q, q + 3, [&](const Vec3& x, const Vec3& y) {
-      return (x - p).squaredNorm() < (y - p).squaredNorm();
-    });
+    const Vec3 q[3] = {closest_on_segment(p, a, b), closest_on_segment(p, b, c), closest_on_segment(p, c, a)};
+    return *std::min_element(q, q + 3, [&](const Vec3& x, const Vec3& y) { return (x - p).squaredNorm() < (y - p).squaredNorm(); });
   }
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0 && d2 <= 0) return a;
@@ -61,8 +56,7 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-    return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
   // Inside: drop p onto the plane (well conditioned even for slivers, unlike the barycentrics).
   const Vec3 n = ab.cross(ac);
   return p - n * (ap.dot(n) / n.squaredNorm());
@@ -77,9 +71,7 @@ class TriangleGrid {
     double area = 0.0;
     for (const auto& t : mesh.triangles) {
       for (auto v : t) lo_ = lo_.cwiseMin(mesh.vertices[v]), hi_ = hi_.cwiseMax(mesh.vertices[v]);
-      area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]])
-                        .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]])
-                        .norm();
+      area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
     }
     const double ntri = double(mesh.triangles.size());
     cell_ = std::max(std::sqrt(area / ntri), 1e-9 * (hi_ - lo_).norm() + 1e-300);
@@ -96,8 +88,7 @@ class TriangleGrid {
       for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& tri = mesh.triangles[t];
         Vec3 tlo = mesh.vertices[tri[0]], thi = tlo;
-        for (auto v : tri)
-          tlo = tlo.cwiseMin(mesh.vertices[v]), thi = thi.cwiseMax(mesh.vertices[v]);
+        for (auto v : tri) tlo = tlo.cwiseMin(mesh.vertices[v]), thi = thi.cwiseMax(mesh.vertices[v]);
         const auto a = cell_of(tlo), b = cell_of(thi);
         const bool one_cell = a == b;
         for (int z = a[2]; z <= b[2]; ++z)
@@ -124,10 +115,7 @@ class TriangleGrid {
     double best = std::numeric_limits<double>::infinity();
     auto test = [&](int t) {
       const auto& tri = mesh_.triangles[std::size_t(t)];
-      const double d = (closest_on_triangle(p, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]],
-                                            mesh_.vertices[tri[2]]) -
-                        p)
-                           .norm();
+      const double d = (closest_on_triangle(p, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]) - p).norm();
       if (d < best) best = d, hint_ = t;
     };
     if (hint_ >= 0) {
@@ -138,13 +126,11 @@ class TriangleGrid {
     const auto c = cell_of(p);
     for (int r = 0;; ++r) {
       std::array<int, 3> a, b;
-      for (int i = 0; i < 3; ++i)
-        a[i] = std::max(c[i] - r, 0), b[i] = std::min(c[i] + r, n_[i] - 1);
+      for (int i = 0; i < 3; ++i) a[i] = std::max(c[i] - r, 0), b[i] = std::min(c[i] + r, n_[i] - 1);
       for (int z = a[2]; z <= b[2]; ++z)
         for (int y = a[1]; y <= b[1]; ++y)
           for (int x = a[0]; x <= b[0]; ++x) {
-            if (std::max({std::abs(x - c[0]), std::abs(y - c[1]), std::abs(z - c[2])}) != r)
-              continue;
+            if (std::max({std::abs(x - c[0]), std::abs(y - c[1]), std::abs(z - c[2])}) != r) continue;
             for (int k = start_[index(x, y, z)]; k < start_[index(x, y, z) + 1]; ++k) {
               const int t = items_[std::size_t(k)];
               if (stamp_[std::size_t(t)] == query_) continue;
@@ -166,20 +152,16 @@ class TriangleGrid {
   // Conservative: the triangle comes within the cell's circumscribed sphere.
   bool touches(const std::array<std::uint32_t, 3>& tri, int x, int y, int z) const {
     const Vec3 centre = lo_ + cell_ * Vec3(x + 0.5, y + 0.5, z + 0.5);
-    const Vec3 q = closest_on_triangle(centre, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]],
-                                       mesh_.vertices[tri[2]]);
+    const Vec3 q = closest_on_triangle(centre, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]);
     return (q - centre).norm() <= 0.8660254037844387 * cell_ * (1.0 + 1e-9);  // sqrt(3) / 2
   }
   std::array<int, 3> cell_of(const Vec3& p) const {
     std::array<int, 3> c;
-    for (int i = 0; i < 3; ++i)
-      c[i] =
-          static_cast<int>(std::clamp(std::floor((p[i] - lo_[i]) / cell_), 0.0, double(n_[i] - 1)));
+    for (int i = 0; i < 3; ++i) c[i] = static_cast<int>(std::clamp(std::floor((p[i] - lo_[i]) / cell_), 0.0, double(n_[i] - 1)));
     return c;
   }
   std::size_t index(int x, int y, int z) const {
-    return (std::size_t(z) * std::size_t(n_[1]) + std::size_t(y)) * std::size_t(n_[0]) +
-           std::size_t(x);
+    return (std::size_t(z) * std::size_t(n_[1]) + std::size_t(y)) * std::size_t(n_[0]) + std::size_t(x);
   }
 
   const TriMesh& mesh_;
@@ -205,8 +187,7 @@ double directed_hausdorff(const TriMesh& from, TriangleGrid& to, double spacing)
       stack.pop_back();
       int k = 0;  // longest edge: tri[k] -> tri[k + 1]
       for (int j = 1; j < 3; ++j)
-        if ((tri[(j + 1) % 3] - tri[j]).squaredNorm() > (tri[(k + 1) % 3] - tri[k]).squaredNorm())
-          k = j;
+        if ((tri[(j + 1) % 3] - tri[j]).squaredNorm() > (tri[(k + 1) % 3] - tri[k]).squaredNorm()) k = j;
       if ((tri[(k + 1) % 3] - tri[k]).norm() <= spacing) continue;
       const Vec3 m = 0.5 * (tri[k] + tri[(k + 1) % 3]);
       visit(m);
@@ -221,16 +202,14 @@ double estimated_samples(const TriMesh& m, double spacing) {
   double n = 0.0;
   for (const auto& t : m.triangles) {
     const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
-    n += 3.0 + 4.0 * (b - a).cross(c - a).norm() / (spacing * spacing) +
-         ((b - a).norm() + (c - b).norm() + (a - c).norm()) / spacing;
+    n += 3.0 + 4.0 * (b - a).cross(c - a).norm() / (spacing * spacing) + ((b - a).norm() + (c - b).norm() + (a - c).norm()) / spacing;
   }
   return n;
 }
 
 double volume(const TriMesh& m) {
   double v = 0.0;
-  for (const auto& t : m.triangles)
-    v += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]]));
+  for (const auto& t : m.triangles) v += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]]));
   return v / 6.0;
 }
 
@@ -250,9 +229,7 @@ struct EdgeKeyHash {
     return std::size_t(h);
   }
 };
-EdgeKey edge_key(const Vec3& a, const Vec3& b) {
-  return {{a.x(), a.y(), a.z(), b.x(), b.y(), b.z()}};
-}
+EdgeKey edge_key(const Vec3& a, const Vec3& b) { return {{a.x(), a.y(), a.z(), b.x(), b.y(), b.z()}}; }
 
 }  // namespace
 
@@ -260,16 +237,13 @@ double hausdorff_distance(const TriMesh& a, const TriMesh& b, double sample_spac
   require_mesh(a, "a");
   require_mesh(b, "b");
   if (!(sample_spacing_m > 0) || !std::isfinite(sample_spacing_m))
-    throw InputError("hausdorff: sample spacing " + std::to_string(sample_spacing_m) +
-                     " m: need > 0");
-  const double samples =
-      estimated_samples(a, sample_spacing_m) + estimated_samples(b, sample_spacing_m);
+    throw InputError("hausdorff: sample spacing " + std::to_string(sample_spacing_m) + " m: need > 0");
+  const double samples = estimated_samples(a, sample_spacing_m) + estimated_samples(b, sample_spacing_m);
   if (samples > kMaxSamples)
-    throw InputError("hausdorff: sample spacing " + std::to_string(sample_spacing_m) +
-                     " m needs ~" + std::to_string(samples) + " samples; use a coarser spacing");
+    throw InputError("hausdorff: sample spacing " + std::to_string(sample_spacing_m) + " m needs ~" + std::to_string(samples) +
+                     " samples; use a coarser spacing");
   TriangleGrid grid_a(a), grid_b(b);
-  return std::max(directed_hausdorff(a, grid_b, sample_spacing_m),
-                  directed_hausdorff(b, grid_a, sample_spacing_m));
+  return std::max(directed_hausdorff(a, grid_b, sample_spacing_m), directed_hausdorff(b, grid_a, sample_spacing_m));
 }
 
 TriMesh union_boundary(const ConvexPieces3& pieces) {
@@ -289,7 +263,7 @@ TriMesh union_boundary(const ConvexPieces3& pieces) {
     const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
     mesh.vertices.insert(mesh.vertices.end(), pts.begin(), pts.end());
     for (std::uint32_t i = 1; i + 1 < n; ++i) {
-      mesh.triangles.push_back({base, base + i + 1, base + i});              // bottom cap
+      mesh.triangles.push_back({base, base + i + 1, base + i});  // bottom cap
       mesh.triangles.push_back({base + n, base + n + i, base + n + i + 1});  // top cap
     }
     for (std::uint32_t i = 0; i < n; ++i) {  // walls only where no neighbour shares the edge
@@ -302,8 +276,7 @@ TriMesh union_boundary(const ConvexPieces3& pieces) {
   return mesh;
 }
 
-DecompositionDeviation decomposition_deviation(const TriMesh& input, const ConvexPieces3& pieces,
-                                               double sample_spacing_m) {
+DecompositionDeviation decomposition_deviation(const TriMesh& input, const ConvexPieces3& pieces, double sample_spacing_m) {
   DecompositionDeviation d;
   const TriMesh boundary = union_boundary(pieces);
   d.union_boundary_triangles = boundary.triangles.size();

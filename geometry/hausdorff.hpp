@@ -22,15 +22,14 @@ double hausdorff_distance(const TriMesh& a, const TriMesh& b, double sample_spac
 TriMesh union_boundary(const ConvexPieces3& pieces);
 
 struct DecompositionDeviation {
-  double hausdorff_m = 0.0;            // input surface vs union boundary, m
-  double input_volume_m3 = 0.0;        // divergence theorem over the input triangles, m^3
-  double pieces_volume_m3 = 0.0;       // sum of the piece prisms' volumes, m^3
+  double hausdorff_m = 0.0;  // input surface vs union boundary, m
+  double input_volume_m3 = 0.0;  // divergence theorem over the input triangles, m^3
+  double pieces_volume_m3 = 0.0;  // sum of the piece prisms' volumes, m^3
   double relative_volume_error = 0.0;  // (pieces - input) / input: the area check times height
   std::size_t union_boundary_triangles = 0;
 };
 
 // How far the convex pieces' union deviates from the input mesh, measured (see file comment).
-DecompositionDeviation decomposition_deviation(const TriMesh& input, const ConvexPieces3& pieces,
-                                               double sample_spacing_m);
+DecompositionDeviation decomposition_deviation(const TriMesh& input, const ConvexPieces3& pieces, double sample_spacing_m);
 
 }  // namespace gearsim

@@ -15,8 +15,10 @@ double inverse_involute(double value) {
   double a = std::min(std::cbrt(3.0 * value), 1.5);  // inv α ≈ α³/3 for small α
   for (int i = 0; i < 200; ++i) {
     const double f = involute(a) - value;
-    if (f > 0) hi = a;
-    else lo = a;
+    if (f > 0)
+      hi = a;
+    else
+      lo = a;
     const double t = std::tan(a);
     double next = a - f / (t * t);  // d(inv α)/dα = tan² α
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);

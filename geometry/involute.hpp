@@ -13,9 +13,7 @@ inline double involute(double alpha_rad) { return std::tan(alpha_rad) - alpha_ra
 double inverse_involute(double value);
 
 // Pressure angle of the involute of base radius rb at radius r ≥ rb.
-inline double pressure_angle_at(double base_radius_m, double radius_m) {
-  return std::acos(base_radius_m / radius_m);
-}
+inline double pressure_angle_at(double base_radius_m, double radius_m) { return std::acos(base_radius_m / radius_m); }
 
 // Roll length (distance from the base-circle tangent point) of the involute point at radius r.
 inline double roll_length_at(double base_radius_m, double radius_m) {

@@ -20,14 +20,13 @@ InvoluteTeeth involute_teeth(const RecognisedGear& g) {
   t.internal = g.internal;
   t.base_radius_m = g.base_radius_m;
   t.base_half_angle_rad = 0.5 * (g.ccw.base_half_angle_rad + g.cw.base_half_angle_rad);
-  t.tip_radius_m = g.internal ? std::max(g.ccw.active_from_m, g.cw.active_from_m)
-                              : std::min(g.ccw.active_to_m, g.cw.active_to_m);
+  t.tip_radius_m = g.internal ? std::max(g.ccw.active_from_m, g.cw.active_from_m) : std::min(g.ccw.active_to_m, g.cw.active_to_m);
   t.thickness_tolerance_m = g.ccw.rms_m + g.cw.rms_m;
   t.standard_module_m = g.standard ? g.module_m : 0.0;
   t.base_radius_tolerance_m = 0.5 * std::abs(g.ccw.base_radius_m - g.cw.base_radius_m);
   if (g.standard)
-    t.base_radius_tolerance_m = std::max(t.base_radius_tolerance_m,
-                                         std::abs(g.base_radius_m - 0.5 * g.module_m * g.teeth * std::cos(g.pressure_angle_rad)));
+    t.base_radius_tolerance_m =
+        std::max(t.base_radius_tolerance_m, std::abs(g.base_radius_m - 0.5 * g.module_m * g.teeth * std::cos(g.pressure_angle_rad)));
   return t;
 }
 
@@ -46,8 +45,7 @@ InvoluteTeeth involute_teeth(const GearSpec& spec) {
   return t;
 }
 
-InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, double centre_distance_m,
-                           const std::string& who) {
+InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, double centre_distance_m, const std::string& who) {
   if (a.internal) return involute_pair(b, a, centre_distance_m, who);
   std::ostringstream msg;
   if (b.internal && a.internal) throw InputError(who + ": two internal gears do not mesh");
@@ -55,9 +53,8 @@ InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, doubl
   const double pb_a = 2 * kPi * a.base_radius_m / a.teeth, pb_b = 2 * kPi * b.base_radius_m / b.teeth;
   p.base_pitch_mismatch_m = std::abs(pb_a - pb_b);
   if (p.base_pitch_mismatch_m > kMaxBasePitchMismatch_m) {
-    msg << who << ": base pitches differ by " << p.base_pitch_mismatch_m * 1e6 << " um (" << pb_a * 1e3 << " and "
-        << pb_b * 1e3 << " mm; limit " << kMaxBasePitchMismatch_m * 1e6
-        << " um): these involutes cannot mesh (different module or pressure angle)";
+    msg << who << ": base pitches differ by " << p.base_pitch_mismatch_m * 1e6 << " um (" << pb_a * 1e3 << " and " << pb_b * 1e3
+        << " mm; limit " << kMaxBasePitchMismatch_m * 1e6 << " um): these involutes cannot mesh (different module or pressure angle)";
     throw InputError(msg.str());
   }
   const double za = a.teeth, zb = b.teeth, ba = a.base_half_angle_rad, bb = b.base_half_angle_rad;
@@ -73,8 +70,8 @@ InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, doubl
   p.zero_backlash_centre_distance_m = rb_sum / std::cos(inverse_involute(inv_w));
   p.centre_distance_m = centre_distance_m > 0 ? centre_distance_m : p.zero_backlash_centre_distance_m;
   if (p.centre_distance_m <= rb_sum) {
-    msg << who << ": at a centre distance of " << p.centre_distance_m * 1e3 << " mm the base circles (sum "
-        << rb_sum * 1e3 << " mm) leave no line of action";
+    msg << who << ": at a centre distance of " << p.centre_distance_m * 1e3 << " mm the base circles (sum " << rb_sum * 1e3
+        << " mm) leave no line of action";
     throw InputError(msg.str());
   }
   const double cos_w0 = rb_sum / p.zero_backlash_centre_distance_m;
@@ -108,8 +105,8 @@ PairPlacement place_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, const s
   msg.precision(7);
   const double standard = standard_centre_distance(a, b);
   if (standard > 0 && std::abs(standard - a0) <= u) {
-    msg << who << ": placed at the standard distance " << standard * 1e3 << " mm; the flank fits put zero backlash at "
-        << a0 * 1e3 << " mm ± " << u * 1e6 << " um";
+    msg << who << ": placed at the standard distance " << standard * 1e3 << " mm; the flank fits put zero backlash at " << a0 * 1e3
+        << " mm ± " << u * 1e6 << " um";
     return {standard, msg.str()};
   }
   const bool internal = a.internal || b.internal;
@@ -143,9 +140,8 @@ PairPlacement place_planetary(const InvoluteTeeth& sun, const InvoluteTeeth& pla
   if (use_standard || conflict) {
     std::ostringstream note;
     note.precision(7);
-    note << "planetary: " << both.str() << " (flank fits' tolerances " << u_sp * 1e6 << " and " << u_pr * 1e6
-         << " um): placed at " << (use_standard ? "the standard distance " : "the distance equally far into both, ")
-         << p.centre_distance_m * 1e3 << " mm";
+    note << "planetary: " << both.str() << " (flank fits' tolerances " << u_sp * 1e6 << " and " << u_pr * 1e6 << " um): placed at "
+         << (use_standard ? "the standard distance " : "the distance equally far into both, ") << p.centre_distance_m * 1e3 << " mm";
     p.note = note.str();
   }
   return p;

@@ -36,12 +36,12 @@ InvoluteTeeth involute_teeth(const RecognisedGear& g);
 InvoluteTeeth involute_teeth(const GearSpec& spec);
 
 struct InvolutePair {
-  double centre_distance_m = 0;             // the distance these figures are for
+  double centre_distance_m = 0;  // the distance these figures are for
   double zero_backlash_centre_distance_m = 0;
   double operating_pressure_angle_rad = 0;  // at centre_distance_m
-  double normal_backlash_m = 0;             // along the line of action; < 0: the teeth overlap
-  double contact_ratio = 0;                 // transverse, from the active tip radii
-  double base_pitch_mismatch_m = 0;         // |p_b1 − p_b2|
+  double normal_backlash_m = 0;  // along the line of action; < 0: the teeth overlap
+  double contact_ratio = 0;  // transverse, from the active tip radii
+  double base_pitch_mismatch_m = 0;  // |p_b1 − p_b2|
   // The zero-backlash distance is known to ± this much: both teeth's thickness tolerances over
   // |dj_n/da| = 2 sin α_w at that distance, plus both base radius tolerances over cos α_w
   // (a = (r_b1 ± r_b2)/cos α_w), m.
@@ -56,8 +56,7 @@ inline constexpr double kMaxBasePitchMismatch_m = 5e-6;
 // ≤ 0: at the zero-backlash distance. Throws InputError naming `who` when the base pitches
 // differ by more than kMaxBasePitchMismatch_m, both are internal, or the distance is one at
 // which the involutes cannot act (closer than the base circles allow).
-InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, double centre_distance_m,
-                           const std::string& who);
+InvolutePair involute_pair(const InvoluteTeeth& a, const InvoluteTeeth& b, double centre_distance_m, const std::string& who);
 
 // The distance m·(z_b ± z_a)/2 of two gears of one standard module (− for an internal pair), or
 // 0 when either is not recognised as standard or their modules differ.

@@ -40,25 +40,21 @@ VolumeMoments volume_moments(const TriMesh& mesh, const Eigen::Vector3d& o, bool
     m.volume += v;
     if (!second) continue;
     m.first += (v / 4.0) * s;
-    m.second += (v / 20.0) *
-                (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+    m.second += (v / 20.0) * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
   }
   return m;
 }
 
 }  // namespace
 
-double signed_volume_m3(const TriMesh& mesh) {
-  return volume_moments(mesh, reference_point(mesh), false).volume;
-}
+double signed_volume_m3(const TriMesh& mesh) { return volume_moments(mesh, reference_point(mesh), false).volume; }
 
 MassProperties mass_properties(const TriMesh& mesh, double density_kg_m3) {
   GEARSIM_CHECK(std::isfinite(density_kg_m3) && density_kg_m3 > 0.0,
                 "density must be positive and finite, got " + std::to_string(density_kg_m3));
   const Eigen::Vector3d o = reference_point(mesh);
   const VolumeMoments m = volume_moments(mesh, o, true);
-  GEARSIM_CHECK(m.volume > 0.0, "mesh encloses no positive volume (" + std::to_string(m.volume) +
-                                    " m^3): validate it first");
+  GEARSIM_CHECK(m.volume > 0.0, "mesh encloses no positive volume (" + std::to_string(m.volume) + " m^3): validate it first");
 
   MassProperties p;
   p.volume_m3 = m.volume;
@@ -67,8 +63,7 @@ MassProperties mass_properties(const TriMesh& mesh, double density_kg_m3) {
   const Eigen::Vector3d r = m.first / m.volume;
   p.centre_of_mass_m = o + r;
   const Eigen::Matrix3d second_com = m.second - m.volume * r * r.transpose();
-  p.inertia_com_kg_m2 =
-      density_kg_m3 * (second_com.trace() * Eigen::Matrix3d::Identity() - second_com);
+  p.inertia_com_kg_m2 = density_kg_m3 * (second_com.trace() * Eigen::Matrix3d::Identity() - second_com);
 
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(p.inertia_com_kg_m2);
   GEARSIM_CHECK(eigen.info() == Eigen::Success, "inertia eigen-decomposition failed");

@@ -11,7 +11,7 @@
 namespace gearsim {
 
 struct TriMesh {
-  std::vector<Eigen::Vector3d> vertices;               // positions, m
+  std::vector<Eigen::Vector3d> vertices;  // positions, m
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
 };
 

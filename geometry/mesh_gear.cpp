@@ -67,8 +67,8 @@ Check check_layout(const RecognisedGear& g, const ToothLayout& given) {
   const double off = std::remainder(given.tooth0_angle_rad - g.tooth0_angle_rad, pitch);
   if (std::abs(off) <= kTooth0Tolerance * pitch) return {};
   m << "tooth 0 given at " << given.tooth0_angle_rad * kDeg << " deg lies " << std::abs(off) / pitch * 100
-    << " % of a pitch from the nearest tooth centre line of the mesh (tooth 0 at " << g.tooth0_angle_rad * kDeg
-    << " deg, pitch " << pitch * kDeg << " deg; limit " << kTooth0Tolerance * 100 << " %)";
+    << " % of a pitch from the nearest tooth centre line of the mesh (tooth 0 at " << g.tooth0_angle_rad * kDeg << " deg, pitch "
+    << pitch * kDeg << " deg; limit " << kTooth0Tolerance * 100 << " %)";
   return Refusal{m.str()};
 }
 
@@ -78,12 +78,11 @@ Check check_unit(const RecognisedGear& g, LengthUnit unit) {
   std::ostringstream msg;
   // Off the plausible range no standard module matches, so m is the tooth depth / 2.25: "about".
   const char* about = g.standard ? "" : "about ";
-  msg << "read as " << symbol(unit) << ", its module is " << about << m * 1e3 << " mm"
-      << (g.standard ? "" : " (tooth depth / 2.25)") << " (plausible: " << kMinPlausibleModule_m * 1e3 << " to "
-      << kMaxPlausibleModule_m * 1e3 << " mm): is the unit right?";
+  msg << "read as " << symbol(unit) << ", its module is " << about << m * 1e3 << " mm" << (g.standard ? "" : " (tooth depth / 2.25)")
+      << " (plausible: " << kMinPlausibleModule_m * 1e3 << " to " << kMaxPlausibleModule_m * 1e3 << " mm): is the unit right?";
   const double file_module = m / metres_per(unit);  // in file units
-  for (LengthUnit u : {LengthUnit::Millimetre, LengthUnit::Inch, LengthUnit::Metre, LengthUnit::Centimetre,
-                       LengthUnit::Micrometre, LengthUnit::Foot}) {
+  for (LengthUnit u :
+       {LengthUnit::Millimetre, LengthUnit::Inch, LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Micrometre, LengthUnit::Foot}) {
     const double mu = file_module * metres_per(u);
     if (u != unit && mu >= 0.2e-3 && mu <= 50e-3) {
       msg << " (read as " << symbol(u) << " it would be " << about << mu * 1e3 << " mm)";

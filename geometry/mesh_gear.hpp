@@ -24,10 +24,10 @@ namespace gearsim {
 inline constexpr double kAxisOnOriginTolerance_m = 0.1e-6;
 
 struct MeshGear {
-  Outline2 outline;             // the prism's outline in the gear frame (axis at the origin), m
-  double face_width_m = 0;      // m
-  Eigen::Matrix3d rotation;     // columns: the gear frame's x, y, z in mesh coordinates
-  Eigen::Vector3d origin_m;     // the gear frame's origin in mesh coordinates (mid face width), m
+  Outline2 outline;  // the prism's outline in the gear frame (axis at the origin), m
+  double face_width_m = 0;  // m
+  Eigen::Matrix3d rotation;  // columns: the gear frame's x, y, z in mesh coordinates
+  Eigen::Vector3d origin_m;  // the gear frame's origin in mesh coordinates (mid face width), m
   Result<RecognisedGear> recognition = Refusal{"not recognised yet"};  // the outline as a gear (about the gear frame's origin)
   // Where the axis was found in the cap plane, relative to the mesh's origin line, m; the frame
   // was moved there when larger than kAxisOnOriginTolerance_m.
@@ -48,9 +48,9 @@ inline constexpr double kCadPrismTolerance_m = 2e-6;
 // A mesh file read (import_mesh), checked to be a valid solid (throws InputError naming the
 // file otherwise) and, when it is a prism, brought into its gear frame.
 struct MeshGearFile {
-  TriMesh mesh;                                      // as read, mesh coordinates, m
-  Result<Prism> prism = Refusal{"no mesh read"};     // the prism within kCadPrismTolerance_m, or why not
-  std::optional<MeshGear> gear;                      // that prism in its gear frame
+  TriMesh mesh;  // as read, mesh coordinates, m
+  Result<Prism> prism = Refusal{"no mesh read"};  // the prism within kCadPrismTolerance_m, or why not
+  std::optional<MeshGear> gear;  // that prism in its gear frame
 };
 MeshGearFile read_mesh_gear(const std::filesystem::path& path, LengthUnit unit);
 

@@ -71,8 +71,7 @@ const UnitInfo& unit_info(LengthUnit unit) {
 
 // --- Import -----------------------------------------------------------------------------------
 
-static_assert(constants::kImportWeldTolerance_m == 0.0,
-              "the Welder below merges exactly equal positions only");
+static_assert(constants::kImportWeldTolerance_m == 0.0, "the Welder below merges exactly equal positions only");
 
 // Bit pattern of a position; +0.0 is added first so that -0 and +0 weld.
 using WeldKey = std::array<std::uint64_t, 3>;
@@ -92,8 +91,7 @@ class Welder {
   explicit Welder(TriMesh& mesh) : mesh_(mesh) {}
 
   std::uint32_t add(const Eigen::Vector3d& p) {
-    const WeldKey key{std::bit_cast<std::uint64_t>(p.x() + 0.0),
-                      std::bit_cast<std::uint64_t>(p.y() + 0.0),
+    const WeldKey key{std::bit_cast<std::uint64_t>(p.x() + 0.0), std::bit_cast<std::uint64_t>(p.y() + 0.0),
                       std::bit_cast<std::uint64_t>(p.z() + 0.0)};
     const auto next = static_cast<std::uint32_t>(mesh_.vertices.size());
     const auto [it, inserted] = index_.try_emplace(key, next);
@@ -108,14 +106,13 @@ class Welder {
 
 Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
   Eigen::Matrix4d e;
-  e << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3,
-      m.d4;
+  e << m.a1, m.a2, m.a3, m.a4, m.b1, m.b2, m.b3, m.b4, m.c1, m.c2, m.c3, m.c4, m.d1, m.d2, m.d3, m.d4;
   return e;
 }
 
 // Appends the triangles of `node` and its children, in metres, to `out`.
-void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent,
-             double metres_per_unit, Welder& welder, TriMesh& out) {
+void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent, double metres_per_unit, Welder& welder,
+             TriMesh& out) {
   const Eigen::Matrix4d world = parent * to_eigen(node.mTransformation);
   const Eigen::Matrix3d linear = world.topLeftCorner<3, 3>();
   const Eigen::Vector3d offset = world.topRightCorner<3, 1>();
@@ -272,8 +269,7 @@ TriMesh import_mesh(const std::filesystem::path& path, LengthUnit unit) {
   Assimp::Importer importer;
   auto* io = new BoundedIoSystem();  // owned by the importer
   importer.SetIOHandler(io);
-  const unsigned flags =
-      aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  const unsigned flags = aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = importer.ReadFile(path.string(), flags);
   // A refused file the mesh needed: its reason (one it could do without, e.g. an OBJ's missing
   // or FIFO material library, was skipped as Assimp skips a file it cannot open).
@@ -284,9 +280,8 @@ TriMesh import_mesh(const std::filesystem::path& path, LengthUnit unit) {
     // Assimp tries the extension, then sniffs the content: only when both fail is the format
     // unknown (a .txt holding a broken OBJ is a parse failure).
     if (assimp.find("No suitable reader") != std::string::npos) {
-      throw InputError(where(path) + "unknown mesh format '" + (ext.empty() ? "(none)" : ext) +
-                       "' (Assimp: " + assimp + "); expected a format Assimp reads, e.g. .stl, " +
-                       ".obj, .ply");
+      throw InputError(where(path) + "unknown mesh format '" + (ext.empty() ? "(none)" : ext) + "' (Assimp: " + assimp +
+                       "); expected a format Assimp reads, e.g. .stl, " + ".obj, .ply");
     }
     throw InputError(where(path) + "cannot parse mesh (Assimp: " + assimp + ")");
   }
@@ -300,8 +295,7 @@ TriMesh import_mesh(const std::filesystem::path& path, LengthUnit unit) {
   return mesh;
 }
 
-void export_mesh(const TriMesh& mesh, const std::filesystem::path& path, MeshFormat format,
-                 LengthUnit unit) {
+void export_mesh(const TriMesh& mesh, const std::filesystem::path& path, MeshFormat format, LengthUnit unit) {
   for (const auto& t : mesh.triangles) {
     for (std::uint32_t v : t) GEARSIM_CHECK(v < mesh.vertices.size(), "vertex index out of range");
   }

@@ -58,7 +58,6 @@ TriMesh import_mesh(const std::filesystem::path& path, LengthUnit unit = LengthU
 //    round-trip form), per-facet normal from the winding, no shared vertices (STL has none).
 //  - Obj: shared vertices and 1-based faces, each double in its shortest round-trip form.
 // Throws InputError naming the path if it cannot be written.
-void export_mesh(const TriMesh& mesh, const std::filesystem::path& path, MeshFormat format,
-                 LengthUnit unit = LengthUnit::Millimetre);
+void export_mesh(const TriMesh& mesh, const std::filesystem::path& path, MeshFormat format, LengthUnit unit = LengthUnit::Millimetre);
 
 }  // namespace gearsim

@@ -47,8 +47,7 @@ class CornerSets {
 std::size_t corner(std::uint32_t face, std::uint8_t slot) { return 3 * std::size_t{face} + slot; }
 
 // The edge half[g, e) as a defect, in the winding of its lowest face.
-EdgeDefect edge_defect(const TriMesh& mesh, const std::vector<HalfEdge>& half, std::size_t g,
-                       std::size_t e) {
+EdgeDefect edge_defect(const TriMesh& mesh, const std::vector<HalfEdge>& half, std::size_t g, std::size_t e) {
   const HalfEdge& h = half[g];
   EdgeDefect d;
   d.vertices = h.forward() ? std::array{h.lo, h.hi} : std::array{h.hi, h.lo};
@@ -74,23 +73,18 @@ void check_faces(const TriMesh& mesh, const std::vector<std::uint32_t>& first_fa
   }
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    const Eigen::Vector3d &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]],
-                          &c = mesh.vertices[t[2]];
-    const double longest2 =
-        std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    const Eigen::Vector3d &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const double longest2 = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
     const double twice_area = (b - a).cross(c - a).norm();
     // NaN compares false: a non-finite face is reported as such, not as degenerate.
-    const bool thin =
-        twice_area <= constants::kDegenerateFaceRelativeHeight * longest2;  // h/L = 2A/L²
+    const bool thin = twice_area <= constants::kDegenerateFaceRelativeHeight * longest2;  // h/L = 2A/L²
     if (!repeats_vertex(t) && !thin) continue;
-    if (r.degenerate_face_count++ == 0)
-      r.first_degenerate_face = FaceDefect{f, t, {a, b, c}, 0.5 * twice_area};
+    if (r.degenerate_face_count++ == 0) r.first_degenerate_face = FaceDefect{f, t, {a, b, c}, 0.5 * twice_area};
   }
 }
 
 // Fills the edge checks (open, non-manifold, misoriented) and the non-manifold-vertex check.
-void check_topology(const TriMesh& mesh, const std::vector<std::uint32_t>& first_face,
-                    MeshReport& r) {
+void check_topology(const TriMesh& mesh, const std::vector<std::uint32_t>& first_face, MeshReport& r) {
   std::vector<HalfEdge> half;
   half.reserve(3 * mesh.triangles.size());
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -104,9 +98,8 @@ void check_topology(const TriMesh& mesh, const std::vector<std::uint32_t>& first
         half.push_back({t[s2], t[s], f, s2, s});
     }
   }
-  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face);
-  });
+  std::sort(half.begin(), half.end(),
+            [](const HalfEdge& x, const HalfEdge& y) { return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face); });
 
   CornerSets fans(3 * mesh.triangles.size());
   for (std::size_t g = 0, e = 0; g < half.size(); g = e) {
@@ -114,10 +107,8 @@ void check_topology(const TriMesh& mesh, const std::vector<std::uint32_t>& first
     while (e < half.size() && half[e].lo == half[g].lo && half[e].hi == half[g].hi) ++e;
     // Faces sharing the edge belong to the same fan at both of its ends.
     for (std::size_t k = g + 1; k < e; ++k) {
-      fans.unite(corner(half[k - 1].face, half[k - 1].slot_lo),
-                 corner(half[k].face, half[k].slot_lo));
-      fans.unite(corner(half[k - 1].face, half[k - 1].slot_hi),
-                 corner(half[k].face, half[k].slot_hi));
+      fans.unite(corner(half[k - 1].face, half[k - 1].slot_lo), corner(half[k].face, half[k].slot_lo));
+      fans.unite(corner(half[k - 1].face, half[k - 1].slot_hi), corner(half[k].face, half[k].slot_hi));
     }
     if (e - g == 1) {
       ++r.open_edge_count;
@@ -161,14 +152,11 @@ std::string mm(const Eigen::Vector3d& p_m) {
 }
 
 std::string edge_text(const EdgeDefect& d) {
-  return "edge (" + std::to_string(d.vertices[0]) + ", " + std::to_string(d.vertices[1]) +
-         ") from " + mm(d.p_m[0]) + " to " + mm(d.p_m[1]);
+  return "edge (" + std::to_string(d.vertices[0]) + ", " + std::to_string(d.vertices[1]) + ") from " + mm(d.p_m[0]) + " to " + mm(d.p_m[1]);
 }
 
 // "1 face", "3 faces".
-std::string count(std::size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
+std::string count(std::size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
 
 std::string vertex_list(const std::array<std::uint32_t, 3>& v) {
   return std::to_string(v[0]) + ", " + std::to_string(v[1]) + ", " + std::to_string(v[2]);
@@ -180,15 +168,13 @@ MeshReport validate_mesh(const TriMesh& mesh) {
   MeshReport r;
   r.triangle_count = mesh.triangles.size();
   r.vertex_count = mesh.vertices.size();
-  GEARSIM_CHECK(mesh.triangles.size() < kNoIndex && mesh.vertices.size() < kNoIndex,
-                "mesh too large for 32-bit indices");
+  GEARSIM_CHECK(mesh.triangles.size() < kNoIndex && mesh.vertices.size() < kNoIndex, "mesh too large for 32-bit indices");
   // Lowest face using each vertex; also checks the index invariant.
   std::vector<std::uint32_t> first_face(mesh.vertices.size(), kNoIndex);
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
     for (std::uint32_t v : mesh.triangles[f]) {
-      GEARSIM_CHECK(v < mesh.vertices.size(), "triangle " + std::to_string(f) +
-                                                  " references vertex " + std::to_string(v) +
-                                                  " of " + std::to_string(mesh.vertices.size()));
+      GEARSIM_CHECK(v < mesh.vertices.size(), "triangle " + std::to_string(f) + " references vertex " + std::to_string(v) + " of " +
+                                                  std::to_string(mesh.vertices.size()));
       first_face[v] = std::min(first_face[v], f);
     }
   }
@@ -202,43 +188,35 @@ void require_valid_solid(const MeshReport& r, const std::string& source_name) {
   const std::string at = source_name + ": ";
   if (r.triangle_count == 0) throw InputError(at + "no triangles; expected a closed surface");
   if (const auto& d = r.first_nonfinite_vertex) {
-    throw InputError(at + "vertex " + std::to_string(d->vertex) + " has a non-finite coordinate " +
-                     mm(d->p_m) + " (face " + std::to_string(d->face) + "; " +
-                     count(r.nonfinite_vertex_count, "such vertex", "such vertices") +
+    throw InputError(at + "vertex " + std::to_string(d->vertex) + " has a non-finite coordinate " + mm(d->p_m) + " (face " +
+                     std::to_string(d->face) + "; " + count(r.nonfinite_vertex_count, "such vertex", "such vertices") +
                      "); expected finite coordinates");
   }
   if (const auto& d = r.first_degenerate_face) {
     const bool repeated = repeats_vertex(d->vertices);
-    throw InputError(at + "degenerate face " + std::to_string(d->face) + " (vertices " +
-                     vertex_list(d->vertices) + ") at " + mm(d->p_m[0]) +
+    throw InputError(at + "degenerate face " + std::to_string(d->face) + " (vertices " + vertex_list(d->vertices) + ") at " +
+                     mm(d->p_m[0]) +
                      (repeated ? " repeats a vertex"
-                               : " has area " + num(d->area_m2) + " m^2, height under " +
-                                     num(constants::kDegenerateFaceRelativeHeight) +
+                               : " has area " + num(d->area_m2) + " m^2, height under " + num(constants::kDegenerateFaceRelativeHeight) +
                                      " of its longest edge") +
-                     " (" + count(r.degenerate_face_count, "such face", "such faces") +
-                     "); expected proper triangles");
+                     " (" + count(r.degenerate_face_count, "such face", "such faces") + "); expected proper triangles");
   }
   if (const auto& d = r.first_nonmanifold_edge) {
-    throw InputError(at + "not manifold: " + edge_text(*d) + " belongs to " +
-                     std::to_string(d->face_count) + " faces (faces " + std::to_string(d->face) +
-                     ", " + std::to_string(d->other_face) + ", ...); expected at most two");
+    throw InputError(at + "not manifold: " + edge_text(*d) + " belongs to " + std::to_string(d->face_count) + " faces (faces " +
+                     std::to_string(d->face) + ", " + std::to_string(d->other_face) + ", ...); expected at most two");
   }
   if (const auto& d = r.first_nonmanifold_vertex) {
-    throw InputError(at + "not manifold: vertex " + std::to_string(d->vertex) + " at " +
-                     mm(d->p_m) + " joins " + std::to_string(d->fan_count) +
-                     " separate fans of faces (first face " + std::to_string(d->face) +
+    throw InputError(at + "not manifold: vertex " + std::to_string(d->vertex) + " at " + mm(d->p_m) + " joins " +
+                     std::to_string(d->fan_count) + " separate fans of faces (first face " + std::to_string(d->face) +
                      "); expected one fan, not surfaces touching at a point");
   }
   if (const auto& d = r.first_open_edge) {
-    throw InputError(at + "not watertight: " + edge_text(*d) + " belongs to 1 face (face " +
-                     std::to_string(d->face) + "; " +
-                     count(r.open_edge_count, "open edge", "open edges") +
-                     "); expected every edge shared by exactly two faces");
+    throw InputError(at + "not watertight: " + edge_text(*d) + " belongs to 1 face (face " + std::to_string(d->face) + "; " +
+                     count(r.open_edge_count, "open edge", "open edges") + "); expected every edge shared by exactly two faces");
   }
   if (const auto& d = r.first_misoriented_edge) {
-    throw InputError(at + "inconsistent orientation: " + edge_text(*d) +
-                     " is traversed in the same direction by faces " + std::to_string(d->face) +
-                     " and " + std::to_string(d->other_face) +
+    throw InputError(at + "inconsistent orientation: " + edge_text(*d) + " is traversed in the same direction by faces " +
+                     std::to_string(d->face) + " and " + std::to_string(d->other_face) +
                      " (one of them is flipped); expected opposite directions");
   }
   if (!r.outward_oriented()) {

@@ -33,7 +33,7 @@ inline constexpr std::uint32_t kNoIndex = std::numeric_limits<std::uint32_t>::ma
 struct VertexDefect {
   std::uint32_t vertex = kNoIndex;
   Eigen::Vector3d p_m = Eigen::Vector3d::Zero();  // its position, m
-  std::uint32_t face = kNoIndex;                  // lowest face using it (kNoIndex if none)
+  std::uint32_t face = kNoIndex;  // lowest face using it (kNoIndex if none)
   std::uint32_t fan_count = 0;  // separate fans of faces around it (non-manifold vertex only)
 };
 
@@ -41,8 +41,7 @@ struct VertexDefect {
 struct FaceDefect {
   std::uint32_t face = kNoIndex;
   std::array<std::uint32_t, 3> vertices{kNoIndex, kNoIndex, kNoIndex};
-  std::array<Eigen::Vector3d, 3> p_m{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                                     Eigen::Vector3d::Zero()};  // corner positions, m
+  std::array<Eigen::Vector3d, 3> p_m{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  // corner positions, m
   double area_m2 = 0.0;
 };
 
@@ -50,9 +49,9 @@ struct FaceDefect {
 struct EdgeDefect {
   std::array<std::uint32_t, 2> vertices{kNoIndex, kNoIndex};
   std::array<Eigen::Vector3d, 2> p_m{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};  // m
-  std::uint32_t face = kNoIndex;        // lowest face on the edge
+  std::uint32_t face = kNoIndex;  // lowest face on the edge
   std::uint32_t other_face = kNoIndex;  // second-lowest face on the edge, if any
-  std::uint32_t face_count = 0;         // faces sharing the edge
+  std::uint32_t face_count = 0;  // faces sharing the edge
 };
 
 // What validate_mesh found. Faces that repeat a vertex index are counted as degenerate and left
@@ -60,13 +59,13 @@ struct EdgeDefect {
 struct MeshReport {
   std::size_t triangle_count = 0;
   std::size_t vertex_count = 0;
-  std::size_t nonfinite_vertex_count = 0;    // vertices with a NaN or infinite coordinate
-  std::size_t degenerate_face_count = 0;     // repeated vertex or area below tolerance
-  std::size_t open_edge_count = 0;           // edges with exactly one face
-  std::size_t nonmanifold_edge_count = 0;    // edges with more than two faces
+  std::size_t nonfinite_vertex_count = 0;  // vertices with a NaN or infinite coordinate
+  std::size_t degenerate_face_count = 0;  // repeated vertex or area below tolerance
+  std::size_t open_edge_count = 0;  // edges with exactly one face
+  std::size_t nonmanifold_edge_count = 0;  // edges with more than two faces
   std::size_t nonmanifold_vertex_count = 0;  // vertices whose faces form more than one fan
-  std::size_t misoriented_edge_count = 0;    // two-face edges both faces traverse the same way
-  double signed_volume_m3 = 0.0;             // > 0 when the faces wind counter-clockwise outside
+  std::size_t misoriented_edge_count = 0;  // two-face edges both faces traverse the same way
+  double signed_volume_m3 = 0.0;  // > 0 when the faces wind counter-clockwise outside
 
   std::optional<VertexDefect> first_nonfinite_vertex;
   std::optional<FaceDefect> first_degenerate_face;
@@ -84,8 +83,8 @@ struct MeshReport {
   bool consistently_oriented() const { return misoriented_edge_count == 0; }
   bool outward_oriented() const { return signed_volume_m3 > 0.0; }
   bool valid_solid() const {
-    return triangle_count > 0 && finite() && no_degenerate_faces() && watertight() && manifold() &&
-           consistently_oriented() && outward_oriented();
+    return triangle_count > 0 && finite() && no_degenerate_faces() && watertight() && manifold() && consistently_oriented() &&
+           outward_oriented();
   }
 };
 

@@ -56,8 +56,8 @@ PlanetaryGeometry analyse_planetary(const PlanetarySpec& s) {
   const double a_pr = zero_backlash_centre_distance(s.planet, s.ring);
   if (std::abs(a_sp - a_pr) > 1e-9) {
     std::ostringstream msg;
-    msg << "planetary set: sun–planet centre distance " << a_sp * 1e3 << " mm differs from planet–ring "
-        << a_pr * 1e3 << " mm (expected z_r = z_s + 2·z_p for unshifted gears)";
+    msg << "planetary set: sun–planet centre distance " << a_sp * 1e3 << " mm differs from planet–ring " << a_pr * 1e3
+        << " mm (expected z_r = z_s + 2·z_p for unshifted gears)";
     throw InputError(msg.str());
   }
   g.centre_distance_m = a_sp;
@@ -67,9 +67,9 @@ PlanetaryGeometry analyse_planetary(const PlanetarySpec& s) {
   g.sun_planet = analyse_mesh(s.sun, s.planet, a_sp);
   g.planet_ring = analyse_mesh(s.planet, s.ring, a_pr);
 
-  phase_planetary({s.sun.teeth, s.planet.teeth, s.ring.teeth, s.planets, s.sun.tooth0_angle_rad,
-                   s.planet.tooth0_angle_rad, s.ring.tooth0_angle_rad},
-                  g);
+  phase_planetary(
+      {s.sun.teeth, s.planet.teeth, s.ring.teeth, s.planets, s.sun.tooth0_angle_rad, s.planet.tooth0_angle_rad, s.ring.tooth0_angle_rad},
+      g);
   std::ostringstream note;
   if (!g.equally_spaced_assembly) {
     note << "(z_s + z_r)/N = " << g.assembly_quotient << " is not an integer: " << s.planets

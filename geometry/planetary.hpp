@@ -19,7 +19,7 @@ struct PlanetarySpec {
 
 struct PlanetPlacement {
   double carrier_angle_rad = 0;  // polar angle of the planet centre about the sun axis
-  double spin_angle_rad = 0;     // rotation of the planet body about its own axis
+  double spin_angle_rad = 0;  // rotation of the planet body about its own axis
 };
 
 struct PlanetaryGeometry {

@@ -51,8 +51,8 @@ std::string fmt(double v) {
 std::vector<Vec3> candidate_axes(const std::vector<Vec3>& face_n) {
   struct Bin {
     std::array<std::int64_t, 3> cell;
-    double area = 0;             // sum of |n| (twice the face areas)
-    Vec3 sum = Vec3::Zero();     // sum of the face normals in this bin's sense
+    double area = 0;  // sum of |n| (twice the face areas)
+    Vec3 sum = Vec3::Zero();  // sum of the face normals in this bin's sense
   };
   std::vector<Bin> bins;
   std::unordered_map<std::uint64_t, std::vector<int>> index;  // hashed cell -> bins
@@ -110,9 +110,7 @@ std::vector<Vec3> candidate_axes(const std::vector<Vec3>& face_n) {
     if (static_cast<int>(axes.size()) == kMaxAxisCandidates) break;
     if (!(groups[b].second.norm() > 0)) continue;
     const Vec3 axis = groups[b].second.normalized();
-    if (std::none_of(axes.begin(), axes.end(),
-                     [&](const Vec3& a) { return std::abs(a.dot(axis)) >= cos_apart; }))
-      axes.push_back(axis);
+    if (std::none_of(axes.begin(), axes.end(), [&](const Vec3& a) { return std::abs(a.dot(axis)) >= cos_apart; })) axes.push_back(axis);
   }
   return axes;
 }
@@ -170,8 +168,7 @@ std::vector<Vec2> drop_collinear(const std::vector<Vec2>& pts) {
     if (!alive[i]) continue;
     const Vec2 &a = pts[prev[i]], &p = pts[i], &b = pts[next[i]];
     const Vec2 ab = b - a;
-    if (ab.norm() == 0.0 || std::abs(cross2(ab, p - a)) / ab.norm() > kCollinearDrop_m ||
-        (p - a).dot(ab) <= 0 || (p - b).dot(-ab) <= 0)
+    if (ab.norm() == 0.0 || std::abs(cross2(ab, p - a)) / ab.norm() > kCollinearDrop_m || (p - a).dot(ab) <= 0 || (p - b).dot(-ab) <= 0)
       continue;
     alive[i] = 0, --count;
     next[prev[i]] = next[i], prev[next[i]] = prev[i];
@@ -218,8 +215,8 @@ std::vector<double> turns(const Polygon2& p) {
 // and goes to the 3×3 cells around each step, so a vertex within its allowance of an edge finds
 // it in its own cell.
 Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>& uv, const std::vector<double>& w,
-                               const std::vector<std::size_t>& wall, double tol, double w_lo, double w_hi,
-                               std::vector<double>& allowance, std::vector<double>& curvature, double& deviation) {
+                               const std::vector<std::size_t>& wall, double tol, double w_lo, double w_hi, std::vector<double>& allowance,
+                               std::vector<double>& curvature, double& deviation) {
   deviation = 0;
   if (wall.empty()) return {};
   std::vector<std::pair<Vec2, Vec2>> edges;
@@ -266,9 +263,10 @@ Check wall_vertices_on_outline(const Outline2& outline, const std::vector<Vec2>&
     if (nearest < 0 || best > tol + edge_allowance[static_cast<std::size_t>(nearest)]) {
       // Not near an edge of its own cell: the distance to the nearest edge, for the message.
       for (const auto& [a, b] : edges) best = std::min(best, segment_distance(uv[i], a, b));
-      return Refusal{"vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) + " m above the bottom cap of a " +
-                     fmt(w_hi - w_lo) + " m prism and " + fmt(best) + " m off its side walls" +
-                     (nearest >= 0 ? " (its wall's chord allows " + fmt(tol + edge_allowance[static_cast<std::size_t>(nearest)]) + " m)" : "")};
+      return Refusal{
+          "vertex " + std::to_string(i) + " lies " + fmt(w[i] - w_lo) + " m above the bottom cap of a " + fmt(w_hi - w_lo) +
+          " m prism and " + fmt(best) + " m off its side walls" +
+          (nearest >= 0 ? " (its wall's chord allows " + fmt(tol + edge_allowance[static_cast<std::size_t>(nearest)]) + " m)" : "")};
     }
     allowance[i] = edge_allowance[static_cast<std::size_t>(nearest)];
     curvature[i] = edge_curvature[static_cast<std::size_t>(nearest)];
@@ -283,8 +281,7 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
   PrismFrame f = frame_for(axis);
   std::vector<double> w(nv);
   for (std::size_t i = 0; i < nv; ++i) w[i] = mesh.vertices[i].dot(f.z);
-  const double w_lo = *std::min_element(w.begin(), w.end()),
-               w_hi = *std::max_element(w.begin(), w.end());
+  const double w_lo = *std::min_element(w.begin(), w.end()), w_hi = *std::max_element(w.begin(), w.end());
   if (w_hi - w_lo <= tol) return Refusal{"the mesh is flat along this axis"};
   // Level 0: on the bottom cap, 1: on the top cap, 2: on a side wall between them (exporters
   // put vertices there; each must lie on the outline within tol, checked below).
@@ -318,15 +315,12 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     const std::array<Vec2, 3> p{uv[tri[0]], uv[tri[1]], uv[tri[2]]};
     int k = 0;  // the corner opposite the longest projected edge
     for (int j = 1; j < 3; ++j)
-      if ((p[(j + 1) % 3] - p[(j + 2) % 3]).norm() > (p[(k + 1) % 3] - p[(k + 2) % 3]).norm())
-        k = j;
+      if ((p[(j + 1) % 3] - p[(j + 2) % 3]).norm() > (p[(k + 1) % 3] - p[(k + 2) % 3]).norm()) k = j;
     const Vec2 e = p[(k + 2) % 3] - p[(k + 1) % 3];
-    const double off =
-        e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
+    const double off = e.norm() <= tol ? 0.0 : std::abs(cross2(e, p[k] - p[(k + 1) % 3])) / e.norm();
     const double kappa = std::max({curvature[tri[0]], curvature[tri[1]], curvature[tri[2]]});
     if (off > tol + std::max({allowance[tri[0]], allowance[tri[1]], allowance[tri[2]], e.squaredNorm() * kappa / 4}))
-      return Refusal{"face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " +
-             fmt(off) + " m off its wall line"};
+      return Refusal{"face " + std::to_string(t) + " is not perpendicular to the caps: a corner lies " + fmt(off) + " m off its wall line"};
     return {};
   };
   double top_area = 0, bottom_area = 0;
@@ -366,9 +360,7 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     return weld[v];
   };
   std::unordered_map<std::uint64_t, int> open;
-  auto edge_key = [](int a, int b) {
-    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
-  };
+  auto edge_key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
   for (std::size_t t : top_faces)
     for (int j = 0; j < 3; ++j) {
       const int a = weld_id(mesh.triangles[t][j]), b = weld_id(mesh.triangles[t][(j + 1) % 3]);
@@ -384,8 +376,7 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     if (count == 0) continue;
     const int a = int(k >> 32), b = int(k & 0xffffffffu);
     if (count > 1 || out[a] >= 0)
-      return Refusal{"the top cap boundary branches at (" + fmt(welded[a].x()) + ", " + fmt(welded[a].y()) +
-             ") m"};
+      return Refusal{"the top cap boundary branches at (" + fmt(welded[a].x()) + ", " + fmt(welded[a].y()) + ") m"};
     out[a] = b;
   }
   std::vector<std::vector<Vec2>> loops;
@@ -394,9 +385,7 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
     if (out[s] < 0 || seen[s]) continue;
     std::vector<Vec2> loop;
     for (int v = int(s); !seen[v]; v = out[v]) {
-      if (out[v] < 0)
-        return Refusal{"the top cap boundary is open at (" + fmt(welded[v].x()) + ", " +
-               fmt(welded[v].y()) + ") m"};
+      if (out[v] < 0) return Refusal{"the top cap boundary is open at (" + fmt(welded[v].x()) + ", " + fmt(welded[v].y()) + ") m"};
       seen[v] = 1;
       loop.push_back(welded[v]);
     }
@@ -407,21 +396,18 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
   double perimeter = 0;
   for (auto& loop : loops) {
     Polygon2 p{std::move(loop)};
-    for (std::size_t i = 0; i < p.points.size(); ++i)
-      perimeter += (p.points[(i + 1) % p.points.size()] - p.points[i]).norm();
+    for (std::size_t i = 0; i < p.points.size(); ++i) perimeter += (p.points[(i + 1) % p.points.size()] - p.points[i]).norm();
     if (signed_area(p) > 0)
       ++outers, prism.outline.outer = std::move(p);
     else
       prism.outline.holes.push_back(std::move(p));
   }
-  if (outers != 1)
-    return Refusal{"the top cap has " + std::to_string(outers) + " outer loops; exactly one is supported"};
+  if (outers != 1) return Refusal{"the top cap has " + std::to_string(outers) + " outer loops; exactly one is supported"};
   if (std::abs(top_area + bottom_area) > tol * perimeter)
-    return Refusal{"the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) +
-           " m^2"};
+    return Refusal{"the caps differ: top area " + fmt(top_area) + " m^2, bottom area " + fmt(-bottom_area) + " m^2"};
   if (const Check c = check_outline(prism.outline); !c) return Refusal{"the recovered outline is invalid: " + c.reason()};
-  if (const Check c = wall_vertices_on_outline(prism.outline, uv, w, wall_vertices, tol, w_lo, w_hi, allowance, curvature,
-                                               prism.wall_deviation_m);
+  if (const Check c =
+          wall_vertices_on_outline(prism.outline, uv, w, wall_vertices, tol, w_lo, w_hi, allowance, curvature, prism.wall_deviation_m);
       !c)
     return c;
   for (std::size_t t : curved_wall_faces)
@@ -434,15 +420,14 @@ Check try_axis(const TriMesh& mesh, const Vec3& axis, double tol, Prism& prism) 
 }  // namespace
 
 Result<Prism> recover_prism(const TriMesh& mesh, double tol_m) {
-  if (!(tol_m > 0) || !std::isfinite(tol_m))
-    throw InputError("prism tolerance " + fmt(tol_m) + " m: need > 0");
+  if (!(tol_m > 0) || !std::isfinite(tol_m)) throw InputError("prism tolerance " + fmt(tol_m) + " m: need > 0");
   if (mesh.triangles.empty()) throw InputError("prism recovery: the mesh has no triangles");
   std::vector<Vec3> face_n;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (std::uint32_t v : mesh.triangles[t])
       if (v >= mesh.vertices.size())
-        throw InputError("prism recovery: triangle " + std::to_string(t) + " uses vertex " +
-                         std::to_string(v) + " of " + std::to_string(mesh.vertices.size()));
+        throw InputError("prism recovery: triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) + " of " +
+                         std::to_string(mesh.vertices.size()));
     const auto& tri = mesh.triangles[t];
     const Vec3 &a = mesh.vertices[tri[0]], &b = mesh.vertices[tri[1]], &c = mesh.vertices[tri[2]];
     face_n.push_back((b - a).cross(c - a));
@@ -455,8 +440,8 @@ Result<Prism> recover_prism(const TriMesh& mesh, double tol_m) {
     if (why) return prism;
     if (reason.empty()) {
       const Vec3 shown = frame_for(axis).z;
-      reason = "not a prism along its largest face cluster's normal (" + fmt(shown.x() + 0.0) + ", " +
-               fmt(shown.y() + 0.0) + ", " + fmt(shown.z() + 0.0) + "): " + why.reason();
+      reason = "not a prism along its largest face cluster's normal (" + fmt(shown.x() + 0.0) + ", " + fmt(shown.y() + 0.0) + ", " +
+               fmt(shown.z() + 0.0) + "): " + why.reason();
     }
   }
   return Refusal{reason.empty() ? "every face is degenerate" : reason};

@@ -26,9 +26,7 @@ struct PrismFrame {
   Eigen::Vector3d y = Eigen::Vector3d::UnitY();
   Eigen::Vector3d z = Eigen::Vector3d::UnitZ();  // the extrusion axis
 
-  Eigen::Vector3d to_world(const Eigen::Vector2d& uv_m, double w_m) const {
-    return origin_m + uv_m.x() * x + uv_m.y() * y + w_m * z;
-  }
+  Eigen::Vector3d to_world(const Eigen::Vector2d& uv_m, double w_m) const { return origin_m + uv_m.x() * x + uv_m.y() * y + w_m * z; }
 };
 
 // A right prism: `outline` (in the frame's u, v) swept from w = 0 to w = height_m along z.

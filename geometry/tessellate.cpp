@@ -9,14 +9,13 @@
 namespace gearsim {
 namespace {
 
-void subdivide(const Curve2& curve, double ta, const Eigen::Vector2d& pa, double tb,
-               const Eigen::Vector2d& pb, double tol, int depth, std::vector<Eigen::Vector2d>& out) {
+void subdivide(const Curve2& curve, double ta, const Eigen::Vector2d& pa, double tb, const Eigen::Vector2d& pb, double tol, int depth,
+               std::vector<Eigen::Vector2d>& out) {
   const double tm = 0.5 * (ta + tb);
   const Eigen::Vector2d pm = curve(tm);
   const Eigen::Vector2d pq1 = curve(0.5 * (ta + tm));
   const Eigen::Vector2d pq3 = curve(0.5 * (tm + tb));
-  const double dev = std::max({distance_to_segment(pm, pa, pb), distance_to_segment(pq1, pa, pb),
-                               distance_to_segment(pq3, pa, pb)});
+  const double dev = std::max({distance_to_segment(pm, pa, pb), distance_to_segment(pq1, pa, pb), distance_to_segment(pq3, pa, pb)});
   if (dev <= tol) {
     out.push_back(pa);
     return;
@@ -28,8 +27,7 @@ void subdivide(const Curve2& curve, double ta, const Eigen::Vector2d& pa, double
 
 }  // namespace
 
-double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                           const Eigen::Vector2d& b) {
+double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double len2 = ab.squaredNorm();
   if (len2 == 0.0) return (p - a).norm();
@@ -37,8 +35,7 @@ double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   return (p - (a + t * ab)).norm();
 }
 
-void tessellate_curve(const Curve2& curve, double t0, double t1, double tol,
-                      std::vector<Eigen::Vector2d>& out) {
+void tessellate_curve(const Curve2& curve, double t0, double t1, double tol, std::vector<Eigen::Vector2d>& out) {
   GEARSIM_CHECK(tol > 0, "chordal deviation must be positive");
   // Start from 8 spans so that a curve whose midpoint happens to lie on the chord (an S-bend) is
   // still refined.
@@ -62,8 +59,7 @@ int arc_segments(double radius_m, double span_rad, double tol) {
   return std::max(1, static_cast<int>(std::ceil(span / max_step - 1e-12)));
 }
 
-void tessellate_arc(const Eigen::Vector2d& centre, double radius_m, double a0, double a1,
-                    double tol, std::vector<Eigen::Vector2d>& out) {
+void tessellate_arc(const Eigen::Vector2d& centre, double radius_m, double a0, double a1, double tol, std::vector<Eigen::Vector2d>& out) {
   const int n = arc_segments(radius_m, a1 - a0, tol);
   for (int i = 0; i < n; ++i) {
     const double a = a0 + (a1 - a0) * i / n;

@@ -31,11 +31,9 @@ namespace gearsim {
 namespace {
 
 // Bad input: the message names the parameter, its value and what was expected.
-[[noreturn]] void reject(ToleranceStandard s, std::string_view param, double value,
-                         std::string_view expected) {
+[[noreturn]] void reject(ToleranceStandard s, std::string_view param, double value, std::string_view expected) {
   std::ostringstream msg;
-  msg << "gear tolerance (" << standard_name(s) << "): " << param << " = " << value
-      << " is out of range; expected " << expected;
+  msg << "gear tolerance (" << standard_name(s) << "): " << param << " = " << value << " is out of range; expected " << expected;
   throw InputError(msg.str());
 }
 
@@ -52,17 +50,14 @@ void validate(const ToleranceInput& in, ToleranceStandard s) {
   const double m = in.module_mm;
   const double d = in.reference_diameter_mm;
   if (iso) {
-    if (!(m >= kIsoMinModule_mm && m <= kIsoMaxModule_mm))
-      reject(s, "module_mm", m, range_text(kIsoMinModule_mm, kIsoMaxModule_mm, " mm"));
+    if (!(m >= kIsoMinModule_mm && m <= kIsoMaxModule_mm)) reject(s, "module_mm", m, range_text(kIsoMinModule_mm, kIsoMaxModule_mm, " mm"));
     if (!(d >= kIsoMinDiameter_mm && d <= kIsoMaxDiameter_mm))
-      reject(s, "reference_diameter_mm", d,
-             range_text(kIsoMinDiameter_mm, kIsoMaxDiameter_mm, " mm"));
+      reject(s, "reference_diameter_mm", d, range_text(kIsoMinDiameter_mm, kIsoMaxDiameter_mm, " mm"));
     if (in.quality < kIsoMinQuality || in.quality > kIsoMaxQuality)
       reject(s, "quality", in.quality, range_text(kIsoMinQuality, kIsoMaxQuality, ""));
   } else {
     if (!(m > 0.0 && std::isfinite(m))) reject(s, "module_mm", m, "a finite module > 0 mm");
-    if (!(d > 0.0 && std::isfinite(d)))
-      reject(s, "reference_diameter_mm", d, "a finite diameter > 0 mm");
+    if (!(d > 0.0 && std::isfinite(d))) reject(s, "reference_diameter_mm", d, "a finite diameter > 0 mm");
     if (in.quality < kDinMinQuality || in.quality > kDinMaxQuality)
       reject(s, "quality", in.quality, range_text(kDinMinQuality, kDinMaxQuality, ""));
   }
@@ -75,23 +70,16 @@ void validate(const ToleranceInput& in, ToleranceStandard s) {
   }
   if (in.contact_ratio) {
     const double e = *in.contact_ratio;
-    if (!(e >= kMinContactRatio && std::isfinite(e)))
-      reject(s, "contact_ratio", e, "a finite total contact ratio ε_γ ≥ 1");
+    if (!(e >= kMinContactRatio && std::isfinite(e))) reject(s, "contact_ratio", e, "a finite total contact ratio ε_γ ≥ 1");
   }
 }
 
 // A component from its class-5 value: scaled by the class step, then rounded once.
-ToleranceComponent component(std::string key, std::string symbol, std::string name,
-                             std::string formula, double class5_um, ToleranceStandard s,
-                             double step) {
+ToleranceComponent component(std::string key, std::string symbol, std::string name, std::string formula, double class5_um,
+                             ToleranceStandard s, double step) {
   const double unrounded_um = class5_um * step;
-  return {std::move(key),
-          std::move(symbol),
-          std::move(name),
-          std::move(formula),
-          class5_um,
-          unrounded_um,
-          round_tolerance_um(s, unrounded_um)};
+  return {
+      std::move(key), std::move(symbol), std::move(name), std::move(formula), class5_um, unrounded_um, round_tolerance_um(s, unrounded_um)};
 }
 
 }  // namespace
@@ -110,8 +98,7 @@ const ToleranceComponent& ToleranceResult::at(std::string_view key) const {
 
 double class_step_factor(ToleranceStandard s, int quality) {
   const double steps = quality - 5;
-  return s == ToleranceStandard::Iso1328 ? std::pow(2.0, steps / 2.0)
-                                         : std::pow(kDinClassStep, steps);
+  return s == ToleranceStandard::Iso1328 ? std::pow(2.0, steps / 2.0) : std::pow(kDinClassStep, steps);
 }
 
 double round_tolerance_um(ToleranceStandard s, double value_um) {
@@ -126,22 +113,17 @@ double round_tolerance_um(ToleranceStandard s, double value_um) {
   return std::round(value_um * per_um) / per_um;
 }
 
-std::string_view standard_name(ToleranceStandard s) {
-  return s == ToleranceStandard::Iso1328 ? "ISO 1328-1:1995" : "DIN 3961/3962";
-}
+std::string_view standard_name(ToleranceStandard s) { return s == ToleranceStandard::Iso1328 ? "ISO 1328-1:1995" : "DIN 3961/3962"; }
 
-std::string_view standard_key(ToleranceStandard s) {
-  return s == ToleranceStandard::Iso1328 ? "iso1328" : "din3961";
-}
+std::string_view standard_key(ToleranceStandard s) { return s == ToleranceStandard::Iso1328 ? "iso1328" : "din3961"; }
 
 std::string_view step_rule(ToleranceStandard s) {
   return s == ToleranceStandard::Iso1328 ? "2^((Q-5)/2), √2 per class" : "1.4^(Q-5), 1.4 per class";
 }
 
 std::string_view rounding_rule(ToleranceStandard s) {
-  return s == ToleranceStandard::Iso1328
-             ? "above 10 µm to 1 µm; 5 to 10 µm to 0.5 µm; below 5 µm to 0.1 µm"
-             : "10 µm and above to 1 µm; below 10 µm to 0.5 µm";
+  return s == ToleranceStandard::Iso1328 ? "above 10 µm to 1 µm; 5 to 10 µm to 0.5 µm; below 5 µm to 0.1 µm"
+                                         : "10 µm and above to 1 µm; below 10 µm to 0.5 µm";
 }
 
 ToleranceResult paper_tolerances(const ToleranceInput& in, ToleranceStandard s) {
@@ -164,16 +146,11 @@ ToleranceResult paper_tolerances(const ToleranceInput& in, ToleranceStandard s) 
   r.step_factor = class_step_factor(s, in.quality);
   const double k = r.step_factor;
   r.components = {
-      component("profile_form", "f_f", "profile form deviation", "1.5 + 0.25(m + 9 sqrt m)", ff,
-                s, k),
-      component("profile_angle", "f_Ha", "profile angle deviation", "2.5 + 0.25(m + 3 sqrt m)",
-                fha, s, k),
-      component("total_pitch", "F_p", "total pitch deviation", "7.25 d^(1/3) / z^(1/7)", fp, s,
-                k),
-      component("total_profile", "F_a", "total profile deviation", "sqrt(f_Ha^2 + f_f^2)", fa, s,
-                k),
-      component("single_flank_composite", "F_i'", "single-flank composite (single flank error)",
-                "0.8 (F_p + F_a)", fi, s, k),
+      component("profile_form", "f_f", "profile form deviation", "1.5 + 0.25(m + 9 sqrt m)", ff, s, k),
+      component("profile_angle", "f_Ha", "profile angle deviation", "2.5 + 0.25(m + 3 sqrt m)", fha, s, k),
+      component("total_pitch", "F_p", "total pitch deviation", "7.25 d^(1/3) / z^(1/7)", fp, s, k),
+      component("total_profile", "F_a", "total profile deviation", "sqrt(f_Ha^2 + f_f^2)", fa, s, k),
+      component("single_flank_composite", "F_i'", "single-flank composite (single flank error)", "0.8 (F_p + F_a)", fi, s, k),
   };
   r.single_flank_error_um = r.components.back().value_um;
   return r;
@@ -199,16 +176,11 @@ ToleranceResult iso1328_tolerances(const ToleranceInput& in) {
   r.step_factor = class_step_factor(s, in.quality);
   const double k = r.step_factor;
   r.components = {
-      component("single_pitch", "f_pt", "single pitch deviation", "0.3(m + 0.4 sqrt d) + 4", fpt,
-                s, k),
-      component("total_pitch", "F_p", "total cumulative pitch deviation",
-                "0.3 m + 1.25 sqrt d + 7", fp, s, k),
-      component("total_profile", "F_a", "total profile deviation",
-                "3.2 sqrt m + 0.22 sqrt d + 0.7", fa, s, k),
-      component("profile_form", "f_fa", "profile form deviation",
-                "2.5 sqrt m + 0.17 sqrt d + 0.5", ffa, s, k),
-      component("profile_slope", "f_Ha", "profile slope deviation",
-                "2 sqrt m + 0.14 sqrt d + 0.5", fha, s, k),
+      component("single_pitch", "f_pt", "single pitch deviation", "0.3(m + 0.4 sqrt d) + 4", fpt, s, k),
+      component("total_pitch", "F_p", "total cumulative pitch deviation", "0.3 m + 1.25 sqrt d + 7", fp, s, k),
+      component("total_profile", "F_a", "total profile deviation", "3.2 sqrt m + 0.22 sqrt d + 0.7", fa, s, k),
+      component("profile_form", "f_fa", "profile form deviation", "2.5 sqrt m + 0.17 sqrt d + 0.5", ffa, s, k),
+      component("profile_slope", "f_Ha", "profile slope deviation", "2 sqrt m + 0.14 sqrt d + 0.5", fha, s, k),
   };
 
   // Annex A tangential composite tolerances, only with a contact ratio from the caller.
@@ -217,12 +189,9 @@ ToleranceResult iso1328_tolerances(const ToleranceInput& in) {
     const double kf = e < 4.0 ? 0.2 * (e + 4.0) / e : 0.4;
     const double fi_tooth = kf * (4.3 + fpt + fa);
     r.composite_k = kf;
-    r.components.push_back(component("tooth_to_tooth_single_flank", "f_i'",
-                                     "tooth-to-tooth single-flank composite",
-                                     "K (4.3 + f_pt + F_a)", fi_tooth, s, k));
-    r.components.push_back(component("single_flank_composite", "F_i'",
-                                     "total single-flank composite", "F_p + f_i'",
-                                     fp + fi_tooth, s, k));
+    r.components.push_back(
+        component("tooth_to_tooth_single_flank", "f_i'", "tooth-to-tooth single-flank composite", "K (4.3 + f_pt + F_a)", fi_tooth, s, k));
+    r.components.push_back(component("single_flank_composite", "F_i'", "total single-flank composite", "F_p + f_i'", fp + fi_tooth, s, k));
     r.single_flank_error_um = r.components.back().value_um;
   }
   return r;

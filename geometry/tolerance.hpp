@@ -44,10 +44,10 @@ inline constexpr double kMinContactRatio = 1.0;
 
 // One gear and the class asked for.
 struct ToleranceInput {
-  double module_mm = 0.0;              // normal module m_n, mm
-  int teeth = 0;                       // number of teeth z (≥ 1)
+  double module_mm = 0.0;  // normal module m_n, mm
+  int teeth = 0;  // number of teeth z (≥ 1)
   double reference_diameter_mm = 0.0;  // reference diameter d = z·m_n/cos β, mm
-  int quality = 0;                     // quality class (DIN 1-12, ISO 0-12)
+  int quality = 0;  // quality class (DIN 1-12, ISO 0-12)
   // Total contact ratio ε_γ of the mesh, dimensionless. Only ISO 1328-1 Annex A (f_i', F_i')
   // needs it; without it those two are left out, never guessed.
   std::optional<double> contact_ratio;
@@ -55,19 +55,19 @@ struct ToleranceInput {
 
 // One allowable deviation, with every step from the class-5 formula to the tabulated value.
 struct ToleranceComponent {
-  std::string key;      // stable identifier, e.g. "total_pitch" (JSON: "total_pitch_um")
-  std::string symbol;   // e.g. "F_p"
-  std::string name;     // e.g. "total cumulative pitch deviation"
+  std::string key;  // stable identifier, e.g. "total_pitch" (JSON: "total_pitch_um")
+  std::string symbol;  // e.g. "F_p"
+  std::string name;  // e.g. "total cumulative pitch deviation"
   std::string formula;  // the class-5 formula, m and d in mm, result in µm
-  double class5_um = 0.0;     // the formula's value (class 5), µm
+  double class5_um = 0.0;  // the formula's value (class 5), µm
   double unrounded_um = 0.0;  // class5_um × step factor, µm
-  double value_um = 0.0;      // unrounded_um rounded by the standard's rule, µm
+  double value_um = 0.0;  // unrounded_um rounded by the standard's rule, µm
 };
 
 // The tolerances of one gear at one class under one standard.
 struct ToleranceResult {
   ToleranceStandard standard = ToleranceStandard::Din3961;
-  std::string formula_set;   // which formulas gave the class-5 values
+  std::string formula_set;  // which formulas gave the class-5 values
   int quality = 0;
   double step_factor = 1.0;  // class-5 → `quality` multiplier, dimensionless
   std::vector<ToleranceComponent> components;

@@ -19,9 +19,7 @@ using Vec2 = Eigen::Vector2d;
 // from the lexicographically smallest corner, so every rotation of (a, b, c) rounds to the same
 // value and every reflection to its negation: decisions about one triangle never disagree.
 double orient(const Vec2& a, const Vec2& b, const Vec2& c) {
-  auto less = [](const Vec2* p, const Vec2* q) {
-    return p->x() < q->x() || (p->x() == q->x() && p->y() < q->y());
-  };
+  auto less = [](const Vec2* p, const Vec2* q) { return p->x() < q->x() || (p->x() == q->x() && p->y() < q->y()); };
   const Vec2 *p = &a, *q = &b, *r = &c;
   bool flip = false;
   if (less(q, p)) std::swap(p, q), flip = !flip;
@@ -40,16 +38,13 @@ std::string at(const Vec2& p) {
 
 // Closed segments ab and cd share at least one point.
 bool segments_touch(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c),
-               d4 = orient(a, b, d);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
-    return true;
+  const double d1 = orient(c, d, a), d2 = orient(c, d, b), d3 = orient(a, b, c), d4 = orient(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
   auto within = [](const Vec2& s, const Vec2& e, const Vec2& p) {
-    return std::min(s.x(), e.x()) <= p.x() && p.x() <= std::max(s.x(), e.x()) &&
-           std::min(s.y(), e.y()) <= p.y() && p.y() <= std::max(s.y(), e.y());
+    return std::min(s.x(), e.x()) <= p.x() && p.x() <= std::max(s.x(), e.x()) && std::min(s.y(), e.y()) <= p.y() &&
+           p.y() <= std::max(s.y(), e.y());
   };
-  return (d1 == 0 && within(c, d, a)) || (d2 == 0 && within(c, d, b)) ||
-         (d3 == 0 && within(a, b, c)) || (d4 == 0 && within(a, b, d));
+  return (d1 == 0 && within(c, d, a)) || (d2 == 0 && within(c, d, b)) || (d3 == 0 && within(a, b, c)) || (d4 == 0 && within(a, b, d));
 }
 
 // Per-loop checks that need no other loop: size, finite points, no repeated point, orientation.
@@ -59,20 +54,17 @@ std::optional<std::string> basic_defect(const Polygon2& p, bool ccw, const std::
   for (std::size_t i = 0; i < n; ++i) {
     if (!p.points[i].allFinite()) return name + " point " + std::to_string(i) + " is not finite";
     if (p.points[i] == p.points[(i + 1) % n])
-      return name + " points " + std::to_string(i) + " and " + std::to_string((i + 1) % n) +
-             " coincide at " + at(p.points[i]);
+      return name + " points " + std::to_string(i) + " and " + std::to_string((i + 1) % n) + " coincide at " + at(p.points[i]);
   }
   const double a = signed_area(p);
   if (a == 0.0) return name + " has zero area";
   if ((a > 0) != ccw)
-    return name + " is " + (a > 0 ? "counter-clockwise" : "clockwise") + "; expected " +
-           (ccw ? "counter-clockwise" : "clockwise");
+    return name + " is " + (a > 0 ? "counter-clockwise" : "clockwise") + "; expected " + (ccw ? "counter-clockwise" : "clockwise");
   return std::nullopt;
 }
 
 // First pair of touching edges among the loops (sweep over x), as a message.
-std::optional<std::string> find_crossing(const std::vector<const Polygon2*>& loops,
-                                         const std::vector<std::string>& names) {
+std::optional<std::string> find_crossing(const std::vector<const Polygon2*>& loops, const std::vector<std::string>& names) {
   struct Edge {
     Vec2 a, b;
     int loop, index, n;
@@ -84,20 +76,16 @@ std::optional<std::string> find_crossing(const std::vector<const Polygon2*>& loo
     for (int i = 0; i < n; ++i) edges.push_back({pts[i], pts[(i + 1) % n], int(l), i, n});
   }
   auto min_x = [](const Edge& e) { return std::min(e.a.x(), e.b.x()); };
-  std::sort(edges.begin(), edges.end(),
-            [&](const Edge& e, const Edge& f) { return min_x(e) < min_x(f); });
+  std::sort(edges.begin(), edges.end(), [&](const Edge& e, const Edge& f) { return min_x(e) < min_x(f); });
   std::vector<const Edge*> active;
   for (const Edge& e : edges) {
     std::size_t kept = 0;
     for (const Edge* f : active) {
       if (std::max(f->a.x(), f->b.x()) < min_x(e)) continue;  // f ends left of e: retire it
       active[kept++] = f;
-      if (std::max(e.a.y(), e.b.y()) < std::min(f->a.y(), f->b.y()) ||
-          std::max(f->a.y(), f->b.y()) < std::min(e.a.y(), e.b.y()))
-        continue;
+      if (std::max(e.a.y(), e.b.y()) < std::min(f->a.y(), f->b.y()) || std::max(f->a.y(), f->b.y()) < std::min(e.a.y(), e.b.y())) continue;
       bool bad;
-      if (e.loop == f->loop &&
-          (e.index == (f->index + 1) % e.n || f->index == (e.index + 1) % e.n)) {
+      if (e.loop == f->loop && (e.index == (f->index + 1) % e.n || f->index == (e.index + 1) % e.n)) {
         // Neighbours share a vertex: they only fail when the second folds back over the first.
         const Edge& s = (e.index == (f->index + 1) % e.n) ? *f : e;
         const Edge& t = (&s == &e) ? *f : e;
@@ -106,8 +94,8 @@ std::optional<std::string> find_crossing(const std::vector<const Polygon2*>& loo
         bad = segments_touch(e.a, e.b, f->a, f->b);
       }
       if (bad)
-        return names[f->loop] + " edge " + std::to_string(f->index) + " and " + names[e.loop] +
-               " edge " + std::to_string(e.index) + " intersect near " + at(e.a);
+        return names[f->loop] + " edge " + std::to_string(f->index) + " and " + names[e.loop] + " edge " + std::to_string(e.index) +
+               " intersect near " + at(e.a);
     }
     active.resize(kept);
     active.push_back(&e);
@@ -122,9 +110,7 @@ bool inside(const Polygon2& poly, const Vec2& p) {
   for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
     const Vec2& a = poly.points[i];
     const Vec2& b = poly.points[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
-      in = !in;
+    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y())) in = !in;
   }
   return in;
 }
@@ -142,8 +128,7 @@ struct Ring {
   int loop(const std::vector<Vec2>& pts, int first_id) {
     const int first = static_cast<int>(pos.size());
     for (std::size_t i = 0; i < pts.size(); ++i) add(pts[i], first_id + static_cast<int>(i));
-    for (int i = first; i < static_cast<int>(pos.size()); ++i)
-      link(i, i + 1 < static_cast<int>(pos.size()) ? i + 1 : first);
+    for (int i = first; i < static_cast<int>(pos.size()); ++i) link(i, i + 1 < static_cast<int>(pos.size()) ? i + 1 : first);
     return first;
   }
   // Direction a -> b points into the interior wedge at node a (interior on the left).
@@ -164,10 +149,7 @@ void bridge_hole(Ring& r, int start, int h) {
   do {
     const Vec2 &P = r.pos[p], &Q = r.pos[r.next[p]];
     if (P.y() <= H.y() && H.y() <= Q.y() && P.y() < Q.y()) {
-      const double x = H.y() == P.y() ? P.x()
-                       : H.y() == Q.y()
-                           ? Q.x()
-                           : P.x() + (H.y() - P.y()) * (Q.x() - P.x()) / (Q.y() - P.y());
+      const double x = H.y() == P.y() ? P.x() : H.y() == Q.y() ? Q.x() : P.x() + (H.y() - P.y()) * (Q.x() - P.x()) / (Q.y() - P.y());
       if (x >= H.x() && x < hit_x) {
         hit_x = x;
         m = H.y() == P.y() ? p : H.y() == Q.y() ? r.next[p] : (P.x() > Q.x() ? p : r.next[p]);
@@ -183,13 +165,10 @@ void bridge_hole(Ring& r, int start, int h) {
   p = start;
   do {
     const Vec2& P = r.pos[p];
-    const bool in_triangle =
-        s == 0 ? P == M
-               : orient(H, I, P) * s >= 0 && orient(I, M, P) * s >= 0 && orient(M, H, P) * s >= 0;
+    const bool in_triangle = s == 0 ? P == M : orient(H, I, P) * s >= 0 && orient(I, M, P) * s >= 0 && orient(M, H, P) * s >= 0;
     if (in_triangle && P.x() > H.x() && r.locally_inside(p, H)) {
       const double tan = std::abs(P.y() - H.y()) / (P.x() - H.x());
-      if (best < 0 || tan < best_tan || (tan == best_tan && P.x() < r.pos[best].x()))
-        best = p, best_tan = tan;
+      if (best < 0 || tan < best_tan || (tan == best_tan && P.x() < r.pos[best].x())) best = p, best_tan = tan;
     }
     p = r.next[p];
   } while (p != start);
@@ -212,18 +191,15 @@ std::vector<std::array<int, 3>> clip_ears(Ring& r, int start) {
     if (r.turn(v) <= 0) blockers.push_back(v);
   }
   const Vec2 ext = (hi - lo).cwiseMax(1e-300);
-  const double cell =
-      std::sqrt(ext.x() * ext.y() / double(std::max<std::size_t>(blockers.size(), 1)));
-  const int nx = std::clamp(int(ext.x() / cell) + 1, 1, 1024),
-            ny = std::clamp(int(ext.y() / cell) + 1, 1, 1024);
+  const double cell = std::sqrt(ext.x() * ext.y() / double(std::max<std::size_t>(blockers.size(), 1)));
+  const int nx = std::clamp(int(ext.x() / cell) + 1, 1, 1024), ny = std::clamp(int(ext.y() / cell) + 1, 1, 1024);
   auto cx = [&](double x) { return std::clamp(int((x - lo.x()) / ext.x() * nx), 0, nx - 1); };
   auto cy = [&](double y) { return std::clamp(int((y - lo.y()) / ext.y() * ny), 0, ny - 1); };
   std::vector<int> cell_start(std::size_t(nx * ny + 1), 0), items(blockers.size());
   for (int v : blockers) ++cell_start[std::size_t(cy(r.pos[v].y()) * nx + cx(r.pos[v].x()) + 1)];
   for (std::size_t i = 1; i < cell_start.size(); ++i) cell_start[i] += cell_start[i - 1];
   std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
-  for (int v : blockers)
-    items[std::size_t(fill[std::size_t(cy(r.pos[v].y()) * nx + cx(r.pos[v].x()))]++)] = v;
+  for (int v : blockers) items[std::size_t(fill[std::size_t(cy(r.pos[v].y()) * nx + cx(r.pos[v].x()))]++)] = v;
 
   std::vector<char> alive(r.pos.size(), 0);
   for (int v : nodes) alive[std::size_t(v)] = 1;
@@ -233,12 +209,10 @@ std::vector<std::array<int, 3>> clip_ears(Ring& r, int start) {
     const Vec2 tlo = A.cwiseMin(B).cwiseMin(C), thi = A.cwiseMax(B).cwiseMax(C);
     for (int y = cy(tlo.y()); y <= cy(thi.y()); ++y)
       for (int x = cx(tlo.x()); x <= cx(thi.x()); ++x)
-        for (int k = cell_start[std::size_t(y * nx + x)];
-             k < cell_start[std::size_t(y * nx + x + 1)]; ++k) {
+        for (int k = cell_start[std::size_t(y * nx + x)]; k < cell_start[std::size_t(y * nx + x + 1)]; ++k) {
           const int p = items[std::size_t(k)];
           const Vec2& P = r.pos[p];
-          if (!alive[std::size_t(p)] || p == a || p == v || p == c || P == A || P == B || P == C)
-            continue;
+          if (!alive[std::size_t(p)] || p == a || p == v || p == c || P == A || P == B || P == C) continue;
           const double o1 = orient(A, B, P), o2 = orient(B, C, P), o3 = orient(C, A, P);
           const bool in = strict ? (o1 > 0 && o2 > 0 && o3 > 0) : (o1 >= 0 && o2 >= 0 && o3 >= 0);
           if (in && r.turn(p) <= 0) return false;
@@ -249,8 +223,7 @@ std::vector<std::array<int, 3>> clip_ears(Ring& r, int start) {
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
   std::vector<int> stamp(r.pos.size(), 0), blocked;
   auto offer = [&](int v) {
-    if (r.turn(v) > 0)
-      heap.emplace((r.pos[r.next[v]] - r.pos[r.prev[v]]).squaredNorm(), v, stamp[std::size_t(v)]);
+    if (r.turn(v) > 0) heap.emplace((r.pos[r.next[v]] - r.pos[r.prev[v]]).squaredNorm(), v, stamp[std::size_t(v)]);
   };
   for (int v : nodes) offer(v);
   std::vector<std::array<int, 3>> tris;
@@ -320,8 +293,7 @@ static std::optional<std::string> outline_defect(const Outline2& outline) {
     const Vec2& p = outline.holes[i].points[0];
     if (!inside(outline.outer, p)) return names[i + 1] + " lies outside the outer boundary";
     for (std::size_t j = 0; j < outline.holes.size(); ++j)
-      if (j != i && inside(outline.holes[j], p))
-        return names[i + 1] + " lies inside " + names[j + 1];
+      if (j != i && inside(outline.holes[j], p)) return names[i + 1] + " lies inside " + names[j + 1];
   }
   return std::nullopt;
 }

@@ -17,7 +17,7 @@ namespace gearsim {
 // Triangles over an outline's vertices: outer points first, then each hole's points, in input
 // order. Every triangle is counter-clockwise.
 struct OutlineTriangulation {
-  std::vector<Eigen::Vector2d> vertices;      // m
+  std::vector<Eigen::Vector2d> vertices;  // m
   std::vector<std::array<int, 3>> triangles;  // indices into vertices, counter-clockwise
 };
 

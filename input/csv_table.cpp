@@ -11,9 +11,7 @@
 
 namespace gearsim::input {
 
-bool CsvTable::has(const std::string& name) const {
-  return std::find(columns.begin(), columns.end(), name) != columns.end();
-}
+bool CsvTable::has(const std::string& name) const { return std::find(columns.begin(), columns.end(), name) != columns.end(); }
 
 const std::vector<double>& CsvTable::column(const std::string& name) const {
   const auto it = std::find(columns.begin(), columns.end(), name);
@@ -36,13 +34,13 @@ CsvTable read_csv(const std::filesystem::path& path) {
     while (start <= line.size()) {
       const std::size_t end = std::min(line.find(',', start), line.size());
       if (c >= t.columns.size())
-        throw InputError(path.string() + ":" + std::to_string(n) + ": more values than the " +
-                         std::to_string(t.columns.size()) + " columns of the header");
+        throw InputError(path.string() + ":" + std::to_string(n) + ": more values than the " + std::to_string(t.columns.size()) +
+                         " columns of the header");
       double v = 0;
       const auto [ptr, ec] = std::from_chars(line.data() + start, line.data() + end, v);
       if (ec != std::errc() || ptr != line.data() + end)
-        throw InputError(path.string() + ":" + std::to_string(n) + ": column '" + t.columns[c] + "': '" +
-                         line.substr(start, end - start) + "' is not a number");
+        throw InputError(path.string() + ":" + std::to_string(n) + ": column '" + t.columns[c] + "': '" + line.substr(start, end - start) +
+                         "' is not a number");
       t.data[c].push_back(v);
       ++c;
       start = end + 1;

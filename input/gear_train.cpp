@@ -30,10 +30,14 @@ PlanetaryTrainSpec planetary_spec(const physics::Scenario& s, const GearTrain& t
   for (const physics::JointDef& j : s.joints)
     ring_held = ring_held || (j.body == ring.name && j.parent == "ground" && j.bearing && j.bearing->torsional_stiffness_N_m_per_rad > 0);
   spec.fixed = ring_held ? PlanetaryMember::Ring : PlanetaryMember::Carrier;
-  if (t.input_body == t.sun) spec.input = PlanetaryMember::Sun;
-  else if (t.input_body == t.carrier) spec.input = PlanetaryMember::Carrier;
-  else if (t.input_body == t.ring) spec.input = PlanetaryMember::Ring;
-  else throw InputError(where + "the motor drives '" + t.input_body + "', not the sun, carrier or ring");
+  if (t.input_body == t.sun)
+    spec.input = PlanetaryMember::Sun;
+  else if (t.input_body == t.carrier)
+    spec.input = PlanetaryMember::Carrier;
+  else if (t.input_body == t.ring)
+    spec.input = PlanetaryMember::Ring;
+  else
+    throw InputError(where + "the motor drives '" + t.input_body + "', not the sun, carrier or ring");
   spec.input_speed_rad_s = t.input_speed_rad_s;
   return spec;
 }
@@ -71,15 +75,16 @@ GearTrain gear_train_of(const physics::Scenario& s) {
       if (g == ring) continue;
       const std::string parent = parent_of(g->name);
       if (parent == "ground" || parent.empty()) {
-        if (!t.sun.empty()) throw InputError(where + "two gears ('" + t.sun + "', '" + g->name + "') turn about the ground: not a single-stage planetary set");
+        if (!t.sun.empty())
+          throw InputError(where + "two gears ('" + t.sun + "', '" + g->name +
+                           "') turn about the ground: not a single-stage planetary set");
         t.sun = g->name;
         t.sun_teeth = teeth_of(*g);
       } else {
         if (!t.carrier.empty() && parent != t.carrier)
           throw InputError(where + "planets on two carriers ('" + t.carrier + "', '" + parent + "'): not a single-stage planetary set");
         t.carrier = parent;
-        if (t.planet_teeth && teeth_of(*g) != t.planet_teeth)
-          throw InputError(where + "planets with different tooth counts: not analysed");
+        if (t.planet_teeth && teeth_of(*g) != t.planet_teeth) throw InputError(where + "planets with different tooth counts: not analysed");
         t.planet_teeth = teeth_of(*g);
         t.planets.push_back(g->name);
       }
@@ -90,7 +95,8 @@ GearTrain gear_train_of(const physics::Scenario& s) {
     return t;
   }
   if (gears.size() != 2)
-    throw InputError(where + std::to_string(gears.size()) + " gears and no internal one: only a planetary set or one gear pair is analysed");
+    throw InputError(where + std::to_string(gears.size()) +
+                     " gears and no internal one: only a planetary set or one gear pair is analysed");
   const bool first_drives = gears[0]->name == t.input_body;
   if (!first_drives && gears[1]->name != t.input_body)
     throw InputError(where + "the motor drives '" + t.input_body + "', neither gear of the pair");

@@ -20,8 +20,8 @@ struct GearTrain {
   std::vector<std::string> planets;
   std::string driver, driven;
   int sun_teeth = 0, planet_teeth = 0, ring_teeth = 0, driver_teeth = 0, driven_teeth = 0;
-  std::string input_body;         // the body the motor drives
-  double input_speed_rad_s = 0;   // its motor's target speed, signed
+  std::string input_body;  // the body the motor drives
+  double input_speed_rad_s = 0;  // its motor's target speed, signed
   GearTrainFrequencies frequencies;
 };
 

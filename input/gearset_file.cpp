@@ -13,9 +13,7 @@ namespace {
 
 using gearsim::constants::kRadPerDeg;
 
-Flank parse_flank(const YamlMap& m) {
-  return m.choice("flank", {"ccw", "cw"}) == "ccw" ? Flank::Ccw : Flank::Cw;
-}
+Flank parse_flank(const YamlMap& m) { return m.choice("flank", {"ccw", "cw"}) == "ccw" ? Flank::Ccw : Flank::Cw; }
 
 }  // namespace
 

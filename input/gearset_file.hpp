@@ -29,7 +29,7 @@ struct GearSetFile {
   std::vector<GearSpec> gears;  // file order
   std::optional<PlanetarySpec> planetary;
   std::optional<std::pair<std::string, std::string>> pair;  // external pair: driver, driven
-  std::optional<int> tolerance_quality;                     // DIN/ISO class for the table
+  std::optional<int> tolerance_quality;  // DIN/ISO class for the table
   std::string reference_source;
   std::map<std::string, ReferenceGear> reference;
 
@@ -43,8 +43,7 @@ GearSpec parse_gear(const YamlMap& gear, const std::string& name, const YamlMap*
 
 // Reads `<base>_deg` or `<base>_rad` (not both) as radians, checked against `limit_rad` in the
 // key's own unit; fallback when neither is present.
-double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad,
-                    const Limit& limit_rad = limits::kAngle_rad);
+double angle_rad_or(const YamlMap& m, const std::string& base, double fallback_rad, const Limit& limit_rad = limits::kAngle_rad);
 
 // A gear's `errors:` mapping (flank_offsets, pitch_errors, profile_slopes, eccentricity), unknown
 // keys refused; the tooth indices are checked with the gear (validate_gear_spec).

@@ -20,6 +20,7 @@ namespace gearsim::input::record {
 // A JSON object of the record with its key path, for messages: "FILE: key bodies[2].gear.teeth: …".
 class Node {
   using json = nlohmann::json;
+
  public:
   Node(const json& j, std::string path, const std::filesystem::path& file) : j_(j), path_(std::move(path)), file_(file) {}
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {

@@ -26,8 +26,7 @@ constexpr std::size_t kMaxLabelLength = 200;
 inline bool is_safe_name(std::string_view name, NameUse use) {
   if (name.empty() || name.size() > kMaxNameLength || name.front() == '.' || name.front() == '-') return false;
   for (char c : name)
-    if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == '-'))
-      return false;
+    if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.' || c == '-')) return false;
   return use == NameUse::File || name.find("__") == std::string_view::npos;
 }
 
@@ -53,8 +52,7 @@ inline void require_safe_name(const YamlMap& m, const std::string& key, const st
 inline void require_label(const YamlMap& m, const std::string& key, const std::string& label) {
   bool ok = !label.empty() && label.size() <= kMaxLabelLength && is_utf8(label);
   for (char c : label) ok = ok && static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
-  if (!ok)
-    m.fail(key, "expected a one-line text of 1 to 200 bytes of UTF-8 without control characters, got '" + shown_name(label) + "'");
+  if (!ok) m.fail(key, "expected a one-line text of 1 to 200 bytes of UTF-8 without control characters, got '" + shown_name(label) + "'");
 }
 
 }  // namespace gearsim::input

@@ -19,10 +19,11 @@ std::string event_outside_run(double at_s, double length_s, double duration_s) {
   std::ostringstream why;
   why.precision(9);
   why << "the pulse from " << at_s << " s to " << end_s << " s ";
-  if (at_s < 0) why << "starts before the run's start at 0 s";
-  else why << "ends after the run's end at " << duration_s << " s";
-  why << ": expected a pulse within [0, " << duration_s << "] s (the run would skip " << (at_s >= duration_s ? "it" : "its end")
-      << ")";
+  if (at_s < 0)
+    why << "starts before the run's start at 0 s";
+  else
+    why << "ends after the run's end at " << duration_s << " s";
+  why << ": expected a pulse within [0, " << duration_s << "] s (the run would skip " << (at_s >= duration_s ? "it" : "its end") << ")";
   return why.str();
 }
 
@@ -30,8 +31,8 @@ void check_events_within_duration(const physics::Scenario& s, const std::string&
   for (std::size_t i = 0; i < s.impulses.size(); ++i) {
     const physics::ImpulseDef& p = s.impulses[i];
     if (const std::string why = event_outside_run(p.at_s, p.duration_s, s.duration_s); !why.empty())
-      throw InputError(s.source.string() + ": impulses[" + std::to_string(i) + "].at_s: " + why + " (duration set by " +
-                       duration_from + ")");
+      throw InputError(s.source.string() + ": impulses[" + std::to_string(i) + "].at_s: " + why + " (duration set by " + duration_from +
+                       ")");
   }
 }
 

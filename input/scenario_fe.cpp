@@ -10,8 +10,9 @@ namespace gearsim::input::scenario_detail {
 
 physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& s) {
   if (!s.planetary)
-    m.fail("fe", "fe-te solves planetary trains of generated gears: the scenario needs the planetary: macro with "
-                 "the gear names of a spec (a set of CAD meshes has no finite-element model yet)");
+    m.fail("fe",
+           "fe-te solves planetary trains of generated gears: the scenario needs the planetary: macro with "
+           "the gear names of a spec (a set of CAD meshes has no finite-element model yet)");
   physics::FeTeDef f;
   using namespace limits;
   f.flank_size_m = number_within_or(m, "flank_size_m", fe::kDefaultFeTeFlankSize_m, kFeElementSize_m);
@@ -24,8 +25,7 @@ physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& s) {
   if (!(f.friction >= 0) || f.friction > 1) m.fail("friction", "expected a Coulomb coefficient 0 to 1");
   f.element_type = m.choice_or("element_type", {"CPS4R", "CPS4"}, "CPS4R");
   f.positions_per_mesh = m.integer_or("positions_per_mesh", fe::kDefaultPositionsPerMesh);
-  if (f.positions_per_mesh < 1 || f.positions_per_mesh > 1000)
-    m.fail("positions_per_mesh", "expected 1 to 1000 solves per mesh period");
+  if (f.positions_per_mesh < 1 || f.positions_per_mesh > 1000) m.fail("positions_per_mesh", "expected 1 to 1000 solves per mesh period");
   f.mesh_periods = m.number_or("mesh_periods", 1.0);
   if (!(f.mesh_periods > 0) || f.mesh_periods > 200) m.fail("mesh_periods", "expected 0 < mesh periods ≤ 200");
   f.jobs = m.integer_or("jobs", fe::kDefaultFeJobs);
@@ -38,18 +38,16 @@ physics::FeTeDef parse_fe(const YamlMap& m, const physics::Scenario& s) {
     f.sun_torque_N_m = *t;
     f.torque_source = "fe.sun_torque_N_m";
   } else {
-    if (!s.transmission)
-      m.fail("sun_torque_N_m", "no transmission to reflect the output load through: give sun_torque_N_m");
+    if (!s.transmission) m.fail("sun_torque_N_m", "no transmission to reflect the output load through: give sun_torque_N_m");
     double out_load = 0;
     for (const physics::LoadDef& l : s.loads)
       if (l.joint == s.transmission->output_joint) out_load += l.constant_torque_N_m;
     if (!(out_load < 0))
-      m.fail("sun_torque_N_m", "the output joint '" + s.transmission->output_joint +
-                                   "' has no resisting constant load to reflect: give sun_torque_N_m");
+      m.fail("sun_torque_N_m",
+             "the output joint '" + s.transmission->output_joint + "' has no resisting constant load to reflect: give sun_torque_N_m");
     f.sun_torque_N_m = -out_load / s.transmission->ratio;
     std::ostringstream src;
-    src << "loads: " << out_load << " N·m on " << s.transmission->output_joint << " / ratio "
-        << s.transmission->ratio;
+    src << "loads: " << out_load << " N·m on " << s.transmission->output_joint << " / ratio " << s.transmission->ratio;
     f.torque_source = src.str();
   }
 

@@ -28,16 +28,15 @@ physics::Pose parse_pose(const YamlMap& m) {
   pose.position_m = vec3_within_or(m, "position_m", Eigen::Vector3d::Zero(), limits::kPosition_m);
   const bool full = m.has("orientation_deg") || m.has("orientation_rad");
   const bool about_z = m.has("angle_deg") || m.has("angle_rad");
-  if (full && about_z) m.fail(m.has("angle_deg") ? "angle_deg" : "angle_rad",
-                              "give orientation_deg/_rad [rx, ry, rz] or angle_deg/_rad about z, not both");
+  if (full && about_z)
+    m.fail(m.has("angle_deg") ? "angle_deg" : "angle_rad", "give orientation_deg/_rad [rx, ry, rz] or angle_deg/_rad about z, not both");
   if (m.has("orientation_deg") && m.has("orientation_rad"))
     m.fail("orientation_deg", "give the orientation once: orientation_deg or orientation_rad");
   Eigen::Vector3d r = vec3_within_or(m, "orientation_rad", Eigen::Vector3d::Zero(), limits::kAngle_rad);
   r += vec3_within_or(m, "orientation_deg", Eigen::Vector3d::Zero(), limit_in_degrees(limits::kAngle_rad)) * (std::numbers::pi / 180.0);
   r.z() += angle_rad_or(m, "angle", 0.0);
   // Rotations about the fixed world axes x, then y, then z: R = Rz·Ry·Rx.
-  pose.orientation = Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) *
-                     Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
+  pose.orientation = Eigen::AngleAxisd(r.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(r.y(), Eigen::Vector3d::UnitY()) *
                      Eigen::AngleAxisd(r.x(), Eigen::Vector3d::UnitX());
   return pose;
 }
@@ -68,8 +67,7 @@ physics::JointDef parse_joint(const YamlMap& m, const Names& names) {
   if (body == names.bodies.end()) m.fail("body", "no body named '" + j.body + "'");
   if (body->second->fixed) m.fail("body", "body '" + j.body + "' is fixed (welded to the ground): it cannot turn in a joint");
   j.parent = m.string_or("parent", kGround);
-  if (j.parent != kGround && !names.bodies.count(j.parent))
-    m.fail("parent", "no body named '" + j.parent + "' (or 'ground')");
+  if (j.parent != kGround && !names.bodies.count(j.parent)) m.fail("parent", "no body named '" + j.parent + "' (or 'ground')");
   if (j.parent == j.body) m.fail("parent", "a body cannot be hinged to itself");
   // The pivot defaults to the body's origin (a gear's centre).
   j.pivot_m = vec3_within_or(m, "pivot_m", body->second->pose.position_m, limits::kPosition_m);
@@ -111,7 +109,8 @@ physics::ImpulseDef parse_impulse(const YamlMap& m, const Names& names, const ph
   if (const std::string why = event_outside_run(i.at_s, i.duration_s, s.duration_s); !why.empty())
     m.fail(m.has("at_s") ? "at_s" : "duration_s", why);
   if (i.duration_s < s.solver.time_step_s)
-    m.fail("duration_s", "a pulse shorter than one time step (" + std::to_string(s.solver.time_step_s) + " s) would be missed or taken whole");
+    m.fail("duration_s",
+           "a pulse shorter than one time step (" + std::to_string(s.solver.time_step_s) + " s) would be missed or taken whole");
   i.force_N = vec3_or(m, "force_N", Eigen::Vector3d::Zero());
   i.torque_N_m = vec3_or(m, "torque_N_m", Eigen::Vector3d::Zero());
   for (int k = 0; k < 3; ++k) {
@@ -152,7 +151,6 @@ void parse_drives(const YamlMap& top, const Names& names, physics::Scenario& s) 
     }
   if (given(top, "impulses"))
     for (const YamlMap& m : top.list_of_maps("impulses")) s.impulses.push_back(parse_impulse(m, names, s));
-
 }
 
 // The transmission: the explicit block, each key defaulting to the macros' proposal.

@@ -19,7 +19,6 @@ namespace gearsim::input {
 // exist yet is created, so the strict reader rejects it unless it names a known optional key.
 // Throws InputError naming the file, line, key path and what was expected; an error caused by an
 // override names the override too.
-physics::Scenario load_scenario(const std::filesystem::path& file,
-                                const std::vector<std::string>& overrides = {});
+physics::Scenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides = {});
 
 }  // namespace gearsim::input

@@ -22,12 +22,10 @@ ojson gear_json(const GearSpec& g) {
   ojson errors = {{"flank_offsets", ojson::array()}, {"pitch_errors", ojson::array()}, {"profile_slopes", ojson::array()}};
   for (const FlankOffset& f : g.errors.flank_offsets)
     errors["flank_offsets"].push_back({{"tooth", f.tooth}, {"flank", flank_name(f.flank)}, {"normal_offset_m", f.normal_offset_m}});
-  for (const PitchError& p : g.errors.pitch_errors)
-    errors["pitch_errors"].push_back({{"tooth", p.tooth}, {"error_m", p.error_m}});
+  for (const PitchError& p : g.errors.pitch_errors) errors["pitch_errors"].push_back({{"tooth", p.tooth}, {"error_m", p.error_m}});
   for (const ProfileSlopeError& p : g.errors.profile_slopes)
     errors["profile_slopes"].push_back({{"tooth", p.tooth}, {"flank", flank_name(p.flank)}, {"slope_m", p.slope_m}});
-  errors["eccentricity"] = {{"eccentricity_m", g.errors.eccentricity.eccentricity_m},
-                            {"phase_rad", g.errors.eccentricity.phase_rad}};
+  errors["eccentricity"] = {{"eccentricity_m", g.errors.eccentricity.eccentricity_m}, {"phase_rad", g.errors.eccentricity.phase_rad}};
   return {{"name", g.name},
           {"kind", g.kind == GearKind::Internal ? "internal" : "external"},
           {"teeth", g.teeth},
@@ -87,19 +85,26 @@ ojson joint_json(const physics::JointDef& jd) {
 }
 
 ojson fe_json(const physics::FeTeDef& f) {
-  return {{"flank_size_m", f.flank_size_m},     {"core_size_m", f.core_size_m},
-          {"transition_m", f.transition_m},     {"max_sagitta_m", f.max_sagitta_m},
-          {"thinning_per_flank_m", f.thinning_per_flank_m}, {"sun_torque_N_m", f.sun_torque_N_m},
-          {"torque_source", f.torque_source},   {"friction", f.friction},
-          {"element_type", f.element_type},     {"positions_per_mesh", f.positions_per_mesh},
-          {"mesh_periods", f.mesh_periods},     {"jobs", f.jobs}};
+  return {{"flank_size_m", f.flank_size_m},
+          {"core_size_m", f.core_size_m},
+          {"transition_m", f.transition_m},
+          {"max_sagitta_m", f.max_sagitta_m},
+          {"thinning_per_flank_m", f.thinning_per_flank_m},
+          {"sun_torque_N_m", f.sun_torque_N_m},
+          {"torque_source", f.torque_source},
+          {"friction", f.friction},
+          {"element_type", f.element_type},
+          {"positions_per_mesh", f.positions_per_mesh},
+          {"mesh_periods", f.mesh_periods},
+          {"jobs", f.jobs}};
 }
 
 ojson planetary_json(const physics::PlanetaryTrainDef& p) {
   ojson planets = ojson::array();
   for (const GearSpec& g : p.planet_gears) planets.push_back(gear_json(g));
-  return {{"sun", gear_json(p.spec.sun)}, {"planet", gear_json(p.spec.planet)}, {"ring", gear_json(p.spec.ring)},
-          {"planets", p.spec.planets}, {"planet_gears", planets}, {"ring_fixed", p.ring_fixed}};
+  return {{"sun", gear_json(p.spec.sun)},   {"planet", gear_json(p.spec.planet)},
+          {"ring", gear_json(p.spec.ring)}, {"planets", p.spec.planets},
+          {"planet_gears", planets},        {"ring_fixed", p.ring_fixed}};
 }
 
 ojson pair_table_json(const physics::PairTableDef& t) {
@@ -116,7 +121,11 @@ ojson pair_table_json(const physics::PairTableDef& t) {
 
 // The run settings: solver, output, contact and the verification switches.
 void settings_json(const physics::Scenario& s, ojson& j) {
-  j["solver"] = {{"time_step_s", s.solver.time_step_s}, {"iterations", s.solver.iterations}, {"engine", physics::engine_name(s.solver.engine)}, {"theta", s.solver.theta}, {"integrator", physics::integrator_name(s.solver.integrator)}};
+  j["solver"] = {{"time_step_s", s.solver.time_step_s},
+                 {"iterations", s.solver.iterations},
+                 {"engine", physics::engine_name(s.solver.engine)},
+                 {"theta", s.solver.theta},
+                 {"integrator", physics::integrator_name(s.solver.integrator)}};
   j["output"] = {{"sample_rate_hz", s.output.sample_rate_hz}, {"per_step_log", s.output.per_step_log}};
   j["contact"] = {{"stiffness_N_per_m_per_m", s.contact.stiffness_N_per_m_per_m},
                   {"damping_ratio", s.contact.damping_ratio},
@@ -126,8 +135,11 @@ void settings_json(const physics::Scenario& s, ojson& j) {
   if (!s.contact.stiffness_tables.empty()) {
     ojson tables = ojson::array();
     for (const physics::PairStiffnessDef& t : s.contact.stiffness_tables)
-      tables.push_back({{"body_a", t.body_a}, {"body_b", t.body_b}, {"file", t.table.source},
-                        {"radius_a_m", t.table.radius_m}, {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m},
+      tables.push_back({{"body_a", t.body_a},
+                        {"body_b", t.body_b},
+                        {"file", t.table.source},
+                        {"radius_a_m", t.table.radius_m},
+                        {"stiffness_N_per_m_per_m", t.table.stiffness_N_per_m_per_m},
                         {"body_stiffness_N_per_m", t.body_stiffness_N_per_m}});
     j["contact"]["stiffness_tables"] = tables;
   }
@@ -158,29 +170,42 @@ ojson scenario_json(const physics::Scenario& s) {
   for (const physics::JointDef& jd : s.joints) j["joints"].push_back(joint_json(jd));
   j["motors"] = ojson::array();
   for (const physics::MotorDef& m : s.motors)
-    j["motors"].push_back({{"joint", m.joint}, {"target_speed_rad_s", m.target_speed_rad_s},
-                           {"ramp_time_s", m.ramp_time_s}, {"max_torque_N_m", m.max_torque_N_m}});
+    j["motors"].push_back({{"joint", m.joint},
+                           {"target_speed_rad_s", m.target_speed_rad_s},
+                           {"ramp_time_s", m.ramp_time_s},
+                           {"max_torque_N_m", m.max_torque_N_m}});
   j["loads"] = ojson::array();
   for (const physics::LoadDef& l : s.loads)
-    j["loads"].push_back({{"joint", l.joint}, {"constant_torque_N_m", l.constant_torque_N_m},
-                          {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad}, {"ramp_time_s", l.ramp_time_s}});
+    j["loads"].push_back({{"joint", l.joint},
+                          {"constant_torque_N_m", l.constant_torque_N_m},
+                          {"viscous_N_m_s_per_rad", l.viscous_N_m_s_per_rad},
+                          {"ramp_time_s", l.ramp_time_s}});
   if (!s.sensors.empty()) {
     j["sensors"] = ojson::array();
     for (const physics::SensorDef& d : s.sensors)
-      j["sensors"].push_back({{"name", d.name}, {"body", d.body}, {"angle_rad", d.angle_rad}, {"window_width_rad", d.window_width_rad},
-                              {"other_meshes_weight", d.other_meshes_weight}, {"resonance_hz", d.resonance_hz},
-                              {"damping_ratio", d.damping_ratio}, {"effective_mass_kg", d.effective_mass_kg},
-                              {"noise_rms_m_s2", d.noise_rms_m_s2}, {"sample_rate_hz", d.sample_rate_hz}});
+      j["sensors"].push_back({{"name", d.name},
+                              {"body", d.body},
+                              {"angle_rad", d.angle_rad},
+                              {"window_width_rad", d.window_width_rad},
+                              {"other_meshes_weight", d.other_meshes_weight},
+                              {"resonance_hz", d.resonance_hz},
+                              {"damping_ratio", d.damping_ratio},
+                              {"effective_mass_kg", d.effective_mass_kg},
+                              {"noise_rms_m_s2", d.noise_rms_m_s2},
+                              {"sample_rate_hz", d.sample_rate_hz}});
   }
   if (!s.impulses.empty()) {
     j["impulses"] = ojson::array();
     for (const physics::ImpulseDef& i : s.impulses)
-      j["impulses"].push_back({{"body", i.body}, {"at_s", i.at_s}, {"duration_s", i.duration_s}, {"force_N", vec(i.force_N)},
+      j["impulses"].push_back({{"body", i.body},
+                               {"at_s", i.at_s},
+                               {"duration_s", i.duration_s},
+                               {"force_N", vec(i.force_N)},
                                {"torque_N_m", vec(i.torque_N_m)}});
   }
   if (s.render) {
     const physics::RenderDef& r = *s.render;
-    j["render"] = {{"camera", r.camera}, {"fps", r.fps}, {"slowmo", r.slowmo}, {"width_px", r.width_px},
+    j["render"] = {{"camera", r.camera},       {"fps", r.fps},   {"slowmo", r.slowmo},      {"width_px", r.width_px},
                    {"height_px", r.height_px}, {"msaa", r.msaa}, {"png_every", r.png_every}};
     if (r.from_s) j["render"]["from_s"] = *r.from_s;
     if (r.to_s) j["render"]["to_s"] = *r.to_s;

@@ -12,9 +12,7 @@
 
 namespace gearsim::input::scenario_detail {
 
-Eigen::Quaterniond about_z(double angle_rad) {
-  return Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ()));
-}
+Eigen::Quaterniond about_z(double angle_rad) { return Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ())); }
 
 physics::JointDef hinge(const std::string& name, const std::string& parent, const Eigen::Vector3d& pivot_m) {
   physics::JointDef j;
@@ -46,8 +44,8 @@ std::optional<InvoluteTeeth> involutes_of(const physics::BodyDef& b, std::string
   if (!mesh.recognised)
     msg << ": not recognised as a gear";
   else if (mesh.recognised->asymmetric)
-    msg << ": its teeth are asymmetric (the two flank sides fit involutes of base radii "
-        << mesh.recognised->ccw.base_radius_m * 1e3 << " and " << mesh.recognised->cw.base_radius_m * 1e3 << " mm)";
+    msg << ": its teeth are asymmetric (the two flank sides fit involutes of base radii " << mesh.recognised->ccw.base_radius_m * 1e3
+        << " and " << mesh.recognised->cw.base_radius_m * 1e3 << " mm)";
   else
     msg << ": its flanks are not recognised involutes";
   why = msg.str();

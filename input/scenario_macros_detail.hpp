@@ -38,9 +38,9 @@ physics::PairTableDef checked_pair_table(const YamlMap& m, const std::string& a,
 // A planetary set's members before they are placed: from a gear-set spec (members named) or from
 // shapes (CAD meshes, gear or gear_from; members given as mappings).
 struct PlanetaryMembers {
-  physics::BodyDef sun, planet, ring;           // unplaced; planet as planet_0
-  std::vector<physics::BodyDef> planets;        // planet_0..: the spec's faulty ones in their place
-  std::optional<PlanetarySpec> spec;            // spec members
+  physics::BodyDef sun, planet, ring;  // unplaced; planet as planet_0
+  std::vector<physics::BodyDef> planets;  // planet_0..: the spec's faulty ones in their place
+  std::optional<PlanetarySpec> spec;  // spec members
   std::filesystem::path spec_file;
   // Shape members' involutes: all three, or none when a member's flanks are not recognised
   // involutes (then centre_distance_m is required and the start checks alone judge the meshes).

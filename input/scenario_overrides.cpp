@@ -67,8 +67,8 @@ YAML::Node unmarked(const YAML::Node& n) {
 }
 
 // Sets steps[i..] below `node` (a mapping) to `value`, creating missing mappings on the way.
-void set_path(YAML::Node node, const std::vector<Step>& steps, std::size_t i, const YAML::Node& value,
-              const std::string& file, const std::string& text) {
+void set_path(YAML::Node node, const std::vector<Step>& steps, std::size_t i, const YAML::Node& value, const std::string& file,
+              const std::string& text) {
   const Step& s = steps[i];
   const bool last = i + 1 == steps.size();
   if (!node.IsMap()) bad(file, text, "'" + steps[i - 1].key + "' does not hold a mapping, cannot set '" + s.key + "' in it");
@@ -78,8 +78,10 @@ void set_path(YAML::Node node, const std::vector<Step>& steps, std::size_t i, co
     if (*s.index >= list.size())
       bad(file, text, "'" + s.key + "' has " + std::to_string(list.size()) + " items, no item " + std::to_string(*s.index));
     YAML::Node item = list[*s.index];
-    if (last) item = value;  // yaml-cpp: assigning to a bound node replaces its content in place
-    else set_path(item, steps, i + 1, value, file, text);
+    if (last)
+      item = value;  // yaml-cpp: assigning to a bound node replaces its content in place
+    else
+      set_path(item, steps, i + 1, value, file, text);
     return;
   }
   if (last) {

@@ -28,9 +28,7 @@ physics::BodyDef pair_member(const YamlMap& m, const std::string& fallback_name,
   return b;
 }
 
-double tooth0_of(const physics::BodyDef& b) {
-  return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad;
-}
+double tooth0_of(const physics::BodyDef& b) { return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad; }
 
 }  // namespace
 
@@ -51,8 +49,8 @@ Expansion expand_pair(const YamlMap& m, const fs::path& dir) {
   if (a.gear && b.gear) {
     // Generated gears: the zero-backlash distance unless given; either way the mesh must work.
     try {
-      centre_distance_m = number_within_or(m, "centre_distance_m", zero_backlash_centre_distance(*ext.gear, *in.gear),
-                                           limits::kCentreDistance_m);
+      centre_distance_m =
+          number_within_or(m, "centre_distance_m", zero_backlash_centre_distance(*ext.gear, *in.gear), limits::kCentreDistance_m);
       analyse_mesh(*ext.gear, *in.gear, centre_distance_m);
     } catch (const InputError& e) {
       m.fail(m.has("centre_distance_m") ? "centre_distance_m" : "driven", e.what());

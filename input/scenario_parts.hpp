@@ -22,7 +22,7 @@ struct Expansion {
   std::optional<physics::TransmissionDef> transmission;
   std::filesystem::path gearset_spec;  // the gear-set spec the macro took its gears from, if any
   std::optional<physics::PlanetaryTrainDef> planetary;  // the planetary macro's train
-  std::vector<physics::PairTableDef> pair_tables;       // the pair macro's gear-table figures
+  std::vector<physics::PairTableDef> pair_tables;  // the pair macro's gear-table figures
 };
 
 // True when `key` holds a value; marks the key as known either way (so `key:` left empty, or
@@ -65,8 +65,7 @@ Expansion expand_pair(const YamlMap& m, const std::filesystem::path& dir);
 // InputError naming the entry when a file is missing or malformed (with its line), a name
 // matches no gear, the names match no meshing pair, a pair gets two tables, or a generated
 // pair's active flank on A (start of active profile to tip) is not inside the table's radii.
-void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenario& scenario,
-                            const std::filesystem::path& dir);
+void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenario& scenario, const std::filesystem::path& dir);
 
 // contact.mesh_stiffnesses (after the bodies are known): each entry {gears: [A, B],
 // stiffness_N_per_m: k} gives every meshing body pair it matches (names as for stiffness

@@ -19,9 +19,7 @@ namespace fs = std::filesystem;
 using gearsim::constants::kPi;
 
 // Polar angle of tooth 0 in a member's own frame, rad.
-double tooth0_of_member(const physics::BodyDef& b) {
-  return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad;
-}
+double tooth0_of_member(const physics::BodyDef& b) { return b.gear ? b.gear->tooth0_angle_rad : b.mesh->teeth->tooth0_angle_rad; }
 
 // The geometry of a set of shapes: the centre distance (given, or midway between the sun–planet
 // and planet–ring zero-backlash distances), both meshes checked there, the phasing.
@@ -46,16 +44,15 @@ PlanetaryGeometry shapes_geometry(const YamlMap& m, const PlanetaryMembers& s, s
   g.ratio_sun_to_carrier = 1.0 + static_cast<double>(teeth_of(s.ring)) / teeth_of(s.sun);
   const double planet_tip_m = s.planet.gear ? gear_dimensions(*s.planet.gear).tip_radius_m : s.planet.mesh->recognised->tip_radius_m;
   g.adjacency_clearance_m = 2 * a * std::sin(kPi / s.count) - 2 * planet_tip_m;
-  phase_planetary({teeth_of(s.sun), teeth_of(s.planet), teeth_of(s.ring), s.count, tooth0_of_member(s.sun),
-                   tooth0_of_member(s.planet), tooth0_of_member(s.ring)},
+  phase_planetary({teeth_of(s.sun), teeth_of(s.planet), teeth_of(s.ring), s.count, tooth0_of_member(s.sun), tooth0_of_member(s.planet),
+                   tooth0_of_member(s.ring)},
                   g);
   return g;
 }
 
 // The set's geometry: from its shapes (shapes_geometry, which adds the two pairs' tables) or from
 // its spec, refused (naming `ring`) when the spec's members cannot be assembled.
-PlanetaryGeometry set_geometry(const YamlMap& m, const PlanetaryMembers& s, bool shapes,
-                               std::vector<physics::PairTableDef>& tables) {
+PlanetaryGeometry set_geometry(const YamlMap& m, const PlanetaryMembers& s, bool shapes, std::vector<physics::PairTableDef>& tables) {
   PlanetaryGeometry g;
   if (shapes) {
     g = shapes_geometry(m, s, tables);
@@ -129,9 +126,11 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   const Supports supports = parse_supports(m);
   const bool ring_fixed = m.boolean_or("ring_fixed", true);
   if (ring_fixed && supports.ring && !(supports.ring->torsional_stiffness_N_m_per_rad > 0))
-    m.map("supports").map("ring").fail("torsional_stiffness_N_m_per_rad",
-                                         "a fixed ring on a bearing is held against rotation by its torsional spring: expected a stiffness > 0 in N·m/rad "
-                                         "(or ring_fixed: false for a ring free to turn)");
+    m.map("supports")
+        .map("ring")
+        .fail("torsional_stiffness_N_m_per_rad",
+              "a fixed ring on a bearing is held against rotation by its torsional spring: expected a stiffness > 0 in N·m/rad "
+              "(or ring_fixed: false for a ring free to turn)");
   const Eigen::Vector3d origin = vec3_within_or(m, "origin_m", Eigen::Vector3d::Zero(), limits::kPosition_m);
   std::vector<physics::PairTableDef> tables;
   // The set's geometry last: the mesh analysis is the slow part.
@@ -165,8 +164,8 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   for (int k = 0; k < s.count; ++k) {
     const PlanetPlacement& p = g.placements[static_cast<std::size_t>(k)];
     const physics::BodyDef& planet = s.planets[static_cast<std::size_t>(k)];
-    const Eigen::Vector3d centre = origin + g.centre_distance_m * Eigen::Vector3d(std::cos(p.carrier_angle_rad),
-                                                                                  std::sin(p.carrier_angle_rad), 0);
+    const Eigen::Vector3d centre =
+        origin + g.centre_distance_m * Eigen::Vector3d(std::cos(p.carrier_angle_rad), std::sin(p.carrier_angle_rad), 0);
     // The spin places the planet's tooth 0 as the phasing placed the healthy planet's.
     place(planet, centre, p.spin_angle_rad + tooth0_of_member(s.planet) - tooth0_of_member(planet));
     e.joints.push_back(hinge(planet.name, "carrier", centre));

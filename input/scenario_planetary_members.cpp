@@ -16,8 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The gear called m[key] (or `fallback` when the key is absent and fallback is not empty).
-const GearSpec& named_gear(const YamlMap& m, const std::string& key, const GearSetFile& f,
-                           const std::string& fallback) {
+const GearSpec& named_gear(const YamlMap& m, const std::string& key, const GearSetFile& f, const std::string& fallback) {
   const std::string name = fallback.empty() ? m.string(key) : m.string_or(key, fallback);
   std::string names;
   for (const GearSpec& g : f.gears) {
@@ -56,8 +55,10 @@ std::vector<GearSpec> planet_gears(const YamlMap& m, const GearSetFile& f, const
     }
     if (g.kind != planet.kind || g.teeth != planet.teeth || g.module_m != planet.module_m ||
         g.pressure_angle_rad != planet.pressure_angle_rad || g.profile_shift != planet.profile_shift)
-      fp.fail(key, "gear '" + g.name + "' cannot take planet " + key + "'s place: its kind, teeth, module, "
-                   "pressure angle and profile shift must equal those of '" + planet.name + "'");
+      fp.fail(key, "gear '" + g.name + "' cannot take planet " + key +
+                       "'s place: its kind, teeth, module, "
+                       "pressure angle and profile shift must equal those of '" +
+                       planet.name + "'");
     gears[static_cast<std::size_t>(k)] = g;
   }
   return gears;
@@ -80,8 +81,7 @@ physics::BodyDef shape_member(const YamlMap& m, const std::string& key, bool int
   s.reject_unknown_keys();
   if (!b.gear && !b.mesh) s.fail_here("a planetary member needs a shape: gear, gear_from or mesh");
   if (teeth_of(b) == 0) s.fail_here("a planetary member needs teeth (teeth: none cannot mesh)");
-  if (is_internal(b) != internal)
-    s.fail_here(internal ? "the ring must be an internal gear" : "the " + key + " must be an external gear");
+  if (is_internal(b) != internal) s.fail_here(internal ? "the ring must be an internal gear" : "the " + key + " must be an external gear");
   return b;
 }
 

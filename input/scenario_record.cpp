@@ -64,7 +64,8 @@ GearSpec gear_of(const Node& n) {
   for (const Node& p : e.list("profile_slopes"))
     g.errors.profile_slopes.push_back({p.integer("tooth", kAny), flank_of(p, "flank"), p.number_within("slope_m", kToothError_m)});
   const Node ecc = e.object("eccentricity");
-  g.errors.eccentricity = {ecc.number_within("eccentricity_m", limits::kEccentricity_m), ecc.number_within("phase_rad", limits::kAngle_rad)};
+  g.errors.eccentricity = {ecc.number_within("eccentricity_m", limits::kEccentricity_m),
+                           ecc.number_within("phase_rad", limits::kAngle_rad)};
   try {
     validate_gear_spec(g);
   } catch (const InputError& err) {
@@ -114,17 +115,23 @@ physics::BodyDef body_of(const Node& n) {
 }
 
 physics::JointDef joint_of(const Node& n) {
-  physics::JointDef j{n.string("name"), n.string("body"), n.string("parent"), n.vec3_within("pivot_m", limits::kPosition_m),
-                      n.vec3_within("axis", {-1, 1, false, "", "a unit axis component"}), {}};
+  physics::JointDef j{n.string("name"),
+                      n.string("body"),
+                      n.string("parent"),
+                      n.vec3_within("pivot_m", limits::kPosition_m),
+                      n.vec3_within("axis", {-1, 1, false, "", "a unit axis component"}),
+                      {}};
   if (n.has("bearing")) {
     const Node b = n.object("bearing");
     j.bearing = physics::BearingDef{b.number_within("radial_stiffness_N_per_m", limits::kStiffness_N_per_m),
                                     b.number_within("radial_damping_N_s_per_m", limits::kDamping_N_s_per_m), 0, 0};
     // Records written before torsional supports existed have neither key (a torsionally free bearing).
     if (b.has("torsional_stiffness_N_m_per_rad"))
-      j.bearing->torsional_stiffness_N_m_per_rad = b.number_within("torsional_stiffness_N_m_per_rad", limits::kTorsionalStiffness_N_m_per_rad);
+      j.bearing->torsional_stiffness_N_m_per_rad =
+          b.number_within("torsional_stiffness_N_m_per_rad", limits::kTorsionalStiffness_N_m_per_rad);
     if (b.has("torsional_damping_N_m_s_per_rad"))
-      j.bearing->torsional_damping_N_m_s_per_rad = b.number_within("torsional_damping_N_m_s_per_rad", limits::kTorsionalDamping_N_m_s_per_rad);
+      j.bearing->torsional_damping_N_m_s_per_rad =
+          b.number_within("torsional_damping_N_m_s_per_rad", limits::kTorsionalDamping_N_m_s_per_rad);
   }
   return j;
 }
@@ -170,7 +177,8 @@ physics::ContactDef contact_of(const Node& n) {
   c.max_flank_departure_m = n.number_within("max_flank_departure_m", limits::kFlankDeparture_m);
   if (n.has("stiffness_tables"))
     for (const Node& t : n.list("stiffness_tables")) {
-      physics::PairStiffnessDef d{t.string("body_a"), t.string("body_b"),
+      physics::PairStiffnessDef d{t.string("body_a"),
+                                  t.string("body_b"),
                                   {t.string("file"), t.numbers("radius_a_m"), t.numbers("stiffness_N_per_m_per_m")},
                                   t.number_within("body_stiffness_N_per_m", kBodyStiffness_N_per_m)};
       if (const Check ok = contact::check_stiffness_table(d.table); !ok) t.fail("radius_a_m", ok.reason());
@@ -178,7 +186,8 @@ physics::ContactDef contact_of(const Node& n) {
     }
   if (n.has("mesh_stiffnesses"))
     for (const Node& m : n.list("mesh_stiffnesses"))
-      c.mesh_stiffnesses.push_back({m.string("body_a"), m.string("body_b"), m.number_within("stiffness_N_per_m", limits::kStiffness_N_per_m)});
+      c.mesh_stiffnesses.push_back(
+          {m.string("body_a"), m.string("body_b"), m.number_within("stiffness_N_per_m", limits::kStiffness_N_per_m)});
   return c;
 }
 
@@ -198,10 +207,14 @@ physics::RenderDef render_of(const Node& n) {
 
 physics::FeTeDef fe_of(const Node& n) {
   physics::FeTeDef f;
-  for (auto [key, field] : {std::pair{"flank_size_m", &f.flank_size_m}, {"core_size_m", &f.core_size_m},
-                            {"transition_m", &f.transition_m}, {"max_sagitta_m", &f.max_sagitta_m},
-                            {"thinning_per_flank_m", &f.thinning_per_flank_m}, {"sun_torque_N_m", &f.sun_torque_N_m},
-                            {"friction", &f.friction}, {"mesh_periods", &f.mesh_periods}})
+  for (auto [key, field] : {std::pair{"flank_size_m", &f.flank_size_m},
+                            {"core_size_m", &f.core_size_m},
+                            {"transition_m", &f.transition_m},
+                            {"max_sagitta_m", &f.max_sagitta_m},
+                            {"thinning_per_flank_m", &f.thinning_per_flank_m},
+                            {"sun_torque_N_m", &f.sun_torque_N_m},
+                            {"friction", &f.friction},
+                            {"mesh_periods", &f.mesh_periods}})
     *field = n.number(key);
   f.torque_source = n.string("torque_source");
   f.element_type = n.string("element_type");
@@ -212,8 +225,7 @@ physics::FeTeDef fe_of(const Node& n) {
 
 physics::PlanetaryTrainDef planetary_of(const Node& n) {
   physics::PlanetaryTrainDef p;
-  p.spec = {gear_of(n.object("sun")), gear_of(n.object("planet")), gear_of(n.object("ring")),
-            n.integer("planets", limits::kPlanets)};
+  p.spec = {gear_of(n.object("sun")), gear_of(n.object("planet")), gear_of(n.object("ring")), n.integer("planets", limits::kPlanets)};
   for (const Node& g : n.list("planet_gears")) p.planet_gears.push_back(gear_of(g));
   p.ring_fixed = n.boolean("ring_fixed");
   return p;
@@ -224,9 +236,12 @@ physics::PairTableDef pair_table_of(const Node& n) {
   t.driver = n.string("driver");
   t.driven = n.string("driven");
   t.centre_distance_derived = n.boolean("centre_distance_derived");
-  t.figures = {n.number("centre_distance_m"),  n.number("zero_backlash_centre_distance_m"),
-               n.number("operating_pressure_angle_rad"), n.number("normal_backlash_m"),
-               n.number("contact_ratio"), n.number("base_pitch_mismatch_m")};
+  t.figures = {n.number("centre_distance_m"),
+               n.number("zero_backlash_centre_distance_m"),
+               n.number("operating_pressure_angle_rad"),
+               n.number("normal_backlash_m"),
+               n.number("contact_ratio"),
+               n.number("base_pitch_mismatch_m")};
   return t;
 }
 
@@ -248,8 +263,9 @@ void read_rest(const Node& r, physics::Scenario& s) {
                            d.number_within("noise_rms_m_s2", limits::kNoise_m_s2), d.number_within("sample_rate_hz", limits::kRate_Hz)});
   if (r.has("impulses"))
     for (const Node& i : r.list("impulses"))
-      s.impulses.push_back({i.string("body"), i.number_within("at_s", limits::kRunTime_s), i.number_within("duration_s", limits::kDuration_s),
-                            i.vec3_within("force_N", limits::kImpulseForce_N), i.vec3_within("torque_N_m", limits::kTorque_N_m)});
+      s.impulses.push_back({i.string("body"), i.number_within("at_s", limits::kRunTime_s),
+                            i.number_within("duration_s", limits::kDuration_s), i.vec3_within("force_N", limits::kImpulseForce_N),
+                            i.vec3_within("torque_N_m", limits::kTorque_N_m)});
   if (r.has("render")) s.render = render_of(r.object("render"));
   if (r.has("transmission")) {
     const Node t = r.object("transmission");
@@ -320,8 +336,7 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
 void write_scenario_record(const physics::Scenario& s, const fs::path& dir) {
   physics::Scenario recorded = s;
   if (!s.gearset_spec.empty()) {
-    write_output_file(dir / "gearset.yaml",
-                      read_input_file(s.gearset_spec, limits::kMaxYamlBytes, "a gear-set spec"), Durability::Record);
+    write_output_file(dir / "gearset.yaml", read_input_file(s.gearset_spec, limits::kMaxYamlBytes, "a gear-set spec"), Durability::Record);
     recorded.gearset_spec = "gearset.yaml";  // relative to the run folder
   }
   nlohmann::ordered_json j = scenario_json(recorded);
@@ -331,8 +346,7 @@ void write_scenario_record(const physics::Scenario& s, const fs::path& dir) {
 
 physics::Scenario read_scenario_record(const fs::path& dir) {
   const fs::path file = dir / "scenario.json";
-  if (!fs::exists(fs::symlink_status(file)))
-    throw InputError(file.string() + ": not found (a run folder of gearsim run holds it)");
+  if (!fs::exists(fs::symlink_status(file))) throw InputError(file.string() + ": not found (a run folder of gearsim run holds it)");
   const std::string text = read_input_file(file, limits::kMaxRecordBytes, "a run's scenario record");
   json j;
   try {

@@ -33,8 +33,8 @@ void parse_sensors(const std::vector<YamlMap>& entries, physics::Scenario& s) {
     d.resonance_hz = number_within(m, "resonance_hz", limits::kRate_Hz);
     if (!(d.resonance_hz < step_rate / 2)) {
       std::ostringstream msg;
-      msg << "resonance " << d.resonance_hz << " Hz lies above the simulation's Nyquist frequency " << step_rate / 2
-          << " Hz (time step " << s.solver.time_step_s << " s)";
+      msg << "resonance " << d.resonance_hz << " Hz lies above the simulation's Nyquist frequency " << step_rate / 2 << " Hz (time step "
+          << s.solver.time_step_s << " s)";
       m.fail("resonance_hz", msg.str());
     }
     d.damping_ratio = m.has("damping_ratio") ? positive(m, "damping_ratio", "damping ratio") : d.damping_ratio;

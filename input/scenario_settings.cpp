@@ -22,8 +22,8 @@ std::string whole_steps_problem(const physics::Scenario& s) {
   if (whole >= 1 && std::abs(steps - whole) <= 1e-9 * steps) return "";
   std::ostringstream msg;
   msg << "sample rate " << s.output.sample_rate_hz << " Hz is " << steps << " time steps of " << s.solver.time_step_s
-      << " s, not a whole number: samples are taken at whole steps; expected e.g. "
-      << 1 / (std::floor(steps) * s.solver.time_step_s) << " Hz or " << 1 / (std::ceil(steps) * s.solver.time_step_s) << " Hz";
+      << " s, not a whole number: samples are taken at whole steps; expected e.g. " << 1 / (std::floor(steps) * s.solver.time_step_s)
+      << " Hz or " << 1 / (std::ceil(steps) * s.solver.time_step_s) << " Hz";
   return msg.str();
 }
 
@@ -40,18 +40,22 @@ void parse_solver(const YamlMap& m, physics::Scenario& s) {
   if (given(m, "theta") && !given(m, "integrator")) s.solver.integrator = physics::SolverDef::Integrator::theta;
   if (given(m, "integrator")) {
     const std::string i = m.choice_or("integrator", {"theta", "bdf2", "trapezoid_closed"}, "trapezoid_closed");
-    s.solver.integrator = i == "bdf2" ? physics::SolverDef::Integrator::bdf2
+    s.solver.integrator = i == "bdf2"               ? physics::SolverDef::Integrator::bdf2
                           : i == "trapezoid_closed" ? physics::SolverDef::Integrator::trapezoid_closed
                                                     : physics::SolverDef::Integrator::theta;
     if (s.solver.engine == physics::SolverEngine::rigid_bodies)
       m.fail("integrator", "only engine multibody has a choice of integrator (rigid_bodies integrates its contacts by implicit Euler)");
     if (s.solver.integrator != physics::SolverDef::Integrator::theta && given(m, "theta"))
-      m.fail("theta", std::string("integrator ") + physics::integrator_name(s.solver.integrator) + " has no θ: remove theta or set integrator: theta");
+      m.fail("theta", std::string("integrator ") + physics::integrator_name(s.solver.integrator) +
+                          " has no θ: remove theta or set integrator: theta");
   }
   for (const char* key : {"row_solver", "mass_matrix", "locate_contact_onset"})
-    if (given(m, key)) m.fail(key, std::string("a verification switch: write it as verify.") + key + " (docs/solver.md, \"Verification switches\")");
+    if (given(m, key))
+      m.fail(key, std::string("a verification switch: write it as verify.") + key + " (docs/solver.md, \"Verification switches\")");
   if (s.solver.engine == physics::SolverEngine::multibody && given(m, "iterations"))
-    m.fail("iterations", "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
+    m.fail(
+        "iterations",
+        "only engine rigid_bodies iterates (multibody, the default, solves its rows directly): remove the key or set engine: rigid_bodies");
   m.reject_unknown_keys();
 }
 
@@ -60,14 +64,13 @@ void parse_output(const YamlMap& m, physics::Scenario& s) {
   s.output.sample_rate_hz = number_within_or(m, "sample_rate_hz", s.output.sample_rate_hz, limits::kRate_Hz);
   if (s.output.sample_rate_hz * s.solver.time_step_s > 1 + 1e-9) {
     std::ostringstream msg;
-    msg << "sample rate " << s.output.sample_rate_hz << " Hz is above the step rate 1/time_step_s = "
-        << 1 / s.solver.time_step_s << " Hz";
+    msg << "sample rate " << s.output.sample_rate_hz << " Hz is above the step rate 1/time_step_s = " << 1 / s.solver.time_step_s << " Hz";
     m.fail("sample_rate_hz", msg.str());
   }
   if (const std::string w = whole_steps_problem(s); !w.empty()) m.fail("sample_rate_hz", w);
   if (s.output.sample_rate_hz * s.duration_s < 1)
-    m.fail("sample_rate_hz", "expected at least one output row in duration_s: a rate ≥ 1/duration_s = " +
-                                 std::to_string(1 / s.duration_s) + " Hz");
+    m.fail("sample_rate_hz",
+           "expected at least one output row in duration_s: a rate ≥ 1/duration_s = " + std::to_string(1 / s.duration_s) + " Hz");
   s.output.per_step_log = m.boolean_or("per_step_log", s.output.per_step_log);
   m.reject_unknown_keys();
 }
@@ -101,13 +104,15 @@ void parse_render(const YamlMap& m, physics::Scenario& s) {
 // contact: the contact law and search (its tables are read once the bodies are known).
 void parse_contact_settings(const YamlMap& m, physics::Scenario& s) {
   physics::ContactDef& c = s.contact;
-  c.stiffness_N_per_m_per_m = number_within_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, limits::kContactStiffness_N_per_m_per_m);
+  c.stiffness_N_per_m_per_m =
+      number_within_or(m, "stiffness_N_per_m_per_m", c.stiffness_N_per_m_per_m, limits::kContactStiffness_N_per_m_per_m);
   c.damping_ratio = number_within_or(m, "damping_ratio", c.damping_ratio, limits::kDampingRatio);
   c.friction = number_within_or(m, "friction", c.friction, limits::kFriction);
   c.chordal_deviation_m = number_within_or(m, "chordal_deviation_m", c.chordal_deviation_m, limits::kChordalDeviation_m);
   c.max_flank_departure_m = number_within_or(m, "max_flank_departure_m", c.max_flank_departure_m, limits::kFlankDeparture_m);
   for (const char* key : {"friction_model", "coherent_search", "continued_search", "park_near_pairs"})
-    if (given(m, key)) m.fail(key, std::string("a verification switch: write it as verify.") + key + " (docs/solver.md, \"Verification switches\")");
+    if (given(m, key))
+      m.fail(key, std::string("a verification switch: write it as verify.") + key + " (docs/solver.md, \"Verification switches\")");
   // Read once the bodies are known (parse_stiffness_tables); here only marked as known.
   if (given(m, "stiffness_tables")) m.list_of_maps("stiffness_tables");
   if (given(m, "mesh_stiffnesses")) m.list_of_maps("mesh_stiffnesses");
@@ -122,18 +127,21 @@ void parse_verify(const YamlMap& m, physics::Scenario& s) {
     if (rigid) m.fail(key, std::string("only engine multibody ") + why);
   };
   if (given(m, "row_solver")) {
-    s.solver.row_solver = m.choice_or("row_solver", {"active_set", "dantzig"}, "active_set") == "dantzig" ? physics::SolverDef::RowSolver::dantzig
-                                                                                                   : physics::SolverDef::RowSolver::active_set;
+    s.solver.row_solver = m.choice_or("row_solver", {"active_set", "dantzig"}, "active_set") == "dantzig"
+                              ? physics::SolverDef::RowSolver::dantzig
+                              : physics::SolverDef::RowSolver::active_set;
     multibody_only("row_solver", "solves its rows directly (rigid_bodies iterates: solver.iterations)");
   }
   if (given(m, "mass_matrix")) {
-    s.solver.mass_matrix = m.choice_or("mass_matrix", {"planar", "articulated"}, "planar") == "articulated" ? physics::SolverDef::MassMatrix::articulated
-                                                                                               : physics::SolverDef::MassMatrix::planar;
+    s.solver.mass_matrix = m.choice_or("mass_matrix", {"planar", "articulated"}, "planar") == "articulated"
+                               ? physics::SolverDef::MassMatrix::articulated
+                               : physics::SolverDef::MassMatrix::planar;
     multibody_only("mass_matrix", "solves its rows directly (rigid_bodies iterates: solver.iterations)");
   }
   if (given(m, "locate_contact_onset")) {
     s.solver.locate_contact_onset = m.boolean_or("locate_contact_onset", s.solver.locate_contact_onset);
-    if (s.solver.locate_contact_onset) multibody_only("locate_contact_onset", "splits a step at a contact's onset (rigid_bodies steps Bullet's world whole)");
+    if (s.solver.locate_contact_onset)
+      multibody_only("locate_contact_onset", "splits a step at a contact's onset (rigid_bodies steps Bullet's world whole)");
     if (s.solver.locate_contact_onset && s.solver.integrator == physics::SolverDef::Integrator::bdf2)
       m.fail("locate_contact_onset", "solver.integrator bdf2 needs equal steps: set locate_contact_onset: false or another integrator");
   }
@@ -185,6 +193,5 @@ void parse_settings(const YamlMap& top, physics::Scenario& s) {
   if (given(top, "verify")) parse_verify(top.map("verify"), s);
   settle_engine_switches(s);
 }
-
 
 }  // namespace gearsim::input::scenario_detail

@@ -74,7 +74,9 @@ void check_gear_mesh(const YamlMap& m, physics::MeshSource& src) {
   } catch (const InputError& e) {
     m.fail("file", e.what());  // the mesh's own refusal, at the scenario's key
   }
-  if (!f.gear) m.fail("file", file + " is not a prism (" + f.prism.reason() + "): a gear must be a spur-gear extrusion; give `teeth: none` for a toothless body");
+  if (!f.gear)
+    m.fail("file", file + " is not a prism (" + f.prism.reason() +
+                       "): a gear must be a spur-gear extrusion; give `teeth: none` for a toothless body");
   if (!f.gear->recognition)
     m.fail(src.teeth ? "teeth" : "file", file + " is not recognised as a spur gear: " + f.gear->recognition.reason() +
                                              (src.teeth ? "" : "; give `teeth: none` for a toothless body"));
@@ -91,8 +93,7 @@ void check_gear_mesh(const YamlMap& m, physics::MeshSource& src) {
     // angle (0.3° on a 12-tooth pinion is 31 µm at its pitch circle) would phase a pair off by
     // more than the backlash of fine gears.
     const double pitch = 2 * std::numbers::pi / g.teeth;
-    src.teeth->tooth0_angle_rad =
-        g.tooth0_angle_rad + pitch * std::round((src.teeth->tooth0_angle_rad - g.tooth0_angle_rad) / pitch);
+    src.teeth->tooth0_angle_rad = g.tooth0_angle_rad + pitch * std::round((src.teeth->tooth0_angle_rad - g.tooth0_angle_rad) / pitch);
   }
 }
 

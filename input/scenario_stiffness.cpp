@@ -143,9 +143,9 @@ void parse_stiffness_tables(const std::vector<YamlMap>& entries, physics::Scenar
           }
         const std::pair<double, double> flank = flanks.at(at);
         if (table.radius_m.front() > flank.first + kCoverageSlack_m || table.radius_m.back() < flank.second - kCoverageSlack_m)
-          m.fail("file", table.source + " covers radii " + mm(table.radius_m.front()) + "–" + mm(table.radius_m.back()) +
-                             " mm on '" + a.name + "', but its active flank meshing '" + b.name + "' spans " +
-                             mm(flank.first) + "–" + mm(flank.second) + " mm (start of active profile to tip)");
+          m.fail("file", table.source + " covers radii " + mm(table.radius_m.front()) + "–" + mm(table.radius_m.back()) + " mm on '" +
+                             a.name + "', but its active flank meshing '" + b.name + "' spans " + mm(flank.first) + "–" + mm(flank.second) +
+                             " mm (start of active profile to tip)");
       }
       s.contact.stiffness_tables.push_back({a.name, b.name, table, body});
     }

@@ -33,13 +33,13 @@ std::string fnv1a_hex(const std::string& bytes) {
 bool is_key_path(const std::string& k) {
   if (k.empty() || k.size() > kMaxOverrideText || k.front() == '-' || k.front() == '.') return false;
   for (char c : k)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-' || c == '[' || c == ']'))
-      return false;
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' || c == '-' || c == '[' || c == ']')) return false;
   return true;
 }
 
-const char* const kKeyPathRule = "expected a key path such as motors[0].target_speed_rad_s (A-Z a-z 0-9 _ . - [ ], "
-                                 "at most 200 characters, not starting with '-' or '.')";
+const char* const kKeyPathRule =
+    "expected a key path such as motors[0].target_speed_rad_s (A-Z a-z 0-9 _ . - [ ], "
+    "at most 200 characters, not starting with '-' or '.')";
 
 // The text of a scalar value as an override gets it: a number in its shortest round-trip form,
 // any other scalar as written (one line, no control characters).
@@ -68,8 +68,7 @@ std::vector<std::string> axis_values(const YamlMap& grid, const std::string& key
   const int steps = integer_within(r, "steps", limits::kSweepSteps);
   r.reject_unknown_keys();
   std::vector<std::string> values;
-  for (int i = 0; i < steps; ++i)
-    values.push_back(override_number(i + 1 == steps ? to : from + (to - from) * i / (steps - 1)));
+  for (int i = 0; i < steps; ++i) values.push_back(override_number(i + 1 == steps ? to : from + (to - from) * i / (steps - 1)));
   return values;
 }
 
@@ -92,8 +91,7 @@ void read_grid(const YamlMap& top, SweepFile& f) {
 void read_cases(const YamlMap& top, SweepFile& f) {
   const std::vector<YamlMap> cases = top.list_of_maps("cases");
   if (cases.empty()) top.fail("cases", "expected at least one case");
-  if (cases.size() > limits::kMaxSweepCases)
-    top.fail("cases", "more than " + std::to_string(limits::kMaxSweepCases) + " cases");
+  if (cases.size() > limits::kMaxSweepCases) top.fail("cases", "more than " + std::to_string(limits::kMaxSweepCases) + " cases");
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const YamlMap& c = cases[i];
     const std::vector<std::string> keys = c.keys();
@@ -143,8 +141,10 @@ SweepCollect read_collect(const YamlMap& top) {
     for (const std::string& name : m.strings("metrics")) {
       bool known = false;
       for (const std::string& n : sweep_metric_names()) known = known || n == name;
-      if (!known) m.fail("metrics", "unknown metric '" + shown_name(name) + "': expected some of {dynamic_factor, "
-                                    "mean_force_N, mesh_frequency_hz, rms_dynamic_te_rad}");
+      if (!known)
+        m.fail("metrics", "unknown metric '" + shown_name(name) +
+                              "': expected some of {dynamic_factor, "
+                              "mean_force_N, mesh_frequency_hz, rms_dynamic_te_rad}");
       c.metrics.push_back(name);
     }
   m.reject_unknown_keys();
@@ -165,9 +165,7 @@ std::vector<std::string> read_set(const YamlMap& top) {
   return set;
 }
 
-std::string read_text(const std::filesystem::path& file) {
-  return read_input_file(file, limits::kMaxYamlBytes, "a sweep file");
-}
+std::string read_text(const std::filesystem::path& file) { return read_input_file(file, limits::kMaxYamlBytes, "a sweep file"); }
 
 }  // namespace
 
@@ -200,8 +198,10 @@ SweepFile load_sweep_file(const std::filesystem::path& path) {
   f.set = read_set(top);
   if (top.has("grid") == top.has("cases")) top.fail_here("expected either grid: (a cartesian product) or cases: (a list), one of them");
   f.grid = top.has("grid");
-  if (f.grid) read_grid(top, f);
-  else read_cases(top, f);
+  if (f.grid)
+    read_grid(top, f);
+  else
+    read_cases(top, f);
   f.collect = read_collect(top);
   top.reject_unknown_keys();
   return f;

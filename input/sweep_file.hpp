@@ -18,8 +18,8 @@ namespace gearsim::input {
 // the exact text an override gets: numbers written in their shortest form that reads back to the
 // same double (std::to_chars), any other scalar as written.
 struct SweepParameter {
-  std::string key;              // e.g. motors[0].target_speed_rad_s
-  std::string where;            // "file:line:col: grid.<key>" for messages about it
+  std::string key;  // e.g. motors[0].target_speed_rad_s
+  std::string where;  // "file:line:col: grid.<key>" for messages about it
   std::vector<std::string> values;  // Grid: the axis; Cases: unused
 };
 
@@ -31,24 +31,24 @@ struct SweepListedCase {
 
 // What each case reports into the gathered table.
 struct SweepCollect {
-  std::vector<std::string> summary;   // JSON paths into the case's summary.json
+  std::vector<std::string> summary;  // JSON paths into the case's summary.json
   std::vector<std::string> analysis;  // JSON paths into analysis.json (the case is then analysed)
-  std::vector<std::string> metrics;   // named metrics, of sweep_metric_names()
+  std::vector<std::string> metrics;  // named metrics, of sweep_metric_names()
 };
 
 struct SweepFile {
-  std::filesystem::path file;      // the sweep file, absolute
-  std::string name;                // a label (free one-line text)
+  std::filesystem::path file;  // the sweep file, absolute
+  std::string name;  // a label (free one-line text)
   std::filesystem::path scenario;  // the base scenario, absolute (relative to the sweep file's folder)
-  std::vector<std::string> set;    // "key=value" overrides every case gets, before its own
-  bool grid = true;                // true: `grid:` (cartesian product); false: `cases:`
+  std::vector<std::string> set;  // "key=value" overrides every case gets, before its own
+  bool grid = true;  // true: `grid:` (cartesian product); false: `cases:`
   // The parameters in column order: the grid's keys in file order (first slowest), or every key
   // of the case list in order of first appearance.
   std::vector<SweepParameter> parameters;
   std::vector<SweepListedCase> cases;  // `cases:` only
   SweepCollect collect;
-  std::size_t case_count = 0;      // ≤ limits::kMaxSweepCases
-  std::string content_hash;        // FNV-1a 64 of the file's bytes, 16 hex digits: detects an edit
+  std::size_t case_count = 0;  // ≤ limits::kMaxSweepCases
+  std::string content_hash;  // FNV-1a 64 of the file's bytes, 16 hex digits: detects an edit
 };
 
 // The named metrics a sweep can collect: dynamic_factor, mean_force_N, mesh_frequency_hz,

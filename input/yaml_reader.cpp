@@ -12,8 +12,7 @@
 namespace gearsim::input {
 
 YamlMap::YamlMap(YAML::Node node, std::string path, std::shared_ptr<const std::string> source)
-    : node_(std::move(node)), path_(std::move(path)), source_(std::move(source)),
-      read_(std::make_shared<std::set<std::string>>()) {}
+    : node_(std::move(node)), path_(std::move(path)), source_(std::move(source)), read_(std::make_shared<std::set<std::string>>()) {}
 
 namespace {
 
@@ -31,7 +30,8 @@ class KeyCheck {
       throw InputError(source_ + ": more than " + std::to_string(limits::kMaxYamlValues) +
                        " values (aliases repeating a list?): not a scenario or gear-set file");
     if (depth > limits::kMaxYamlDepth)
-      throw InputError(at(node) + ": " + (path.size() > 48 ? path.substr(0, 48) + "…" : path) + ": nested deeper than " + std::to_string(limits::kMaxYamlDepth) +
+      throw InputError(at(node) + ": " + (path.size() > 48 ? path.substr(0, 48) + "…" : path) + ": nested deeper than " +
+                       std::to_string(limits::kMaxYamlDepth) +
                        " levels (an alias inside its own anchor?): not a scenario or gear-set file");
     if (node.IsSequence())
       for (std::size_t i = 0; i < node.size(); ++i) walk(node[i], path + "[" + std::to_string(i) + "]", depth + 1);
@@ -40,7 +40,9 @@ class KeyCheck {
     for (const auto& kv : node) {
       if (!kv.first.IsScalar())
         throw InputError(at(kv.first) + ": " + (path.empty() ? "" : path + ": ") + "expected a text key, got a " +
-                         (kv.first.IsSequence() ? "list" : kv.first.IsMap() ? "mapping" : "null value"));
+                         (kv.first.IsSequence() ? "list"
+                          : kv.first.IsMap()    ? "mapping"
+                                                : "null value"));
       const std::string key = kv.first.Scalar();
       const std::string key_path = path.empty() ? key : path + "." + key;
       const auto [first, fresh] = lines.emplace(key, kv.first.Mark().line + 1);
@@ -66,8 +68,8 @@ void check_yaml_tree(const YAML::Node& node, const std::string& source_name) { K
 
 YAML::Node parse_yaml_mapping(const std::string& text, const std::string& source_name) {
   if (text.size() > limits::kMaxYamlBytes)
-    throw InputError(source_name + ": " + std::to_string(text.size()) + " bytes: larger than the " +
-                     std::to_string(limits::kMaxYamlBytes) + " bytes a scenario or gear-set file may have");
+    throw InputError(source_name + ": " + std::to_string(text.size()) + " bytes: larger than the " + std::to_string(limits::kMaxYamlBytes) +
+                     " bytes a scenario or gear-set file may have");
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -104,9 +106,7 @@ std::string YamlMap::where(const YAML::Node& node) const {
   return *source_ + ":" + std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1);
 }
 
-std::string YamlMap::key_path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
-}
+std::string YamlMap::key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 std::string YamlMap::location(const std::string& key) const {
   const YAML::Node n = node_[key];
@@ -221,8 +221,7 @@ std::string YamlMap::choice(const std::string& key, const std::vector<std::strin
   fail(key, "expected one of {" + list + "}, got '" + v + "'");
 }
 
-std::string YamlMap::choice_or(const std::string& key, const std::vector<std::string>& choices,
-                               const std::string& fallback) const {
+std::string YamlMap::choice_or(const std::string& key, const std::vector<std::string>& choices, const std::string& fallback) const {
   read_->insert(key);
   return has(key) ? choice(key, choices) : fallback;
 }
@@ -260,8 +259,7 @@ std::vector<std::pair<std::string, YamlMap>> YamlMap::entries() const {
 void YamlMap::reject_unknown_keys() const {
   for (const auto& kv : node_) {
     const std::string k = kv.first.Scalar();
-    if (!read_->count(k))
-      throw InputError(where(kv.first) + ": " + key_path(k) + ": unknown key");
+    if (!read_->count(k)) throw InputError(where(kv.first) + ": " + key_path(k) + ": unknown key");
   }
 }
 

@@ -53,8 +53,7 @@ class YamlMap {
   bool boolean_or(const std::string& key, bool fallback) const;
   // A string that must be one of `choices`.
   std::string choice(const std::string& key, const std::vector<std::string>& choices) const;
-  std::string choice_or(const std::string& key, const std::vector<std::string>& choices,
-                        const std::string& fallback) const;
+  std::string choice_or(const std::string& key, const std::vector<std::string>& choices, const std::string& fallback) const;
   YamlMap map(const std::string& key) const;
   std::vector<YamlMap> list_of_maps(const std::string& key) const;
   // Mapping entries in file order, each as (key, map).

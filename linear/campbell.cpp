@@ -8,7 +8,6 @@
 namespace gearsim::linear {
 namespace {
 
-
 // The body that carries a mesh (a planet's carrier): the parent, with coordinates, of either gear.
 int carrier_of(const LumpedModel& m, const MeshInfo& mi) {
   for (int g : {mi.a, mi.b}) {

@@ -15,28 +15,28 @@
 namespace gearsim::linear {
 
 struct MeshRate {
-  int mesh = -1;                    // index into LumpedModel::meshes
-  double hz_per_rad_s = 0;          // mesh frequency per rad/s of the drive's speed
+  int mesh = -1;  // index into LumpedModel::meshes
+  double hz_per_rad_s = 0;  // mesh frequency per rad/s of the drive's speed
 };
 
 struct Crossing {
-  int group = -1;                   // ModalAnalysis::groups
-  int mesh = -1;                    // the first mesh of that mesh frequency
-  int harmonic = 0;                 // k
+  int group = -1;  // ModalAnalysis::groups
+  int mesh = -1;  // the first mesh of that mesh frequency
+  int harmonic = 0;  // k
   double natural_frequency_hz = 0;
-  double drive_speed_rad_s = 0;     // where k·f_mesh = f_n
+  double drive_speed_rad_s = 0;  // where k·f_mesh = f_n
 };
 
 struct Campbell {
-  std::string drive;                // the body whose speed is the axis
-  std::vector<MeshRate> rates;      // one per mesh
+  std::string drive;  // the body whose speed is the axis
+  std::vector<MeshRate> rates;  // one per mesh
   std::optional<double> operating_speed_rad_s;  // the drive's motor target, when it has one
   std::vector<Crossing> crossings;  // by natural frequency, then harmonic
-  std::string why_not;              // why there is no table (kinematics not determined), else ""
+  std::string why_not;  // why there is no table (kinematics not determined), else ""
 };
 
 // `harmonics`: k = 1 … harmonics; crossings above `max_speed_rad_s` are left out.
-Campbell campbell(const LumpedModel& model, const physics::WorldStructure& structure, const ModalAnalysis& modes,
-                  int harmonics, double max_speed_rad_s);
+Campbell campbell(const LumpedModel& model, const physics::WorldStructure& structure, const ModalAnalysis& modes, int harmonics,
+                  double max_speed_rad_s);
 
 }  // namespace gearsim::linear

@@ -12,7 +12,6 @@
 namespace gearsim::linear {
 namespace {
 
-
 // Rows over all coordinates: the motion of a point of a body, and its turn.
 class Rows {
  public:
@@ -70,8 +69,8 @@ void add_joints(LumpedModel& m, const physics::WorldStructure& w) {
 }
 
 // The drive: which gear's torque drives the train, and its sense.
-std::pair<int, int> find_drive(const LumpedModel& m, const physics::WorldStructure& w, const physics::Scenario& s,
-                               const ModelOptions& o, std::string& said) {
+std::pair<int, int> find_drive(const LumpedModel& m, const physics::WorldStructure& w, const physics::Scenario& s, const ModelOptions& o,
+                               std::string& said) {
   auto sign_z = [](const physics::JointDef& jd, double v) { return (v * jd.axis.z() > 0) ? 1 : -1; };
   if (o.drive) {
     for (std::size_t b = 0; b < m.bodies.size(); ++b)
@@ -91,8 +90,9 @@ std::pair<int, int> find_drive(const LumpedModel& m, const physics::WorldStructu
       said = "the load torque on the input joint '" + j.def->name + "'";
       return {j.body, sign_z(*j.def, j.load->constant_torque_N_m)};
     }
-  throw InputError("modes: no motor, and no load torque on a transmission input, says which flanks carry the load: "
-                   "give --drive BODY=ccw|cw");
+  throw InputError(
+      "modes: no motor, and no load torque on a transmission input, says which flanks carry the load: "
+      "give --drive BODY=ccw|cw");
 }
 
 }  // namespace
@@ -122,8 +122,7 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
     }
   m.mass = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   for (const BodyInfo& b : m.bodies)
-    if (b.first_dof >= 0)
-      m.mass.diagonal().segment<3>(b.first_dof) << b.mass_kg, b.mass_kg, b.inertia_z_kg_m2;
+    if (b.first_dof >= 0) m.mass.diagonal().segment<3>(b.first_dof) << b.mass_kg, b.mass_kg, b.inertia_z_kg_m2;
   m.constraints.resize(0, 3 * n);
   add_joints(m, w);
 
@@ -166,16 +165,18 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
   for (std::size_t p = 0; p < w.pairs.size(); ++p) {
     const physics::StructurePair& pr = w.pairs[p];
     const physics::StructureBody &A = w.bodies[pr.a], &B = w.bodies[pr.b];
-    if (driven_of[p] < 0) throw InputError("modes: gears '" + A.name + "' and '" + B.name + "' are driven by no mesh from the drive " + m.drive);
+    if (driven_of[p] < 0)
+      throw InputError("modes: gears '" + A.name + "' and '" + B.name + "' are driven by no mesh from the drive " + m.drive);
     const bool driven_is_b = driven_of[p] == pr.b;
     const Eigen::Vector2d line = B.gear_pose.centre_m - A.gear_pose.centre_m;
     const double line_rad = std::atan2(line.y(), line.x());
     // Only gears whose centre of mass is their centre turn with the line exactly.
-    const bool centred = (A.centre_of_mass_m - A.gear_pose.centre_m).norm() < 1e-9 && (B.centre_of_mass_m - B.gear_pose.centre_m).norm() < 1e-9;
-    const auto key = std::make_tuple(static_cast<const void*>(A.flanks), static_cast<const void*>(B.flanks),
-                                     std::llround(line.norm() * 1e9), senses[driven_of[p]], driven_is_b,
-                                     static_cast<const void*>(pr.stiffness.table), pr.stiffness.pair_stiffness_N_per_m,
-                                     pr.stiffness.mesh_stiffness_N_per_m, pr.stiffness.body_stiffness_N_per_m);
+    const bool centred =
+        (A.centre_of_mass_m - A.gear_pose.centre_m).norm() < 1e-9 && (B.centre_of_mass_m - B.gear_pose.centre_m).norm() < 1e-9;
+    const auto key =
+        std::make_tuple(static_cast<const void*>(A.flanks), static_cast<const void*>(B.flanks), std::llround(line.norm() * 1e9),
+                        senses[driven_of[p]], driven_is_b, static_cast<const void*>(pr.stiffness.table),
+                        pr.stiffness.pair_stiffness_N_per_m, pr.stiffness.mesh_stiffness_N_per_m, pr.stiffness.body_stiffness_N_per_m);
     const MeshGear ga{A.flanks, A.gear_pose, A.centre_of_mass_m}, gb{B.flanks, B.gear_pose, B.centre_of_mass_m};
     MeshAverage avg;
     if (const auto it = done.find(key); centred && it != done.end()) {
@@ -198,8 +199,16 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
         const int gc = c < 3 ? (da >= 0 ? da + c : -1) : (db >= 0 ? db + c - 3 : -1);
         if (gr >= 0 && gc >= 0) e.stiffness(gr, gc) += avg.stiffness(r, c);
       }
-    MeshInfo mi{pr.a, pr.b, driven_of[p], senses[driven_of[p]], avg.mean_N_per_m, avg.min_N_per_m, avg.max_N_per_m, avg.mean_pairs,
-                std::atan2(avg.mean_normal_on_b.y(), avg.mean_normal_on_b.x()) * 180 / constants::kPi, static_cast<int>(m.elements.size())};
+    MeshInfo mi{pr.a,
+                pr.b,
+                driven_of[p],
+                senses[driven_of[p]],
+                avg.mean_N_per_m,
+                avg.min_N_per_m,
+                avg.max_N_per_m,
+                avg.mean_pairs,
+                std::atan2(avg.mean_normal_on_b.y(), avg.mean_normal_on_b.x()) * 180 / constants::kPi,
+                static_cast<int>(m.elements.size())};
     m.elements.push_back(std::move(e));
     m.meshes.push_back(mi);
   }

@@ -22,43 +22,43 @@ namespace gearsim::linear {
 struct Element {
   enum class Kind { Mesh, Bearing, Torsion };
   Kind kind = Kind::Mesh;
-  std::string name;       // "sun–planet_0", the bearing's or torsional support's body
+  std::string name;  // "sun–planet_0", the bearing's or torsional support's body
   Eigen::MatrixXd stiffness;
-  double value = 0;       // mesh: mean stiffness N/m; bearing: radial N/m; torsion: N·m/rad
+  double value = 0;  // mesh: mean stiffness N/m; bearing: radial N/m; torsion: N·m/rad
 };
 
 // A gear mesh as the model saw it.
 struct MeshInfo {
-  int a = -1, b = -1;          // bodies (a external)
-  int driven = -1;             // the body driven through this mesh
-  int driven_sense = 0;        // +1: its loaded flanks turn it counter-clockwise
+  int a = -1, b = -1;  // bodies (a external)
+  int driven = -1;  // the body driven through this mesh
+  int driven_sense = 0;  // +1: its loaded flanks turn it counter-clockwise
   double mean_N_per_m = 0, min_N_per_m = 0, max_N_per_m = 0;
-  double mean_pairs = 0;       // loaded tooth pairs in contact, mean over the period
+  double mean_pairs = 0;  // loaded tooth pairs in contact, mean over the period
   double line_of_action_deg = 0;  // direction of the mean contact normal (from b toward a)
-  int element = -1;            // index in LumpedModel::elements
+  int element = -1;  // index in LumpedModel::elements
 };
 
 struct BodyInfo {
   std::string name;
-  int first_dof = -1;          // x, y, θ at first_dof .. first_dof + 2; −1: welded to the ground
+  int first_dof = -1;  // x, y, θ at first_dof .. first_dof + 2; −1: welded to the ground
   double mass_kg = 0, inertia_z_kg_m2 = 0;
   Eigen::Vector2d centre_of_mass_m = Eigen::Vector2d::Zero();
-  int parent = -1;             // the body its joint hangs on (−1: ground or none)
+  int parent = -1;  // the body its joint hangs on (−1: ground or none)
   bool gear = false;
   int teeth = 0;
-  double radius_m = 0;         // a gear's tip (ring: its root), a carrier's reach to its planets; for pictures
+  double radius_m = 0;  // a gear's tip (ring: its root), a carrier's reach to its planets; for pictures
 };
 
 struct LumpedModel {
   std::vector<BodyInfo> bodies;
-  Eigen::MatrixXd mass;         // diag(m, m, I) per body
-  Eigen::MatrixXd stiffness;    // Σ elements
+  Eigen::MatrixXd mass;  // diag(m, m, I) per body
+  Eigen::MatrixXd stiffness;  // Σ elements
   Eigen::MatrixXd constraints;  // one row per rigid hinge direction and velocity motor
   std::vector<std::string> constraint_names;
   std::vector<Element> elements;
   std::vector<MeshInfo> meshes;
-  int driver = -1;              // the body whose torque drives the train
-  std::string drive;            // "<body> counter-clockwise" and where that came from
+  int driver = -1;  // the body whose torque drives the train
+  std::string drive;  // "<body> counter-clockwise" and where that came from
   int dofs() const { return static_cast<int>(mass.rows()); }
 };
 
@@ -67,7 +67,7 @@ struct ModelOptions {
   // loaded flanks; default: the body of the first motor in its speed's sense, else the
   // transmission's input joint's load in its torque's sense.
   std::optional<std::pair<std::string, int>> drive;
-  int phases_per_pitch = 64;        // mesh positions averaged
+  int phases_per_pitch = 64;  // mesh positions averaged
   double mesh_deflection_m = 1e-6;  // how deep the loaded flanks are pressed at each
 };
 

@@ -76,8 +76,8 @@ double lag_for(Excess excess, double pitch_driven, int teeth_a, int teeth_b) {
 
 }  // namespace
 
-MeshAverage average_mesh(const MeshGear& a, const MeshGear& b, const physics::MeshStiffnessModel& model, bool driven_is_b,
-                         int driven_sense, int phases, double deflection_m) {
+MeshAverage average_mesh(const MeshGear& a, const MeshGear& b, const physics::MeshStiffnessModel& model, bool driven_is_b, int driven_sense,
+                         int phases, double deflection_m) {
   GEARSIM_CHECK(a.flanks && b.flanks && phases > 0 && deflection_m > 0, "average_mesh needs two gears, phases and a deflection");
   const bool internal = a.flanks->internal() || b.flanks->internal();
   const int za = a.flanks->teeth(), zb = b.flanks->teeth();

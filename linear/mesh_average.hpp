@@ -17,7 +17,7 @@ namespace gearsim::linear {
 
 struct MeshGear {
   const contact::FlankTable* flanks = nullptr;
-  contact::PlanarPose pose;                 // gear frame at t = 0
+  contact::PlanarPose pose;  // gear frame at t = 0
   Eigen::Vector2d centre_of_mass_m = Eigen::Vector2d::Zero();
 };
 
@@ -27,15 +27,15 @@ struct MeshAverage {
   // in m, turns in rad), its direction part a unit vector: one spring on the mean line of action.
   Eigen::Matrix<double, 6, 6> stiffness = Eigen::Matrix<double, 6, 6>::Zero();
   double mean_N_per_m = 0, min_N_per_m = 0, max_N_per_m = 0;  // Σ k_i over the period
-  double mean_pairs = 0;                                       // loaded tooth pairs, mean
+  double mean_pairs = 0;  // loaded tooth pairs, mean
   Eigen::Vector2d mean_normal_on_b = Eigen::Vector2d::Zero();  // unit, from b toward a
-  long samples = 0;                                            // mesh positions averaged
+  long samples = 0;  // mesh positions averaged
 };
 
 // `driven_is_b`: gear b is the one driven through this mesh (else a), and `driven_sense` (+1
 // counter-clockwise, −1 clockwise) the sense of the torque its loaded flanks receive. Throws
 // InputError when the loaded flanks never touch within a quarter pitch.
-MeshAverage average_mesh(const MeshGear& a, const MeshGear& b, const physics::MeshStiffnessModel& model, bool driven_is_b,
-                         int driven_sense, int phases, double deflection_m);
+MeshAverage average_mesh(const MeshGear& a, const MeshGear& b, const physics::MeshStiffnessModel& model, bool driven_is_b, int driven_sense,
+                         int phases, double deflection_m);
 
 }  // namespace gearsim::linear

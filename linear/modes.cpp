@@ -55,9 +55,12 @@ ModeType classify(const LumpedModel& m, const Eigen::VectorXd& phi, bool& planet
     const Eigen::Vector2d er = (b.centre_of_mass_m - m.bodies[b.parent].centre_of_mass_m).normalized();
     const Eigen::Vector2d et(-er.y(), er.x());
     const Eigen::Vector2d u = phi.segment<2>(b.first_dof);
-    const Eigen::Vector3d local(std::sqrt(b.mass_kg) * u.dot(er), std::sqrt(b.mass_kg) * u.dot(et), std::sqrt(b.inertia_z_kg_m2) * phi(b.first_dof + 2));
-    if (!have_first) first = local, have_first = true;
-    else planets_alike = planets_alike && (local - first).norm() <= eps;
+    const Eigen::Vector3d local(std::sqrt(b.mass_kg) * u.dot(er), std::sqrt(b.mass_kg) * u.dot(et),
+                                std::sqrt(b.inertia_z_kg_m2) * phi(b.first_dof + 2));
+    if (!have_first)
+      first = local, have_first = true;
+    else
+      planets_alike = planets_alike && (local - first).norm() <= eps;
   }
   if (planets && !central_translate && !central_turn) return ModeType::Planet;
   if (!central_translate) return ModeType::Rotational;
@@ -69,11 +72,16 @@ ModeType classify(const LumpedModel& m, const Eigen::VectorXd& phi, bool& planet
 
 const char* to_string(ModeType t) {
   switch (t) {
-    case ModeType::Rigid: return "rigid";
-    case ModeType::Rotational: return "rotational";
-    case ModeType::Translational: return "translational";
-    case ModeType::Planet: return "planet";
-    case ModeType::Mixed: return "mixed";
+    case ModeType::Rigid:
+      return "rigid";
+    case ModeType::Rotational:
+      return "rotational";
+    case ModeType::Translational:
+      return "translational";
+    case ModeType::Planet:
+      return "planet";
+    case ModeType::Mixed:
+      return "mixed";
   }
   return "mixed";
 }
@@ -108,9 +116,9 @@ ModalAnalysis solve_modes(const LumpedModel& m) {
   for (std::size_t i = 0; i < out.modes.size(); ++i) {
     Mode& md = out.modes[i];
     const bool joins = !out.groups.empty() &&
-                       (out.groups.back().frequency_hz == 0
-                            ? md.frequency_hz == 0
-                            : md.frequency_hz - out.modes[out.groups.back().modes.back()].frequency_hz <= kRepeatFraction * md.frequency_hz);
+                       (out.groups.back().frequency_hz == 0 ? md.frequency_hz == 0
+                                                            : md.frequency_hz - out.modes[out.groups.back().modes.back()].frequency_hz <=
+                                                                  kRepeatFraction * md.frequency_hz);
     if (!joins) out.groups.push_back({md.frequency_hz, 0, md.type, {}});
     ModeGroup& g = out.groups.back();
     if (g.type != md.type) g.type = ModeType::Mixed;

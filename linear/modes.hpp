@@ -20,10 +20,10 @@ enum class ModeType { Rigid, Rotational, Translational, Planet, Mixed };
 const char* to_string(ModeType t);
 
 struct Mode {
-  double frequency_hz = 0;        // 0 for a rigid-body mode
-  int group = -1;                 // index into ModalAnalysis::groups
+  double frequency_hz = 0;  // 0 for a rigid-body mode
+  int group = -1;  // index into ModalAnalysis::groups
   ModeType type = ModeType::Mixed;
-  Eigen::VectorXd shape;          // over all coordinates, mass-normalised (φᵀ M φ = 1)
+  Eigen::VectorXd shape;  // over all coordinates, mass-normalised (φᵀ M φ = 1)
   std::vector<double> energy_share;  // per model element, Σ = 1 (empty for rigid-body modes)
   // Rotational modes of a planetary set: every planet moves alike in its own radial/tangential
   // frame (Lin & Parker's property). False when there are no planets.
@@ -38,9 +38,9 @@ struct ModeGroup {
 };
 
 struct ModalAnalysis {
-  std::vector<Mode> modes;         // ascending frequency
-  std::vector<ModeGroup> groups;   // ascending frequency
-  int free_coordinates = 0;        // coordinates left by the constraints
+  std::vector<Mode> modes;  // ascending frequency
+  std::vector<ModeGroup> groups;  // ascending frequency
+  int free_coordinates = 0;  // coordinates left by the constraints
 };
 
 ModalAnalysis solve_modes(const LumpedModel& model);

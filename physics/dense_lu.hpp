@@ -15,7 +15,9 @@ namespace gearsim::physics {
 template <int N = 0>
 inline bool lu_factor(int k_arg, double* a, int* pivots) {
   const int k = N > 0 ? N : k_arg;
-  const auto at = [&](int i, int j) -> double& { return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)]; };
+  const auto at = [&](int i, int j) -> double& {
+    return a[static_cast<std::size_t>(i) * static_cast<std::size_t>(k) + static_cast<std::size_t>(j)];
+  };
   for (int c = 0; c < k; ++c) {
     int p = c;
     for (int i = c + 1; i < k; ++i)

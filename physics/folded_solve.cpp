@@ -52,8 +52,8 @@ int FoldedSolve::solve(RowSystem& rows, const std::vector<double>& g_by_dof, std
     findex_[r] = rows.findex[i] >= 0 ? index_[static_cast<std::size_t>(rows.findex[i])] : -1;
     states_[r] = states[i];
   }
-  const int solves = solve_row_lcp(static_cast<int>(m), a_.data(), b_.data(), lo_.data(), hi_.data(),
-                                   findex_.data(), x_.data(), states_.data(), lcp);
+  const int solves =
+      solve_row_lcp(static_cast<int>(m), a_.data(), b_.data(), lo_.data(), hi_.data(), findex_.data(), x_.data(), states_.data(), lcp);
   if (solves == 0) return 0;
   for (std::size_t r = 0; r < m; ++r) {
     const std::size_t i = static_cast<std::size_t>(kept_[r]);

@@ -13,8 +13,7 @@ Model::Model(const Scenario& s) : scenario(s) {
   for (const PairStiffnessDef& t : s.contact.stiffness_tables)
     if (const Check c = contact::check_stiffness_table(t.table); !c)
       throw InputError("scenario: stiffness table " + t.table.source + " of gears '" + t.body_a + "' and '" + t.body_b +
-                       "': " + (c.refusal().index >= 0 ? "row " + std::to_string(c.refusal().index + 1) + ": " : "") +
-                       c.reason());
+                       "': " + (c.refusal().index >= 0 ? "row " + std::to_string(c.refusal().index + 1) + ": " : "") + c.reason());
   add_bodies();
   add_joints();
   attach_drives();
@@ -101,7 +100,8 @@ void Model::add_pair_stiffness(ModelPair& pr) const {
   for (const PairMeshStiffnessDef& k : scenario.contact.mesh_stiffnesses) {
     if (!((k.body_a == na && k.body_b == nb) || (k.body_a == nb && k.body_b == na))) continue;
     if (pr.stiffness.table || pr.stiffness.mesh_stiffness_N_per_m > 0)
-      throw InputError("scenario: contact.mesh_stiffnesses: gears '" + na + "' and '" + nb + "' have a stiffness table or mesh stiffness already");
+      throw InputError("scenario: contact.mesh_stiffnesses: gears '" + na + "' and '" + nb +
+                       "' have a stiffness table or mesh stiffness already");
     pr.stiffness.mesh_stiffness_N_per_m = pr.info.mesh_stiffness_N_per_m = k.stiffness_N_per_m;
   }
 }
@@ -128,9 +128,10 @@ void Model::check_start() {
     bool used = false;
     for (const ModelPair& pr : pairs)
       used = used || (pr.stiffness.mesh_stiffness_N_per_m > 0 && ((bodies[pr.a].name == k.body_a && bodies[pr.b].name == k.body_b) ||
-                                                        (bodies[pr.a].name == k.body_b && bodies[pr.b].name == k.body_a)));
+                                                                  (bodies[pr.a].name == k.body_b && bodies[pr.b].name == k.body_a)));
     if (!used)
-      throw InputError("scenario: contact.mesh_stiffnesses: gears '" + k.body_a + "' and '" + k.body_b + "' do not mesh (no tooth contact between them)");
+      throw InputError("scenario: contact.mesh_stiffnesses: gears '" + k.body_a + "' and '" + k.body_b +
+                       "' do not mesh (no tooth contact between them)");
   }
 }
 
@@ -138,7 +139,8 @@ double contact_damping(const Model& model, const ModelPair& pr, double k) {
   // A constant mesh stiffness has a constant mesh damping too (ζ of the whole mesh), shared alike.
   const double zeta = model.scenario.contact.damping_ratio;
   return pr.stiffness.mesh_stiffness_N_per_m > 0
-             ? contact_damping_N_s_per_m(pr.stiffness.mesh_stiffness_N_per_m, pr.info.reduced_mass_kg, zeta) * (k / pr.stiffness.mesh_stiffness_N_per_m)
+             ? contact_damping_N_s_per_m(pr.stiffness.mesh_stiffness_N_per_m, pr.info.reduced_mass_kg, zeta) *
+                   (k / pr.stiffness.mesh_stiffness_N_per_m)
          : pr.stiffness.table || pr.stiffness.body_stiffness_N_per_m > 0 ? contact_damping_N_s_per_m(k, pr.info.reduced_mass_kg, zeta)
                                                                          : pr.info.damping_N_s_per_m;
 }

@@ -56,7 +56,9 @@ std::vector<int> joints_of_bodies(const std::vector<BuiltBody>& bodies, const st
     if (!b.fixed && joint_of[i] < 0)
       throw InputError(who + "body '" + b.name + "' has no joint; a free body needs solver.engine rigid_bodies");
     if (!b.flanks && b.shape->getShapeType() != EMPTY_SHAPE_PROXYTYPE)
-      throw InputError(who + "body '" + b.name + "' has a shape but no teeth; bodies touch only through tooth contact in this engine (solver.engine rigid_bodies collides shapes)");
+      throw InputError(who + "body '" + b.name +
+                       "' has a shape but no teeth; bodies touch only through tooth contact in this engine (solver.engine rigid_bodies "
+                       "collides shapes)");
   }
   return joint_of;
 }
@@ -122,7 +124,8 @@ void MultibodyEngine::build_tree() {
     const int parent_link = on_body ? link_of_body_[static_cast<std::size_t>(jr.parent)] : -1;
     // Link frames are the bodies' centre-of-mass principal frames at t = 0; the base is the world.
     const btTransform ti = b.rigid->getWorldTransform();
-    const btTransform tp = on_body ? model_.bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() : btTransform::getIdentity();
+    const btTransform tp =
+        on_body ? model_.bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() : btTransform::getIdentity();
     const btQuaternion parent_to_this = ti.getRotation().inverse() * tp.getRotation();
     const btVector3 inv = b.rigid->getInvInertiaDiagLocal();
     if (!(inv.x() > 0 && inv.y() > 0 && inv.z() > 0 && b.mass_kg > 0))
@@ -131,10 +134,11 @@ void MultibodyEngine::build_tree() {
     const btVector3 pivot = bt(jr.def.pivot_m);
     const btVector3 axis_here = quatRotate(ti.getRotation().inverse(), bt(jr.axis_world));
     if (jr.def.bearing)
-      tree_->setupPlanar(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(ti.getOrigin()), false);
+      tree_->setupPlanar(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(ti.getOrigin()),
+                         false);
     else
       tree_->setupRevolute(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(pivot),
-                            quatRotate(ti.getRotation().inverse(), ti.getOrigin() - pivot), false);
+                           quatRotate(ti.getRotation().inverse(), ti.getOrigin() - pivot), false);
     pivot_in_body_[j] = ti.invXform(pivot);
     pivot_in_parent_[j] = tp.invXform(pivot);
   }
@@ -161,8 +165,9 @@ void MultibodyEngine::build_tree() {
   for (std::size_t l = 0; l < order.size(); ++l) {
     const btTransform& tl = t.getLink(static_cast<int>(l)).m_cachedWorldTransform;
     const btTransform& tb = model_.bodies[static_cast<std::size_t>(order[l])].rigid->getWorldTransform();
-    GEARSIM_CHECK((tl.getOrigin() - tb.getOrigin()).length() < 1e-12 && (tl.getBasis().getColumn(0) - tb.getBasis().getColumn(0)).length() < 1e-12,
-                  "a multibody link must start at its body's pose");
+    GEARSIM_CHECK(
+        (tl.getOrigin() - tb.getOrigin()).length() < 1e-12 && (tl.getBasis().getColumn(0) - tb.getBasis().getColumn(0)).length() < 1e-12,
+        "a multibody link must start at its body's pose");
   }
   planar_mass_ = planar_ && model_.scenario.solver.mass_matrix == SolverDef::MassMatrix::planar;
   if (planar_mass_) {
@@ -224,8 +229,10 @@ void MultibodyEngine::advance(double h) {
   // Velocities after the external and gyroscopic forces alone: for a planar tree with the planar
   // mass matrix from it (which the rows then use), else by Bullet's articulated-body pass.
   const double h_eff = integ_.h_eff();
-  if (planar_mass_) mass_.free_velocities(kin_, h_eff, buf_, scratch_, check_mass_ ? &mass_check_ : nullptr);
-  else t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h_eff, scratch_.r, scratch_.v, scratch_.m, false, false, false);
+  if (planar_mass_)
+    mass_.free_velocities(kin_, h_eff, buf_, scratch_, check_mass_ ? &mass_check_ : nullptr);
+  else
+    t.computeAccelerationsArticulatedBodyAlgorithmMultiDof(h_eff, scratch_.r, scratch_.v, scratch_.m, false, false, false);
   if (planar_mass_ && check_mass_) kin_.keep_step_start(h);  // the check steps Bullet from here
   const std::uint64_t solve_start = state_.clock.now();
   build_rows();
@@ -299,8 +306,10 @@ void MultibodyEngine::generate_contacts() {
 
 // Joint angles and speeds: on the planar path from the links' turns, else from the bodies.
 void MultibodyEngine::measure_joints() {
-  if (planar_mass_) kin_.measure_joints(state_);
-  else measure_joints_from_bodies(model_, state_);
+  if (planar_mass_)
+    kin_.measure_joints(state_);
+  else
+    measure_joints_from_bodies(model_, state_);
 }
 
 double MultibodyEngine::kinetic_energy_J() const {

@@ -80,7 +80,7 @@ class MultibodyEngine final : public Engine {
   std::vector<btVector3> pivot_in_body_, pivot_in_parent_;
   std::vector<double> buf_, out_;  // 6 + dofs
   BulletScratch scratch_;
-  bool planar_ = false;       // every joint axis along z: rows from the links' Jacobians
+  bool planar_ = false;  // every joint axis along z: rows from the links' Jacobians
   bool planar_mass_ = false;  // verify.mass_matrix planar on a planar tree: mass_ and kin_
   std::vector<double> link_jac_;  // planar tree, articulated path: per link rows ω_z, v_x, v_y over the dofs
   Integrator integ_;

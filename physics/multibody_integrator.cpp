@@ -11,7 +11,9 @@
 namespace gearsim::physics {
 
 Integrator::Integrator(const SolverDef& solver, int dofs)
-    : dofs_(dofs), time_step_s_(solver.time_step_s), bdf2_(solver.integrator == SolverDef::Integrator::bdf2),
+    : dofs_(dofs),
+      time_step_s_(solver.time_step_s),
+      bdf2_(solver.integrator == SolverDef::Integrator::bdf2),
       trapezoid_closed_(solver.integrator == SolverDef::Integrator::trapezoid_closed) {
   theta_ = bdf2_ ? 1.0 : trapezoid_closed_ ? 0.5 : solver.theta;
   h_eff_ = h_step_ = solver.time_step_s;
@@ -48,7 +50,8 @@ const double* Integrator::position_velocities(const double* v_end) {
   if (theta_ < 1) {
     v_end_.assign(v_end, v_end + dofs_);
     for (int k = 0; k < dofs_; ++k)
-      v_mid_[static_cast<std::size_t>(k)] = (1 - theta_) * v_start_[static_cast<std::size_t>(k)] + theta_ * v_end_[static_cast<std::size_t>(k)];
+      v_mid_[static_cast<std::size_t>(k)] =
+          (1 - theta_) * v_start_[static_cast<std::size_t>(k)] + theta_ * v_end_[static_cast<std::size_t>(k)];
     return v_mid_.data();
   }
   return v_end;
@@ -57,8 +60,10 @@ const double* Integrator::position_velocities(const double* v_end) {
 // Work of a row over the step: its force times its travel, h·J·v_θ (positions moved with v_θ).
 const Eigen::VectorXd& Integrator::work_velocities(const double* v_end_ptr) {
   const Eigen::Map<const Eigen::VectorXd> v_end(v_end_ptr, dofs_), v_start(v_start_.data(), dofs_);
-  if (bdf2_) v_theta_ = Eigen::Map<const Eigen::VectorXd>(v_move_.data(), dofs_);  // BDF2: positions moved with v_move
-  else v_theta_.noalias() = (1 - theta_) * v_start + theta_ * v_end;
+  if (bdf2_)
+    v_theta_ = Eigen::Map<const Eigen::VectorXd>(v_move_.data(), dofs_);  // BDF2: positions moved with v_move
+  else
+    v_theta_.noalias() = (1 - theta_) * v_start + theta_ * v_end;
   return v_theta_;
 }
 

@@ -41,7 +41,7 @@ class Integrator {
   // The velocities the positions moved with over the step (v_end: v⁺), for the rows' work.
   const Eigen::VectorXd& work_velocities(const double* v_end);
 
-  double h_eff() const { return h_eff_; }    // this step's h_eff (h for the θ-method), s
+  double h_eff() const { return h_eff_; }  // this step's h_eff (h for the θ-method), s
   double h_step() const { return h_step_; }  // this (sub)step's length, s
   const std::vector<double>& v_start() const { return v_start_; }
   const std::vector<double>& v_move() const { return v_move_; }
@@ -57,7 +57,7 @@ class Integrator {
   bool bdf2_ = false, has_history_ = false, trapezoid_closed_ = false, two_step_ = false;
   double h_eff_ = 0, h_step_ = 0;
   std::vector<double> v_start_, v_end_, v_mid_;  // joint velocities at the step's start, end, mean
-  std::vector<double> v_prev_, v_move_;          // BDF2: v at the last step's start; the last step's v_move
+  std::vector<double> v_prev_, v_move_;  // BDF2: v at the last step's start; the last step's v_move
   Eigen::VectorXd v_theta_;
   std::vector<ContactKey> touching_, touching_before_;  // trapezoid_closed: this step's contacts, the last's
 };

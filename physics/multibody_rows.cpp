@@ -50,9 +50,9 @@ struct RowBuilder {
   btMultiBody& tree;
   std::vector<double>& buf;  // the tree's 6 + dofs scratch
   BulletScratch& scratch;
-  bool planar;                   // a planar tree: rows from link_jac
-  const PlanarKinematics* kin;   // the planar kinematics' links (verify.mass_matrix planar), else nullptr
-  const double* link_jac;        // per link: rows ω_z, v_x, v_y over the coordinates (planar trees)
+  bool planar;  // a planar tree: rows from link_jac
+  const PlanarKinematics* kin;  // the planar kinematics' links (verify.mass_matrix planar), else nullptr
+  const double* link_jac;  // per link: rows ω_z, v_x, v_y over the coordinates (planar trees)
   std::size_t ud;
   // J of the velocity of `point` (world) on the body of link `link`, along `dir`, added × sign.
   void add_point(std::size_t row, int link, const btVector3& point, const btVector3& dir, double sign) {
@@ -95,8 +95,8 @@ void contact_rows(RowBuilder& rb, const Model& model, State& state, const std::v
     const int la = link_of_body[static_cast<std::size_t>(pr.a)], lb = link_of_body[static_cast<std::size_t>(pr.b)];
     // The contact plane's height: a planar tree's rows use the points' x and y only.
     const double z = rb.planar ? 0.0
-                              : 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
-                                       (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
+                               : 0.5 * ((a.rigid->getWorldTransform() * a.com_from_gear).getOrigin().z() +
+                                        (b.rigid->getWorldTransform() * b.com_from_gear).getOrigin().z());
     for (std::size_t i = 0; i < pc.found.size(); ++i) {
       if (!pc.active[i]) continue;
       const contact::ToothContact& c = pc.found[i];
@@ -135,19 +135,22 @@ void contact_rows(RowBuilder& rb, const Model& model, State& state, const std::v
 // A bearing's rows: two radial springs on its centre's displacement from the housing, and a
 // torsional one on its spin coordinate where it has one.
 void bearing_rows(RowBuilder& rb, const Model& model, const Integrator& integ, std::size_t j, const std::vector<int>& link_of_body,
-                  const std::vector<int>& dof_of_joint, const std::vector<btVector3>& pivot_in_body, const std::vector<btVector3>& pivot_in_parent) {
+                  const std::vector<int>& dof_of_joint, const std::vector<btVector3>& pivot_in_body,
+                  const std::vector<btVector3>& pivot_in_parent) {
   const ModelJoint& jr = model.joints[j];
   const BearingDef& bd = *jr.def.bearing;
   const int link = link_of_body[static_cast<std::size_t>(jr.body)];
   const bool on_body = jr.parent >= 0 && link_of_body[static_cast<std::size_t>(jr.parent)] >= 0;
   const int parent_link = on_body ? link_of_body[static_cast<std::size_t>(jr.parent)] : -1;
   const btVector3 centre = model.bodies[static_cast<std::size_t>(jr.body)].rigid->getWorldTransform() * pivot_in_body[j];
-  const btVector3 housing = on_body ? model.bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() * pivot_in_parent[j] : pivot_in_parent[j];
+  const btVector3 housing =
+      on_body ? model.bodies[static_cast<std::size_t>(jr.parent)].rigid->getWorldTransform() * pivot_in_parent[j] : pivot_in_parent[j];
   const btVector3 axis = bt(jr.axis_world);
   const btVector3 e1 = unit_perpendicular(axis), e2 = axis.cross(e1);
   for (const btVector3& d : {e1, e2}) {
     if (!(bd.radial_stiffness_N_per_m > 0 || bd.radial_damping_N_s_per_m > 0)) break;
-    MultibodyRow r = integ.spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m, -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
+    MultibodyRow r = integ.spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m,
+                                      -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
     r.kind = MultibodyRow::bearing;
     r.owner = static_cast<int>(j);
     r.lo = -kInfinity;
@@ -158,7 +161,7 @@ void bearing_rows(RowBuilder& rb, const Model& model, const Integrator& integ, s
   }
   if (bd.torsional_stiffness_N_m_per_rad > 0 || bd.torsional_damping_N_m_s_per_rad > 0) {
     MultibodyRow r = integ.spring_row(bd.torsional_stiffness_N_m_per_rad, bd.torsional_damping_N_m_s_per_rad,
-                                  -bd.torsional_stiffness_N_m_per_rad * rb.tree.getJointPosMultiDof(link)[0]);
+                                      -bd.torsional_stiffness_N_m_per_rad * rb.tree.getJointPosMultiDof(link)[0]);
     r.kind = MultibodyRow::torsion;
     r.owner = static_cast<int>(j);
     r.lo = -kInfinity;
@@ -181,8 +184,14 @@ void MultibodyEngine::build_rows() {
   // a combination of the three (v_p = v_c + ω × r), without walking the tree per row. With the
   // planar mass matrix, the planar kinematics built them for this pose.
   if (!planar_mass_ && planar_) bullet_link_jacobians();
-  RowBuilder rb{rows_, *tree_, buf_, scratch_, planar_, planar_mass_ ? &kin_ : nullptr,
-                planar_mass_ ? kin_.link_jac().data() : link_jac_.data(), static_cast<std::size_t>(dofs)};
+  RowBuilder rb{rows_,
+                *tree_,
+                buf_,
+                scratch_,
+                planar_,
+                planar_mass_ ? &kin_ : nullptr,
+                planar_mass_ ? kin_.link_jac().data() : link_jac_.data(),
+                static_cast<std::size_t>(dofs)};
   contact_rows(rb, model_, state_, link_of_body_, integ_);
   for (std::size_t j = 0; j < model_.joints.size(); ++j) {
     const ModelJoint& jr = model_.joints[j];
@@ -199,7 +208,8 @@ void MultibodyEngine::build_rows() {
     }
   }
   if (!planar_mass_)  // the articulated path's products with M⁻¹ (solve_rows)
-    rows_.jac = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(rows_.jrows.data(), static_cast<Eigen::Index>(rows_.rows.size()), dofs);
+    rows_.jac = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        rows_.jrows.data(), static_cast<Eigen::Index>(rows_.rows.size()), dofs);
 }
 
 // Forces, motor torques and power flows of the step just taken (velocities after it).

@@ -15,13 +15,13 @@ namespace gearsim::physics {
 
 struct MultibodyRow {
   enum Kind { contact_normal, contact_friction, bearing, torsion, motor } kind = contact_normal;
-  int owner = -1;       // contact_*: index into State::contacts; the others: joint index
-  double cfm = 0;       // compliance of the implicit spring–damper, (N·s)⁻¹·… per unit impulse
-  double target = 0;    // right-hand side before the predicted velocity is taken off
+  int owner = -1;  // contact_*: index into State::contacts; the others: joint index
+  double cfm = 0;  // compliance of the implicit spring–damper, (N·s)⁻¹·… per unit impulse
+  double target = 0;  // right-hand side before the predicted velocity is taken off
   double lo = 0, hi = 0;
   int friction_of = -1;  // contact_friction: the row of its normal (bounds ±μ times its impulse)
   double start_rate_weight = 0;  // trapezoidal spring rows: 1 (the start-of-step rate enters)
-  double move_rate_weight = 0;   // BDF2 spring rows: k·h/(3σ) (the spring at the extrapolated position)
+  double move_rate_weight = 0;  // BDF2 spring rows: k·h/(3σ) (the spring at the extrapolated position)
 };
 
 struct RowSystem {
@@ -31,7 +31,7 @@ struct RowSystem {
   // The articulated path (verify.mass_matrix articulated): J as a matrix, M⁻¹ and M⁻¹·Jᵀ.
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> jac;
   Eigen::MatrixXd inverse_mass;  // dofs × dofs
-  Eigen::MatrixXd minv_jt;       // dofs × rows
+  Eigen::MatrixXd minv_jt;  // dofs × rows
   // J·v* (the predicted velocities), J·v at the step's start, J·v_move of the last step (BDF2).
   Eigen::VectorXd row_rate, row_rate_start, row_rate_move;
   // The problem: A (n × n, row-major; the articulated path, or formed for a fallback), b, the

@@ -24,7 +24,8 @@ void MultibodyEngine::solve_rows() {
   rows_.x.assign(static_cast<std::size_t>(n), 0);
   if (n == 0) return;
   if (!planar_mass_) rows_.a.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
-  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(rows_.a.data(), planar_mass_ ? 0 : n, planar_mass_ ? 0 : n);
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> a(rows_.a.data(), planar_mass_ ? 0 : n,
+                                                                                       planar_mass_ ? 0 : n);
   if (planar_mass_) {
     mass_.new_rows();  // G and A of this step's rows, where a fallback needs them
   } else {
@@ -68,7 +69,10 @@ void MultibodyEngine::solve_rows() {
     // Friction held at a multiple of its normal's impulse is no unknown of the solve: its
     // compliance is never used (0).
     if (planar_mass_)
-      rows_.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm : rows_.held_friction(static_cast<std::size_t>(i)) ? 0.0 : kStiffRow * mass_.diag_a(rows_, static_cast<std::size_t>(i));
+      rows_.compliance[static_cast<std::size_t>(i)] = r.cfm > 0 ? r.cfm
+                                                      : rows_.held_friction(static_cast<std::size_t>(i))
+                                                          ? 0.0
+                                                          : kStiffRow * mass_.diag_a(rows_, static_cast<std::size_t>(i));
   }
   if (planar_mass_) primal_.classify_rows(rows_, mass_, dofs_);
   primal_.forget();
@@ -131,7 +135,8 @@ bool MultibodyEngine::locate_slip_reversals(bool solved) {
 void MultibodyEngine::velocity_change(const double* lambda, double* dv) {
   const std::size_t n = rows_.rows.size();
   if (!planar_mass_) {
-    Eigen::Map<Eigen::VectorXd>(dv, dofs_).noalias() = rows_.minv_jt * Eigen::Map<const Eigen::VectorXd>(lambda, static_cast<Eigen::Index>(n));
+    Eigen::Map<Eigen::VectorXd>(dv, dofs_).noalias() =
+        rows_.minv_jt * Eigen::Map<const Eigen::VectorXd>(lambda, static_cast<Eigen::Index>(n));
     return;
   }
   mass_.velocity_change(rows_, lambda, dv);

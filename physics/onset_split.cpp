@@ -39,7 +39,8 @@ void OnsetSplit::accumulate(const State& state, const std::vector<double>& motor
     acc.motor_torque.assign(motor_torque.size(), 0.0);
   }
   for (const ContactSample& c : state.contacts) {
-    auto it = std::find_if(acc.contacts.begin(), acc.contacts.end(), [&](const ContactSample& o) { return contact_key(o) == contact_key(c); });
+    auto it =
+        std::find_if(acc.contacts.begin(), acc.contacts.end(), [&](const ContactSample& o) { return contact_key(o) == contact_key(c); });
     if (it == acc.contacts.end()) {
       ContactSample z = c;
       z.normal_force_N = z.friction_force_N = 0;
@@ -65,7 +66,8 @@ void OnsetSplit::finish(State& state, std::vector<double>& motor_torque, double 
   const Accumulated& acc = accumulated_;
   state.contacts = acc.contacts;
   for (ContactSample& c : state.contacts) c.normal_force_N /= h, c.friction_force_N /= h;
-  std::stable_sort(state.contacts.begin(), state.contacts.end(), [](const ContactSample& u, const ContactSample& v) { return contact_key(u) < contact_key(v); });
+  std::stable_sort(state.contacts.begin(), state.contacts.end(),
+                   [](const ContactSample& u, const ContactSample& v) { return contact_key(u) < contact_key(v); });
   const double kinetic = state.power.kinetic_J;
   state.power = acc.power;
   state.power.motor_W /= h, state.power.load_W /= h, state.power.joint_W /= h, state.power.contact_W /= h, state.power.impulse_W /= h;

@@ -118,7 +118,6 @@ void PlanarKinematics::build_gears() {
   }
 }
 
-
 // Joint positions q⁺ = q + h·v as Bullet's stepPositionsMultiDof() takes them: a revolute joint's
 // angle by h·v; a planar joint's angle likewise, its translations by its in-plane velocity (along
 // b₁, b₂ in its turned frame) turned by the new angle about its axis — Rot(a, q₀)·(v₁·b₁ + v₂·b₂) =
@@ -158,8 +157,8 @@ void PlanarKinematics::forward_kinematics() {
     btTransform& tl = t.getLink(static_cast<int>(l)).m_cachedWorldTransform;
     const btMatrix3x3& b0 = p.basis0;
     tl.getBasis().setValue(c * b0[0][0] - s * b0[1][0], c * b0[0][1] - s * b0[1][1], c * b0[0][2] - s * b0[1][2],
-                           s * b0[0][0] + c * b0[1][0], s * b0[0][1] + c * b0[1][1], s * b0[0][2] + c * b0[1][2],
-                           b0[2][0], b0[2][1], b0[2][2]);
+                           s * b0[0][0] + c * b0[1][0], s * b0[0][1] + c * b0[1][1], s * b0[0][2] + c * b0[1][2], b0[2][0], b0[2][1],
+                           b0[2][2]);
     tl.setOrigin(p.planar_joint ? origin_p + turn_z(q[1] * p.b1 + q[2] * p.b2 + p.e0, cp, sp)
                                 : origin_p + turn_z(p.e0, cp, sp) + turn_z(p.d0, c, s));
   }

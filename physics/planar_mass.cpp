@@ -27,7 +27,8 @@ void PlanarMass::build(btMultiBody& tree) {
     const btMatrix3x3& basis = link.m_cachedWorldTransform.getBasis();
     const btVector3 inertia = t.getLinkInertia(static_cast<int>(l));
     link_mass_kg_[l] = t.getLinkMass(static_cast<int>(l));
-    link_izz_kg_m2_[l] = basis[2][0] * basis[2][0] * inertia.x() + basis[2][1] * basis[2][1] * inertia.y() + basis[2][2] * basis[2][2] * inertia.z();
+    link_izz_kg_m2_[l] =
+        basis[2][0] * basis[2][0] * inertia.x() + basis[2][1] * basis[2][1] * inertia.y() + basis[2][2] * basis[2][2] * inertia.z();
   }
   chol_.assign(dofs_ * dofs_, 0);
   g_lambda_.assign(dofs_, 0);
@@ -133,7 +134,8 @@ void PlanarMass::free_velocities(PlanarKinematics& kin, double h, std::vector<do
   if (check) {
     const double* bullet = bullet_qdd_.data();
     double scale = 0, difference = 0;
-    for (std::size_t k = 0; k < ud; ++k) scale = std::max(scale, std::abs(bullet[k])), difference = std::max(difference, std::abs(qdd[k] - bullet[k]));
+    for (std::size_t k = 0; k < ud; ++k)
+      scale = std::max(scale, std::abs(bullet[k])), difference = std::max(difference, std::abs(qdd[k] - bullet[k]));
     if (scale > 0) check->free_velocity_difference = std::max(check->free_velocity_difference, difference / scale);
   }
   t.applyDeltaVeeMultiDof(buf.data(), h);

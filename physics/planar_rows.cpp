@@ -109,7 +109,7 @@ void PlanarMass::velocity_change(const RowSystem& rows, const double* lambda, do
 // ½·m·|v|² + ½·I_zz·ω² over the links, from this pose's link velocities (the planar path holds no
 // world inertia tensors of the bodies).
 double PlanarMass::kinetic_energy_J(const PlanarKinematics& kin) const {
-  const std::vector<double> &w = kin.link_w(), &vx = kin.link_vx(), &vy = kin.link_vy();
+  const std::vector<double>&w = kin.link_w(), &vx = kin.link_vx(), &vy = kin.link_vy();
   double kinetic = 0;
   for (std::size_t l = 0; l < w.size(); ++l)
     kinetic += 0.5 * link_mass_kg_[l] * (vx[l] * vx[l] + vy[l] * vy[l]) + 0.5 * link_izz_kg_m2_[l] * w[l] * w[l];

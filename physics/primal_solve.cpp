@@ -16,7 +16,7 @@ namespace gearsim::physics {
 namespace {
 
 constexpr double kPrimalRelativeTolerance = 1e-9;  // as solve_row_lcp()
-constexpr int kMaxPrimalSolves = 8;                // as solve_row_lcp()'s default
+constexpr int kMaxPrimalSolves = 8;  // as solve_row_lcp()'s default
 // A spring row whose compliance is below this times its diagonal A_ii = J_i·M⁻¹·J_iᵀ (a spring
 // far stiffer than the step resolves) is solved as a stiff row: in K its 1/D would raise the
 // condition number by up to A_ii/D.
@@ -75,9 +75,17 @@ namespace {
 template <int N>
 struct PrimalRows {
   PrimalRows(RowSystem& rs, RowBound* states, const double* mass_lower, int dofs)
-      : n(rs.rows.size()), ud(N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(dofs)), jrows(rs.jrows.data()),
-        state(states), lo(rs.lo.data()), hi(rs.hi.data()), b(rs.b.data()), d(rs.compliance.data()),
-        findex(rs.findex.data()), x(rs.x.data()), mass(mass_lower) {}
+      : n(rs.rows.size()),
+        ud(N > 0 ? static_cast<std::size_t>(N) : static_cast<std::size_t>(dofs)),
+        jrows(rs.jrows.data()),
+        state(states),
+        lo(rs.lo.data()),
+        hi(rs.hi.data()),
+        b(rs.b.data()),
+        d(rs.compliance.data()),
+        findex(rs.findex.data()),
+        x(rs.x.data()),
+        mass(mass_lower) {}
   const double* j(std::size_t i) const { return jrows + i * ud; }
   // Friction whose normal sits at a zero lower bound: its impulse is 0.
   bool pinned(std::size_t i) const { return findex[i] >= 0 && state[findex[i]] == RowBound::lower && lo[findex[i]] == 0; }
@@ -114,7 +122,9 @@ void primal_columns(PrimalWork& e, const PrimalRows<N>& r) {
   const std::size_t m = e.rows.size(), ud = r.ud;
   double* x = r.x;
   e.cols.resize(m * ud);
-  for (std::size_t u = 0; u < m; ++u) std::copy(r.j(static_cast<std::size_t>(e.rows[u])), r.j(static_cast<std::size_t>(e.rows[u])) + ud, e.cols.begin() + static_cast<std::ptrdiff_t>(u * ud));
+  for (std::size_t u = 0; u < m; ++u)
+    std::copy(r.j(static_cast<std::size_t>(e.rows[u])), r.j(static_cast<std::size_t>(e.rows[u])) + ud,
+              e.cols.begin() + static_cast<std::ptrdiff_t>(u * ud));
   double* f0 = e.constant.data();
   std::fill(f0, f0 + ud, 0.0);
   for (std::size_t i = 0; i < r.n; ++i) {

@@ -19,9 +19,7 @@ std::uint64_t ProfileClock::now() const {
 }
 #else
 ProfileClock::ProfileClock() : t0_(std::chrono::steady_clock::now()) { tick0_ = now(); }
-std::uint64_t ProfileClock::now() const {
-  return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
-}
+std::uint64_t ProfileClock::now() const { return static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count()); }
 #endif
 
 double ProfileClock::seconds_per_tick() const {

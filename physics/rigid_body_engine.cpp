@@ -94,8 +94,10 @@ void RigidBodyEngine::add_bodies() {
   for (const BuiltBody& b : model_.bodies) {
     const bool gear = b.flanks != nullptr;
     const bool shapeless = b.shape->getShapeType() == EMPTY_SHAPE_PROXYTYPE;
-    if (shapeless) world_.addRigidBody(b.rigid.get(), kShapelessGroup, 0);
-    else world_.addRigidBody(b.rigid.get(), gear ? kGearGroup : kOtherGroup, gear ? kOtherGroup : (kGearGroup | kOtherGroup));
+    if (shapeless)
+      world_.addRigidBody(b.rigid.get(), kShapelessGroup, 0);
+    else
+      world_.addRigidBody(b.rigid.get(), gear ? kGearGroup : kOtherGroup, gear ? kOtherGroup : (kGearGroup | kOtherGroup));
   }
 }
 
@@ -161,8 +163,7 @@ void RigidBodyEngine::add_manifold_points(std::size_t p, double z) {
     const btVector3 n(c.normal_on_b.x(), c.normal_on_b.y(), 0);
     const btVector3 mid(c.point_m.x(), c.point_m.y(), z);
     const btVector3 on_b = mid + n * (0.5 * c.depth_m), on_a = mid - n * (0.5 * c.depth_m);
-    btManifoldPoint pt(a.rigid->getWorldTransform().invXform(on_a), b.rigid->getWorldTransform().invXform(on_b), n,
-                       -c.depth_m);
+    btManifoldPoint pt(a.rigid->getWorldTransform().invXform(on_a), b.rigid->getWorldTransform().invXform(on_b), n, -c.depth_m);
     pt.m_positionWorldOnA = on_a;
     pt.m_positionWorldOnB = on_b;
     pt.m_combinedFriction = model_.scenario.contact.friction;
@@ -268,10 +269,9 @@ void RigidBodyEngine::measure_power() {
     const btRigidBody& a = j.constraint->getRigidBodyA();
     const btRigidBody& b = j.constraint->getRigidBodyB();
     // The whole constraint's power on both bodies (force at the centre of mass, torque about it).
-    const double total = j.feedback.m_appliedForceBodyA.dot(a.getLinearVelocity()) +
-                         j.feedback.m_appliedTorqueBodyA.dot(a.getAngularVelocity()) +
-                         j.feedback.m_appliedForceBodyB.dot(b.getLinearVelocity()) +
-                         j.feedback.m_appliedTorqueBodyB.dot(b.getAngularVelocity());
+    const double total =
+        j.feedback.m_appliedForceBodyA.dot(a.getLinearVelocity()) + j.feedback.m_appliedTorqueBodyA.dot(a.getAngularVelocity()) +
+        j.feedback.m_appliedForceBodyB.dot(b.getLinearVelocity()) + j.feedback.m_appliedTorqueBodyB.dot(b.getAngularVelocity());
     const double speed = state_.bodies[static_cast<std::size_t>(mj.body)].speed_rad_s;
     const double motor = mj.motor ? motor_torque_N_m(k) * speed : 0.0;
     pw.motor_W += motor;

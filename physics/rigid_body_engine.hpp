@@ -64,7 +64,7 @@ class RigidBodyEngine final : public Engine {
   btSequentialImpulseConstraintSolver solver_;
   btDiscreteDynamicsWorld world_{&dispatcher_, &broadphase_, &solver_, &config_};
   std::vector<Joint> joints_;  // per model joint
-  std::vector<Pair> pairs_;    // per model pair
+  std::vector<Pair> pairs_;  // per model pair
 };
 
 }  // namespace gearsim::physics

@@ -38,8 +38,10 @@ void fold_rows(int n, const double* A, const double* b, const double* lo, const 
   const auto bound_value = [&](int c) { return state[c] == RowBound::lower ? lo[c] : hi[c]; };
   for (int c = 0; c < n; ++c) {
     if (s.unknown_of[static_cast<std::size_t>(c)] >= 0) continue;
-    if (pinned(c)) x[c] = 0;
-    else if (findex[c] < 0) x[c] = bound_value(c);
+    if (pinned(c))
+      x[c] = 0;
+    else if (findex[c] < 0)
+      x[c] = bound_value(c);
   }
   s.m.assign(uk * uk, 0.0);
   s.rhs.assign(uk, 0.0);
@@ -73,8 +75,10 @@ void fold_rows(int n, const double* A, const double* b, const double* lo, const 
       const double aic = ai[c];
       if (aic == 0) continue;
       const int t = target[c];
-      if (t >= 0) row[t] += aic * factor[c];
-      else rhs -= aic * factor[c] * constant[c];
+      if (t >= 0)
+        row[t] += aic * factor[c];
+      else
+        rhs -= aic * factor[c] * constant[c];
     }
     s.rhs[static_cast<std::size_t>(r)] = rhs;
   }
@@ -195,8 +199,10 @@ bool settle_row_states(int n, const double* x, const double* w, const double* lo
     }
     switch (state[i]) {
       case RowBound::free:
-        if (x[i] < l - tol_x) to = RowBound::lower, by = (l - x[i]) / tol_x;
-        else if (x[i] > h + tol_x) to = RowBound::upper, by = (x[i] - h) / tol_x;
+        if (x[i] < l - tol_x)
+          to = RowBound::lower, by = (l - x[i]) / tol_x;
+        else if (x[i] > h + tol_x)
+          to = RowBound::upper, by = (x[i] - h) / tol_x;
         break;
       case RowBound::lower:
         if (w[i] < -tol_w) to = RowBound::free, by = -w[i] / tol_w;
@@ -207,8 +213,10 @@ bool settle_row_states(int n, const double* x, const double* w, const double* lo
     }
     if (to == state[i]) continue;
     settled = false;
-    if (!single) state[i] = to;
-    else if (by > worst_by) worst = i, worst_to = to, worst_by = by;
+    if (!single)
+      state[i] = to;
+    else if (by > worst_by)
+      worst = i, worst_to = to, worst_by = by;
   }
   if (single && worst >= 0) state[worst] = worst_to;
   return settled;

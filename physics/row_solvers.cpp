@@ -57,8 +57,8 @@ void ActiveSetSolve::start_cold(RowSystem& rows) {
 bool DantzigSolve::solve(RowSystem& rows, bool fixed_friction) {
   const std::lock_guard<std::mutex> lock(dantzig_flag());
   if (fixed_friction) return solve_fixed_friction(rows);
-  return btSolveDantzigLCP(static_cast<int>(rows.rows.size()), rows.a.data(), rows.x.data(), rows.b.data(), rows.w.data(), 0, rows.lo.data(),
-                           rows.hi.data(), rows.findex.data(), scratch_);
+  return btSolveDantzigLCP(static_cast<int>(rows.rows.size()), rows.a.data(), rows.x.data(), rows.b.data(), rows.w.data(), 0,
+                           rows.lo.data(), rows.hi.data(), rows.findex.data(), scratch_);
 }
 
 // Dantzig for rows some of which are friction fixed at a multiple of their normal's impulse
@@ -72,8 +72,10 @@ bool DantzigSolve::solve_fixed_friction(RowSystem& rows) {
   const auto at = [](int i) { return static_cast<std::size_t>(i); };
   std::vector<int> kept, fixed, slot(at(n), -1);
   for (int i = 0; i < n; ++i) {
-    if (rows.held_friction(at(i))) fixed.push_back(i);
-    else slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
+    if (rows.held_friction(at(i)))
+      fixed.push_back(i);
+    else
+      slot[at(i)] = static_cast<int>(kept.size()), kept.push_back(i);
   }
   const int m = static_cast<int>(kept.size());
   std::vector<double> a(at(m) * at(m)), b(at(m)), x(at(m)), w(at(m)), lo(at(m)), hi(at(m));

@@ -41,7 +41,7 @@ struct MeshSource {
 
 struct BodyDef {
   std::string name;
-  std::optional<GearSpec> gear;    // a generated gear (its errors included) ...
+  std::optional<GearSpec> gear;  // a generated gear (its errors included) ...
   std::optional<MeshSource> mesh;  // ... or a mesh file; neither: a carrier-like body without shape
   // Mass from density and the shape's volume, or given directly with its inertia about the
   // centre of mass (for shapeless bodies such as a carrier arm).
@@ -132,15 +132,15 @@ inline double impulse_shape(const ImpulseDef& i, double time_s) {
 // (seeded, rms noise_rms_m_s2) and an anti-aliasing filter before sampling at sample_rate_hz.
 struct SensorDef {
   std::string name;
-  std::string body;                  // the housing body the sensor sits on (its centre at t = 0)
-  double angle_rad = 0;              // sensor position about the body's centre, from world +x
-  double window_width_rad = 0;       // full width of the planet-pass window, (0, 2π]
-  double other_meshes_weight = 0;    // path gain of meshes not on `body`, (dimensionless)
-  double resonance_hz = 0;           // the structural mode the sensor sees
-  double damping_ratio = 0.05;       // of that mode
-  double effective_mass_kg = 0;      // its modal mass: 1/m_eff is the high-frequency gain, m/s² per N
-  double noise_rms_m_s2 = 0;         // white measurement noise added at the sensor rate
-  double sample_rate_hz = 0;         // the acquisition rate (a whole number of steps)
+  std::string body;  // the housing body the sensor sits on (its centre at t = 0)
+  double angle_rad = 0;  // sensor position about the body's centre, from world +x
+  double window_width_rad = 0;  // full width of the planet-pass window, (0, 2π]
+  double other_meshes_weight = 0;  // path gain of meshes not on `body`, (dimensionless)
+  double resonance_hz = 0;  // the structural mode the sensor sees
+  double damping_ratio = 0.05;  // of that mode
+  double effective_mass_kg = 0;  // its modal mass: 1/m_eff is the high-frequency gain, m/s² per N
+  double noise_rms_m_s2 = 0;  // white measurement noise added at the sensor rate
+  double sample_rate_hz = 0;  // the acquisition rate (a whole number of steps)
 };
 
 // The stiffness table of the meshes between two gear bodies (by body name): the contact radius
@@ -173,7 +173,7 @@ struct ContactDef {
   std::vector<PairStiffnessDef> stiffness_tables;
   std::vector<PairMeshStiffnessDef> mesh_stiffnesses;  // pairs with a constant mesh stiffness
   double damping_ratio = 0.05;  // of the pair's critical damping along the line of action
-  double friction = 0.0;        // Coulomb coefficient on the flanks
+  double friction = 0.0;  // Coulomb coefficient on the flanks
   // How the multibody engine applies it (docs/solver.md, "Friction at the pitch point").
   // `sliding`: μ·λ_n against the sliding velocity, whose sign over the step is taken from the
   // contact's slip at the step's start and its change over the last step; in the step where the
@@ -218,7 +218,6 @@ struct ContactDef {
 // (Dantzig) solve per step, exact whatever `iterations` says (physics/multibody_engine.hpp).
 enum class SolverEngine { rigid_bodies, multibody };
 
-
 struct SolverDef {
   double time_step_s = 2e-5;
   int iterations = 50;
@@ -261,15 +260,16 @@ struct SolverDef {
 inline const char* engine_name(SolverEngine e) { return e == SolverEngine::multibody ? "multibody" : "rigid_bodies"; }
 inline const char* row_solver_name(SolverDef::RowSolver r) { return r == SolverDef::RowSolver::dantzig ? "dantzig" : "active_set"; }
 inline const char* mass_matrix_name(SolverDef::MassMatrix m) { return m == SolverDef::MassMatrix::articulated ? "articulated" : "planar"; }
-inline const char* friction_model_name(ContactDef::FrictionModel f) { return f == ContactDef::FrictionModel::stick_slip ? "stick_slip" : "sliding"; }
+inline const char* friction_model_name(ContactDef::FrictionModel f) {
+  return f == ContactDef::FrictionModel::stick_slip ? "stick_slip" : "sliding";
+}
 inline const char* integrator_name(SolverDef::Integrator i) {
   return i == SolverDef::Integrator::bdf2 ? "bdf2" : i == SolverDef::Integrator::trapezoid_closed ? "trapezoid_closed" : "theta";
 }
 
-
 struct OutputDef {
   double sample_rate_hz = 2000;  // state.csv and contacts.csv rate
-  bool per_step_log = true;      // the binary per-step contact log
+  bool per_step_log = true;  // the binary per-step contact log
 };
 
 // How transmission error is formed: te = θ_input − ratio·θ_output.
@@ -283,18 +283,18 @@ struct TransmissionDef {
 // settings from its command line). Read by app/, not by the simulation.
 struct RenderDef {
   std::string camera = "overview";  // overview, tilted, sun_mesh, ring_mesh
-  int fps = 30;                      // video frames per second
-  double slowmo = 1;                 // the video plays this many times slower than simulated time
+  int fps = 30;  // video frames per second
+  double slowmo = 1;  // the video plays this many times slower than simulated time
   std::optional<double> from_s, to_s;  // simulated span, s (default: all that was logged)
   int width_px = 1280, height_px = 720;
-  int msaa = 0;        // multisampling samples (2 to 16); 0: edge anti-aliasing instead
+  int msaa = 0;  // multisampling samples (2 to 16); 0: edge anti-aliasing instead
   int png_every = 10;  // every Nth frame also as PNG under DIR/frames/ (0: none)
 };
 
 // The gears the `planetary:` macro built the train from (for tools that need the train itself,
 // such as the finite-element loaded TE). Read by app/, not by the simulation.
 struct PlanetaryTrainDef {
-  PlanetarySpec spec;                  // sun, healthy planet, ring, planet count
+  PlanetarySpec spec;  // sun, healthy planet, ring, planet count
   std::vector<GearSpec> planet_gears;  // one per planet, faulty ones included
   bool ring_fixed = true;
 };
@@ -303,18 +303,18 @@ struct PlanetaryTrainDef {
 // CalculiX + Gmsh. Read by app/, not by the simulation; the reader fills every field (defaults in
 // fe/constants.hpp).
 struct FeTeDef {
-  double flank_size_m = 0;        // element size along flanks and fillets, m
-  double core_size_m = 0;         // element size in the gear bodies, m
-  double transition_m = 0;        // distance over which the size grows, m
-  double max_sagitta_m = 0;       // largest distance of a boundary edge from the outline, m
+  double flank_size_m = 0;  // element size along flanks and fillets, m
+  double core_size_m = 0;  // element size in the gear bodies, m
+  double transition_m = 0;  // distance over which the size grows, m
+  double max_sagitta_m = 0;  // largest distance of a boundary edge from the outline, m
   double thinning_per_flank_m = 0;  // added to every gear's own thinning (backlash), m
-  double sun_torque_N_m = 0;      // input torque on the sun, N·m
-  std::string torque_source;      // where sun_torque_N_m came from (for the summary)
-  double friction = 0;            // flank Coulomb coefficient
-  std::string element_type;       // CPS4R (paper) or CPS4
-  int positions_per_mesh = 0;     // solves per mesh period
-  double mesh_periods = 0;        // mesh periods swept (centred on planet 0's tooth 0)
-  int jobs = 0;                   // ccx processes at once
+  double sun_torque_N_m = 0;  // input torque on the sun, N·m
+  std::string torque_source;  // where sun_torque_N_m came from (for the summary)
+  double friction = 0;  // flank Coulomb coefficient
+  std::string element_type;  // CPS4R (paper) or CPS4
+  int positions_per_mesh = 0;  // solves per mesh period
+  double mesh_periods = 0;  // mesh periods swept (centred on planet 0's tooth 0)
+  int jobs = 0;  // ccx processes at once
 };
 
 // A pair macro's gear-table figures at the centre distance it used (involute_pair.hpp): what the
@@ -346,8 +346,8 @@ struct Scenario {
   std::filesystem::path gearset_spec;
   std::optional<RenderDef> render;
   std::optional<PlanetaryTrainDef> planetary;  // set by the planetary macro
-  std::optional<FeTeDef> fe;                    // the `fe:` section, when given
-  std::vector<PairTableDef> pair_tables;        // set by the pair macro
+  std::optional<FeTeDef> fe;  // the `fe:` section, when given
+  std::vector<PairTableDef> pair_tables;  // set by the pair macro
 };
 
 // When every motor and load has reached its target (the end of the longest ramp), s: steady

@@ -41,24 +41,28 @@ void find_tooth_contacts(const Model& model, State& state, const ContactSearchOp
     std::vector<contact::ToothContact>& found = pr.found;
     // Gears from a spec: the continued contact stands; CAD meshes: the deeper of it and the search's.
     using Continuation = contact::CoherentToothSearch::Continuation;
-    pr.search.set_continuation(!cd.continued_search                           ? Continuation::off
+    pr.search.set_continuation(!cd.continued_search                       ? Continuation::off
                                : a.flanks_from_spec && b.flanks_from_spec ? Continuation::replace
-                                                                            : Continuation::deeper);
+                                                                          : Continuation::deeper);
     pr.search.set_park_near_pairs(cd.park_near_pairs);
     std::vector<contact::ToothContact>* near = options.near_pairs ? &pr.near : nullptr;
     contact::CoherentToothSearch::Motion motion;
     if (with_motion) motion = {state.gear_twists[mp.a], state.gear_twists[mp.b], model.scenario.solver.time_step_s};
     const contact::PlanarPose &pose_a = state.gear_poses[mp.a], &pose_b = state.gear_poses[mp.b];
-    if (cd.coherent_search) pr.search.find(*a.flanks, pose_a, *b.flanks, pose_b, found, near, with_motion ? &motion : nullptr);
-    else contact::find_tooth_contacts(*a.flanks, pose_a, *b.flanks, pose_b, found, near);
+    if (cd.coherent_search)
+      pr.search.find(*a.flanks, pose_a, *b.flanks, pose_b, found, near, with_motion ? &motion : nullptr);
+    else
+      contact::find_tooth_contacts(*a.flanks, pose_a, *b.flanks, pose_b, found, near);
     const int limit = options.max_points_per_pair;
     if (limit > 0 && static_cast<int>(found.size()) > limit) {
-      std::sort(found.begin(), found.end(), [](const contact::ToothContact& x, const contact::ToothContact& y) { return x.depth_m > y.depth_m; });
+      std::sort(found.begin(), found.end(),
+                [](const contact::ToothContact& x, const contact::ToothContact& y) { return x.depth_m > y.depth_m; });
       state.dropped_points += static_cast<long>(found.size()) - limit;
       found.resize(static_cast<std::size_t>(limit));
     }
     // Each contact's stiffness, and whether it is passed to the solver.
-    const contact::PlanarPose table_gear = mp.stiffness.table ? state.gear_poses[mp.stiffness.table_on_a ? mp.a : mp.b] : contact::PlanarPose{};
+    const contact::PlanarPose table_gear =
+        mp.stiffness.table ? state.gear_poses[mp.stiffness.table_on_a ? mp.a : mp.b] : contact::PlanarPose{};
     state.table_misses += tooth_pair_stiffnesses(mp.stiffness, pr.found, table_gear, pr.pair_stiffness, pr.active);
     for (const contact::ToothContact& c : found) state.max_penetration = std::max(state.max_penetration, c.depth_m);
   }

@@ -13,7 +13,7 @@ namespace gearsim::physics {
 
 struct ContactSearchOptions {
   int max_points_per_pair = 0;  // > 0: the deepest this many kept per pair, the rest dropped and counted
-  bool near_pairs = false;      // also the near pairs (verify.locate_contact_onset)
+  bool near_pairs = false;  // also the near pairs (verify.locate_contact_onset)
 };
 
 // state.pairs' found, near, pair_stiffness and active, state.max_penetration and the counters,

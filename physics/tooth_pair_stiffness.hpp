@@ -12,12 +12,12 @@
 namespace gearsim::physics {
 
 struct MeshStiffnessModel {
-  double pair_stiffness_N_per_m = 0;               // the constant per tooth pair
+  double pair_stiffness_N_per_m = 0;  // the constant per tooth pair
   const contact::StiffnessTable* table = nullptr;  // else this table's, radius on gear a (table_on_a) or b
   bool table_on_a = true;
-  double face_width_m = 0;                         // a table's stiffness is per face width
-  double body_stiffness_N_per_m = 0;               // gear bodies in series with all pairs (0: rigid)
-  double mesh_stiffness_N_per_m = 0;               // a constant mesh stiffness, shared (0: none)
+  double face_width_m = 0;  // a table's stiffness is per face width
+  double body_stiffness_N_per_m = 0;  // gear bodies in series with all pairs (0: rigid)
+  double mesh_stiffness_N_per_m = 0;  // a constant mesh stiffness, shared (0: none)
 };
 
 // k[i] (N/m) and active[i] for each contact in `found`; `table_gear` is the pose of the table's

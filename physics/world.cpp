@@ -74,8 +74,7 @@ WorldStructure World::structure() const {
     w.bodies.push_back(sb);
   }
   for (const ModelJoint& j : m.joints) w.joints.push_back({&j.def, j.body, j.parent, j.motor, j.load});
-  for (std::size_t p = 0; p < m.pairs.size(); ++p)
-    w.pairs.push_back({m.pairs[p].a, m.pairs[p].b, &m.pair_infos[p], m.pairs[p].stiffness});
+  for (std::size_t p = 0; p < m.pairs.size(); ++p) w.pairs.push_back({m.pairs[p].a, m.pairs[p].b, &m.pair_infos[p], m.pairs[p].stiffness});
   return w;
 }
 

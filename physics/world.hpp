@@ -19,8 +19,8 @@ namespace gearsim::physics {
 
 struct BodyState {
   std::string name;
-  double angle_rad = 0;      // unwrapped rotation about its joint axis relative to the parent
-  double speed_rad_s = 0;    // relative to the parent
+  double angle_rad = 0;  // unwrapped rotation about its joint axis relative to the parent
+  double speed_rad_s = 0;  // relative to the parent
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // gear-frame origin, world
 };
 
@@ -28,31 +28,31 @@ struct BodyState {
 struct ContactSample {
   int pair = -1;  // index into World::gear_pairs()
   contact::ToothContact geometry;
-  double normal_force_N = 0;    // applied impulse / dt
+  double normal_force_N = 0;  // applied impulse / dt
   double friction_force_N = 0;  // magnitude of the lateral impulses / dt
-  double stiffness_N_per_m = 0; // the contact stiffness it was solved with (pair constant or table)
+  double stiffness_N_per_m = 0;  // the contact stiffness it was solved with (pair constant or table)
 };
 
 // Power flows of the last step, W (forces from the solver's impulses / dt, velocities after the
 // step). Over a steady window: motor = −load + dissipation + d(kinetic energy)/dt, which is the
 // power balance a run reports.
 struct PowerFlows {
-  double motor_W = 0;     // delivered by the velocity motors (torque × joint speed)
-  double load_W = 0;      // delivered by the load torques (< 0 for a brake)
-  double contact_W = 0;   // delivered by tooth contacts (< 0: friction and contact damping dissipate)
-  double joint_W = 0;     // delivered by joints apart from their motors (< 0: bearing damping)
-  double impulse_W = 0;   // delivered by the scenario's force and torque pulses (impulses:)
-  double kinetic_J = 0;   // kinetic energy of all bodies, J
+  double motor_W = 0;  // delivered by the velocity motors (torque × joint speed)
+  double load_W = 0;  // delivered by the load torques (< 0 for a brake)
+  double contact_W = 0;  // delivered by tooth contacts (< 0: friction and contact damping dissipate)
+  double joint_W = 0;  // delivered by joints apart from their motors (< 0: bearing damping)
+  double impulse_W = 0;  // delivered by the scenario's force and torque pulses (impulses:)
+  double kinetic_J = 0;  // kinetic energy of all bodies, J
 };
 
 struct GearPairInfo {
   std::string body_a, body_b;
   double stiffness_N_per_m = 0;  // per tooth pair (the constant; a table's pair varies per contact)
   double damping_N_s_per_m = 0;
-  double face_width_m = 0;       // common face width the stiffness per width is multiplied by
-  double reduced_mass_kg = 0;    // along the line of action, for the damping c = 2ζ√(k·m)
-  double tooth_height_m = 0;     // radial extent of the smaller of the two gears' teeth
-  std::string stiffness_table;   // the table's source when the pair has one, else empty
+  double face_width_m = 0;  // common face width the stiffness per width is multiplied by
+  double reduced_mass_kg = 0;  // along the line of action, for the damping c = 2ζ√(k·m)
+  double tooth_height_m = 0;  // radial extent of the smaller of the two gears' teeth
+  std::string stiffness_table;  // the table's source when the pair has one, else empty
   double mesh_stiffness_N_per_m = 0;  // a constant mesh stiffness shared by its tooth pairs (0: none)
 };
 
@@ -63,9 +63,9 @@ struct StructureBody {
   double mass_kg = 0;
   double inertia_z_kg_m2 = 0;  // about its axis (z) through the centre of mass
   Eigen::Vector2d centre_of_mass_m = Eigen::Vector2d::Zero();
-  bool fixed = false;                           // welded to the ground
+  bool fixed = false;  // welded to the ground
   const contact::FlankTable* flanks = nullptr;  // gears only
-  contact::PlanarPose gear_pose;                // gears only
+  contact::PlanarPose gear_pose;  // gears only
 };
 struct StructureJoint {
   const JointDef* def = nullptr;
@@ -117,7 +117,8 @@ class World {
     double row_solve_s = 0;  // multibody: rows, M⁻¹ and the direct solve (part of the rest)
     double step_total_s = 0;
     long active_set_solves = 0, dantzig_solves = 0;  // multibody: steps whose rows each solved
-    long onset_splits = 0;     // multibody, verify.locate_contact_onset: splits of a step at a contact's onset (each adds a search and a solve)
+    long onset_splits =
+        0;  // multibody, verify.locate_contact_onset: splits of a step at a contact's onset (each adds a search and a solve)
     long friction_rounds = 0;  // multibody, verify.friction_model sliding: solves again to locate slip reversals
     // The coherent tooth search's flank visits, summed over the gear pairs (both passes; all 0
     // with verify.coherent_search false): contact::CoherentToothSearch::Counts, each a count

@@ -43,8 +43,7 @@ btTransform com_frame(const MassProperties& m) {
 // The layout the tooth contact uses: the scenario's (filled from the mesh when it gave none),
 // refused when the mesh is not a recognised gear, shows other teeth, or has an implausible size.
 ToothLayout checked_layout(const MeshGear& mg, const MeshSource& src, const std::string& who) {
-  if (!mg.recognition)
-    throw InputError(who + ": not recognised as a spur gear: " + mg.recognition.reason());
+  if (!mg.recognition) throw InputError(who + ": not recognised as a spur gear: " + mg.recognition.reason());
   const RecognisedGear& g = *mg.recognition;
   if (const Check u = check_unit(g, src.unit); !u) throw InputError(who + ": " + u.reason());
   if (const Check m = check_layout(g, *src.teeth); !m) throw InputError(who + ": " + m.reason());
@@ -69,18 +68,17 @@ void require_faithful(const contact::FlankTable& t, const std::string& who, cons
   const contact::FlankTable::Departure& d = t.departure();
   if (d.departure_m <= contact.max_flank_departure_m) return;
   std::ostringstream msg;
-  msg << who << ": its flank table departs " << d.departure_m * 1e6 << " um from the mesh outline at tooth " << d.tooth
-      << ", " << (d.flank == Flank::Ccw ? "Ccw" : "Cw") << " flank, r = " << d.r_m * 1e3 << " mm (limit "
-      << contact.max_flank_departure_m * 1e6 << " um, contact.max_flank_departure_m; outline resolution "
-      << t.knot_resolution_m() * 1e6
+  msg << who << ": its flank table departs " << d.departure_m * 1e6 << " um from the mesh outline at tooth " << d.tooth << ", "
+      << (d.flank == Flank::Ccw ? "Ccw" : "Cw") << " flank, r = " << d.r_m * 1e3 << " mm (limit " << contact.max_flank_departure_m * 1e6
+      << " um, contact.max_flank_departure_m; outline resolution " << t.knot_resolution_m() * 1e6
       << " um): the outline's vertices there do not lie on a smooth flank (a corner, a tooth layout that does not "
          "match the mesh, or coordinates too coarse for the tooth size)";
   throw InputError(msg.str());
 }
 
 // The shape, mass and flank table of a generated gear (its errors included).
-void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string& who, BuiltBody& b,
-                std::optional<MassProperties>& mass, ConvexPieces3& pieces) {
+void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string& who, BuiltBody& b, std::optional<MassProperties>& mass,
+                ConvexPieces3& pieces) {
   GearSpec spec = *def.gear;
   spec.chordal_deviation_m = contact.chordal_deviation_m;
   const double density = def.density_kg_m3.value_or(0);
@@ -91,7 +89,7 @@ void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string
   pieces = std::move(g.pieces);
   const bool internal = spec.kind == GearKind::Internal;
   b.flanks = contact::shared_flank_table(internal ? g.outline.outline.holes.front() : g.outline.outline.outer,
-                                        ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
+                                         ToothLayout{spec.teeth, spec.tooth0_angle_rad}, internal, kFlankSamples);
   require_faithful(*b.flanks, who, contact);
   b.flanks_from_spec = true;
   b.face_width_m = spec.face_width_m;
@@ -99,8 +97,8 @@ void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string
 }
 
 // The shape, mass and (for a toothed mesh) flank table of a CAD mesh body, in its gear frame.
-void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string& who, BuiltBody& b,
-                std::optional<MassProperties>& mass, ConvexPieces3& pieces) {
+void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string& who, BuiltBody& b, std::optional<MassProperties>& mass,
+                ConvexPieces3& pieces) {
   const MeshGearFile f = read_mesh_gear(def.mesh->path, def.mesh->unit);
   const TriMesh& mesh = f.mesh;
   double density = def.density_kg_m3.value_or(0);
@@ -109,8 +107,9 @@ void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string
   if (!(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
   if (def.mesh->teeth) {
     const std::string file = def.mesh->path.string();
-    if (!f.gear) throw InputError(who + ": " + file + " has teeth but is not a prism (" + f.prism.reason() +
-                                  "); tooth contact needs a spur-gear extrusion");
+    if (!f.gear)
+      throw InputError(who + ": " + file + " has teeth but is not a prism (" + f.prism.reason() +
+                       "); tooth contact needs a spur-gear extrusion");
     const MeshGear& mg = *f.gear;
     const ToothLayout layout = checked_layout(mg, *def.mesh, who + " (" + file + ")");
     const RecognisedGear& rg = *mg.recognition;
@@ -129,9 +128,11 @@ void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string
   } else {
     // A toothless mesh body: its own coordinates are its frame.
     mass = mass_properties(mesh, density);
-    if (f.prism) pieces = extrude_pieces(decompose(f.prism->outline), *f.prism);
-    else throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + f.prism.reason() +
-                          "); only prismatic meshes are simulated so far");
+    if (f.prism)
+      pieces = extrude_pieces(decompose(f.prism->outline), *f.prism);
+    else
+      throw InputError(who + ": " + def.mesh->path.string() + " is not a prism (" + f.prism.reason() +
+                       "); only prismatic meshes are simulated so far");
   }
 }
 
@@ -167,8 +168,10 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
   b.mass_kg = mass->mass_kg;
   const btTransform com_in_gear = com_frame(*mass);
   b.com_from_gear = com_in_gear.inverse();
-  if (!pieces.pieces.empty()) add_pieces(b, pieces, b.com_from_gear);
-  else b.shape = std::make_unique<btEmptyShape>();
+  if (!pieces.pieces.empty())
+    add_pieces(b, pieces, b.com_from_gear);
+  else
+    b.shape = std::make_unique<btEmptyShape>();
   const Eigen::Vector3d& I = mass->principal_moments_kg_m2;
   // Inertia about the gear axis (z of the gear frame) from the principal tensor.
   Eigen::Matrix3d tensor = mass->principal_axes * I.asDiagonal() * mass->principal_axes.transpose();
@@ -188,7 +191,8 @@ bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
   const double d = (ta.getOrigin() - tb.getOrigin()).length();
   const contact::FlankTable &fa = *a.flanks, &fb = *b.flanks;
   bool reach;
-  if (!fa.internal() && !fb.internal()) reach = d < fa.r_max_m() + fb.r_max_m();
+  if (!fa.internal() && !fb.internal())
+    reach = d < fa.r_max_m() + fb.r_max_m();
   else {
     const contact::FlankTable& ext = fa.internal() ? fb : fa;
     const contact::FlankTable& ring = fa.internal() ? fa : fb;
@@ -197,7 +201,8 @@ bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
   if (!reach) return false;
   const double parallel = ta.getBasis().getColumn(2).dot(tb.getBasis().getColumn(2));
   if (std::abs(parallel) < 1 - 1e-9)
-    throw InputError("gears '" + a.name + "' and '" + b.name + "' overlap but their axes are not parallel: tooth contact "
+    throw InputError("gears '" + a.name + "' and '" + b.name +
+                     "' overlap but their axes are not parallel: tooth contact "
                      "supports spur gears on parallel axes");
   return true;
 }
@@ -233,14 +238,15 @@ void require_clear_mesh(const BuiltBody& a, const contact::PlanarPose& pose_a, c
   if (o.deepest.depth_m > World::kStartOverlapLimit_m) {
     const contact::ToothContact& c = o.deepest;
     std::ostringstream msg;
-    msg << "scenario: gears '" << a.name << "' and '" << b.name << "' overlap " << (o.turn_a_rad == 0 ? "at t = 0" : "over their mesh cycle")
-        << ": tooth " << c.tooth_a << " of '" << a.name << "' is " << c.depth_m * 1e6 << " um deep in tooth " << c.tooth_b
-        << " of '" << b.name << "'";
+    msg << "scenario: gears '" << a.name << "' and '" << b.name << "' overlap "
+        << (o.turn_a_rad == 0 ? "at t = 0" : "over their mesh cycle") << ": tooth " << c.tooth_a << " of '" << a.name << "' is "
+        << c.depth_m * 1e6 << " um deep in tooth " << c.tooth_b << " of '" << b.name << "'";
     if (o.turn_a_rad != 0) msg << " after '" << a.name << "' turns " << o.turn_a_rad * 180 / std::numbers::pi << " deg at the ideal ratio";
     msg << ", at r = " << o.radius_a_m * 1e3 << " mm on '" << a.name << "' (teeth " << a.flanks->r_min_m() * 1e3 << "–"
         << a.flanks->r_max_m() * 1e3 << " mm) and r = " << o.radius_b_m * 1e3 << " mm on '" << b.name << "' (teeth "
         << b.flanks->r_min_m() * 1e3 << "–" << b.flanks->r_max_m() * 1e3 << " mm); limit " << World::kStartOverlapLimit_m * 1e6
-        << " um. The centre distance (" << d * 1e3 << " mm) is too small for these gears, a tip cuts into the mate's "
+        << " um. The centre distance (" << d * 1e3
+        << " mm) is too small for these gears, a tip cuts into the mate's "
            "fillet (interference), or a tooth layout (teeth, tooth0_deg) does not match the mesh";
     if (derived_distance)
       msg << ". That distance is the pair's zero-backlash one (no centre_distance_m given): gears that clear each "
@@ -252,20 +258,18 @@ void require_clear_mesh(const BuiltBody& a, const contact::PlanarPose& pose_a, c
 double contact_damping_N_s_per_m(double k, double m_eq, double zeta) { return 2 * zeta * std::sqrt(k * m_eq); }
 
 GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactDef& c) {
-GearPairInfo info;
-info.body_a = a.name;
-info.body_b = b.name;
-info.face_width_m = std::min(a.face_width_m, b.face_width_m);
-info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * info.face_width_m;
-// Effective mass along the line of action from the rotational inertias (J/r²); a fixed gear
-// contributes none. Planet translation on its carrier is neglected here.
-auto inv_mass = [](const BuiltBody& g) {
-  return g.fixed ? 0.0 : g.contact_radius_m * g.contact_radius_m / g.inertia_axis_kg_m2;
-};
-const double m_eq = 1.0 / (inv_mass(a) + inv_mass(b));
-info.reduced_mass_kg = m_eq;
-info.damping_N_s_per_m = contact_damping_N_s_per_m(info.stiffness_N_per_m, m_eq, c.damping_ratio);
-return info;
+  GearPairInfo info;
+  info.body_a = a.name;
+  info.body_b = b.name;
+  info.face_width_m = std::min(a.face_width_m, b.face_width_m);
+  info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * info.face_width_m;
+  // Effective mass along the line of action from the rotational inertias (J/r²); a fixed gear
+  // contributes none. Planet translation on its carrier is neglected here.
+  auto inv_mass = [](const BuiltBody& g) { return g.fixed ? 0.0 : g.contact_radius_m * g.contact_radius_m / g.inertia_axis_kg_m2; };
+  const double m_eq = 1.0 / (inv_mass(a) + inv_mass(b));
+  info.reduced_mass_kg = m_eq;
+  info.damping_N_s_per_m = contact_damping_N_s_per_m(info.stiffness_N_per_m, m_eq, c.damping_ratio);
+  return info;
 }
 
 }  // namespace gearsim::physics

@@ -129,8 +129,8 @@ py::object gear(const fs::path& spec, std::optional<std::string> name) {
   return all;
 }
 
-py::object inspect(const fs::path& mesh, const std::string& unit, std::optional<int> teeth, double tooth0_deg,
-                   double density_kg_m3, double prism_tolerance_um, double hausdorff_spacing_mm) {
+py::object inspect(const fs::path& mesh, const std::string& unit, std::optional<int> teeth, double tooth0_deg, double density_kg_m3,
+                   double prism_tolerance_um, double hausdorff_spacing_mm) {
   // The CLI's option checks (cmd_inspect.cpp), with the argument's name.
   using namespace input::limits;
   if (teeth) input::require_within("teeth", *teeth, kTeeth);
@@ -207,8 +207,8 @@ naming the parameter for out-of-range input.)";
 
 void bind_geometry(py::module_& m) {
   m.def("gear", &gear, py::arg("spec_path"), py::arg("name") = py::none(), kGearDoc);
-  m.def("inspect", &inspect, py::arg("mesh_path"), py::arg("unit") = "mm", py::arg("teeth") = py::none(),
-        py::arg("tooth0_deg") = 0.0, py::arg("density_kg_m3") = app::InspectOptions{}.density_kg_m3,
+  m.def("inspect", &inspect, py::arg("mesh_path"), py::arg("unit") = "mm", py::arg("teeth") = py::none(), py::arg("tooth0_deg") = 0.0,
+        py::arg("density_kg_m3") = app::InspectOptions{}.density_kg_m3,
         py::arg("prism_tolerance_um") = app::InspectOptions{}.prism_tolerance_um,
         py::arg("hausdorff_spacing_mm") = app::InspectOptions{}.spacing_mm, kInspectDoc);
   m.def("tolerance", &tolerance, py::arg("module_mm"), py::arg("teeth"), py::arg("reference_diameter_mm"), py::arg("quality"),

@@ -20,15 +20,20 @@ template <class Json>
 py::object to_python(const Json& j) {
   using T = nlohmann::json::value_t;
   switch (j.type()) {
-    case T::null: return py::none();
-    case T::boolean: return py::bool_(j.template get<bool>());
-    case T::number_integer: return py::int_(j.template get<std::int64_t>());
-    case T::number_unsigned: return py::int_(j.template get<std::uint64_t>());
+    case T::null:
+      return py::none();
+    case T::boolean:
+      return py::bool_(j.template get<bool>());
+    case T::number_integer:
+      return py::int_(j.template get<std::int64_t>());
+    case T::number_unsigned:
+      return py::int_(j.template get<std::uint64_t>());
     case T::number_float: {
       const double v = j.template get<double>();
       return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());
     }
-    case T::string: return py::str(j.template get_ref<const std::string&>());
+    case T::string:
+      return py::str(j.template get_ref<const std::string&>());
     case T::array: {
       py::list list;
       for (const auto& item : j) list.append(to_python(item));
@@ -39,7 +44,8 @@ py::object to_python(const Json& j) {
       for (auto it = j.begin(); it != j.end(); ++it) dict[py::str(it.key())] = to_python(it.value());
       return dict;
     }
-    default: throw py::type_error("gearsim: a JSON value of a kind Python has no type for (binary or discarded)");
+    default:
+      throw py::type_error("gearsim: a JSON value of a kind Python has no type for (binary or discarded)");
   }
 }
 

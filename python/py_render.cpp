@@ -19,8 +19,8 @@ namespace {
 // The CLI's bound on --msaa.
 constexpr int kMaxMsaa = 16;
 
-py::array_t<std::uint8_t> render_frame(const std::filesystem::path& run_dir, double t_s, const std::string& camera,
-                                       int width_px, int height_px, int msaa) {
+py::array_t<std::uint8_t> render_frame(const std::filesystem::path& run_dir, double t_s, const std::string& camera, int width_px,
+                                       int height_px, int msaa) {
   if (camera != "overview" && camera != "tilted" && camera != "sun_mesh" && camera != "ring_mesh")
     throw InputError("camera: '" + camera + "' is none of overview, tilted, sun_mesh, ring_mesh");
   input::require_within("t_s", t_s, input::limits::kRunTime_s);
@@ -38,8 +38,8 @@ py::array_t<std::uint8_t> render_frame(const std::filesystem::path& run_dir, dou
     py::gil_scoped_release released;
     image = app::render_run_frame(app::open_run_dir(run_dir), def, t_s);
   }
-  py::array_t<std::uint8_t> a({static_cast<py::ssize_t>(image.height_px), static_cast<py::ssize_t>(image.width_px),
-                               static_cast<py::ssize_t>(3)});
+  py::array_t<std::uint8_t> a(
+      {static_cast<py::ssize_t>(image.height_px), static_cast<py::ssize_t>(image.width_px), static_cast<py::ssize_t>(3)});
   std::memcpy(a.mutable_data(), image.rgb.data(), image.rgb.size());
   return a;
 }
@@ -58,8 +58,8 @@ sun_mesh or ring_mesh; width_px, height_px: 16 to 4096 px; msaa: 0 (edge anti-al
 
 void bind_render(py::module_& m) {
   const physics::RenderDef d;
-  m.def("render_frame", &render_frame, py::arg("run_dir"), py::arg("t_s"), py::arg("camera") = d.camera,
-        py::arg("width_px") = d.width_px, py::arg("height_px") = d.height_px, py::arg("msaa") = d.msaa, kRenderFrameDoc);
+  m.def("render_frame", &render_frame, py::arg("run_dir"), py::arg("t_s"), py::arg("camera") = d.camera, py::arg("width_px") = d.width_px,
+        py::arg("height_px") = d.height_px, py::arg("msaa") = d.msaa, kRenderFrameDoc);
 }
 
 }  // namespace gearsim::python

@@ -118,8 +118,7 @@ PyRunResult run(const PyScenario& scenario, py::object out, std::optional<double
     app::set_duration(s, *duration_s);
   }
   std::optional<TempDir> temp;
-  const fs::path dir = out.is_none() ? temp.emplace().path()
-                                     : fs::path(py::module_::import("os").attr("fspath")(out).cast<std::string>());
+  const fs::path dir = out.is_none() ? temp.emplace().path() : fs::path(py::module_::import("os").attr("fspath")(out).cast<std::string>());
   // Held as the CLI holds it: locked, the previous run's outputs (its manifest's) removed.
   app::OutputFolder folder(dir, "gearsim.run (Python)", app::OutputFolder::ForNewRun{});
   PendingError pending;
@@ -186,11 +185,11 @@ void bind_run(py::module_& m) {
       .def_readonly("out", &PyRunResult::out, "The run folder, or None when the files were temporary.")
       .def("__repr__", [](const PyRunResult& r) {
         return "<gearsim.RunResult " + py::str(r.summary["status"]).cast<std::string>() + ", " +
-               py::str(r.summary["sim_seconds"]).cast<std::string>() + " s, " + std::to_string(py::len(r.state)) +
-               " state and " + std::to_string(py::len(r.contacts)) + " contact columns>";
+               py::str(r.summary["sim_seconds"]).cast<std::string>() + " s, " + std::to_string(py::len(r.state)) + " state and " +
+               std::to_string(py::len(r.contacts)) + " contact columns>";
       });
-  m.def("run", &run, py::arg("scenario"), py::arg("out") = py::none(), py::arg("duration") = py::none(),
-        py::arg("progress") = false, kRunDoc);
+  m.def("run", &run, py::arg("scenario"), py::arg("out") = py::none(), py::arg("duration") = py::none(), py::arg("progress") = false,
+        kRunDoc);
 }
 
 }  // namespace gearsim::python

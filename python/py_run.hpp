@@ -17,12 +17,12 @@ namespace py = pybind11;
 struct PyScenario;
 
 struct PyRunResult {
-  py::dict state;     // state.csv: column name → numpy float64 array
+  py::dict state;  // state.csv: column name → numpy float64 array
   py::dict contacts;  // contacts.csv
-  py::dict sensors;   // sensors.csv (empty without sensors)
-  py::dict steps;     // steps.h5's contacts, one entry per tooth-pair contact per step (empty without the log)
-  py::dict summary;   // summary.json
-  py::object out;     // the run folder (str), or None when the files were temporary
+  py::dict sensors;  // sensors.csv (empty without sensors)
+  py::dict steps;  // steps.h5's contacts, one entry per tooth-pair contact per step (empty without the log)
+  py::dict summary;  // summary.json
+  py::object out;  // the run folder (str), or None when the files were temporary
 };
 
 // Steps between two checks for Python's signals (SIGINT): ~10 ms of the paper set's stepping.

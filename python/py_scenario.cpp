@@ -90,31 +90,40 @@ left as it was).)";
 }  // namespace
 
 void bind_scenario(py::module_& m) {
-  py::class_<PyScenario>(m, "Scenario", "A loaded, expanded and validated scenario (physics::Scenario) with its "
-                                        "source file and overrides.")
-      .def_property_readonly("path", [](const PyScenario& s) { return s.file.string(); }, "The scenario file as given.")
-      .def_property_readonly("overrides", [](const PyScenario& s) { return s.overrides; }, "The key.path=value overrides, in order.")
+  py::class_<PyScenario>(m, "Scenario",
+                         "A loaded, expanded and validated scenario (physics::Scenario) with its "
+                         "source file and overrides.")
+      .def_property_readonly(
+          "path", [](const PyScenario& s) { return s.file.string(); }, "The scenario file as given.")
+      .def_property_readonly(
+          "overrides", [](const PyScenario& s) { return s.overrides; }, "The key.path=value overrides, in order.")
       .def_property_readonly("name", [](const PyScenario& s) { return s.scenario.name; })
       .def_property_readonly("duration_s", [](const PyScenario& s) { return s.scenario.duration_s; })
       .def_property_readonly("time_step_s", [](const PyScenario& s) { return s.scenario.solver.time_step_s; })
       .def_property_readonly("sample_rate_hz", [](const PyScenario& s) { return s.scenario.output.sample_rate_hz; })
-      .def("to_dict", [](const PyScenario& s) { return to_python(input::scenario_json(s.scenario)); },
-           "The expanded scenario as a dict (the run folder's scenario.json).")
-      .def("__str__", [](const PyScenario& s) { return yaml_text(input::scenario_json(s.scenario)); },
-           "The expanded scenario as YAML (the content of scenario.json; numbers to 17 digits).")
-      .def("__repr__", [](const PyScenario& s) {
-        return "<gearsim.Scenario '" + s.scenario.name + "' from " + s.file.string() + ", " +
-               std::to_string(s.overrides.size()) + " overrides>";
-      })
-      .def("set", [](PyScenario& s, const std::string& key, py::object value) -> PyScenario& {
-        std::vector<std::string> overrides = s.overrides;
-        overrides.push_back(override_text(key, value));
-        s = load(s.file, overrides);
-        return s;
-      }, py::arg("key"), py::arg("value"), kSetDoc, py::return_value_policy::reference);
-  m.def("load_scenario", [](const std::filesystem::path& path, py::object overrides) {
-    return load(path, override_list(overrides));
-  }, py::arg("path"), py::arg("overrides") = py::none(), kLoadDoc);
+      .def(
+          "to_dict", [](const PyScenario& s) { return to_python(input::scenario_json(s.scenario)); },
+          "The expanded scenario as a dict (the run folder's scenario.json).")
+      .def(
+          "__str__", [](const PyScenario& s) { return yaml_text(input::scenario_json(s.scenario)); },
+          "The expanded scenario as YAML (the content of scenario.json; numbers to 17 digits).")
+      .def("__repr__",
+           [](const PyScenario& s) {
+             return "<gearsim.Scenario '" + s.scenario.name + "' from " + s.file.string() + ", " + std::to_string(s.overrides.size()) +
+                    " overrides>";
+           })
+      .def(
+          "set",
+          [](PyScenario& s, const std::string& key, py::object value) -> PyScenario& {
+            std::vector<std::string> overrides = s.overrides;
+            overrides.push_back(override_text(key, value));
+            s = load(s.file, overrides);
+            return s;
+          },
+          py::arg("key"), py::arg("value"), kSetDoc, py::return_value_policy::reference);
+  m.def(
+      "load_scenario", [](const std::filesystem::path& path, py::object overrides) { return load(path, override_list(overrides)); },
+      py::arg("path"), py::arg("overrides") = py::none(), kLoadDoc);
 }
 
 }  // namespace gearsim::python

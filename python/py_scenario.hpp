@@ -17,9 +17,9 @@ namespace gearsim::python {
 namespace py = pybind11;
 
 struct PyScenario {
-  std::filesystem::path file;          // the scenario file as given
+  std::filesystem::path file;  // the scenario file as given
   std::vector<std::string> overrides;  // key.path=value, in the order applied
-  physics::Scenario scenario;          // expanded, validated, SI
+  physics::Scenario scenario;  // expanded, validated, SI
 };
 
 // Overrides from Python: a dict {"key.path": value, …} (values: numbers, strings, bools, lists)

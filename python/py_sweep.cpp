@@ -87,14 +87,13 @@ void print_progress(const sweep::Progress& p) {
   const sweep::CaseRecord& r = *p.last;
   std::string line = "sweep: case " + std::to_string(r.index) + " " + sweep::status_name(r.status);
   if (r.status != sweep::CaseStatus::Completed) line += " (exit " + std::to_string(r.exit_code) + ")";
-  line += "; " + std::to_string(p.done) + "/" + std::to_string(p.to_run) + " done, " + std::to_string(p.failed) +
-          " not completed";
+  line += "; " + std::to_string(p.done) + "/" + std::to_string(p.to_run) + " done, " + std::to_string(p.failed) + " not completed";
   py::gil_scoped_acquire gil;
   py::print(line, py::arg("file") = py::module_::import("sys").attr("stderr"), py::arg("flush") = true);
 }
 
 py::dict sweep_cases(const fs::path& sweep_path, const fs::path& out, std::optional<int> jobs, bool fresh,
-                   std::optional<fs::path> executable, bool check, bool progress) {
+                     std::optional<fs::path> executable, bool check, bool progress) {
   if (jobs) input::require_within("jobs", *jobs, input::limits::kJobs);  // the CLI's --jobs check
   if (!fs::is_regular_file(sweep_path)) throw InputError(sweep_path.string() + ": sweep file not found");
   const int parallel = jobs.value_or(static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
@@ -138,7 +137,7 @@ py::dict sweep_cases(const fs::path& sweep_path, const fs::path& out, std::optio
   const sweep::StatusCounts& c = outcome.statuses;
   if (check && c.completed != outcome.cases) {
     py::object e = py::handle(g_cases_failed)(std::to_string(outcome.cases - c.completed) + " of " + std::to_string(outcome.cases) +
-                                  " cases did not complete; see their case.json (status, error) and " + outcome.csv.string());
+                                              " cases did not complete; see their case.json (status, error) and " + outcome.csv.string());
     e.attr("table") = table;
     PyErr_SetObject(g_cases_failed, e.ptr());
     throw py::error_already_set();
@@ -170,9 +169,9 @@ naming the file, case and key when the sweep file or a case is refused (before a
 }  // namespace
 
 void bind_sweep(py::module_& m) {
-  g_cases_failed = PyErr_NewExceptionWithDoc(
-      "gearsim.SweepCasesFailed", "Some cases of a sweep did not complete (the CLI's exit 5); `table` holds the sweep table.",
-      PyExc_RuntimeError, nullptr);
+  g_cases_failed = PyErr_NewExceptionWithDoc("gearsim.SweepCasesFailed",
+                                             "Some cases of a sweep did not complete (the CLI's exit 5); `table` holds the sweep table.",
+                                             PyExc_RuntimeError, nullptr);
   if (!g_cases_failed) throw py::error_already_set();
   m.attr("SweepCasesFailed") = py::handle(g_cases_failed);
   m.def("sweep", &sweep_cases, py::arg("sweep_path"), py::arg("out"), py::arg("jobs") = py::none(), py::arg("fresh") = false,

@@ -13,9 +13,7 @@ namespace {
 bool finite(const Eigen::Vector3d& v) { return v.allFinite(); }
 
 // Distance at which a view `height` tall at the target fills the vertical field of view.
-double distance_for_height(double height_m, double fov_y_rad) {
-  return 0.5 * height_m / std::tan(0.5 * fov_y_rad);
-}
+double distance_for_height(double height_m, double fov_y_rad) { return 0.5 * height_m / std::tan(0.5 * fov_y_rad); }
 
 // Up vector for a view direction: +y projected off the direction, or +x when they are parallel.
 Eigen::Vector3d up_for(const Eigen::Vector3d& dir) {
@@ -26,14 +24,12 @@ Eigen::Vector3d up_for(const Eigen::Vector3d& dir) {
 }  // namespace
 
 void validate_camera(const Camera& c) {
-  if (!finite(c.eye_m) || !finite(c.target_m) || !finite(c.up))
-    throw InputError("camera: eye_m, target_m and up must be finite");
+  if (!finite(c.eye_m) || !finite(c.target_m) || !finite(c.up)) throw InputError("camera: eye_m, target_m and up must be finite");
   const Eigen::Vector3d d = c.target_m - c.eye_m;
   if (d.norm() <= 0) throw InputError("camera: eye_m coincides with target_m");
   if (c.up.norm() <= 0 || d.normalized().cross(c.up.normalized()).norm() < 1e-9)
     throw InputError("camera: up must be non-zero and not parallel to the view direction");
-  if (!(c.near_m > 0) || !(c.far_m > c.near_m) || !std::isfinite(c.far_m))
-    throw InputError("camera: expected 0 < near_m < far_m (finite)");
+  if (!(c.near_m > 0) || !(c.far_m > c.near_m) || !std::isfinite(c.far_m)) throw InputError("camera: expected 0 < near_m < far_m (finite)");
   if (c.projection == Projection::Perspective && !(c.fov_y_rad > 0 && c.fov_y_rad < std::numbers::pi))
     throw InputError("camera: fov_y_rad must lie in (0, π)");
   if (c.projection == Projection::Orthographic && !(c.view_height_m > 0 && std::isfinite(c.view_height_m)))
@@ -93,8 +89,7 @@ Camera overview_camera(const Bounds& b, double aspect, double tilt_rad, Projecti
   const double tan_y = std::tan(0.5 * c.fov_y_rad), tan_x = tan_y * aspect;
   double distance = 0, half_height = 0;
   for (int k = 0; k < 8; ++k) {
-    const Eigen::Vector3d corner((k & 1 ? b.max_m : b.min_m).x(), (k & 2 ? b.max_m : b.min_m).y(),
-                                 (k & 4 ? b.max_m : b.min_m).z());
+    const Eigen::Vector3d corner((k & 1 ? b.max_m : b.min_m).x(), (k & 2 ? b.max_m : b.min_m).y(), (k & 4 ? b.max_m : b.min_m).z());
     const Eigen::Vector3d q = corner - centre;
     const double x = std::abs(q.dot(right)), y = std::abs(q.dot(c.up));
     distance = std::max(distance, q.dot(back) + std::max(x / tan_x, y / tan_y));
@@ -108,12 +103,11 @@ Camera overview_camera(const Bounds& b, double aspect, double tilt_rad, Projecti
   return c;
 }
 
-Camera closeup_camera(const Eigen::Vector3d& point_m, const Eigen::Vector3d& view_direction, double view_height_m,
-                      Projection projection, double fov_y_rad) {
+Camera closeup_camera(const Eigen::Vector3d& point_m, const Eigen::Vector3d& view_direction, double view_height_m, Projection projection,
+                      double fov_y_rad) {
   if (!finite(point_m) || !finite(view_direction) || view_direction.norm() <= 0)
     throw InputError("closeup_camera: point_m and view_direction must be finite, the direction non-zero");
-  if (!(view_height_m > 0) || !std::isfinite(view_height_m))
-    throw InputError("closeup_camera: view_height_m must be positive");
+  if (!(view_height_m > 0) || !std::isfinite(view_height_m)) throw InputError("closeup_camera: view_height_m must be positive");
   if (!(fov_y_rad > 0 && fov_y_rad < std::numbers::pi)) throw InputError("closeup_camera: fov_y_rad must lie in (0, π)");
   Camera c;
   c.projection = projection;

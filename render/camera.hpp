@@ -17,8 +17,8 @@ struct Camera {
   Eigen::Vector3d target_m{0, 0, 0};
   Eigen::Vector3d up{0, 1, 0};  // any vector not parallel to the view direction
   double fov_y_rad = constants::kDefaultFieldOfView_rad;  // perspective: vertical field of view
-  double view_height_m = 0.1;                              // orthographic: height of the view
-  double near_m = 0.01, far_m = 10.0;                      // clip distances from the eye
+  double view_height_m = 0.1;  // orthographic: height of the view
+  double near_m = 0.01, far_m = 10.0;  // clip distances from the eye
 };
 
 // An axis-aligned box, m.
@@ -39,15 +39,13 @@ Eigen::Matrix4d projection_matrix(const Camera& camera, double aspect);
 // of `bounds` with a small margin. tilt_rad > 0 swings the eye toward −y about the scene's
 // centre (0 = straight along the axis), to show the gears' faces in depth. Throws InputError for
 // non-finite or inverted bounds, or a non-positive aspect (width/height).
-Camera overview_camera(const Bounds& bounds, double aspect, double tilt_rad = 0.0,
-                       Projection projection = Projection::Perspective);
+Camera overview_camera(const Bounds& bounds, double aspect, double tilt_rad = 0.0, Projection projection = Projection::Perspective);
 
 // A close-up on `point_m`: looking along `view_direction` (from the eye toward the point), the
 // view `view_height_m` tall at the point, seen through a vertical field of view fov_y_rad
 // (perspective: a narrower one puts the eye farther away, with less depth distortion). Up is +y
 // projected on the image plane (+x when the view runs along y).
-Camera closeup_camera(const Eigen::Vector3d& point_m, const Eigen::Vector3d& view_direction,
-                      double view_height_m, Projection projection = Projection::Perspective,
-                      double fov_y_rad = constants::kDefaultFieldOfView_rad);
+Camera closeup_camera(const Eigen::Vector3d& point_m, const Eigen::Vector3d& view_direction, double view_height_m,
+                      Projection projection = Projection::Perspective, double fov_y_rad = constants::kDefaultFieldOfView_rad);
 
 }  // namespace gearsim::render

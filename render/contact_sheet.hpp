@@ -11,10 +11,10 @@ namespace gearsim::render {
 
 struct ContactSheetSettings {
   int columns = 4;
-  int gap_px = 4;             // between frames and around the sheet
-  int downscale = 1;          // each frame reduced by this integer factor (box filter)
+  int gap_px = 4;  // between frames and around the sheet
+  int downscale = 1;  // each frame reduced by this integer factor (box filter)
   Rgb background{255, 255, 255};
-  int label_scale = 1;        // font magnification of the labels
+  int label_scale = 1;  // font magnification of the labels
 };
 
 // Labels (none, or one per frame; "" draws nothing) go in each frame's top-left corner. Throws InputError:

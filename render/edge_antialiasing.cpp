@@ -21,9 +21,7 @@ struct ClipPoint {
   Vector3d eye;
 };
 
-ClipPoint lerp(const ClipPoint& p, const ClipPoint& q, double t) {
-  return {p.clip + t * (q.clip - p.clip), p.eye + t * (q.eye - p.eye)};
-}
+ClipPoint lerp(const ClipPoint& p, const ClipPoint& q, double t) { return {p.clip + t * (q.clip - p.clip), p.eye + t * (q.eye - p.eye)}; }
 
 // Clips the segment pq to the side of a clip-space plane where d(·) ≥ 0; false when nothing is left.
 template <class Distance>
@@ -62,12 +60,14 @@ bool clip_to_frame(WindowEdge& e, int width, int height) {
   const auto clip = [&](double p, double q) {  // keep where p·t ≤ q
     if (p == 0) return q >= 0;
     const double t = q / p;
-    if (p < 0) t0 = std::max(t0, t); else t1 = std::min(t1, t);
+    if (p < 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
     return t0 <= t1;
   };
   const double x0 = e.x0, y0 = e.y0;
-  if (!clip(-dx, x0 + 1) || !clip(dx, width + 1 - x0) || !clip(-dy, y0 + 1) || !clip(dy, height + 1 - y0))
-    return false;
+  if (!clip(-dx, x0 + 1) || !clip(dx, width + 1 - x0) || !clip(-dy, y0 + 1) || !clip(dy, height + 1 - y0)) return false;
   const WindowEdge o = e;
   const auto at = [](float a, float b, double t) { return static_cast<float>(a + t * (b - a)); };
   e = {at(o.x0, o.x1, t0), at(o.y0, o.y1, t0), at(o.z0, o.z1, t0), at(o.tol0, o.tol1, t0),
@@ -149,8 +149,7 @@ void append_outline_edges(const MeshEdges& edges, const Eigen::Matrix4d& model_v
   }
 }
 
-void antialias_edges(Image& image, const std::vector<float>& depth, const std::vector<WindowEdge>& edges,
-                     EdgeBlendBuffers& buffers) {
+void antialias_edges(Image& image, const std::vector<float>& depth, const std::vector<WindowEdge>& edges, EdgeBlendBuffers& buffers) {
   const int width = image.width_px, height = image.height_px;
   const std::size_t pixels = std::size_t(width) * height;
   GEARSIM_CHECK(depth.size() == pixels, "edge anti-aliasing: the depth buffer's size differs from the image's");
@@ -173,7 +172,7 @@ void antialias_edges(Image& image, const std::vector<float>& depth, const std::v
     const int c_end = std::min(u_size, static_cast<int>(std::ceil(u1 - 0.5)));
     for (int c = c_begin; c < c_end; ++c) {
       const double t = (c + 0.5 - u0) / (u1 - u0);
-      const double vc = v0 + t * (v1 - v0);                      // the edge at the column's centre
+      const double vc = v0 + t * (v1 - v0);  // the edge at the column's centre
       const double z = z0 + t * (z1 - z0), tol = tol0 + t * (tol1 - tol0);
       const int first_beyond = static_cast<int>(std::ceil(vc - 0.5));  // first row whose centre is ≥ vc
       const int r_lo = static_cast<int>(std::floor(vc - 0.5 * std::abs(k)));

@@ -26,15 +26,14 @@ namespace gearsim::render {
 // degenerate (zero-area) face are left out: it faces no way.
 struct MeshEdges {
   struct Edge {
-    Eigen::Vector3f a, b;    // end points, m
+    Eigen::Vector3f a, b;  // end points, m
     Eigen::Vector3f n0, n1;  // unit normals of the two faces (equal for an open boundary)
     bool feature = false;
   };
   std::vector<Edge> edges;
 };
 
-MeshEdges mesh_edges(const TriMesh& mesh, double crease_angle_rad,
-                     const std::vector<std::uint8_t>* highlight = nullptr);
+MeshEdges mesh_edges(const TriMesh& mesh, double crease_angle_rad, const std::vector<std::uint8_t>* highlight = nullptr);
 
 // An edge in window coordinates: x right and y down in pixels (pixel (i, j) covers
 // [i, i+1] × [j, j+1]), z the depth-buffer value; tol is how far (in depth-buffer units) the
@@ -60,10 +59,10 @@ void append_outline_edges(const MeshEdges& edges, const Eigen::Matrix4d& model_v
 // Per-pixel sums antialias_edges() keeps between frames so as not to allocate: all zero between calls.
 struct EdgeBlendBuffers {
   struct Sum {
-    float weight = 0;                  // the summed fractions across edges
-    float r = 0, g = 0, b = 0;         // the summed fraction × colour across
+    float weight = 0;  // the summed fractions across edges
+    float r = 0, g = 0, b = 0;  // the summed fraction × colour across
   };
-  std::vector<Sum> sums;               // per pixel (one cache line holds a pixel's four)
+  std::vector<Sum> sums;  // per pixel (one cache line holds a pixel's four)
   std::vector<std::uint32_t> touched;  // pixels with a non-zero weight
 };
 
@@ -73,7 +72,6 @@ struct EdgeBlendBuffers {
 // result stays a mix of colours drawn nearby. depth: the depth buffer, one value per pixel in
 // [0, 1], rows as the image's. An edge is visible at a pixel when the deeper of the pixel and its
 // neighbour across lies no nearer than the edge's depth minus its tolerance.
-void antialias_edges(Image& image, const std::vector<float>& depth, const std::vector<WindowEdge>& edges,
-                     EdgeBlendBuffers& buffers);
+void antialias_edges(Image& image, const std::vector<float>& depth, const std::vector<WindowEdge>& edges, EdgeBlendBuffers& buffers);
 
 }  // namespace gearsim::render

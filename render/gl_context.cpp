@@ -25,8 +25,7 @@ std::string why_no_core_context() {
   std::vector<unsigned char> buffer(4 * kDefaultBufferSize_px * kDefaultBufferSize_px);
   std::string reason;
   if (OSMesaMakeCurrent(fallback, buffer.data(), GL_UNSIGNED_BYTE, kDefaultBufferSize_px, kDefaultBufferSize_px))
-    reason = "OSMesa's default context offers OpenGL \"" + gl_string(GL_VERSION) + "\" on \"" +
-             gl_string(GL_RENDERER) + "\"";
+    reason = "OSMesa's default context offers OpenGL \"" + gl_string(GL_VERSION) + "\" on \"" + gl_string(GL_RENDERER) + "\"";
   else
     reason = "OSMesa's default context cannot be made current either";
   OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
@@ -42,10 +41,21 @@ struct GlContext::Handle {
 };
 
 GlContext::GlContext() : handle_(std::make_unique<Handle>()) {
-  const std::array<int, 15> attribs = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 0,
-                                       OSMESA_ACCUM_BITS, 0, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                                       OSMESA_CONTEXT_MAJOR_VERSION, constants::kGlMajorVersion,
-                                       OSMESA_CONTEXT_MINOR_VERSION, constants::kGlMinorVersion, 0};
+  const std::array<int, 15> attribs = {OSMESA_FORMAT,
+                                       OSMESA_RGBA,
+                                       OSMESA_DEPTH_BITS,
+                                       24,
+                                       OSMESA_STENCIL_BITS,
+                                       0,
+                                       OSMESA_ACCUM_BITS,
+                                       0,
+                                       OSMESA_PROFILE,
+                                       OSMESA_CORE_PROFILE,
+                                       OSMESA_CONTEXT_MAJOR_VERSION,
+                                       constants::kGlMajorVersion,
+                                       OSMESA_CONTEXT_MINOR_VERSION,
+                                       constants::kGlMinorVersion,
+                                       0};
   handle_->context = OSMesaCreateContextAttribs(attribs.data(), nullptr);
   if (!handle_->context)
     throw RenderError("OSMesa: cannot create an OpenGL " + std::to_string(constants::kGlMajorVersion) + "." +
@@ -66,8 +76,7 @@ GlContext::~GlContext() {
 
 void GlContext::make_current() {
   if (OSMesaGetCurrentContext() == handle_->context) return;
-  if (!OSMesaMakeCurrent(handle_->context, handle_->buffer.data(), GL_UNSIGNED_BYTE, kDefaultBufferSize_px,
-                         kDefaultBufferSize_px))
+  if (!OSMesaMakeCurrent(handle_->context, handle_->buffer.data(), GL_UNSIGNED_BYTE, kDefaultBufferSize_px, kDefaultBufferSize_px))
     throw RenderError("OSMesa: OSMesaMakeCurrent failed for the core-profile context");
 }
 

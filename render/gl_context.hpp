@@ -18,10 +18,10 @@ class GlContext {
 
   void make_current();  // throws RenderError
 
-  const std::string& version() const { return version_; }    // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
+  const std::string& version() const { return version_; }  // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
   const std::string& renderer() const { return renderer_; }  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
-  int max_samples() const { return max_samples_; }           // GL_MAX_SAMPLES
-  int max_size_px() const { return max_size_px_; }           // GL_MAX_RENDERBUFFER_SIZE
+  int max_samples() const { return max_samples_; }  // GL_MAX_SAMPLES
+  int max_size_px() const { return max_size_px_; }  // GL_MAX_RENDERBUFFER_SIZE
 
  private:
   struct Handle;

@@ -17,8 +17,7 @@ class ShadingProgram {
 
   GLuint id() const { return program_; }
   // Uniform locations.
-  GLint model_view = -1, projection = -1, normal_matrix = -1, colour = -1, highlight_colour = -1,
-        lit = -1, orthographic = -1;
+  GLint model_view = -1, projection = -1, normal_matrix = -1, colour = -1, highlight_colour = -1, lit = -1, orthographic = -1;
 
  private:
   GLuint program_ = 0;

@@ -34,9 +34,8 @@ void Image::set(int x, int y, Rgb c) {
 
 ImageDifference compare_images(const Image& a, const Image& b) {
   if (a.width_px != b.width_px || a.height_px != b.height_px)
-    throw InputError("compare_images: sizes differ (" + std::to_string(a.width_px) + "×" +
-                     std::to_string(a.height_px) + " vs " + std::to_string(b.width_px) + "×" +
-                     std::to_string(b.height_px) + ")");
+    throw InputError("compare_images: sizes differ (" + std::to_string(a.width_px) + "×" + std::to_string(a.height_px) + " vs " +
+                     std::to_string(b.width_px) + "×" + std::to_string(b.height_px) + ")");
   ImageDifference d;
   if (a.rgb.empty()) return d;
   double sum = 0;
@@ -59,8 +58,8 @@ long count_pixels_not(const Image& image, Rgb background) {
 Image downscale(const Image& image, int factor) {
   if (factor < 1) throw InputError("downscale: factor must be ≥ 1, got " + std::to_string(factor));
   if (image.width_px % factor != 0 || image.height_px % factor != 0)
-    throw InputError("downscale: " + std::to_string(image.width_px) + "×" + std::to_string(image.height_px) +
-                     " does not divide by " + std::to_string(factor));
+    throw InputError("downscale: " + std::to_string(image.width_px) + "×" + std::to_string(image.height_px) + " does not divide by " +
+                     std::to_string(factor));
   Image out(image.width_px / factor, image.height_px / factor);
   const int n = factor * factor;
   for (int y = 0; y < out.height_px; ++y)

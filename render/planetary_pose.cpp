@@ -21,8 +21,8 @@ Eigen::Isometry3d about_z(double angle_rad, const Eigen::Vector3d& centre_m = Ei
 
 void check_planet(const PlanetaryGeometry& g, int planet, const char* who) {
   if (planet < 0 || planet >= static_cast<int>(g.placements.size()))
-    throw InputError(std::string(who) + ": planet " + std::to_string(planet) + " out of range [0, " +
-                     std::to_string(g.placements.size()) + ")");
+    throw InputError(std::string(who) + ": planet " + std::to_string(planet) + " out of range [0, " + std::to_string(g.placements.size()) +
+                     ")");
 }
 
 double ratio(const PlanetarySpec& s) { return 1.0 + double(s.ring.teeth) / s.sun.teeth; }
@@ -54,8 +54,7 @@ PlanetaryPose kinematic_planetary_pose(const PlanetarySpec& s, const PlanetaryGe
   return p;
 }
 
-PlanetaryPose kinematic_planetary_pose_from_sun(const PlanetarySpec& s, const PlanetaryGeometry& g,
-                                                double sun_angle_rad) {
+PlanetaryPose kinematic_planetary_pose_from_sun(const PlanetarySpec& s, const PlanetaryGeometry& g, double sun_angle_rad) {
   PlanetaryPose p = kinematic_planetary_pose(s, g, sun_angle_rad / ratio(s));
   p.sun_angle_rad = sun_angle_rad;  // exact, not divided and multiplied back
   p.sun = about_z(sun_angle_rad);
@@ -65,29 +64,26 @@ PlanetaryPose kinematic_planetary_pose_from_sun(const PlanetarySpec& s, const Pl
 double carrier_angle_tooth_at_sun(const PlanetarySpec& s, const PlanetaryGeometry& g, int planet, int tooth) {
   check_planet(g, planet, "carrier_angle_tooth_at_sun");
   if (tooth < 0 || tooth >= s.planet.teeth)
-    throw InputError("carrier_angle_tooth_at_sun: tooth " + std::to_string(tooth) + " out of range [0, " +
-                     std::to_string(s.planet.teeth) + ")");
+    throw InputError("carrier_angle_tooth_at_sun: tooth " + std::to_string(tooth) + " out of range [0, " + std::to_string(s.planet.teeth) +
+                     ")");
   // Tooth direction relative to the carrier-fixed direction toward the sun (β + θ_c + π):
   // spin0 + tooth0 + k·2π/z_p − β − π − θ_c·z_r/z_p, which must vanish modulo 2π.
   const PlanetPlacement& pl = g.placements[planet];
-  const double offset = pl.spin_angle_rad + s.planet.tooth0_angle_rad + tooth * 2 * kPi / s.planet.teeth -
-                        pl.carrier_angle_rad - kPi;
+  const double offset = pl.spin_angle_rad + s.planet.tooth0_angle_rad + tooth * 2 * kPi / s.planet.teeth - pl.carrier_angle_rad - kPi;
   const double rate = double(s.ring.teeth) / s.planet.teeth;  // tooth angle lost per carrier radian
   const double period = 2 * kPi / rate;
   const double theta = std::fmod(offset / rate, period);
   return theta < 0 ? theta + period : theta;
 }
 
-Eigen::Vector3d sun_mesh_point(const PlanetarySpec& s, const PlanetaryGeometry& g, const PlanetaryPose& pose,
-                               int planet, double z_m) {
+Eigen::Vector3d sun_mesh_point(const PlanetarySpec& s, const PlanetaryGeometry& g, const PlanetaryPose& pose, int planet, double z_m) {
   check_planet(g, planet, "sun_mesh_point");
   // The pitch point divides the centre distance as z_s : z_p.
   const Eigen::Vector2d c = planet_centre(g, pose, planet) * (double(s.sun.teeth) / (s.sun.teeth + s.planet.teeth));
   return {c.x(), c.y(), z_m};
 }
 
-Eigen::Vector3d ring_mesh_point(const PlanetarySpec& s, const PlanetaryGeometry& g, const PlanetaryPose& pose,
-                                int planet, double z_m) {
+Eigen::Vector3d ring_mesh_point(const PlanetarySpec& s, const PlanetaryGeometry& g, const PlanetaryPose& pose, int planet, double z_m) {
   check_planet(g, planet, "ring_mesh_point");
   // Internal mesh: the pitch point lies beyond the planet centre, at radius a·z_r/(z_r − z_p).
   const Eigen::Vector2d c = planet_centre(g, pose, planet) * (double(s.ring.teeth) / (s.ring.teeth - s.planet.teeth));

@@ -28,8 +28,8 @@ PlanetaryMeshes planetary_meshes(const PlanetarySpec& spec, const std::vector<Ge
   if (!(chordal_deviation_m > 0)) throw InputError("planetary meshes: chordal_deviation_m must be positive");
   if (spec.planets < 1) throw InputError("planetary meshes: planets must be ≥ 1");
   if (!planet_specs.empty() && static_cast<int>(planet_specs.size()) != spec.planets)
-    throw InputError("planetary meshes: " + std::to_string(planet_specs.size()) + " planet specs for " +
-                     std::to_string(spec.planets) + " planets");
+    throw InputError("planetary meshes: " + std::to_string(planet_specs.size()) + " planet specs for " + std::to_string(spec.planets) +
+                     " planets");
   for (const HighlightedTooth& h : highlighted)
     if (h.planet < 0 || h.planet >= spec.planets)
       throw InputError("planetary meshes: highlighted planet " + std::to_string(h.planet) + " out of range [0, " +
@@ -68,8 +68,7 @@ Scene planetary_scene(const PlanetaryMeshes& meshes, const PlanetaryPose& pose, 
   s.bodies.push_back({"ring", meshes.ring, pose.ring, palette.ring, nullptr, palette.highlight});
   for (std::size_t k = 0; k < meshes.planets.size(); ++k) {
     const auto& h = k < meshes.planet_highlights.size() ? meshes.planet_highlights[k] : nullptr;
-    s.bodies.push_back({"planet " + std::to_string(k), meshes.planets[k], pose.planets[k], palette.planet, h,
-                        palette.highlight});
+    s.bodies.push_back({"planet " + std::to_string(k), meshes.planets[k], pose.planets[k], palette.planet, h, palette.highlight});
   }
   return s;
 }

@@ -24,9 +24,9 @@ struct PlanetaryMeshes {
 };
 
 struct PlanetaryPalette {
-  Rgb sun{214, 160, 62};       // brass
-  Rgb planet{96, 150, 206};    // steel blue
-  Rgb ring{150, 154, 162};     // grey steel
+  Rgb sun{214, 160, 62};  // brass
+  Rgb planet{96, 150, 206};  // steel blue
+  Rgb ring{150, 154, 162};  // grey steel
   Rgb highlight{235, 45, 35};  // the faulty tooth
 };
 
@@ -46,7 +46,6 @@ PlanetaryMeshes planetary_meshes(const PlanetarySpec& spec, const std::vector<Ge
 
 // Bodies named "sun", "ring", "planet 0" … Throws InputError when the pose's planet count differs
 // from the meshes' (a pose for another set, or no poses at all).
-Scene planetary_scene(const PlanetaryMeshes& meshes, const PlanetaryPose& pose,
-                      const PlanetaryPalette& palette = {});
+Scene planetary_scene(const PlanetaryMeshes& meshes, const PlanetaryPose& pose, const PlanetaryPalette& palette = {});
 
 }  // namespace gearsim::render

@@ -21,7 +21,7 @@ namespace {
 // objects live between setjmp and the libpng calls that may jump.
 struct PngState {
   char message[256] = {};
-  std::vector<std::uint8_t>* out = nullptr;       // writing
+  std::vector<std::uint8_t>* out = nullptr;  // writing
   const std::vector<std::uint8_t>* in = nullptr;  // reading
   std::size_t read_offset = 0;
   bool io_failed = false;
@@ -69,8 +69,8 @@ bool encode(const Image& image, PngState& st, std::vector<png_bytep>& rows) {
   }
   png_set_write_fn(png, &st, on_write, on_flush);
   png_set_compression_level(png, constants::kPngCompressionLevel);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width_px), static_cast<png_uint_32>(image.height_px), 8,
-               PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.width_px), static_cast<png_uint_32>(image.height_px), 8, PNG_COLOR_TYPE_RGB,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
   png_write_image(png, rows.data());
   png_write_end(png, nullptr);
@@ -117,10 +117,9 @@ bool decode(PngState& st, Image& image, std::vector<png_bytep>& rows) {
 }  // namespace
 
 std::vector<std::uint8_t> encode_png(const Image& image) {
-  if (image.width_px < 1 || image.height_px < 1 ||
-      image.rgb.size() != static_cast<std::size_t>(image.width_px) * image.height_px * 3)
-    throw InputError("encode_png: empty or inconsistent image (" + std::to_string(image.width_px) + "×" +
-                     std::to_string(image.height_px) + ")");
+  if (image.width_px < 1 || image.height_px < 1 || image.rgb.size() != static_cast<std::size_t>(image.width_px) * image.height_px * 3)
+    throw InputError("encode_png: empty or inconsistent image (" + std::to_string(image.width_px) + "×" + std::to_string(image.height_px) +
+                     ")");
   std::vector<std::uint8_t> out;
   std::vector<png_bytep> rows(image.height_px);
   for (int y = 0; y < image.height_px; ++y)
@@ -141,8 +140,7 @@ Image read_png(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read PNG '" + path.string() + "': " + std::strerror(errno));
   const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0)
-    throw InputError("'" + path.string() + "' is not a PNG file");
+  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) throw InputError("'" + path.string() + "' is not a PNG file");
   PngState st;
   st.in = &bytes;
   Image image;

@@ -45,10 +45,7 @@ GLuint make_fbo(int w, int h, int samples, bool depth, GLuint* colour_rb, GLuint
 }  // namespace
 
 RenderTarget::RenderTarget(int width_px, int height_px, int samples, int supersampling)
-    : width_(width_px),
-      height_(height_px),
-      draw_width_(width_px * supersampling),
-      draw_height_(height_px * supersampling) {
+    : width_(width_px), height_(height_px), draw_width_(width_px * supersampling), draw_height_(height_px * supersampling) {
   GLuint* rb = renderbuffers_;
   draw_fbo_ = make_fbo(draw_width_, draw_height_, samples, true, &rb[0], &rb[1], "drawing");
   full_fbo_ = samples > 1 ? make_fbo(draw_width_, draw_height_, 1, false, &rb[2], nullptr, "resolve") : draw_fbo_;

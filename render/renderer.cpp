@@ -44,18 +44,14 @@ void upload(GpuMesh& g, const ShadingMesh& m, GLenum usage) {
     glEnableVertexAttribArray(kPositionAttribute);
     glVertexAttribPointer(kPositionAttribute, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(0));
     glEnableVertexAttribArray(kNormalAttribute);
-    glVertexAttribPointer(kNormalAttribute, 3, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(offsetof(ShadedVertex, normal)));
+    glVertexAttribPointer(kNormalAttribute, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ShadedVertex, normal)));
     glEnableVertexAttribArray(kHighlightAttribute);
-    glVertexAttribPointer(kHighlightAttribute, 1, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<void*>(offsetof(ShadedVertex, highlight)));
+    glVertexAttribPointer(kHighlightAttribute, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(ShadedVertex, highlight)));
   }
   glBindVertexArray(g.vao);
   glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.vertices.size() * sizeof(ShadedVertex)), m.vertices.data(),
-               usage);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.indices.size() * sizeof(std::uint32_t)),
-               m.indices.data(), usage);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.vertices.size() * sizeof(ShadedVertex)), m.vertices.data(), usage);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.indices.size() * sizeof(std::uint32_t)), m.indices.data(), usage);
   g.index_count = static_cast<GLsizei>(m.indices.size());
 }
 
@@ -86,11 +82,9 @@ void validate_render_settings(const RenderSettings& s) {
   const auto size_ok = [&](int v) { return v >= 1 && v <= constants::kMaxImageSize_px / ss; };
   if (!size_ok(s.width_px) || !size_ok(s.height_px))
     throw InputError("render settings: resolution " + std::to_string(s.width_px) + "×" + std::to_string(s.height_px) +
-                     " px: width_px and height_px must lie in [1, " +
-                     std::to_string(constants::kMaxImageSize_px / ss) + "]");
+                     " px: width_px and height_px must lie in [1, " + std::to_string(constants::kMaxImageSize_px / ss) + "]");
   if (s.anti_aliasing == AntiAliasing::Multisample && s.msaa_samples < 2)
-    throw InputError("render settings: msaa_samples must be ≥ 2 with multisampling, got " +
-                     std::to_string(s.msaa_samples));
+    throw InputError("render settings: msaa_samples must be ≥ 2 with multisampling, got " + std::to_string(s.msaa_samples));
   if (!(s.crease_angle_rad >= 0 && s.crease_angle_rad <= std::numbers::pi))
     throw InputError("render settings: crease_angle_rad must lie in [0, π]");
   if (s.text_scale < 1) throw InputError("render settings: text_scale must be ≥ 1");
@@ -106,15 +100,15 @@ struct Renderer::Impl {
 
   std::optional<MeshEdges> marker_edges;
   std::vector<WindowEdge> window_edges;  // this frame's outline edges (kept to reuse the memory)
-  std::vector<float> depth;              // this frame's depth buffer, for edge anti-aliasing
+  std::vector<float> depth;  // this frame's depth buffer, for edge anti-aliasing
   EdgeBlendBuffers blend_buffers;
 
   explicit Impl(const RenderSettings& s) : settings(s) {
     const int ss = supersampling(s);
     if (s.width_px * ss > context.max_size_px() || s.height_px * ss > context.max_size_px())
-      throw InputError("render settings: resolution " + std::to_string(s.width_px) + "×" +
-                       std::to_string(s.height_px) + " px × supersampling " + std::to_string(ss) + " exceeds the GL limit of " +
-                       std::to_string(context.max_size_px()) + " px");
+      throw InputError("render settings: resolution " + std::to_string(s.width_px) + "×" + std::to_string(s.height_px) +
+                       " px × supersampling " + std::to_string(ss) + " exceeds the GL limit of " + std::to_string(context.max_size_px()) +
+                       " px");
     if (samples(s) > context.max_samples())
       throw InputError("render settings: msaa_samples " + std::to_string(s.msaa_samples) + " exceeds the GL limit of " +
                        std::to_string(context.max_samples()) + " on " + context.renderer());
@@ -132,8 +126,7 @@ struct Renderer::Impl {
   // make new meshes every frame do not pile up GPU buffers.
   void evict_orphans() {
     for (auto it = meshes.begin(); it != meshes.end();) {
-      const bool orphan = it->second.mesh.use_count() == 1 &&
-                          (!it->second.highlight || it->second.highlight.use_count() == 1);
+      const bool orphan = it->second.mesh.use_count() == 1 && (!it->second.highlight || it->second.highlight.use_count() == 1);
       if (orphan) {
         release(it->second);
         it = meshes.erase(it);
@@ -144,8 +137,7 @@ struct Renderer::Impl {
   }
 
   GpuMesh& gpu_mesh(const SceneBody& body) {
-    const auto key = std::make_pair(static_cast<const void*>(body.mesh.get()),
-                                    static_cast<const void*>(body.highlight.get()));
+    const auto key = std::make_pair(static_cast<const void*>(body.mesh.get()), static_cast<const void*>(body.highlight.get()));
     auto it = meshes.find(key);
     if (it != meshes.end()) return it->second;
     GpuMesh& g = meshes[key];
@@ -189,7 +181,10 @@ struct Renderer::Impl {
     glDepthFunc(GL_LESS);
     // TriMesh faces are counter-clockwise seen from outside: back faces are never visible.
     // The projection flips y (see below), which mirrors the winding: front faces turn clockwise.
-    if (settings.cull_back_faces) glEnable(GL_CULL_FACE); else glDisable(GL_CULL_FACE);
+    if (settings.cull_back_faces)
+      glEnable(GL_CULL_FACE);
+    else
+      glDisable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     glFrontFace(GL_CW);
     glUseProgram(program->id());

@@ -18,7 +18,7 @@ namespace gearsim::render {
 
 enum class Lighting {
   BlinnPhong,  // shaded
-  None,        // each body in its exact base colour (coverage and silhouette measurements)
+  None,  // each body in its exact base colour (coverage and silhouette measurements)
 };
 
 // How a frame is anti-aliased. CPU per 1280×720 frame of the paper's set on llvmpipe, 2 cores
@@ -26,10 +26,10 @@ enum class Lighting {
 // outline edges, ~22 000 blended pixels); multisampling 4× 52 / 65 ms (four samples drawn and
 // cleared, a ~10 ms resolve blit); supersampling 2×2 48 / 75 ms.
 enum class AntiAliasing {
-  None,          // one sample per pixel: its centre decides (coverage measurements)
-  Edge,          // one sample per pixel, then analytic edge anti-aliasing (edge_antialiasing.hpp)
-  Multisample,   // msaa_samples samples per pixel, resolved by GL
-  Supersample,   // drawn at twice the width and height and box-filtered down (2×2 samples)
+  None,  // one sample per pixel: its centre decides (coverage measurements)
+  Edge,  // one sample per pixel, then analytic edge anti-aliasing (edge_antialiasing.hpp)
+  Multisample,  // msaa_samples samples per pixel, resolved by GL
+  Supersample,  // drawn at twice the width and height and box-filtered down (2×2 samples)
 };
 
 struct RenderSettings {
@@ -40,7 +40,7 @@ struct RenderSettings {
   Rgb background{28, 31, 38};
   Lighting lighting = Lighting::BlinnPhong;
   double crease_angle_rad = constants::kDefaultCreaseAngle_rad;  // 0: flat (face) normals
-  int text_scale = 2;                                             // overlay font magnification
+  int text_scale = 2;  // overlay font magnification
   // Skip triangles facing away from the camera: right for closed, outward-oriented meshes (every
   // TriMesh of the geometry pipeline), about half the rasterisation work. Off for open meshes.
   bool cull_back_faces = true;
@@ -64,9 +64,9 @@ class Renderer {
   Image render(const Scene& scene, const Camera& camera);
 
   const RenderSettings& settings() const;
-  double aspect() const;              // width / height
+  double aspect() const;  // width / height
   std::string gl_description() const;  // GL_VERSION on GL_RENDERER
-  void clear_mesh_cache();            // forget every uploaded mesh
+  void clear_mesh_cache();  // forget every uploaded mesh
   std::size_t cached_mesh_count() const;  // meshes uploaded and kept
 
  private:

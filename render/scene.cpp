@@ -36,10 +36,8 @@ void validate_scene(const Scene& s) {
   for (std::size_t i = 0; i < s.contacts.size(); ++i)
     if (!s.contacts[i].point_m.allFinite() || !s.contacts[i].force_N.allFinite())
       throw InputError("scene: contact " + std::to_string(i) + ": point_m and force_N must be finite");
-  if (!(s.arrow_m_per_N >= 0) || !std::isfinite(s.arrow_m_per_N))
-    throw InputError("scene: arrow_m_per_N must be finite and ≥ 0");
-  if (!(s.marker_radius_m > 0) || !std::isfinite(s.marker_radius_m))
-    throw InputError("scene: marker_radius_m must be positive");
+  if (!(s.arrow_m_per_N >= 0) || !std::isfinite(s.arrow_m_per_N)) throw InputError("scene: arrow_m_per_N must be finite and ≥ 0");
+  if (!(s.marker_radius_m > 0) || !std::isfinite(s.marker_radius_m)) throw InputError("scene: marker_radius_m must be positive");
 }
 
 Bounds scene_bounds(const Scene& s) {

@@ -17,7 +17,7 @@
 namespace gearsim::render {
 
 struct SceneBody {
-  std::string name;                     // names the body in error messages
+  std::string name;  // names the body in error messages
   std::shared_ptr<const TriMesh> mesh;  // body frame, m; must not change once rendered
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // body → world, m
   Rgb colour{180, 180, 180};
@@ -35,7 +35,7 @@ struct ContactMarker {
 struct Scene {
   std::vector<SceneBody> bodies;
   std::vector<ContactMarker> contacts;
-  double arrow_m_per_N = 0;         // arrow length per newton, m/N (0: points only, no arrows)
+  double arrow_m_per_N = 0;  // arrow length per newton, m/N (0: points only, no arrows)
   double marker_radius_m = 0.4e-3;  // contact point sphere radius; arrow shafts are 0.4× this
   Rgb marker_colour{255, 220, 0};
   Rgb arrow_colour{40, 200, 255};

@@ -70,8 +70,7 @@ ShadingMesh shading_mesh(const TriMesh& m, double crease_angle_rad, const std::v
       const ShadedVertex sv{{float(p.x()), float(p.y()), float(p.z())}, {float(n.x()), float(n.y()), float(n.z())}, h};
       const auto same = [&](std::uint32_t i) {
         const ShadedVertex& o = out.vertices[i];
-        return o.normal[0] == sv.normal[0] && o.normal[1] == sv.normal[1] && o.normal[2] == sv.normal[2] &&
-               o.highlight == sv.highlight;
+        return o.normal[0] == sv.normal[0] && o.normal[1] == sv.normal[1] && o.normal[2] == sv.normal[2] && o.highlight == sv.highlight;
       };
       const auto it = std::find_if(made[v].begin(), made[v].end(), same);
       if (it != made[v].end()) {
@@ -134,12 +133,12 @@ TriMesh arrow_mesh(const Vector3d& from, const Vector3d& to, double shaft_r, int
   m.vertices.push_back(to);
   const auto rv = [&](int k, int j) { return index(k * segments + (j % segments)); };
   for (int j = 0; j < segments; ++j) {
-    m.triangles.push_back({c_from, rv(0, j + 1), rv(0, j)});       // base cap
+    m.triangles.push_back({c_from, rv(0, j + 1), rv(0, j)});  // base cap
     m.triangles.push_back({rv(0, j), rv(0, j + 1), rv(1, j + 1)});  // shaft
     m.triangles.push_back({rv(0, j), rv(1, j + 1), rv(1, j)});
-    m.triangles.push_back({rv(1, j), rv(2, j + 1), rv(2, j)});      // underside of the head
+    m.triangles.push_back({rv(1, j), rv(2, j + 1), rv(2, j)});  // underside of the head
     m.triangles.push_back({rv(1, j), rv(1, j + 1), rv(2, j + 1)});
-    m.triangles.push_back({rv(2, j), rv(2, j + 1), tip});          // cone
+    m.triangles.push_back({rv(2, j), rv(2, j + 1), tip});  // cone
   }
   return m;
 }

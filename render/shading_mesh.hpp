@@ -29,16 +29,14 @@ struct ShadingMesh {
 
 // crease_angle_rad = 0 gives face (flat) normals. `highlight` is null/empty or one entry per
 // triangle. Degenerate triangles get their neighbours' normal.
-ShadingMesh shading_mesh(const TriMesh& mesh, double crease_angle_rad,
-                         const std::vector<std::uint8_t>* highlight = nullptr);
+ShadingMesh shading_mesh(const TriMesh& mesh, double crease_angle_rad, const std::vector<std::uint8_t>* highlight = nullptr);
 
 // A closed UV sphere of radius_m about centre_m.
 TriMesh sphere_mesh(const Eigen::Vector3d& centre_m, double radius_m, int segments = 12);
 
 // A closed arrow from `from_m` to `to_m`: a cylinder shaft of shaft_radius_m and a cone head
 // (length ≤ a third of the arrow, radius 2.5× the shaft). Empty when the two points coincide.
-TriMesh arrow_mesh(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m, double shaft_radius_m,
-                   int segments = 16);
+TriMesh arrow_mesh(const Eigen::Vector3d& from_m, const Eigen::Vector3d& to_m, double shaft_radius_m, int segments = 16);
 
 // Appends b's triangles (and vertices) to a.
 void append_mesh(TriMesh& a, const TriMesh& b);

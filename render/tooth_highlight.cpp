@@ -36,8 +36,8 @@ int nearest_in_angle(const Polygon2& loop, double angle) {
 HighlightedGearMesh gear_mesh_with_highlighted_teeth(const GearSpec& spec, const std::vector<int>& teeth) {
   for (int t : teeth)
     if (t < 0 || t >= spec.teeth)
-      throw InputError("highlighted tooth: gear '" + spec.name + "': tooth " + std::to_string(t) +
-                       " out of range [0, " + std::to_string(spec.teeth) + ")");
+      throw InputError("highlighted tooth: gear '" + spec.name + "': tooth " + std::to_string(t) + " out of range [0, " +
+                       std::to_string(spec.teeth) + ")");
   const GearOutline go = make_gear_outline(spec);
   const double half = 0.5 * spec.face_width_m;
   HighlightedGearMesh out;
@@ -61,7 +61,7 @@ HighlightedGearMesh gear_mesh_with_highlighted_teeth(const GearSpec& spec, const
   std::vector<std::vector<int>> walks;  // loop indices
   std::vector<char> removed(n, 0), tooth_edge(n, 0);
   std::vector<int> corner_after(n, -1);  // internal: extra point index following loop index a
-  std::vector<Eigen::Vector2d> extra;    // the corners Q
+  std::vector<Eigen::Vector2d> extra;  // the corners Q
   // Gap g lies between teeth g − 1 and g. By symmetry its mid-line often falls exactly between
   // two outline points: the same gap must give the same point for both of its teeth.
   const auto gap_point = [&](int g) {

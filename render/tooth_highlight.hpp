@@ -16,7 +16,7 @@
 namespace gearsim::render {
 
 struct HighlightedGearMesh {
-  TriMesh mesh;                        // body frame, m: axis +z, faces at ±b/2
+  TriMesh mesh;  // body frame, m: axis +z, faces at ±b/2
   std::vector<std::uint8_t> highlight;  // one per triangle: 1 = in a chosen tooth
 };
 

@@ -28,8 +28,7 @@ void on_av_log(void* avcl, int level, const char* format, va_list args) {
   int prefix = 1;
   av_log_format_line2(avcl, level, format, args, line, sizeof line, &prefix);
   last_av_error = line;
-  while (!last_av_error.empty() && (last_av_error.back() == '\n' || last_av_error.back() == '\r'))
-    last_av_error.pop_back();
+  while (!last_av_error.empty() && (last_av_error.back() == '\n' || last_av_error.back() == '\r')) last_av_error.pop_back();
 }
 
 std::string av_error(int code) {
@@ -51,8 +50,7 @@ void validate_video_settings(const VideoSettings& s) {
     throw InputError("video settings: " + std::to_string(s.width_px) + "×" + std::to_string(s.height_px) +
                      " px: width_px and height_px must be even and ≥ 2 (yuv420p)");
   if (s.frames_per_second < 1 || s.frames_per_second > 1000)
-    throw InputError("video settings: frames_per_second must lie in [1, 1000], got " +
-                     std::to_string(s.frames_per_second));
+    throw InputError("video settings: frames_per_second must lie in [1, 1000], got " + std::to_string(s.frames_per_second));
   if (s.crf < 0 || s.crf > 51) throw InputError("video settings: crf must lie in [0, 51], got " + std::to_string(s.crf));
   if (s.preset.empty()) throw InputError("video settings: preset must not be empty");
 }
@@ -116,9 +114,8 @@ struct VideoWriter::Impl {
     check(avformat_write_header(format, nullptr), "cannot write the MP4 header");
     header_written = true;
     // RGB (full range) → BT.709 limited-range yuv420p, bit-exact.
-    sws = sws_getContext(settings.width_px, settings.height_px, AV_PIX_FMT_RGB24, settings.width_px,
-                         settings.height_px, AV_PIX_FMT_YUV420P, SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT,
-                         nullptr, nullptr, nullptr);
+    sws = sws_getContext(settings.width_px, settings.height_px, AV_PIX_FMT_RGB24, settings.width_px, settings.height_px, AV_PIX_FMT_YUV420P,
+                         SWS_BICUBIC | SWS_ACCURATE_RND | SWS_BITEXACT, nullptr, nullptr, nullptr);
     if (!sws) throw RenderError("FFmpeg: cannot set up RGB → yuv420p conversion");
     const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
     sws_setColorspaceDetails(sws, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
@@ -153,8 +150,7 @@ struct VideoWriter::Impl {
   }
 };
 
-VideoWriter::VideoWriter(const std::filesystem::path& path, const VideoSettings& settings)
-    : impl_(std::make_unique<Impl>()) {
+VideoWriter::VideoWriter(const std::filesystem::path& path, const VideoSettings& settings) : impl_(std::make_unique<Impl>()) {
   validate_video_settings(settings);
   impl_->path = path;
   impl_->settings = settings;
@@ -172,9 +168,9 @@ void VideoWriter::add_frame(const Image& image) {
   Impl& v = *impl_;
   if (v.finished) throw InputError("video '" + v.path.string() + "': frame added after finish()");
   if (image.width_px != v.settings.width_px || image.height_px != v.settings.height_px)
-    throw InputError("video '" + v.path.string() + "': frame " + std::to_string(v.frames) + " is " +
-                     std::to_string(image.width_px) + "×" + std::to_string(image.height_px) + ", expected " +
-                     std::to_string(v.settings.width_px) + "×" + std::to_string(v.settings.height_px));
+    throw InputError("video '" + v.path.string() + "': frame " + std::to_string(v.frames) + " is " + std::to_string(image.width_px) + "×" +
+                     std::to_string(image.height_px) + ", expected " + std::to_string(v.settings.width_px) + "×" +
+                     std::to_string(v.settings.height_px));
   check(av_frame_make_writable(v.frame), "frame buffer");
   const std::uint8_t* src[1] = {image.rgb.data()};
   const int stride[1] = {3 * image.width_px};

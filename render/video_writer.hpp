@@ -13,10 +13,10 @@
 namespace gearsim::render {
 
 struct VideoSettings {
-  int width_px = 1280;   // even (yuv420p halves the chroma)
-  int height_px = 720;   // even
+  int width_px = 1280;  // even (yuv420p halves the chroma)
+  int height_px = 720;  // even
   int frames_per_second = 30;
-  int crf = constants::kDefaultVideoCrf;                 // x264 constant rate factor, 0–51
+  int crf = constants::kDefaultVideoCrf;  // x264 constant rate factor, 0–51
   std::string preset = constants::kDefaultVideoPreset;  // x264 preset
 };
 

@@ -22,6 +22,7 @@ packages=(
   calculix-ccx                            # finite-element solver (ccx) for flexible-teeth stiffness
   gmsh libgmsh-dev                        # meshing of gear sections for ccx
   libgtest-dev libgmock-dev               # unit tests
+  clang-format-14                         # the tree's layout (.clang-format; ctest style.clang_format)
   python3-dev python3-pybind11 pybind11-dev python3-numpy  # the gearsim Python module (python/)
   python3-pytest python3-matplotlib python3-h5py python3-yaml  # its tests and examples/python
 )

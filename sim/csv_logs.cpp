@@ -74,7 +74,8 @@ void CsvLogs::on_start(const physics::World& world) {
   for (const physics::JointDef& j : scenario_.joints) {
     if (!j.bearing || j.parent == "ground") continue;
     bool parent_on_ground = false;
-    for (const physics::JointDef& pj : scenario_.joints) parent_on_ground = parent_on_ground || (pj.body == j.parent && pj.parent == "ground");
+    for (const physics::JointDef& pj : scenario_.joints)
+      parent_on_ground = parent_on_ground || (pj.body == j.parent && pj.parent == "ground");
     const long b = index_of(j.body), p = index_of(j.parent);
     if (!parent_on_ground || b < 0 || p < 0) continue;
     const auto bi = static_cast<std::size_t>(b), pi = static_cast<std::size_t>(p);
@@ -104,8 +105,8 @@ void CsvLogs::on_step(const physics::World& world) {
 }
 
 CsvLogs::PointRow CsvLogs::point_row(const physics::World& world, long sample) const {
-  PointRow r{sample, world.time_s(), std::vector<double>(pairs_, 0.0), std::vector<double>(pairs_, 0.0),
-             std::vector<int>(pairs_, 0), 0.0, {}, {}};
+  PointRow r{
+      sample, world.time_s(), std::vector<double>(pairs_, 0.0), std::vector<double>(pairs_, 0.0), std::vector<int>(pairs_, 0), 0.0, {}, {}};
   for (const physics::ContactSample& c : world.contacts()) {
     const std::size_t p = static_cast<std::size_t>(c.pair);
     r.force_N[p] += c.normal_force_N;
@@ -141,8 +142,10 @@ void CsvLogs::on_sample(const physics::World& world) {
     const Eigen::Vector3d d = b.position_m - pin;
     field(tail, d.dot(er)), field(tail, d.dot(et));
   }
-  if (!decimator_) write_row(row, filtered_point(row));  // every step a sample, or nothing to filter
-  else pending_.push_back(std::move(row));
+  if (!decimator_)
+    write_row(row, filtered_point(row));  // every step a sample, or nothing to filter
+  else
+    pending_.push_back(std::move(row));
 }
 
 // A row's point samples in the filter's channel order: what a row without a filtered value carries.
@@ -155,8 +158,7 @@ std::vector<double> CsvLogs::filtered_point(const PointRow& row) const {
 void CsvLogs::write_ready(const DecimatedRow& out) {
   const long j = std::lround(out.time_s * filter_->output_rate_hz);
   if (j == 0) return;  // t = 0: not a row
-  GEARSIM_CHECK(!pending_.empty() && pending_.front().sample == j, "filtered output " + std::to_string(j) +
-                                                                        " without its sample row");
+  GEARSIM_CHECK(!pending_.empty() && pending_.front().sample == j, "filtered output " + std::to_string(j) + " without its sample row");
   write_row(pending_.front(), out.values);
   pending_.pop_front();
 }

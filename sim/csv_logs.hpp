@@ -55,7 +55,7 @@ class CsvLogs : public Observer {
     double time_s = 0;
     std::vector<double> force_N, depth_um;
     std::vector<int> tooth_pairs;
-    double te_rad = 0;                   // point sample of the transmission error
+    double te_rad = 0;  // point sample of the transmission error
     std::string state_head, state_tail;  // state.csv's text before and after the TE columns
   };
   PointRow point_row(const physics::World& world, long sample) const;
@@ -76,7 +76,7 @@ class CsvLogs : public Observer {
   };
   std::vector<Carried> carried_;
   int te_in_ = -1, te_out_ = -1;  // bodies of the transmission's input and output joints
-  long every_ = 1;                // steps per output sample
+  long every_ = 1;  // steps per output sample
   std::optional<DecimationFilter> filter_;
   std::optional<Decimator> decimator_;
   std::deque<PointRow> pending_;  // point rows whose filtered values are not ready yet

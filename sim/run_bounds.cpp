@@ -34,7 +34,10 @@ Divergence RunBounds::at(const physics::World& world, std::string what, std::str
 
 std::optional<Divergence> RunBounds::check(const physics::World& world) {
   if (world.failed_solves() > 0)
-    return at(world, "solver", "", "the direct solve of the contact, bearing and motor rows found no solution (solver.engine multibody): the rows are contradictory or singular", static_cast<double>(world.failed_solves()), 0);
+    return at(world, "solver", "",
+              "the direct solve of the contact, bearing and motor rows found no solution (solver.engine multibody): the rows are "
+              "contradictory or singular",
+              static_cast<double>(world.failed_solves()), 0);
   if (auto d = check_contacts(world)) return d;
   if (auto d = check_speeds(world)) return d;
   return check_energy(world);
@@ -51,9 +54,8 @@ std::optional<Divergence> RunBounds::check_contacts(const physics::World& world)
     if (c.geometry.depth_m > limit)
       return at(world, "tooth penetration", where,
                 "gears " + where + " interpenetrate " + fmt(c.geometry.depth_m * 1e6) + " um at tooth " +
-                    std::to_string(c.geometry.tooth_a) + "/" + std::to_string(c.geometry.tooth_b) + " (force " +
-                    fmt(c.normal_force_N) + " N), beyond " + fmt(limit * 1e6) + " um = " +
-                    fmt(100 * def_.max_depth_share_of_tooth_height) +
+                    std::to_string(c.geometry.tooth_a) + "/" + std::to_string(c.geometry.tooth_b) + " (force " + fmt(c.normal_force_N) +
+                    " N), beyond " + fmt(limit * 1e6) + " um = " + fmt(100 * def_.max_depth_share_of_tooth_height) +
                     " % of the tooth height: the gears pass through each other (flank table not matching the mesh, "
                     "a load far beyond the contact's strength, or a time step too large for the contact stiffness)",
                 c.geometry.depth_m, limit);
@@ -70,8 +72,7 @@ std::optional<Divergence> RunBounds::check_contacts(const physics::World& world)
 std::optional<Divergence> RunBounds::check_speeds(const physics::World& world) const {
   for (const physics::BodyState& b : world.bodies()) {
     if (!std::isfinite(b.speed_rad_s) || !std::isfinite(b.angle_rad))
-      return at(world, "non-finite", b.name, "body '" + b.name + "': speed or angle is not finite (NaN/infinite)",
-                b.speed_rad_s, 0);
+      return at(world, "non-finite", b.name, "body '" + b.name + "': speed or angle is not finite (NaN/infinite)", b.speed_rad_s, 0);
     if (std::abs(b.speed_rad_s) > def_.max_speed_rad_s)
       return at(world, "speed", b.name,
                 "body '" + b.name + "' turns at " + fmt(b.speed_rad_s) + " rad/s, beyond " + fmt(def_.max_speed_rad_s) +
@@ -86,9 +87,8 @@ std::optional<Divergence> RunBounds::check_speeds(const physics::World& world) c
     const double error = std::abs(speed - m.target_speed_rad_s), limit = def_.max_motor_speed_error_share * std::abs(m.target_speed_rad_s);
     if (error > limit)
       return at(world, "motor speed", m.joint,
-                "motor of joint '" + m.joint + "' turns at " + fmt(speed) + " rad/s against its target " +
-                    fmt(m.target_speed_rad_s) + " rad/s after its ramp: the load exceeds its max_torque_N_m (" +
-                    fmt(m.max_torque_N_m) + " N·m) or the train jammed",
+                "motor of joint '" + m.joint + "' turns at " + fmt(speed) + " rad/s against its target " + fmt(m.target_speed_rad_s) +
+                    " rad/s after its ramp: the load exceeds its max_torque_N_m (" + fmt(m.max_torque_N_m) + " N·m) or the train jammed",
                 speed, m.target_speed_rad_s);
   }
   return std::nullopt;
@@ -105,8 +105,8 @@ std::optional<Divergence> RunBounds::check_energy(const physics::World& world) {
     return at(world, "non-finite", "", "the kinetic energy or the power flows are not finite", created_J_, limit);
   if (created_J_ > limit)
     return at(world, "energy", "",
-              "the bodies gained " + fmt(created_J_) + " J beyond the work of motors and loads (" + fmt(external_J_) +
-                  " J), more than " + fmt(limit) +
+              "the bodies gained " + fmt(created_J_) + " J beyond the work of motors and loads (" + fmt(external_J_) + " J), more than " +
+                  fmt(limit) +
                   " J: contacts or joints create energy, the integration is unstable (time step too large for the "
                   "contact stiffness, or gears interpenetrating)",
               created_J_, limit);

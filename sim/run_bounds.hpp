@@ -16,13 +16,13 @@ namespace gearsim::sim {
 
 // Where and why a run left its physical bounds.
 struct Divergence {
-  std::string what;     // "tooth penetration", "dropped contacts", "speed", "motor speed", "energy", "non-finite", "solver"
-  std::string where;    // the gear pair "a/b", body or joint name
+  std::string what;  // "tooth penetration", "dropped contacts", "speed", "motor speed", "energy", "non-finite", "solver"
+  std::string where;  // the gear pair "a/b", body or joint name
   std::string message;  // one sentence with the figures and the likely cause
   double time_s = 0;
   long step = 0;
-  double value = 0;     // the offending figure, in the unit `what` implies (m, rad/s, J, count)
-  double limit = 0;     // the bound it crossed, same unit
+  double value = 0;  // the offending figure, in the unit `what` implies (m, rad/s, J, count)
+  double limit = 0;  // the bound it crossed, same unit
 };
 
 // The bounds, each with its unit and why it is where it is.
@@ -56,8 +56,7 @@ class RunBounds {
   std::optional<Divergence> check_contacts(const physics::World& world) const;
   std::optional<Divergence> check_speeds(const physics::World& world) const;
   std::optional<Divergence> check_energy(const physics::World& world);
-  Divergence at(const physics::World& world, std::string what, std::string where, std::string message, double value,
-                double limit) const;
+  Divergence at(const physics::World& world, std::string what, std::string where, std::string message, double value, double limit) const;
 
   const physics::Scenario& scenario_;
   RunBoundsDef def_;

@@ -14,9 +14,7 @@ namespace gearsim::sim {
 namespace {
 
 // Whole steps per sensor sample (the reader checked it is whole).
-long steps_per_sample(const physics::Scenario& s) {
-  return std::lround(1.0 / (s.sensors.front().sample_rate_hz * s.solver.time_step_s));
-}
+long steps_per_sample(const physics::Scenario& s) { return std::lround(1.0 / (s.sensors.front().sample_rate_hz * s.solver.time_step_s)); }
 
 }  // namespace
 
@@ -86,9 +84,8 @@ void SensorLog::write(const DecimatedRow& row) {
   text.clear();
   append_number(text, row.time_s);
   for (std::size_t s = 0; s < channels_.size(); ++s) {
-    const double noise = channels_[s].def->noise_rms_m_s2 > 0
-                             ? std::normal_distribution<double>(0.0, channels_[s].def->noise_rms_m_s2)(noise_)
-                             : 0.0;
+    const double noise =
+        channels_[s].def->noise_rms_m_s2 > 0 ? std::normal_distribution<double>(0.0, channels_[s].def->noise_rms_m_s2)(noise_) : 0.0;
     text += ',';
     append_number(text, row.values[s] + noise);
   }

@@ -34,7 +34,9 @@ struct SteadyWindow {
   void track(const physics::World& w) {
     for (std::size_t b = 0; b < w.bodies().size(); ++b) angle_last[b] = w.bodies()[b].angle_rad;
   }
-  double mean_speed_rad_s(std::size_t b, double h) const { return steps ? (angle_last[b] - angle_start[b]) / (static_cast<double>(steps) * h) : 0.0; }
+  double mean_speed_rad_s(std::size_t b, double h) const {
+    return steps ? (angle_last[b] - angle_start[b]) / (static_cast<double>(steps) * h) : 0.0;
+  }
   void add(const physics::World& w) {
     if (steps == 0) angle_start = angle_last;
     track(w);
@@ -67,24 +69,22 @@ void fill_results(const physics::Scenario& s, const physics::World& world, const
     r.ratio = out != 0 ? in / out : 0.0;
   }
   for (std::size_t p = 0; p < world.gear_pairs().size(); ++p)
-    r.pairs.push_back({world.gear_pairs()[p], steady.steps ? steady.flank_sum[p][0] / n : 0.0,
-                       steady.steps ? steady.flank_sum[p][1] / n : 0.0});
+    r.pairs.push_back(
+        {world.gear_pairs()[p], steady.steps ? steady.flank_sum[p][0] / n : 0.0, steady.steps ? steady.flank_sum[p][1] / n : 0.0});
 }
 
 // Numerical trouble counted over the run, one sentence each (never printed mid-run).
 std::vector<std::string> warnings_of(const RunSummary& r) {
   std::vector<std::string> w;
   if (r.dropped_contacts > 0)
-    w.push_back(std::to_string(r.dropped_contacts) +
-                " tooth contacts dropped: a gear pair touched on more than 4 tooth pairs at once");
+    w.push_back(std::to_string(r.dropped_contacts) + " tooth contacts dropped: a gear pair touched on more than 4 tooth pairs at once");
   if (r.stiffness_table_misses > 0)
     w.push_back(std::to_string(r.stiffness_table_misses) +
                 " contact samples (per step) lay outside their pair's stiffness table and took its end row's value: "
                 "extend the table over the flank");
   if (r.max_penetration_m > kPenetrationWarning_m)
     w.push_back("deepest tooth penetration " + std::to_string(r.max_penetration_m * 1e6) + " um exceeds " +
-                std::to_string(kPenetrationWarning_m * 1e6) +
-                " um: interference or a time step too large for the contact stiffness");
+                std::to_string(kPenetrationWarning_m * 1e6) + " um: interference or a time step too large for the contact stiffness");
   if (r.power.samples() > 1 && std::abs(r.power.imbalance_fraction()) > kPowerImbalanceWarning)
     w.push_back("power balance off by " + std::to_string(100 * r.power.imbalance_fraction()) +
                 " % of the motor input: the solver is not converged (more iterations or a smaller time step)");
@@ -106,10 +106,14 @@ void stop_observers(const std::vector<Observer*>& observers, const physics::Worl
 
 const char* status_name(RunStatus s) {
   switch (s) {
-    case RunStatus::Completed: return "completed";
-    case RunStatus::Diverged: return "diverged";
-    case RunStatus::Interrupted: return "interrupted";
-    case RunStatus::OutputFailed: return "output_failed";
+    case RunStatus::Completed:
+      return "completed";
+    case RunStatus::Diverged:
+      return "diverged";
+    case RunStatus::Interrupted:
+      return "interrupted";
+    case RunStatus::OutputFailed:
+      return "output_failed";
   }
   return "unknown";
 }
@@ -156,8 +160,10 @@ RunSummary simulate(const physics::Scenario& s, const std::vector<Observer*>& ob
         r.status = RunStatus::Diverged;
         if (i % every != 0) sample();
       }
-      if (!r.divergence && world.time_s() >= r.steady_from_s) steady.add(world);
-      else if (steady.steps == 0) steady.track(world);
+      if (!r.divergence && world.time_s() >= r.steady_from_s)
+        steady.add(world);
+      else if (steady.steps == 0)
+        steady.track(world);
       if (i % every == 0) {
         sample();
         if (write_failed()) {

@@ -44,27 +44,27 @@ struct BodyResult {
 struct PairResult {
   physics::GearPairInfo info;
   double mean_ccw_flank_force_N = 0;  // on the counter-clockwise flanks of a's teeth
-  double mean_cw_flank_force_N = 0;   // on the clockwise flanks of a's teeth
+  double mean_cw_flank_force_N = 0;  // on the clockwise flanks of a's teeth
 };
 
 struct RunSummary {
   RunStatus status = RunStatus::Completed;
-  int stop_signal = 0;                  // Interrupted: what stop_requested returned
+  int stop_signal = 0;  // Interrupted: what stop_requested returned
   std::optional<Divergence> divergence;  // Diverged: which bound, where, when
   double sim_seconds = 0;
   long steps = 0;
   double time_step_s = 0;
-  double wall_seconds = 0;        // building the world, stepping and observing
+  double wall_seconds = 0;  // building the world, stepping and observing
   double setup_wall_seconds = 0;  // building the world and starting the observers
   physics::World::Profile profile;
-  double steady_from_s = 0;       // the steady window: after the motor and load ramps …
-  long steady_steps = 0;          // … this many steps, to sim_seconds
+  double steady_from_s = 0;  // the steady window: after the motor and load ramps …
+  long steady_steps = 0;  // … this many steps, to sim_seconds
   std::vector<BodyResult> bodies;
-  std::optional<double> ratio;    // mean input over mean output speed (scenario transmission)
+  std::optional<double> ratio;  // mean input over mean output speed (scenario transmission)
   std::vector<PairResult> pairs;
   double max_penetration_m = 0;
-  double created_energy_J = 0;    // energy the solver created over the run (run_bounds.hpp)
-  PowerBalance power;             // over the steady window
+  double created_energy_J = 0;  // energy the solver created over the run (run_bounds.hpp)
+  PowerBalance power;  // over the steady window
   long dropped_contacts = 0;
   long stiffness_table_misses = 0;
   std::vector<std::string> warnings;  // numerical trouble counted over the run
@@ -81,7 +81,6 @@ long output_interval_steps(const physics::Scenario& s);
 
 // Runs the scenario to its duration_s (or until a bound is crossed or a stop is requested).
 // Throws InputError when the scenario cannot be built (physics::World's refusals).
-RunSummary simulate(const physics::Scenario& scenario, const std::vector<Observer*>& observers,
-                    const SimOptions& options = {});
+RunSummary simulate(const physics::Scenario& scenario, const std::vector<Observer*>& observers, const SimOptions& options = {});
 
 }  // namespace gearsim::sim

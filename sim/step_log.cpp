@@ -32,15 +32,25 @@ enum class Filter { None, ShuffleDeflate };
 template <class T>
 hid_t native_type();
 template <>
-hid_t native_type<double>() { return H5T_NATIVE_DOUBLE; }
+hid_t native_type<double>() {
+  return H5T_NATIVE_DOUBLE;
+}
 template <>
-hid_t native_type<float>() { return H5T_NATIVE_FLOAT; }
+hid_t native_type<float>() {
+  return H5T_NATIVE_FLOAT;
+}
 template <>
-hid_t native_type<std::int32_t>() { return H5T_NATIVE_INT32; }
+hid_t native_type<std::int32_t>() {
+  return H5T_NATIVE_INT32;
+}
 template <>
-hid_t native_type<std::int16_t>() { return H5T_NATIVE_INT16; }
+hid_t native_type<std::int16_t>() {
+  return H5T_NATIVE_INT16;
+}
 template <>
-hid_t native_type<std::int8_t>() { return H5T_NATIVE_INT8; }
+hid_t native_type<std::int8_t>() {
+  return H5T_NATIVE_INT8;
+}
 
 // An extendible, chunked 1-D or 2-D dataset that grows by rows; `file_type` is what readers see
 // (little-endian, fixed: the same bytes on every machine), T what the rows are buffered as.
@@ -48,7 +58,7 @@ template <class T>
 struct Column {
   hid_t dataset = -1;
   hsize_t width = 1;  // values per row (1 for a 1-D column)
-  hsize_t rows = 0;   // rows on disk
+  hsize_t rows = 0;  // rows on disk
   std::vector<T> buffer;
 
   void create(hid_t parent, const char* name, hid_t file_type, hsize_t row_width, hsize_t chunk_rows, Filter filter) {
@@ -130,7 +140,7 @@ T narrow(long long v, const char* what) {
 struct StepLog::Impl {
   std::filesystem::path path;
   std::unique_ptr<StagedPath> staged;  // written under a temporary name, renamed by close()
-  int error = 0;                       // errno of the first failed write (0: none)
+  int error = 0;  // errno of the first failed write (0: none)
   hid_t file = -1, contacts_group = -1;
   double dt = 0;
   std::size_t buffered_steps = 0;
@@ -228,8 +238,7 @@ StepLog::StepLog(const std::filesystem::path& path, const physics::World& world,
 StepLog::~StepLog() {
   try {
     close();
-  } catch (...) {
-  }
+  } catch (...) {}
 }
 
 void StepLog::append(const physics::World& world, const std::vector<double>& sensor_values_m_s2) {

@@ -25,8 +25,8 @@ class StepLog {
  public:
   // Creates the file (under a temporary name). Throws OutputError naming the path when it cannot. With sensor
   // names, a dataset /sensors holds one value per sensor and step (docs/hdf5-log.md).
-  StepLog(const std::filesystem::path& path, const physics::World& world, const std::string& scenario_name,
-          double time_step_s, const std::vector<std::string>& sensor_names = {});
+  StepLog(const std::filesystem::path& path, const physics::World& world, const std::string& scenario_name, double time_step_s,
+          const std::vector<std::string>& sensor_names = {});
   ~StepLog();
   StepLog(const StepLog&) = delete;
   StepLog& operator=(const StepLog&) = delete;
@@ -61,8 +61,10 @@ class StepLogObserver : public Observer {
     log_ = std::make_unique<StepLog>(path_, world, name_, dt_, sensors_ ? sensors_->names() : std::vector<std::string>{});
   }
   void on_step(const physics::World& world) override {
-    if (sensors_) log_->append(world, sensors_->step_acceleration_m_s2());
-    else log_->append(world);
+    if (sensors_)
+      log_->append(world, sensors_->step_acceleration_m_s2());
+    else
+      log_->append(world);
   }
   void on_stop(const physics::World&) override {
     if (log_) log_->close();

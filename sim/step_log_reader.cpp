@@ -51,8 +51,9 @@ std::vector<double> step_times(const std::vector<std::int64_t>& step, double dt,
   std::int64_t k = 0;
   double time = 0;
   for (std::size_t c = 0; c < step.size(); ++c) {
-    if (step[c] < k) throw InputError(path.string() + ": contact row " + std::to_string(c) + " has step " +
-                                      std::to_string(step[c]) + " after step " + std::to_string(k) + " (a damaged log)");
+    if (step[c] < k)
+      throw InputError(path.string() + ": contact row " + std::to_string(c) + " has step " + std::to_string(step[c]) + " after step " +
+                       std::to_string(k) + " (a damaged log)");
     for (; k < step[c]; ++k) time += dt;
     t[c] = time;
   }
@@ -89,8 +90,8 @@ StepLogContacts read_step_log_contacts(const std::filesystem::path& path) {
   else
     c.time_s = step_times(c.step, c.time_step_s, path);
   const std::size_t n = c.time_s.size();
-  if (c.normal_impulse_N_s.size() != n || c.step.size() != n || c.pair.size() != n || c.tooth_a.size() != n ||
-      c.tooth_b.size() != n || c.flank_a.size() != n)
+  if (c.normal_impulse_N_s.size() != n || c.step.size() != n || c.pair.size() != n || c.tooth_a.size() != n || c.tooth_b.size() != n ||
+      c.flank_a.size() != n)
     throw InputError(path.string() + ": the /contacts columns differ in length (a damaged log)");
   for (std::int64_t p : c.pair)
     if (p < 0 || p >= static_cast<std::int64_t>(c.pairs.size()))

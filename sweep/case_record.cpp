@@ -34,8 +34,8 @@ bool is_final(CaseStatus s) { return s != CaseStatus::Interrupted; }
 json case_record_json(const CaseRecord& r) {
   json params = json::object();
   for (const auto& [k, v] : r.parameters) params[k] = v;
-  return {{"index", r.index},   {"parameters", params}, {"overrides", r.overrides}, {"status", status_name(r.status)},
-          {"exit_code", r.exit_code}, {"error", r.error}, {"metrics", r.metrics}, {"wall_seconds", r.wall_seconds}};
+  return {{"index", r.index},         {"parameters", params}, {"overrides", r.overrides}, {"status", status_name(r.status)},
+          {"exit_code", r.exit_code}, {"error", r.error},     {"metrics", r.metrics},     {"wall_seconds", r.wall_seconds}};
 }
 
 CaseRecord case_record_from_json(const json& j, const std::string& where) {

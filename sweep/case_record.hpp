@@ -16,9 +16,9 @@
 namespace gearsim::sweep {
 
 enum class CaseStatus {
-  Completed,    // the run finished inside its physical bounds and its metrics were collected
-  Diverged,     // the run left its physical bounds (exit 4)
-  Failed,       // any other end: a refused override (exit 2), a crash, analysis or metrics failing
+  Completed,  // the run finished inside its physical bounds and its metrics were collected
+  Diverged,  // the run left its physical bounds (exit 4)
+  Failed,  // any other end: a refused override (exit 2), a crash, analysis or metrics failing
   Interrupted,  // stopped by SIGINT/SIGTERM (exit 130/143): run again on resume
 };
 
@@ -31,12 +31,12 @@ bool is_final(CaseStatus s);
 struct CaseRecord {
   std::size_t index = 0;
   std::vector<std::pair<std::string, std::string>> parameters;  // (key, value text), column order
-  std::vector<std::string> overrides;                            // the --set list the run got
+  std::vector<std::string> overrides;  // the --set list the run got
   CaseStatus status = CaseStatus::Failed;
-  int exit_code = 0;          // of the step that ended the case (run, analyze), 0 when all passed
-  std::string error;          // the tail of the failing step's stderr, or why metrics failed
+  int exit_code = 0;  // of the step that ended the case (run, analyze), 0 when all passed
+  std::string error;  // the tail of the failing step's stderr, or why metrics failed
   nlohmann::ordered_json metrics = nlohmann::ordered_json::object();  // column → number or null
-  double wall_seconds = 0;    // the case's wall time, s (not in the table: it differs run to run)
+  double wall_seconds = 0;  // the case's wall time, s (not in the table: it differs run to run)
 };
 
 nlohmann::ordered_json case_record_json(const CaseRecord& r);

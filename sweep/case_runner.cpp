@@ -17,13 +17,15 @@ std::mutex g_collect_mutex;
 
 // Runs one `gearsim` step of the case; its stdout and stderr go to CASE_DIR/<name>.out/.err.log.
 // Returns the outcome with the stderr tail as the error of a failed step.
-ProcessOutcome step(const CaseJob& job, const CaseContext& ctx, const std::string& name,
-                    std::vector<std::string> args, std::string& error) {
+ProcessOutcome step(const CaseJob& job, const CaseContext& ctx, const std::string& name, std::vector<std::string> args,
+                    std::string& error) {
   args.insert(args.begin(), ctx.executable.string());
   const std::filesystem::path err = job.dir / (name + ".err.log");
   ProcessOutcome o = run_process(args, job.dir / (name + ".out.log"), err, ctx.stop);
-  if (!o.failure.empty()) error = o.failure;
-  else if (o.exit_code != 0) error = "gearsim " + name + ": " + file_tail(err, kErrorTailBytes);
+  if (!o.failure.empty())
+    error = o.failure;
+  else if (o.exit_code != 0)
+    error = "gearsim " + name + ": " + file_tail(err, kErrorTailBytes);
   return o;
 }
 

@@ -20,7 +20,7 @@ namespace gearsim::sweep {
 
 struct CaseJob {
   std::size_t index = 0;
-  std::filesystem::path dir;       // DIR/cases/<index>, absolute
+  std::filesystem::path dir;  // DIR/cases/<index>, absolute
   std::filesystem::path scenario;  // the base scenario, absolute
   std::vector<std::pair<std::string, std::string>> parameters;
   std::vector<std::string> overrides;
@@ -33,8 +33,7 @@ CaseJob case_job_from_json(const nlohmann::ordered_json& j);
 
 // The metrics of a finished run folder as {column: number or null}, in column order; InputError
 // naming the file and key when one cannot be had. Runs under a lock: one at a time per process.
-using MetricCollector =
-    std::function<nlohmann::ordered_json(const std::filesystem::path& case_dir, const input::SweepCollect& collect)>;
+using MetricCollector = std::function<nlohmann::ordered_json(const std::filesystem::path& case_dir, const input::SweepCollect& collect)>;
 
 struct CaseContext {
   std::filesystem::path executable;  // gearsim itself (process.hpp self_executable)

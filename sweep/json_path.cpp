@@ -27,8 +27,8 @@ const json* find_json_path(const json& doc, const std::string& path) {
       std::size_t best_len = 0;
       for (const auto& [key, value] : at->items()) {
         const std::size_t end = i + key.size();
-        const bool fits = key.size() > best_len && path.compare(i, key.size(), key) == 0 &&
-                          (end == path.size() || path[end] == '.' || path[end] == '[');
+        const bool fits =
+            key.size() > best_len && path.compare(i, key.size(), key) == 0 && (end == path.size() || path[end] == '.' || path[end] == '[');
         if (fits) best = &value, best_len = key.size();
       }
       if (!best) return nullptr;

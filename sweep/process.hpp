@@ -13,8 +13,8 @@
 namespace gearsim::sweep {
 
 struct ProcessOutcome {
-  int exit_code = -1;   // the child's exit code; 128 + signal when a signal ended it
-  int signal = 0;       // the signal that ended it, 0 when it exited
+  int exit_code = -1;  // the child's exit code; 128 + signal when a signal ended it
+  int signal = 0;  // the signal that ended it, 0 when it exited
   std::string failure;  // non-empty when the child could not be started (then exit_code 127)
 };
 

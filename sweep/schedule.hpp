@@ -15,11 +15,11 @@
 namespace gearsim::sweep {
 
 struct Progress {
-  std::size_t done = 0;     // cases finished in this invocation
-  std::size_t to_run = 0;   // cases this invocation runs (the rest were finished before: resume)
-  std::size_t failed = 0;   // of the done, those not completed
-  double elapsed_s = 0;     // since the first case started, s
-  double eta_s = -1;        // remaining, s, from the mean time per case so far; -1 before the first
+  std::size_t done = 0;  // cases finished in this invocation
+  std::size_t to_run = 0;  // cases this invocation runs (the rest were finished before: resume)
+  std::size_t failed = 0;  // of the done, those not completed
+  double elapsed_s = 0;  // since the first case started, s
+  double eta_s = -1;  // remaining, s, from the mean time per case so far; -1 before the first
   const CaseRecord* last = nullptr;  // the case that just finished
 };
 using ProgressFn = std::function<void(const Progress&)>;
@@ -30,8 +30,7 @@ void count_finished(Progress& p, const CaseRecord& r, std::chrono::steady_clock:
 
 // Runs the jobs on `parallel` threads (≥ 1), taking them in order; stops taking new ones once
 // context.stop() returns non-zero. Returns the records, in the order they finished.
-std::vector<CaseRecord> run_local(const std::vector<CaseJob>& jobs, int parallel, const CaseContext& context,
-                                  const ProgressFn& progress);
+std::vector<CaseRecord> run_local(const std::vector<CaseJob>& jobs, int parallel, const CaseContext& context, const ProgressFn& progress);
 
 // True when this process is one rank of several under mpirun (OMPI_COMM_WORLD_SIZE or PMI_SIZE
 // greater than 1 in the environment).
@@ -55,8 +54,7 @@ class MpiSession {
 // sends every worker the stop message when no job is left (with no jobs: releases the workers at
 // once, e.g. after the sweep file was refused). Polls, so that it does not spin a core the
 // workers need.
-std::vector<CaseRecord> run_mpi_master(const std::vector<CaseJob>& jobs, const ProgressFn& progress,
-                                       const std::function<int()>& stop);
+std::vector<CaseRecord> run_mpi_master(const std::vector<CaseJob>& jobs, const ProgressFn& progress, const std::function<int()>& stop);
 // Ranks > 0: asks for jobs and runs them until rank 0 says stop.
 void run_mpi_worker(const CaseContext& context);
 

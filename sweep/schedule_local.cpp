@@ -16,8 +16,7 @@ void count_finished(Progress& p, const CaseRecord& r, std::chrono::steady_clock:
   if (report) report(p);
 }
 
-std::vector<CaseRecord> run_local(const std::vector<CaseJob>& jobs, int parallel, const CaseContext& ctx,
-                                  const ProgressFn& progress) {
+std::vector<CaseRecord> run_local(const std::vector<CaseJob>& jobs, int parallel, const CaseContext& ctx, const ProgressFn& progress) {
   const auto start = std::chrono::steady_clock::now();
   std::atomic<std::size_t> next{0};
   std::mutex mutex;

@@ -62,8 +62,7 @@ MpiSession::MpiSession() {
 
 MpiSession::~MpiSession() { MPI_Finalize(); }
 
-std::vector<CaseRecord> run_mpi_master(const std::vector<CaseJob>& jobs, const ProgressFn& progress,
-                                       const std::function<int()>& stop) {
+std::vector<CaseRecord> run_mpi_master(const std::vector<CaseJob>& jobs, const ProgressFn& progress, const std::function<int()>& stop) {
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   const auto start = std::chrono::steady_clock::now();

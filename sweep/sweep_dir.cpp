@@ -72,18 +72,20 @@ int prepare_sweep_dir(const fs::path& dir, const input::SweepFile& f, bool fresh
   fs::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create the output folder: " + ec.message());
   int removed = 0;
-  if (fresh) removed = clear_sweep_outputs(dir);
+  if (fresh)
+    removed = clear_sweep_outputs(dir);
   else if (is_sweep_dir(dir)) {
     const json old = read_sweep_json(dir);
     if (old["content_hash"].get<std::string>() != f.content_hash)
       throw InputError(f.file.string() + ": its content changed since the sweep in " + dir.string() + " began (sweep.json holds " +
-                       old.value("sweep_file", std::string("?")) + " with hash " + old["content_hash"].get<std::string>() +
-                       ", now " + f.content_hash + "): resuming would mix two sweeps; use --fresh to start over, or another --out");
+                       old.value("sweep_file", std::string("?")) + " with hash " + old["content_hash"].get<std::string>() + ", now " +
+                       f.content_hash + "): resuming would mix two sweeps; use --fresh to start over, or another --out");
   }
   fs::create_directory(dir / "cases", ec);
   if (ec) throw InputError((dir / "cases").string() + ": cannot create: " + ec.message());
   if (!fs::is_directory(fs::symlink_status(dir / "cases", ec)))
-    throw InputError((dir / "cases").string() + ": expected the sweep's cases folder, found a link or a file "
+    throw InputError((dir / "cases").string() +
+                     ": expected the sweep's cases folder, found a link or a file "
                      "(left as it is): remove it or choose another --out");
   write_output_file(dir / "sweep.json", sweep_json(f).dump(2) + "\n", Durability::Record);
   return removed;

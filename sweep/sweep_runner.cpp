@@ -39,10 +39,11 @@ SweepOutcome run_sweep(const SweepOptions& o, const Scheduler& schedule, const S
     std::optional<CaseRecord> r;
     try {
       r = read_case_record(case_dir(dir, c.index));
-    } catch (const InputError&) {
-    }
-    if (r && is_final(r->status)) ++out.skipped;
-    else jobs.push_back(job_of(f, c, dir));
+    } catch (const InputError&) {}
+    if (r && is_final(r->status))
+      ++out.skipped;
+    else
+      jobs.push_back(job_of(f, c, dir));
   }
   if (started) started(out.cases, jobs.size());
   out.ran = schedule(jobs).size();

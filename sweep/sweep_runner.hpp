@@ -25,12 +25,12 @@ struct SweepOptions {
 using Scheduler = std::function<std::vector<CaseRecord>(const std::vector<CaseJob>& jobs)>;
 
 struct SweepOutcome {
-  std::size_t cases = 0;      // in the sweep
-  std::size_t skipped = 0;    // finished before (resume)
-  std::size_t ran = 0;        // run by this call
-  int removed_outputs = 0;    // with --fresh: sweep outputs of an earlier sweep removed
-  StatusCounts statuses;      // over the whole table
-  SweepTable table;           // what sweep.csv and sweep.h5 hold
+  std::size_t cases = 0;  // in the sweep
+  std::size_t skipped = 0;  // finished before (resume)
+  std::size_t ran = 0;  // run by this call
+  int removed_outputs = 0;  // with --fresh: sweep outputs of an earlier sweep removed
+  StatusCounts statuses;  // over the whole table
+  SweepTable table;  // what sweep.csv and sweep.h5 hold
   std::filesystem::path csv, h5;
 };
 

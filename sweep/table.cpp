@@ -34,12 +34,10 @@ static std::string folder_problem(const std::filesystem::path& dir) {
   std::error_code ec;
   const std::filesystem::file_status st = std::filesystem::symlink_status(dir, ec);
   if (!std::filesystem::exists(st) || std::filesystem::is_directory(st)) return "";
-  return dir.string() + ": expected a case folder, found " +
-         (std::filesystem::is_symlink(st) ? "a link" : "a file") + " (left as it is)";
+  return dir.string() + ": expected a case folder, found " + (std::filesystem::is_symlink(st) ? "a link" : "a file") + " (left as it is)";
 }
 
-SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std::string>& parameter_columns,
-                        std::size_t case_count) {
+SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std::string>& parameter_columns, std::size_t case_count) {
   SweepTable t;
   t.parameter_columns = parameter_columns;
   std::vector<std::optional<CaseRecord>> records;
@@ -54,8 +52,8 @@ SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std:
     }
     if (!records.back()) continue;
     if (records.back()->index != i)
-      throw InputError((case_dir(dir, i) / "case.json").string() + ": key index: " + std::to_string(records.back()->index) +
-                       ", expected " + std::to_string(i) + " (the record of another case)");
+      throw InputError((case_dir(dir, i) / "case.json").string() + ": key index: " + std::to_string(records.back()->index) + ", expected " +
+                       std::to_string(i) + " (the record of another case)");
     add_columns(t, records.back()->metrics);
   }
   for (std::size_t i = 0; i < case_count; ++i) {
@@ -73,14 +71,17 @@ SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std:
       std::optional<double> v;
       if (records[i] && records[i]->metrics.contains(m)) {
         const auto& j = records[i]->metrics[m];
-        if (j.is_number()) v = j.get<double>();
+        if (j.is_number())
+          v = j.get<double>();
         else if (!j.is_null())
           throw InputError((case_dir(dir, i) / "case.json").string() + ": key metrics." + m + ": expected a number or null");
       }
       row.metrics.push_back(v);
     }
-    if (records[i]) row.error = records[i]->error;
-    else row.error = problems[i];
+    if (records[i])
+      row.error = records[i]->error;
+    else
+      row.error = problems[i];
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -113,11 +114,16 @@ void write_table_csv(const SweepTable& t, const std::filesystem::path& file) {
 StatusCounts count_statuses(const SweepTable& t) {
   StatusCounts c;
   for (const TableRow& r : t.rows) {
-    if (r.status == "completed") ++c.completed;
-    else if (r.status == "diverged") ++c.diverged;
-    else if (r.status == "failed") ++c.failed;
-    else if (r.status == "interrupted") ++c.interrupted;
-    else ++c.not_run;
+    if (r.status == "completed")
+      ++c.completed;
+    else if (r.status == "diverged")
+      ++c.diverged;
+    else if (r.status == "failed")
+      ++c.failed;
+    else if (r.status == "interrupted")
+      ++c.interrupted;
+    else
+      ++c.not_run;
   }
   return c;
 }

@@ -14,10 +14,10 @@ namespace gearsim::sweep {
 
 struct TableRow {
   std::size_t index = 0;
-  std::vector<std::string> parameters;            // value texts, in parameter-column order
-  std::string status;                             // a case status, or "not run" (no case.json)
-  std::vector<std::optional<double>> metrics;     // in metric-column order; nothing: not collected
-  std::string error;                              // the case's error text (not in the CSV)
+  std::vector<std::string> parameters;  // value texts, in parameter-column order
+  std::string status;  // a case status, or "not run" (no case.json)
+  std::vector<std::optional<double>> metrics;  // in metric-column order; nothing: not collected
+  std::string error;  // the case's error text (not in the CSV)
 };
 
 struct SweepTable {
@@ -28,8 +28,7 @@ struct SweepTable {
 
 // Reads DIR/cases/<i>/case.json for i < case_count. InputError when a record is damaged or is of
 // another case, or holds a metric that is neither a number nor null.
-SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std::string>& parameter_columns,
-                        std::size_t case_count);
+SweepTable gather_table(const std::filesystem::path& dir, const std::vector<std::string>& parameter_columns, std::size_t case_count);
 
 // A metric as the CSV writes it: %.17g (reads back to the same double), "" when missing.
 std::string metric_text(const std::optional<double>& v);

@@ -25,8 +25,7 @@ void close_unwritten(hid_t h5) {
   H5Fclose(h5);
 }
 
-void write_dataset(hid_t group, const std::string& name, hid_t type, std::size_t n, const void* data,
-                   const std::filesystem::path& file) {
+void write_dataset(hid_t group, const std::string& name, hid_t type, std::size_t n, const void* data, const std::filesystem::path& file) {
   const hsize_t dims[1] = {n};
   const hid_t space = H5Screate_simple(1, dims, nullptr);
   const hid_t props = H5Pcreate(H5P_DATASET_CREATE);
@@ -39,8 +38,7 @@ void write_dataset(hid_t group, const std::string& name, hid_t type, std::size_t
   if (status < 0) throw OutputError(file.string() + ": cannot write the dataset '" + name + "': " + std::strerror(errno ? errno : EIO));
 }
 
-void write_strings(hid_t group, const std::string& name, const std::vector<std::string>& values,
-                   const std::filesystem::path& file) {
+void write_strings(hid_t group, const std::string& name, const std::vector<std::string>& values, const std::filesystem::path& file) {
   const hid_t type = H5Tcopy(H5T_C_S1);
   H5Tset_size(type, H5T_VARIABLE);
   H5Tset_cset(type, H5T_CSET_UTF8);
@@ -67,8 +65,10 @@ void write_parameter(hid_t group, const SweepTable& t, std::size_t k, const std:
     numbers.push_back(x);
     texts.push_back(v);
   }
-  if (numeric) write_doubles(group, t.parameter_columns[k], numbers, file);
-  else write_strings(group, t.parameter_columns[k], texts, file);
+  if (numeric)
+    write_doubles(group, t.parameter_columns[k], numbers, file);
+  else
+    write_strings(group, t.parameter_columns[k], texts, file);
 }
 
 }  // namespace

@@ -65,8 +65,8 @@ std::vector<std::size_t> cases_to_validate(const input::SweepFile& f, const std:
     for (const auto& e : {low, high})
       if (e) chosen.insert(e->second);
     if (last) chosen.insert(*last);
-    chosen.insert(std::min_element(first_of.begin(), first_of.end(),
-                                   [](const auto& a, const auto& b) { return a.second < b.second; })->second);
+    chosen.insert(
+        std::min_element(first_of.begin(), first_of.end(), [](const auto& a, const auto& b) { return a.second < b.second; })->second);
   }
   return {chosen.begin(), chosen.end()};
 }

@@ -14,11 +14,9 @@ namespace gearsim::test {
 inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // x_n = a·cos(2π·f·n/fs + phase), n = 0 … count−1.
-inline std::vector<double> tone(std::size_t count, double fs_hz, double f_hz, double a,
-                                double phase_rad = 0) {
+inline std::vector<double> tone(std::size_t count, double fs_hz, double f_hz, double a, double phase_rad = 0) {
   std::vector<double> x(count);
-  for (std::size_t n = 0; n < count; ++n)
-    x[n] = a * std::cos(kTwoPi * f_hz * static_cast<double>(n) / fs_hz + phase_rad);
+  for (std::size_t n = 0; n < count; ++n) x[n] = a * std::cos(kTwoPi * f_hz * static_cast<double>(n) / fs_hz + phase_rad);
   return x;
 }
 

@@ -15,15 +15,13 @@ namespace test_angle_average {
 
 using test::kTwoPi;
 
-constexpr double kFs = 20000.0;                    // Hz
-constexpr double kOmega = kTwoPi * 8.887;          // rad/s: the paper's planet relative to the carrier
+constexpr double kFs = 20000.0;  // Hz
+constexpr double kOmega = kTwoPi * 8.887;  // rad/s: the paper's planet relative to the carrier
 constexpr double kWobble = 0.05, kWobbleHz = 2.3;  // rad, Hz: speed fluctuation (≤ 0.72 rad/s ≪ ω)
 constexpr int kTeeth = 36;
 
 // The reference body's angle at time t, turning the way `direction` (±1) says.
-double body_angle(double t, double direction) {
-  return direction * (kOmega * t + kWobble * std::sin(kTwoPi * kWobbleHz * t));
-}
+double body_angle(double t, double direction) { return direction * (kOmega * t + kWobble * std::sin(kTwoPi * kWobbleHz * t)); }
 
 // Time samples covering `revolutions` turns.
 std::vector<double> times(double revolutions) {
@@ -52,8 +50,7 @@ TEST(AngleAverage, RecoversALockedPatternUnderFluctuatingSpeedEitherDirection) {
     EXPECT_EQ(avg.revolutions, 10);  // 10.5 turns hold 10 whole ones
     ASSERT_EQ(avg.mean.size(), 512u);
     double worst = 0.0;
-    for (std::size_t j = 0; j < avg.mean.size(); ++j)
-      worst = std::max(worst, std::abs(avg.mean[j] - pattern(avg.angle_rad[j])));
+    for (std::size_t j = 0; j < avg.mean.size(); ++j) worst = std::max(worst, std::abs(avg.mean[j] - pattern(avg.angle_rad[j])));
     EXPECT_LE(worst, bound) << "direction " << direction;
   }
 }
@@ -112,9 +109,9 @@ TEST(ToothStatistics, ThresholdAboveEverySampleIsRejected) {
 }
 
 TEST(AngleAverage, BadInputIsRejected) {
-  EXPECT_THROW(angle_synchronous_average({1, 2, 3}, {0, 1}, 64), InputError);            // lengths
+  EXPECT_THROW(angle_synchronous_average({1, 2, 3}, {0, 1}, 64), InputError);  // lengths
   EXPECT_THROW(angle_synchronous_average({1, 2, 3, 4}, {0, 7, 3, 14}, 64), InputError);  // not monotone
-  EXPECT_THROW(angle_synchronous_average({1, 2, 3}, {0, 1, 2}, 64), InputError);         // < 1 turn
+  EXPECT_THROW(angle_synchronous_average({1, 2, 3}, {0, 1, 2}, 64), InputError);  // < 1 turn
 }
 
 }  // namespace test_angle_average

@@ -29,7 +29,7 @@ TEST(CharacteristicFrequencies, PaperSetMatchesTheFormulas) {
   const GearTrainFrequencies g = planetary_frequencies(paper_train());
   const double f_s = kSunSpeed / kTwoPi;  // 16.664 Hz
   const double f_c = f_s * 24.0 / 120.0;  // Willis: 1/(1 + z_r/z_s) = 1/5 → 3.3327 Hz
-  const double f_m = 96.0 * f_c;          // 319.94 Hz
+  const double f_m = 96.0 * f_c;  // 319.94 Hz
   EXPECT_NEAR(g.at("carrier_shaft").value_hz, f_c, 1e-12);
   EXPECT_NEAR(g.mesh_hz, f_m, 1e-12);
   EXPECT_NEAR(g.at("mesh_3").value_hz, 3.0 * f_m, 1e-12);
@@ -59,9 +59,9 @@ TEST(CharacteristicFrequencies, PlanetSpinAgreesFromSunAndRingSides) {
 
 TEST(CharacteristicFrequencies, WillisHoldsWithAnyMemberFixed) {
   // (ω_s − ω_c)/(ω_r − ω_c) = −z_r/z_s in every configuration (1e-12 relative).
-  for (const auto& [fixed, input] : {std::pair{PlanetaryMember::Carrier, PlanetaryMember::Sun},
-                                     std::pair{PlanetaryMember::Sun, PlanetaryMember::Ring},
-                                     std::pair{PlanetaryMember::Ring, PlanetaryMember::Carrier}}) {
+  for (const auto& [fixed, input] :
+       {std::pair{PlanetaryMember::Carrier, PlanetaryMember::Sun}, std::pair{PlanetaryMember::Sun, PlanetaryMember::Ring},
+        std::pair{PlanetaryMember::Ring, PlanetaryMember::Carrier}}) {
     PlanetaryTrainSpec s = paper_train();
     s.fixed = fixed;
     s.input = input;

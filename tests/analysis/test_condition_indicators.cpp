@@ -118,7 +118,7 @@ TEST(ConditionIndicators, Na4NormalisesByTheMeanVarianceOfEarlierRecords) {
 
 TEST(ConditionIndicators, BadInputIsRefused) {
   EXPECT_THROW(tsa_signals(std::vector<double>(100, 1.0), 36), InputError);  // < 4 samples per tooth
-  EXPECT_THROW(kurtosis(std::vector<double>(10, 2.0)), InputError);          // constant
+  EXPECT_THROW(kurtosis(std::vector<double>(10, 2.0)), InputError);  // constant
   EXPECT_THROW(order_amplitude(std::vector<double>(10, 0.0), 6), InputError);
 }
 
@@ -150,7 +150,8 @@ TEST(Envelope, AnAmplitudeModulatedCarrierShowsItsModulationLine) {
   std::vector<double> x(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = static_cast<double>(i) / fs;
-    x[i] = c * (1 + m * std::cos(kTwoPi * fa * t)) * std::cos(kTwoPi * fc * t) + 5.0 * std::cos(kTwoPi * 500 * t);  // 500 Hz: outside the band
+    x[i] =
+        c * (1 + m * std::cos(kTwoPi * fa * t)) * std::cos(kTwoPi * fc * t) + 5.0 * std::cos(kTwoPi * 500 * t);  // 500 Hz: outside the band
   }
   const EnvelopeSpectrum e = envelope_spectrum(x, fs, 2000, 4000);
   EXPECT_NEAR(e.spectrum.amplitude[nearest_bin(e.spectrum, fa)], c * m, 0.01 * c * m);

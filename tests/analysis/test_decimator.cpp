@@ -39,8 +39,7 @@ void expect_input_error_naming(const std::function<void()>& call, const std::vec
     call();
     ADD_FAILURE() << "expected InputError";
   } catch (const InputError& e) {
-    for (const std::string& w : words)
-      EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << "'" << w << "' not in: " << e.what();
+    for (const std::string& w : words) EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << "'" << w << "' not in: " << e.what();
   }
 }
 
@@ -73,10 +72,8 @@ TEST(DecimatorDesign, ReportedFiguresAgreeWithTheResponseEvaluatedDirectly) {
   const DecimationFilter& f = paper_filter();
   const double step = kStepRate / (8.0 * static_cast<double>(f.length()));
   double ripple = 0.0, stop = 0.0;
-  for (double fr = 0.0; fr <= f.passband_edge_hz; fr += step)
-    ripple = std::max(ripple, std::abs(frequency_response(f, fr) - 1.0));
-  for (double fr = f.stopband_edge_hz; fr <= kStepRate / 2; fr += step)
-    stop = std::max(stop, std::abs(frequency_response(f, fr)));
+  for (double fr = 0.0; fr <= f.passband_edge_hz; fr += step) ripple = std::max(ripple, std::abs(frequency_response(f, fr) - 1.0));
+  for (double fr = f.stopband_edge_hz; fr <= kStepRate / 2; fr += step) stop = std::max(stop, std::abs(frequency_response(f, fr)));
   EXPECT_LE(ripple, 1.005 * f.passband_ripple);
   EXPECT_LE(stop, 1.005 * std::pow(10.0, -f.stopband_attenuation_dB / 20.0));
   EXPECT_NEAR(frequency_response(f, 0.0), 1.0, 1e-13);  // DC gain 1
@@ -118,8 +115,7 @@ TEST(DecimatorPassband, MeshHarmonicsKeepAmplitudeAndPhase) {
     SCOPED_TRACE(fr);
     const double phase = 0.3 + fr / 1000.0;
     std::vector<double> x(n);
-    for (std::size_t k = 0; k < n; ++k)
-      x[k] = a * std::cos(kTwoPi * fr * (t0 + static_cast<double>(k) / kStepRate) + phase);
+    for (std::size_t k = 0; k < n; ++k) x[k] = a * std::cos(kTwoPi * fr * (t0 + static_cast<double>(k) / kStepRate) + phase);
     const UniformSignal y = decimate(x, f, t0);
     double worst = 0.0;
     std::size_t checked = 0;
@@ -170,8 +166,7 @@ TEST(DecimatorStream, MatchesTheWholeRecordForEveryChannel) {
       SCOPED_TRACE(testing::Message() << "R " << ratio << ", n " << n);
       const double t0 = 1.5;
       const double rate = f->input_rate_hz;
-      std::array<std::vector<double>, 3> columns = {test::tone(n, rate, 640.0, 1.0), test::white_noise(n, 0.5, 7),
-                                                    std::vector<double>(n)};
+      std::array<std::vector<double>, 3> columns = {test::tone(n, rate, 640.0, 1.0), test::white_noise(n, 0.5, 7), std::vector<double>(n)};
       test::add(columns[0], test::tone(n, rate, 7680.0, 0.3, 1.0));
       for (std::size_t k = 0; k < n; ++k) columns[2][k] = 100.0 + static_cast<double>(k);
       Decimator d(*f, 3, t0);
@@ -265,8 +260,8 @@ TEST(DecimatorStream, FinishEndsAtTheLastInputTime) {
   const DecimationFilter& f = paper_filter();
   const std::size_t m = f.group_delay_samples;
   const double t0 = 0.25;
-  for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{24}, std::size_t{25}, std::size_t{26},
-                              m, m + 1, f.length(), f.length() + 24, std::size_t{9999}}) {
+  for (const std::size_t n : {std::size_t{1}, std::size_t{2}, std::size_t{24}, std::size_t{25}, std::size_t{26}, m, m + 1, f.length(),
+                              f.length() + 24, std::size_t{9999}}) {
     SCOPED_TRACE(n);
     Decimator d(f, 2, t0);
     std::vector<double> times;
@@ -291,8 +286,7 @@ TEST(DecimatorInput, BadValuesAreRefusedByName) {
   expect_input_error_naming([] { design_decimation_filter(50000.0, 2000.0, {1000.0}); }, {"passband edge 1000 Hz"});
   expect_input_error_naming([] { design_decimation_filter(50000.0, 2000.0, {1500.0}); }, {"passband edge 1500 Hz"});
   expect_input_error_naming([] { design_decimation_filter(NAN, 2000.0); }, {"input rate", "nan"});
-  expect_input_error_naming([] { design_decimation_filter(50000.0, 2000.0, {std::nullopt, INFINITY}); },
-                            {"attenuation", "inf"});
+  expect_input_error_naming([] { design_decimation_filter(50000.0, 2000.0, {std::nullopt, INFINITY}); }, {"attenuation", "inf"});
   expect_input_error_naming([] { decimate({1.0, 2.0, NAN, 4.0}, paper_filter()); }, {"sample 2", "nan"});
   Decimator d(paper_filter(), 2);
   for (int k = 0; k < 3; ++k) d.push(std::array<double, 2>{1.0, 2.0});

@@ -31,22 +31,27 @@ ToothContactLog synthetic_log(bool faulty) {
     // Planet 0's load with tooth 0 carrying nothing; the shed load goes to planets 1 and 2.
     double planet0 = 100, shed = 0;
     std::vector<std::pair<int, double>> p0;
-    if (shared) p0 = {{out, 50}, {in, 50}};
-    else p0 = {{in, 100}};
+    if (shared)
+      p0 = {{out, 50}, {in, 50}};
+    else
+      p0 = {{in, 100}};
     if (faulty) {
       for (auto& [tooth, f] : p0)
         if (tooth == 0) {
           // Its mesh partner takes what it can (in the shared span), the rest leaves the planet.
-          if (p0.size() == 2) (p0[0].first == 0 ? p0[1] : p0[0]).second += f;
-          else shed += f, planet0 -= f;
+          if (p0.size() == 2)
+            (p0[0].first == 0 ? p0[1] : p0[0]).second += f;
+          else
+            shed += f, planet0 -= f;
           f = 0;
         }
     }
     for (int p = 0; p < 3; ++p) {
       const double extra = p == 0 ? 0.0 : shed / 2;
       const std::vector<std::pair<int, double>> pairs =
-          p == 0 ? p0 : (shared ? std::vector<std::pair<int, double>>{{out, 50 + extra / 2}, {in, 50 + extra / 2}}
-                                : std::vector<std::pair<int, double>>{{in, 100 + extra}});
+          p == 0 ? p0
+                 : (shared ? std::vector<std::pair<int, double>>{{out, 50 + extra / 2}, {in, 50 + extra / 2}}
+                           : std::vector<std::pair<int, double>>{{in, 100 + extra}});
       for (const auto& [tooth, f] : pairs) {
         if (f <= 0) continue;
         log.time_s.push_back(t);

@@ -13,12 +13,11 @@ namespace test_modulation {
 
 using test::kTwoPi;
 
-constexpr double kFs = 4096.0;    // Hz
+constexpr double kFs = 4096.0;  // Hz
 constexpr std::size_t kN = 4096;  // 1 s: 1 Hz bins, every tone below on a bin
 constexpr double kMesh = 320.0, kMod = 20.0, kA = 2.0;
 
-const std::vector<CharacteristicFrequency> kModulation = {
-    {"modulation", "modulating rate", kMod, "f_mod", FrequencyKind::Fault}};
+const std::vector<CharacteristicFrequency> kModulation = {{"modulation", "modulating rate", kMod, "f_mod", FrequencyKind::Fault}};
 
 // The sideband found at offset_hz (± half a bin), or nothing.
 std::optional<Sideband> sideband_at(const MeshHarmonic& h, double offset_hz) {

@@ -18,11 +18,11 @@ namespace test_run_analysis {
 
 using test::kTwoPi;
 
-constexpr double kFs = 2048.0;            // Hz
-constexpr std::size_t kSamples = 2048;    // 1 s
-constexpr double kMesh = 288.0;           // Hz, f_m
-constexpr double kFault = 8.0;            // Hz, f_m/z_p
-constexpr double kSigma = 0.01;           // N, white noise on every force
+constexpr double kFs = 2048.0;  // Hz
+constexpr std::size_t kSamples = 2048;  // 1 s
+constexpr double kMesh = 288.0;  // Hz, f_m
+constexpr double kFault = 8.0;  // Hz, f_m/z_p
+constexpr double kSigma = 0.01;  // N, white noise on every force
 // The Hann amplitude of white noise in one bin is Rayleigh with mean square 6σ²/N (coherent gain
 // 1/2, Σw² = 3N/8): rms 0.54 mN. A line's amplitude is read to within a few of those: 3 mN.
 constexpr double kAmplitudeTolerance = 3e-3;
@@ -58,8 +58,7 @@ std::vector<double> sun_planet_force() {
     const double t = static_cast<double>(n) / kFs;
     const double mesh_amplitude = 10.0 + 2.0 * 1.0 * std::cos(kTwoPi * kFault * t);
     f[n] += 120.0 + mesh_amplitude * std::cos(kTwoPi * kMesh * t) + 5.0 * std::cos(kTwoPi * 2 * kMesh * t) +
-            2.0 * std::cos(kTwoPi * 3 * kMesh * t) + 0.8 * std::cos(kTwoPi * kFault * t) +
-            0.4 * std::cos(kTwoPi * 2 * kFault * t);
+            2.0 * std::cos(kTwoPi * 3 * kMesh * t) + 0.8 * std::cos(kTwoPi * kFault * t) + 0.4 * std::cos(kTwoPi * 2 * kFault * t);
   }
   return f;
 }
@@ -67,8 +66,7 @@ std::vector<double> sun_planet_force() {
 RunSignals synthetic_run() {
   RunSignals s;
   s.time_s = times();
-  s.pair_forces = {{{"sun", "planet_0"}, sun_planet_force(), {}},
-                   {{"planet_0", "ring"}, test::tone(kSamples, kFs, kMesh, 10.0), {}}};
+  s.pair_forces = {{{"sun", "planet_0"}, sun_planet_force(), {}}, {{"planet_0", "ring"}, test::tone(kSamples, kFs, kMesh, 10.0), {}}};
   for (double& v : s.pair_forces[1].force_N) v += 110.0;
   std::vector<double> angle(kSamples);
   for (std::size_t n = 0; n < kSamples; ++n) angle[n] = -kTwoPi * kFault * s.time_s[n];  // 8 rev/s relative
@@ -225,8 +223,7 @@ TEST(RunAnalysis, TransmissionErrorStatisticsCoverOnlyTheWindow) {
   RunSignals s = synthetic_run();
   s.from_s = 0.25;
   std::vector<double> te(kSamples);
-  for (std::size_t n = 0; n < kSamples; ++n)
-    te[n] = n < 512 ? 1e-3 : kC + kA * std::sin(kTwoPi * 256.0 * s.time_s[n]);
+  for (std::size_t n = 0; n < kSamples; ++n) te[n] = n < 512 ? 1e-3 : kC + kA * std::sin(kTwoPi * 256.0 * s.time_s[n]);
   s.te = transmission_error_series(s.time_s, te, 5.0);
   const RunAnalysis r = analyze_signals(s, paper_like_train());
   ASSERT_TRUE(r.te);

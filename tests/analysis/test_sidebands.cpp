@@ -80,10 +80,9 @@ TEST(SidebandAnalysis, SyntheticPaperSpectrumLabelsEachSideband) {
   EXPECT_NEAR(h.peak->frequency_hz, g.mesh_hz, 0.05);
   EXPECT_GT(h.height_over_floor_db, 60.0);  // mesh 1 over a noise floor ~1e-4
   auto nearest = [&](double offset_hz) {
-    return *std::min_element(h.sidebands.begin(), h.sidebands.end(),
-                             [&](const Sideband& a, const Sideband& b) {
-                               return std::abs(a.offset_hz - offset_hz) < std::abs(b.offset_hz - offset_hz);
-                             });
+    return *std::min_element(h.sidebands.begin(), h.sidebands.end(), [&](const Sideband& a, const Sideband& b) {
+      return std::abs(a.offset_hz - offset_hz) < std::abs(b.offset_hz - offset_hz);
+    });
   };
   for (const double sign : {-1.0, 1.0}) {
     const Sideband fault = nearest(sign * 8.89);

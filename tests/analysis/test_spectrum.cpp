@@ -15,9 +15,9 @@ namespace test_spectrum {
 
 using test::tone;
 
-constexpr double kFs = 1024.0;    // Hz
+constexpr double kFs = 1024.0;  // Hz
 constexpr std::size_t kN = 1024;  // 1 s record: 1 Hz resolution, on-bin tones at integer Hz
-constexpr double kA = 2.5;        // tone amplitude, signal unit
+constexpr double kA = 2.5;  // tone amplitude, signal unit
 
 double max_amplitude(const Spectrum& s, double lo_hz, double hi_hz) {
   double m = 0.0;

@@ -19,9 +19,9 @@ namespace test_tooth_loads {
 using test::kTwoPi;
 
 constexpr int kTeeth = 36;
-constexpr double kForce = 120.0;       // N, while a tooth is in mesh
-constexpr double kDt = 1.0 / 1024.0;   // s, the step: binary, so step times are exact
-constexpr int kStepsPerTooth = 10;     // steps each planet tooth stays in mesh per revolution
+constexpr double kForce = 120.0;  // N, while a tooth is in mesh
+constexpr double kDt = 1.0 / 1024.0;  // s, the step: binary, so step times are exact
+constexpr int kStepsPerTooth = 10;  // steps each planet tooth stays in mesh per revolution
 constexpr int kStepsPerRev = kTeeth * kStepsPerTooth;
 
 // Steps 0 … steps − 1, one contact each: planet tooth (step/10) mod 36 on side b of {sun,
@@ -48,8 +48,7 @@ TEST(ToothLoads, EachToothCarriesItsShareOfTheMeshOverWholeRevolutions) {
   EXPECT_EQ(t.pair, (PairId{"sun", "planet_0"}));
   EXPECT_EQ(t.gear, "planet_0");
   ASSERT_EQ(t.mean_force_N.size(), static_cast<std::size_t>(kTeeth));
-  for (int k = 0; k < kTeeth; ++k)
-    EXPECT_NEAR(t.mean_force_N[k], (k == 7 ? 0.5 : 1.0) * kForce / kTeeth, 1e-12 * kForce) << "tooth " << k;
+  for (int k = 0; k < kTeeth; ++k) EXPECT_NEAR(t.mean_force_N[k], (k == 7 ? 0.5 : 1.0) * kForce / kTeeth, 1e-12 * kForce) << "tooth " << k;
   EXPECT_EQ(t.flagged, std::vector<int>{7});
   EXPECT_LT(t.z_score[7], -5.0);
 }
@@ -90,8 +89,7 @@ TEST(SynchronousTeeth, TheToothFacingTheSunWhenTheForceDropsIsFlagged) {
   }
   const SynchronousTeeth s = synchronous_teeth({"sun", "planet_0"}, planet, force, angle);
   EXPECT_EQ(s.revolutions, 3);
-  for (int k = 0; k < kTeeth; ++k)
-    EXPECT_NEAR(s.mean_force_N[k], k == 5 ? kForce / 2 : kForce, 1e-9 * kForce) << "tooth " << k;
+  for (int k = 0; k < kTeeth; ++k) EXPECT_NEAR(s.mean_force_N[k], k == 5 ? kForce / 2 : kForce, 1e-9 * kForce) << "tooth " << k;
   EXPECT_EQ(s.flagged_teeth, std::vector<int>{5});
 }
 

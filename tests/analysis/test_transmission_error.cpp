@@ -15,12 +15,12 @@ namespace test_transmission_error {
 
 using test::kTwoPi;
 
-constexpr double kRatio = 5.0;      // the paper's sun → carrier ratio, 1 + 96/24
+constexpr double kRatio = 5.0;  // the paper's sun → carrier ratio, 1 + 96/24
 constexpr double kCarrier = 20.94;  // rad/s (104.7/5)
-constexpr double kA = 100e-6;       // rad: TE amplitude
-constexpr double kC = 20e-6;        // rad: TE mean
-constexpr double kF = 320.0;        // Hz: at the mesh frequency
-constexpr double kFs = 64.0 * kF;   // Hz: 64 samples per period, one on each crest and trough
+constexpr double kA = 100e-6;  // rad: TE amplitude
+constexpr double kC = 20e-6;  // rad: TE mean
+constexpr double kF = 320.0;  // Hz: at the mesh frequency
+constexpr double kFs = 64.0 * kF;  // Hz: 64 samples per period, one on each crest and trough
 constexpr double kSunBase = 0.012 * std::cos(20.0 * std::numbers::pi / 180.0);  // m: z 24, m 1 mm
 
 TransmissionError synthetic_te() {

@@ -28,8 +28,8 @@ fs::path run(const std::string& scenario, const std::string& tag) {
   // One folder per test process: ctest runs the tests of this file in parallel processes.
   const fs::path dir = fs::temp_directory_path() / ("gearsim_analyze_" + tag + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
-  const std::string cmd = gearsim() + " run " + GEARSIM_SOURCE_DIR + "/assets/scenarios/" + scenario + " --out " +
-                          dir.string() + " --duration 0.3 --set motors[0].ramp_time_s=0.004 > /dev/null 2>&1";
+  const std::string cmd = gearsim() + " run " + GEARSIM_SOURCE_DIR + "/assets/scenarios/" + scenario + " --out " + dir.string() +
+                          " --duration 0.3 --set motors[0].ramp_time_s=0.004 > /dev/null 2>&1";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
   return dir;
 }
@@ -206,8 +206,9 @@ TEST(AnalyzeConvergence, TheTransmissionErrorPeakToPeakIsTheSameAtHalfTheStep) {
     const char* dt = i == 0 ? "2e-5" : "1e-5";
     const fs::path dir = fs::temp_directory_path() / ("gearsim_analyze_te_" + std::string(dt) + "_" + std::to_string(getpid()));
     fs::remove_all(dir);
-    const std::string cmd = gearsim() + " run " + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
-                            " --duration 0.3 --set output.per_step_log=false --set render=null --set solver.time_step_s=" + dt + " > /dev/null 2>&1";
+    const std::string cmd =
+        gearsim() + " run " + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
+        " --duration 0.3 --set output.per_step_log=false --set render=null --set solver.time_step_s=" + dt + " > /dev/null 2>&1";
     ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
     const nlohmann::json j = analysis(dir);
     p2p[i] = j["transmission_error"]["peak_to_peak_rad"].get<double>();

@@ -101,8 +101,7 @@ TEST(AnalyzeRefusals, ASummaryWithoutGearPairsIsRefused) {
   const std::string header = "time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um";
   expect_refused(hand_made_run(header, 0.3, ""), "summary.json", "gear_pairs: missing");
   // Checked when the record is read (input/run_record_check.hpp), before the analysis looks at it.
-  expect_refused(hand_made_run(header, 0.3, R"(, "gear_pairs": [{"a": "sun"}])"), "summary.json",
-                 "key gear_pairs[0].b: missing");
+  expect_refused(hand_made_run(header, 0.3, R"(, "gear_pairs": [{"a": "sun"}])"), "summary.json", "key gear_pairs[0].b: missing");
 }
 
 TEST(AnalyzeRefusals, ARunReadsItsOwnScenarioRecordNotTheEditedOriginal) {

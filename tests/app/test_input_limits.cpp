@@ -51,11 +51,11 @@ std::string with(const std::string& from, const std::string& to) {
   return t.replace(t.find(from), from.size(), to);
 }
 
-#define EXPECT_REFUSED(text, where, message)                                  \
-  do {                                                                        \
-    const std::string e_ = error_for(text);                                   \
+#define EXPECT_REFUSED(text, where, message)                                       \
+  do {                                                                             \
+    const std::string e_ = error_for(text);                                        \
     EXPECT_NE(e_.find(std::string("bad.yaml:") + where), std::string::npos) << e_; \
-    EXPECT_NE(e_.find(message), std::string::npos) << e_;                     \
+    EXPECT_NE(e_.find(message), std::string::npos) << e_;                          \
   } while (0)
 
 TEST(InputLimits, TheWheelLoads) { EXPECT_EQ(error_for(kWheel), ""); }
@@ -69,8 +69,10 @@ TEST(InputLimits, Duration) {
 TEST(InputLimits, TimeStepAndIterations) {
   EXPECT_REFUSED(kWheel + "solver: {time_step_s: 1e-9}\n", "9:", "solver.time_step_s: expected a time step in [1e-07, 0.01] s, got 1e-09");
   EXPECT_REFUSED(kWheel + "solver: {time_step_s: 0.05}\n", "9:", "solver.time_step_s: expected a time step in [1e-07, 0.01] s, got 0.05");
-  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, iterations: 0}\n", "9:", "solver.iterations: expected a number of solver iterations in [1, 100000], got 0");
-  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, iterations: 2000000}\n", "9:", "solver.iterations: expected a number of solver iterations in [1, 100000]");
+  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, iterations: 0}\n",
+                 "9:", "solver.iterations: expected a number of solver iterations in [1, 100000], got 0");
+  EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, iterations: 2000000}\n",
+                 "9:", "solver.iterations: expected a number of solver iterations in [1, 100000]");
   EXPECT_EQ(error_for(kWheel + "solver: {engine: rigid_bodies, iterations: 400}\n"), "");
   // The default engine has no iteration count: the key would be ignored, so it is refused.
   EXPECT_REFUSED(kWheel + "solver: {iterations: 50}\n", "9:", "solver.iterations: only engine rigid_bodies iterates");
@@ -87,7 +89,8 @@ TEST(InputLimits, EngineAndTheta) {
   EXPECT_REFUSED(kWheel + "solver: {integrator: rk4}\n", "9:", "solver.integrator");
   EXPECT_REFUSED(kWheel + "solver: {integrator: bdf2, theta: 0.6}\n", "9:", "solver.theta: integrator bdf2 has no θ");
   EXPECT_EQ(error_for(kWheel + "solver: {integrator: trapezoid_closed}\n"), "");
-  EXPECT_REFUSED(kWheel + "solver: {integrator: trapezoid_closed, theta: 0.5}\n", "9:", "solver.theta: integrator trapezoid_closed has no θ");
+  EXPECT_REFUSED(kWheel + "solver: {integrator: trapezoid_closed, theta: 0.5}\n",
+                 "9:", "solver.theta: integrator trapezoid_closed has no θ");
   EXPECT_REFUSED(kWheel + "solver: {engine: rigid_bodies, integrator: bdf2}\n", "9:", "solver.integrator: only engine multibody");
 }
 
@@ -97,9 +100,10 @@ TEST(InputLimits, SampleRateGivesAtLeastOneRowAndAtMostOnePerStep) {
 }
 
 TEST(InputLimits, RampTimes) {
-  EXPECT_REFUSED(with("max_torque_N_m: 1}", "max_torque_N_m: 1, ramp_time_s: 1e5}"), "8:",
-                 "motors[0].ramp_time_s: expected a ramp time in [0, 10000] s, got 100000");
-  EXPECT_REFUSED(kWheel + "loads:\n  - {joint: hinge, ramp_time_s: -1}\n", "10:", "loads[0].ramp_time_s: expected a ramp time in [0, 10000] s, got -1");
+  EXPECT_REFUSED(with("max_torque_N_m: 1}", "max_torque_N_m: 1, ramp_time_s: 1e5}"),
+                 "8:", "motors[0].ramp_time_s: expected a ramp time in [0, 10000] s, got 100000");
+  EXPECT_REFUSED(kWheel + "loads:\n  - {joint: hinge, ramp_time_s: -1}\n",
+                 "10:", "loads[0].ramp_time_s: expected a ramp time in [0, 10000] s, got -1");
 }
 
 TEST(InputLimits, RenderSlowMotionAndTimes) {
@@ -109,12 +113,13 @@ TEST(InputLimits, RenderSlowMotionAndTimes) {
 }
 
 TEST(InputLimits, ChordalDeviation) {
-  EXPECT_REFUSED(kWheel + "contact: {chordal_deviation_m: 1e5}\n", "9:",
-                 "contact.chordal_deviation_m: expected a chordal deviation in [1e-09, 0.0001] m, got 100000");
+  EXPECT_REFUSED(kWheel + "contact: {chordal_deviation_m: 1e5}\n",
+                 "9:", "contact.chordal_deviation_m: expected a chordal deviation in [1e-09, 0.0001] m, got 100000");
 }
 
 TEST(InputLimits, PlanetsAreCountedBeforeAnyAllocation) {
-  const std::string e = error_for("duration_s: 0.1\nplanetary:\n  spec: " + kSource + "/assets/specs/paper_gearset.yaml\n"
+  const std::string e = error_for("duration_s: 0.1\nplanetary:\n  spec: " + kSource +
+                                  "/assets/specs/paper_gearset.yaml\n"
                                   "  planets: 2000000000\n  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n");
   EXPECT_NE(e.find("bad.yaml:4:"), std::string::npos) << e;
   EXPECT_NE(e.find("planetary.planets: expected a number of planets in [1, 64], got 2e+09"), std::string::npos) << e;
@@ -122,9 +127,9 @@ TEST(InputLimits, PlanetsAreCountedBeforeAnyAllocation) {
 
 TEST(InputLimits, TeethOfAMeshAndOfAGear) {
   const std::string mesh = kSource + "/tests/data/mcad/mcad_m1_z12_a20_f5_b005.stl";
-  EXPECT_REFUSED(with("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
-                      "mass_kg: 1.0, mesh: {file: " + mesh + ", unit: mm, teeth: 7850}"),
-                 "4:", "bodies[0].mesh.teeth: expected a number of teeth in [3, 1000], got 7850");
+  EXPECT_REFUSED(
+      with("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]", "mass_kg: 1.0, mesh: {file: " + mesh + ", unit: mm, teeth: 7850}"),
+      "4:", "bodies[0].mesh.teeth: expected a number of teeth in [3, 1000], got 7850");
   EXPECT_REFUSED(with("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
                       "density_kg_m3: 7850, gear: {kind: external, teeth: 2000, module_m: 1e-3, face_width_m: 0.01}"),
                  "4:", "bodies[0].gear.teeth: expected a number of teeth in [3, 1000], got 2000");
@@ -136,8 +141,7 @@ TEST(InputLimits, TheRunDurationOptionIsCheckedLikeTheKey) {
     const test::CliRun r = test::gearsim("run " + scenario.string() + " --out " + out.string() + " --duration=" + bad);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
     EXPECT_NE(r.output.find("--duration"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find(bad == "fast" ? "expected a number" : "expected a duration in (0, 10000] s"), std::string::npos)
-        << r.output;
+    EXPECT_NE(r.output.find(bad == "fast" ? "expected a number" : "expected a duration in (0, 10000] s"), std::string::npos) << r.output;
   }
   const test::CliRun r = test::gearsim("run " + scenario.string() + " --out " + out.string() + " --duration 1e-4");
   EXPECT_EQ(r.exit_code, 2) << r.output;
@@ -149,7 +153,7 @@ TEST(InputLimits, InspectsNumericOptionsAreCheckedLikeKeys) {
   const std::string mesh = kSource + "/assets/gears/spur_pair/pinion.stl";
   const std::pair<std::string, std::string> cases[] = {
       {"--density=nan", "expected a density in [1, 100000] kg/m³, got nan"},  // CLI::PositiveNumber lets NaN through
-      {"--tooth0-deg=inf", "expected an angle in [-360, 360] °, got inf"},    // an angle like any other
+      {"--tooth0-deg=inf", "expected an angle in [-360, 360] °, got inf"},  // an angle like any other
       {"--teeth=5000", "expected a number of teeth in [3, 1000], got 5000"},
       {"--prism-tolerance=inf", "expected a prism tolerance in (0, 1000] µm, got inf"},
       {"--hausdorff-spacing=1e-300", "expected a sample spacing in [0.01, 100] mm, got 1e-300"},
@@ -203,8 +207,7 @@ TEST(InputLimits, AnImpulseADurationCutsOffIsRefusedNamingTheDuration) {
                       "bodies:\n  - {name: wheel, mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]}\n"
                       "joints:\n  - {name: hinge, body: wheel}\n"
                       "impulses:\n  - {body: wheel, at_s: 0.05, duration_s: 0.001, torque_N_m: [0, 0, 1]}\n";
-  const test::CliRun r = test::gearsim("run " + p.string() + " --out " + (p.parent_path() / "out").string() +
-                                       " --duration 0.04");
+  const test::CliRun r = test::gearsim("run " + p.string() + " --out " + (p.parent_path() / "out").string() + " --duration 0.04");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("impulses[0]"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("--duration 0.04"), std::string::npos) << r.output;

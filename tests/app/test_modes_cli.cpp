@@ -37,7 +37,8 @@ TEST(ModesCli, JsonListsEveryFrequencyByMultiplicityAndEachModeOnce) {
     listed += static_cast<std::size_t>(mult);
   }
   EXPECT_EQ(listed, f.size());
-  for (const char* file : {"mode_shapes.csv", "campbell.csv", "modes.svg"}) EXPECT_TRUE(std::filesystem::is_regular_file(dir / file)) << file;
+  for (const char* file : {"mode_shapes.csv", "campbell.csv", "modes.svg"})
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / file)) << file;
 }
 
 TEST(ModesCli, ADriveThatIsNoBodyIsBadInput) {

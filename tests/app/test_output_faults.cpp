@@ -36,8 +36,7 @@ std::string text_of(const fs::path& p) {
 
 // `gearsim args` with the Nth write to a file and every later one failing (ENOSPC).
 test::CliRun with_writes_failing_from(long n, const std::string& args) {
-  return test::gearsim_under("env LD_PRELOAD=" GEARSIM_FAIL_WRITES_LIB " GEARSIM_FAIL_WRITES_FROM=" + std::to_string(n) + " ",
-                             args);
+  return test::gearsim_under("env LD_PRELOAD=" GEARSIM_FAIL_WRITES_LIB " GEARSIM_FAIL_WRITES_FROM=" + std::to_string(n) + " ", args);
 }
 
 // Empty when every CSV, JSON and HDF5 file in `dir` (not the hidden lock and manifest, not a
@@ -158,8 +157,7 @@ TEST(OutputFolderLock, AnalyzeIntoAFolderARunIsWritingIsRefused) {
                             " --duration 3 --no-analyze > /dev/null 2>&1";
   const std::string before = text_of(dir / ".gearsim.lock");
   std::thread t([&] { std::system(rerun.c_str()); });
-  for (int i = 0; i < 200 && text_of(dir / ".gearsim.lock") == before; ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  for (int i = 0; i < 200 && text_of(dir / ".gearsim.lock") == before; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   const test::CliRun r = test::gearsim("analyze " + dir.string());
   t.join();
   EXPECT_EQ(r.exit_code, 7) << r.output;
@@ -218,8 +216,7 @@ TEST(InputBounds, AFifoOrADeviceAsAScenarioIsRefusedAtOnce) {
   for (const std::string& s : {(dir / "s.yaml").string(), std::string("/dev/zero")}) {
     const test::CliRun r = test::gearsim("run " + s + " --out " + (dir / "out").string());
     EXPECT_EQ(r.exit_code, 2) << s << "\n" << r.output;
-    EXPECT_NE(r.output.find(s + ": expected a scenario or gear-set file (a regular file), got a"), std::string::npos)
-        << r.output;
+    EXPECT_NE(r.output.find(s + ": expected a scenario or gear-set file (a regular file), got a"), std::string::npos) << r.output;
   }
 }
 
@@ -230,14 +227,12 @@ TEST(InputBounds, ALogLinkedToADeviceIsRefusedNotRead) {
   fs::create_symlink("/dev/zero", dir / "state.csv");
   const test::CliRun r = test::gearsim("analyze " + dir.string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("state.csv: expected a run's CSV log (a regular file), got a device"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("state.csv: expected a run's CSV log (a regular file), got a device"), std::string::npos) << r.output;
 }
 
 TEST(InputBounds, ReportCompareOnlyReadsTheComparedFolder) {
   const fs::path a = test::fresh_test_dir() / "a", b = a.parent_path() / "b";
-  for (const fs::path& d : {a, b})
-    ASSERT_EQ(test::gearsim("run " + kSpur + " --out " + d.string() + " --duration 0.3").exit_code, 0);
+  for (const fs::path& d : {a, b}) ASSERT_EQ(test::gearsim("run " + kSpur + " --out " + d.string() + " --duration 0.3").exit_code, 0);
   std::vector<std::pair<std::string, fs::file_time_type>> before;
   for (const fs::directory_entry& e : fs::directory_iterator(b)) before.emplace_back(e.path().filename().string(), e.last_write_time());
   const test::CliRun r = test::gearsim("report " + a.string() + " --compare " + b.string());

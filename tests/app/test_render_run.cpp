@@ -87,8 +87,8 @@ TEST(RenderRun, WritesTheFramesItPromisesAndTheSameBytesTwice) {
   ASSERT_EQ(code, 0);
   EXPECT_EQ(std::stoi(frames), 10);
   // H.264, and 10 frames at 10 fps last 1 s.
-  const auto [c2, info] = sh("ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,duration -of csv=p=0 " +
-                             (dir / "video.mp4").string());
+  const auto [c2, info] =
+      sh("ffprobe -v error -select_streams v:0 -show_entries stream=codec_name,duration -of csv=p=0 " + (dir / "video.mp4").string());
   ASSERT_EQ(c2, 0);
   EXPECT_EQ(info.substr(0, 5), "h264,") << info;
   EXPECT_NEAR(std::stod(info.substr(5)), 1.0, 1e-6) << info;
@@ -116,8 +116,8 @@ TEST(RenderRun, ASignalStopsTheRenderWithoutAHalfWrittenVideo) {
   if (pid == 0) {
     std::freopen("/dev/null", "w", stdout);
     std::freopen("/dev/null", "w", stderr);
-    execl(bin().c_str(), bin().c_str(), "render", dir.c_str(), "--fps", "60", "--slowmo", "1000", "--width", "320", "--height",
-          "180", "--png-every", "1", static_cast<char*>(nullptr));
+    execl(bin().c_str(), bin().c_str(), "render", dir.c_str(), "--fps", "60", "--slowmo", "1000", "--width", "320", "--height", "180",
+          "--png-every", "1", static_cast<char*>(nullptr));
     _exit(127);
   }
   auto pngs = [&] {

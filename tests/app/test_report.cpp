@@ -16,9 +16,8 @@ namespace fs = std::filesystem;
 fs::path run(const std::string& scenario, const std::string& tag) {
   const fs::path dir = fs::temp_directory_path() / ("gearsim_report_" + tag + "_" + std::to_string(getpid()));
   fs::remove_all(dir);
-  const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim run " + GEARSIM_SOURCE_DIR +
-                          "/assets/scenarios/" + scenario + " --out " + dir.string() +
-                          " --duration 0.3 --set motors[0].ramp_time_s=0.004 --no-analyze > /dev/null 2>&1";
+  const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim run " + GEARSIM_SOURCE_DIR + "/assets/scenarios/" + scenario +
+                          " --out " + dir.string() + " --duration 0.3 --set motors[0].ramp_time_s=0.004 --no-analyze > /dev/null 2>&1";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
   return dir;
 }
@@ -27,16 +26,15 @@ TEST(Report, HoldsEverySectionInOneSelfContainedFile) {
   const fs::path faulty = run("paper_dynamics.yaml", "faulty"), healthy = run("paper_dynamics_healthy.yaml", "healthy");
   // The compared folder is only read: its analysis is its own analyze's.
   ASSERT_EQ(std::system((std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim analyze " + healthy.string() + " > /dev/null 2>&1").c_str()), 0);
-  const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim report " + faulty.string() + " --compare " +
-                          healthy.string() + " > /dev/null 2>&1";
+  const std::string cmd =
+      std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim report " + faulty.string() + " --compare " + healthy.string() + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
   std::ifstream f(faulty / "report.html");
   const std::string html((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
   for (const char* section : {"The run", "The paper and this run", "Against the paper's Table 1", "Single flank error",
                               "Characteristic frequencies", "paper Fig. 4", "paper Fig. 5", "paper Fig. 6", "paper Fig. 7",
-                              "Per-tooth load", "planet local-fault family", "Sampling: why the paper",
-                              "anti-aliased / point samples", "Contact ringing above the band", "Rendered frames", "Housing sensors",
-                              "separated average (McFadden 1991)"})
+                              "Per-tooth load", "planet local-fault family", "Sampling: why the paper", "anti-aliased / point samples",
+                              "Contact ringing above the band", "Rendered frames", "Housing sensors", "separated average (McFadden 1991)"})
     EXPECT_NE(html.find(section), std::string::npos) << "missing section: " << section;
   // Plots are gnuplot's SVG, inline: force (2), spectrum, three harmonic zooms, TE, teeth; the
   // housing sensor's signal and its three harmonic zooms.

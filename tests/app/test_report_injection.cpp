@@ -22,8 +22,8 @@ using test::fresh_test_dir;
 TEST(ReportInjection, AScenarioNameRunsNoCommandThroughRunAndReport) {
   const fs::path dir = fresh_test_dir(), marker = dir / "owned";
   const std::string name = "x' ; system 'touch " + marker.string() + "' ; #";
-  const fs::path scenario = test::asset_scenario_copy("paper_dynamics_healthy.yaml", dir,
-                                                      {{"name: paper_dynamics_healthy", "name: \"" + name + "\""}});
+  const fs::path scenario =
+      test::asset_scenario_copy("paper_dynamics_healthy.yaml", dir, {{"name: paper_dynamics_healthy", "name: \"" + name + "\""}});
   const fs::path run = dir / "run";
   const test::CliRun r = test::gearsim("run " + scenario.string() + " --out " + run.string() +
                                        " --duration 0.3 --set motors[0].ramp_time_s=0.004 --no-analyze");
@@ -48,11 +48,11 @@ TEST(ReportInjection, NoTitleTextRunsACommandInGnuplot) {
   int k = 0;
   for (const std::string& attack : {std::string("x' ; system 'touch ") + (dir / "m0").string() + "' ; #",
                                     std::string("x\nsystem 'touch ") + (dir / "m1").string() + "'\n#",
-                                    std::string("`touch ") + (dir / "m2").string() + "`",
-                                    std::string("@m")}) {
-    const std::string svg = gnuplot_svg(data_block("d", {{0, 1}, {0, 1}}) +
-                                        "m = \"system('touch " + (dir / "m3").string() + "')\"\n"
-                                        "plot $d using 1:2 with lines title " + gnuplot_string(attack) + "\n");
+                                    std::string("`touch ") + (dir / "m2").string() + "`", std::string("@m")}) {
+    const std::string svg = gnuplot_svg(data_block("d", {{0, 1}, {0, 1}}) + "m = \"system('touch " + (dir / "m3").string() +
+                                        "')\"\n"
+                                        "plot $d using 1:2 with lines title " +
+                                        gnuplot_string(attack) + "\n");
     EXPECT_NE(svg.find("<svg"), std::string::npos) << k;
     ++k;
   }

@@ -33,8 +33,8 @@ fs::path run_paper(const std::string& tag, const std::string& extra = "") {
   const fs::path dir = fs::temp_directory_path() / ("gearsim_determinism_" + tag);
   fs::remove_all(dir);
   const std::string cmd = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim run " + GEARSIM_SOURCE_DIR +
-                          "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
-                          " --duration 0.004 --no-analyze" + extra + " > /dev/null 2>&1";
+                          "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() + " --duration 0.004 --no-analyze" + extra +
+                          " > /dev/null 2>&1";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
   return dir;
 }
@@ -91,11 +91,13 @@ TEST(RunDeterminism, TheStatelessContactSearchGivesTheSameLogs) {
   // verify.coherent_search (default true) skips and tracks flanks only where that provably
   // changes nothing: without the continuation, it and the stateless search give the same bytes,
   // with either engine (multibody: θ = 1).
-  const std::string sampled = " --set verify.continued_search=false", theta = " --set solver.integrator=theta --set verify.row_solver=dantzig";
+  const std::string sampled = " --set verify.continued_search=false",
+                    theta = " --set solver.integrator=theta --set verify.row_solver=dantzig";
   EXPECT_EQ(hash_files(run_paper("coherent", sampled + theta)), kGoldenHashSampledMultibody);
   EXPECT_EQ(hash_files(run_paper("stateless", " --set verify.coherent_search=false" + theta)), kGoldenHashSampledMultibody);
   EXPECT_EQ(hash_files(run_paper("coherent_rigid", sampled + " --set solver.engine=rigid_bodies")), kGoldenHashSampled);
-  EXPECT_EQ(hash_files(run_paper("stateless_rigid", " --set verify.coherent_search=false --set solver.engine=rigid_bodies")), kGoldenHashSampled);
+  EXPECT_EQ(hash_files(run_paper("stateless_rigid", " --set verify.coherent_search=false --set solver.engine=rigid_bodies")),
+            kGoldenHashSampled);
 }
 
 }  // namespace test_run_determinism

@@ -33,9 +33,7 @@ struct CsvTail {
   double last_time_s = -1;
 };
 
-std::size_t count_columns(const std::string& line) {
-  return static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1;
-}
+std::size_t count_columns(const std::string& line) { return static_cast<std::size_t>(std::count(line.begin(), line.end(), ',')) + 1; }
 
 CsvTail read_csv(const fs::path& p) {
   std::ifstream f(p);
@@ -67,8 +65,7 @@ int run_and_signal(const fs::path& dir, int sig) {
   if (pid == 0) {
     std::freopen("/dev/null", "w", stdout);
     std::freopen("/dev/null", "w", stderr);
-    execl(bin.c_str(), bin.c_str(), "run", scenario.c_str(), "--out", dir.c_str(), "--duration", "2",
-          static_cast<char*>(nullptr));
+    execl(bin.c_str(), bin.c_str(), "run", scenario.c_str(), "--out", dir.c_str(), "--duration", "2", static_cast<char*>(nullptr));
     _exit(127);
   }
   // Wait for a few rows past the header (the run logs at 2 kHz), at most 5 minutes. Until the
@@ -180,8 +177,8 @@ TEST(RunStop, ARunIntoAUsedFolderRemovesTheEarlierRunsOutputsOnly) {
   // user put beside them, also one named like a render's frame, stays.
   const fs::path dir = fs::temp_directory_path() / "gearsim_stop_reused";
   fs::remove_all(dir);
-  const std::string run = std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/spur_pair.yaml --out " +
-                          dir.string() + " --duration 0.3";
+  const std::string run =
+      std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/spur_pair.yaml --out " + dir.string() + " --duration 0.3";
   ASSERT_EQ(gearsim::test::gearsim(run).exit_code, 0);
   ASSERT_EQ(gearsim::test::gearsim("report " + dir.string()).exit_code, 0);
   std::ofstream(dir / "notes.txt") << "the user's own file\n";
@@ -205,12 +202,11 @@ TEST(RunStop, AFolderOfTheUsersFilesIsRefusedAndNothingInItRemoved) {
   fs::remove_all(dir);
   fs::create_directories(dir / "frames");
   for (const char* f : {"frames/holiday.png", "video_of_my_cat.mp4", "state.csv"}) std::ofstream(dir / f) << "mine\n";
-  const std::string run = std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/spur_pair.yaml --out " +
-                          dir.string() + " --duration 0.1 --no-analyze";
+  const std::string run =
+      std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/spur_pair.yaml --out " + dir.string() + " --duration 0.1 --no-analyze";
   const gearsim::test::CliRun r = gearsim::test::gearsim(run);
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find(dir.string() + ": the folder holds files that gearsim did not write"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find(dir.string() + ": the folder holds files that gearsim did not write"), std::string::npos) << r.output;
   for (const char* f : {"frames/holiday.png", "video_of_my_cat.mp4", "state.csv"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
   EXPECT_FALSE(fs::exists(dir / ".gearsim.lock"));  // refused before anything was made there
   // --force writes beside them: nothing of the user's is removed; state.csv, an output's name, is replaced.
@@ -230,12 +226,12 @@ TEST(RunStop, LinksNamedLikeOutputsAreReplacedNotFollowed) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(outside) << "not the run's\n";
-  const std::vector<std::string> names = {"state.csv", "contacts.csv", "steps.h5", "summary.json", "scenario.json",
-                                          "gearset.yaml", "analysis.json", "spectrum.csv"};
+  const std::vector<std::string> names = {"state.csv",     "contacts.csv", "steps.h5",      "summary.json",
+                                          "scenario.json", "gearset.yaml", "analysis.json", "spectrum.csv"};
   for (const std::string& n : names) fs::create_symlink(outside, dir / n);
-  const gearsim::test::CliRun r = gearsim::test::gearsim(std::string("run ") + GEARSIM_SOURCE_DIR +
-                                                         "/assets/scenarios/paper_dynamics_healthy.yaml --out " + dir.string() +
-                                                         " --duration 0.2 --force");
+  const gearsim::test::CliRun r =
+      gearsim::test::gearsim(std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/paper_dynamics_healthy.yaml --out " +
+                             dir.string() + " --duration 0.2 --force");
   EXPECT_EQ(r.exit_code, 0) << r.output;
   std::ifstream f(outside);
   std::stringstream text;

@@ -29,11 +29,12 @@ int files_with_extension(const fs::path& dir, const std::string& ext) {
 
 TEST(SafeNames, AGearNamedLikeAPathIsRefusedAndNothingIsWritten) {
   const fs::path dir = fresh_test_dir(), out = dir / "a" / "b" / "out";
-  for (const std::string& name : {std::string("../../x"), (dir / "abs" / "x").string(), std::string("a/b"),
-                                   std::string(".hidden"), std::string("-rf"), std::string("")}) {
+  for (const std::string& name : {std::string("../../x"), (dir / "abs" / "x").string(), std::string("a/b"), std::string(".hidden"),
+                                  std::string("-rf"), std::string("")}) {
     const fs::path spec = dir / "spec.yaml";
     std::ofstream(spec) << "name: s\ndensity_kg_m3: 7850\ndefaults: {module_m: 1.0e-3, face_width_m: 0.01}\n"
-                           "gears:\n  ok: {kind: external, teeth: 20}\n  \"" << name << "\": {kind: external, teeth: 21}\n";
+                           "gears:\n  ok: {kind: external, teeth: 20}\n  \""
+                        << name << "\": {kind: external, teeth: 21}\n";
     const test::CliRun r = test::gearsim("gears " + spec.string() + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 2) << name << ": " << r.output;
     EXPECT_NE(r.output.find(spec.string() + ":6:"), std::string::npos) << r.output;
@@ -70,7 +71,9 @@ std::string scenario_error(const std::string& text) {
 std::string wheel_scenario(const std::string& name_line, const std::string& body_name) {
   return name_line + "duration_s: 0.1\nbodies:\n  - {name: \"" + body_name +
          "\", mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]}\n"
-         "joints:\n  - {name: hinge, body: \"" + body_name + "\"}\n"
+         "joints:\n  - {name: hinge, body: \"" +
+         body_name +
+         "\"}\n"
          "motors:\n  - {joint: hinge, target_speed_rad_s: 1, max_torque_N_m: 1}\n";
 }
 

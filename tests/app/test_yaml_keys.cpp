@@ -71,8 +71,9 @@ TEST(YamlKeys, AMappingWhereANumberBelongsNamesTheKey) {
 }
 
 TEST(YamlKeys, AGearSpecWithAGearTwiceIsRefused) {
-  const fs::path p = write_file("spec.yaml", "name: s\ndensity_kg_m3: 7850\ndefaults: {module_m: 1.0e-3, face_width_m: 0.01}\n"
-                                             "gears:\n  sun: {kind: external, teeth: 20}\n  sun: {kind: external, teeth: 30}\n");
+  const fs::path p = write_file("spec.yaml",
+                                "name: s\ndensity_kg_m3: 7850\ndefaults: {module_m: 1.0e-3, face_width_m: 0.01}\n"
+                                "gears:\n  sun: {kind: external, teeth: 20}\n  sun: {kind: external, teeth: 30}\n");
   try {
     input::load_gearset(p);
     FAIL() << "a second gear 'sun' was accepted";
@@ -137,8 +138,7 @@ TEST(YamlKeys, AKeyGivenTwiceInASetMappingIsRefusedAsInAFile) {
     input::load_scenario(write_file("ok.yaml", kWheel), {"solver={time_step_s: 1e-4, time_step_s: 1e-5}"});
     FAIL() << "a --set mapping with a key twice was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("time_step_s: the key appears twice in one mapping"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("time_step_s: the key appears twice in one mapping"), std::string::npos) << e.what();
   }
 }
 

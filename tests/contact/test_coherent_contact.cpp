@@ -34,8 +34,8 @@ using test::paper_gears;
 // How the coherent search's answers differed from the stateless search's over a sweep.
 struct Sweep {
   long calls = 0, contacts = 0;
-  long different_sets = 0;       // calls whose (tooth_a, tooth_b, flank_a) lists differ
-  long different_contacts = 0;   // contacts of equal keys whose depth, point or normal differ in any bit
+  long different_sets = 0;  // calls whose (tooth_a, tooth_b, flank_a) lists differ
+  long different_contacts = 0;  // contacts of equal keys whose depth, point or normal differ in any bit
   double max_depth_diff_m = 0;
   double most_shallower_m = 0;  // the largest stateless − coherent depth (coherent shallower)
   CoherentToothSearch::Counts counts;
@@ -67,8 +67,7 @@ void compare(const std::vector<ToothContact>& stateless, const std::vector<Tooth
 // step relative to the carrier, the whole set turned with the carrier (a quarter of that, the
 // paper's 5:1 train), a pressed by `press_m` at its tip circle, and the sun's centre wandering by
 // ±1 µm (a floating sun) at the tooth frequency.
-Sweep sweep_pair(const Gear& a, const Gear& b, double step_rad, long steps, const std::vector<double>& presses_m,
-                 bool continued = false) {
+Sweep sweep_pair(const Gear& a, const Gear& b, double step_rad, long steps, const std::vector<double>& presses_m, bool continued = false) {
   Sweep sw;
   std::vector<ToothContact> stateless, coherent;
   for (double press : presses_m) {
@@ -118,15 +117,13 @@ void expect_identical(const Sweep& sw, const std::string& what) {
 TEST(CoherentToothSearch, SunPlanetMeshesOverAPlanetTurnMatchTheStatelessSearch) {
   const std::vector<Gear>& g = paper_gears();
   for (const char* planet : {"planet_0", "planet_1", "planet_2"})  // planet_0: the 43 µm flank error
-    expect_identical(sweep_pair(named(g, "sun"), named(g, planet), kStepRad, kPlanetTurnSteps, kPresses_m),
-                     std::string("sun–") + planet);
+    expect_identical(sweep_pair(named(g, "sun"), named(g, planet), kStepRad, kPlanetTurnSteps, kPresses_m), std::string("sun–") + planet);
 }
 
 TEST(CoherentToothSearch, PlanetRingMeshesOverAPlanetTurnMatchTheStatelessSearch) {
   const std::vector<Gear>& g = paper_gears();
   for (const char* planet : {"planet_0", "planet_1", "planet_2"})
-    expect_identical(sweep_pair(named(g, planet), named(g, "ring"), kStepRad, kPlanetTurnSteps, kPresses_m),
-                     std::string(planet) + "–ring");
+    expect_identical(sweep_pair(named(g, planet), named(g, "ring"), kStepRad, kPlanetTurnSteps, kPresses_m), std::string(planet) + "–ring");
 }
 
 TEST(CoherentToothSearch, HalfTheStepAlsoMatches) {
@@ -259,16 +256,19 @@ struct CadPair {
   CadPair() {
     const std::filesystem::path dir = test::fresh_test_dir();
     const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
-    std::ofstream(dir / "pair.yaml")
-        << "name: mcad_pair\nduration_s: 0.01\n"
-           "solver: {time_step_s: 1.0e-5}\n"
-           "output: {sample_rate_hz: 2000, per_step_log: false}\n"
-           "pair:\n"
-           "  driver: {name: pinion, mesh: {file: " << data << "mcad_m1_z12_a20_f5_b005.stl, unit: mm, teeth: 12}, "
-           "density_kg_m3: 7850}\n"
-           "  driven: {name: wheel, mesh: {file: " << data << "mcad_m1_z24_a20_f5_b005.stl, unit: mm, teeth: 24}, "
-           "density_kg_m3: 7850}\n"
-           "  centre_distance_m: 0.018\n";
+    std::ofstream(dir / "pair.yaml") << "name: mcad_pair\nduration_s: 0.01\n"
+                                        "solver: {time_step_s: 1.0e-5}\n"
+                                        "output: {sample_rate_hz: 2000, per_step_log: false}\n"
+                                        "pair:\n"
+                                        "  driver: {name: pinion, mesh: {file: "
+                                     << data
+                                     << "mcad_m1_z12_a20_f5_b005.stl, unit: mm, teeth: 12}, "
+                                        "density_kg_m3: 7850}\n"
+                                        "  driven: {name: wheel, mesh: {file: "
+                                     << data
+                                     << "mcad_m1_z24_a20_f5_b005.stl, unit: mm, teeth: 24}, "
+                                        "density_kg_m3: 7850}\n"
+                                        "  centre_distance_m: 0.018\n";
     const std::vector<Gear> g = gears_of(input::load_scenario(dir / "pair.yaml", {}), "pinion", 12);
     gears = {named(g, "pinion"), named(g, "wheel")};
   }
@@ -284,10 +284,14 @@ struct CadPair {
 
 // The deepest overlap of a contact's tooth pair measured along a's flank by brute force: n exact
 // probes from root to tip (0.11 µm apart on a module-1 tooth at n = 20000).
-double brute_force_depth(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
-                         const ToothContact& c, int n) {
-  auto to_world = [](const PlanarPose& p, const Eigen::Vector2d& v) -> Eigen::Vector2d { return p.centre_m + Eigen::Rotation2Dd(p.angle_rad) * v; };
-  auto to_local = [](const PlanarPose& p, const Eigen::Vector2d& w) -> Eigen::Vector2d { return Eigen::Rotation2Dd(-p.angle_rad) * (w - p.centre_m); };
+double brute_force_depth(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb, const ToothContact& c,
+                         int n) {
+  auto to_world = [](const PlanarPose& p, const Eigen::Vector2d& v) -> Eigen::Vector2d {
+    return p.centre_m + Eigen::Rotation2Dd(p.angle_rad) * v;
+  };
+  auto to_local = [](const PlanarPose& p, const Eigen::Vector2d& w) -> Eigen::Vector2d {
+    return Eigen::Rotation2Dd(-p.angle_rad) * (w - p.centre_m);
+  };
   double best = -1;
   for (int i = 0; i < n; ++i) {
     const double r = ta.r_min_m() + (ta.r_max_m() - ta.r_min_m()) * i / (n - 1);
@@ -304,8 +308,12 @@ double brute_force_depth(const FlankTable& ta, const PlanarPose& pa, const Flank
 // tooth_contact.hpp).
 double brute_force_depth_from_b(const FlankTable& ta, const PlanarPose& pa, const FlankTable& tb, const PlanarPose& pb,
                                 const ToothContact& c, int n) {
-  auto to_world = [](const PlanarPose& p, const Eigen::Vector2d& v) -> Eigen::Vector2d { return p.centre_m + Eigen::Rotation2Dd(p.angle_rad) * v; };
-  auto to_local = [](const PlanarPose& p, const Eigen::Vector2d& w) -> Eigen::Vector2d { return Eigen::Rotation2Dd(-p.angle_rad) * (w - p.centre_m); };
+  auto to_world = [](const PlanarPose& p, const Eigen::Vector2d& v) -> Eigen::Vector2d {
+    return p.centre_m + Eigen::Rotation2Dd(p.angle_rad) * v;
+  };
+  auto to_local = [](const PlanarPose& p, const Eigen::Vector2d& w) -> Eigen::Vector2d {
+    return Eigen::Rotation2Dd(-p.angle_rad) * (w - p.centre_m);
+  };
   double best = -1;
   for (Flank g : {Flank::Ccw, Flank::Cw})
     for (int i = 0; i < n; ++i) {
@@ -378,13 +386,14 @@ TEST(CoherentToothSearch, OnFacetedFlanksAContactHasSeveralMaxima) {
   // lower one, against the brute-force maximum of the tooth pair (measured: by up to 0.16 µm).
   const CadPair cad;
   double continued_low = 0, sampled_low = 0;
-  const Sweep sw = cad_pair_sweep(cad, first_touch_closure(cad), CoherentToothSearch::Continuation::replace,
-                                  [&, n = 0L](const PlanarPose& pa, const PlanarPose& pb, const ToothContact& u, const ToothContact& v) mutable {
-                                    if (n++ % 20 != 0) return;  // every twentieth: the probes cost
-                                    const double brute = brute_force_depth(*cad.gears[0].table, pa, *cad.gears[1].table, pb, u, 20000);
-                                    continued_low = std::max(continued_low, brute - v.depth_m);
-                                    sampled_low = std::max(sampled_low, brute - u.depth_m);
-                                  });
+  const Sweep sw =
+      cad_pair_sweep(cad, first_touch_closure(cad), CoherentToothSearch::Continuation::replace,
+                     [&, n = 0L](const PlanarPose& pa, const PlanarPose& pb, const ToothContact& u, const ToothContact& v) mutable {
+                       if (n++ % 20 != 0) return;  // every twentieth: the probes cost
+                       const double brute = brute_force_depth(*cad.gears[0].table, pa, *cad.gears[1].table, pb, u, 20000);
+                       continued_low = std::max(continued_low, brute - v.depth_m);
+                       sampled_low = std::max(sampled_low, brute - u.depth_m);
+                     });
   EXPECT_EQ(sw.different_sets, 0);
   EXPECT_GT(continued_low, 1e-8) << "the continuation on a lower maximum";
   EXPECT_GT(sampled_low, 1e-8) << "the sampled search on a lower maximum";
@@ -406,7 +415,8 @@ TEST(CoherentToothSearch, OnFacetedFlanksTheDeeperOfBothIsTheBruteForceMaximum) 
                                   [&](const PlanarPose& pa, const PlanarPose& pb, const ToothContact& u, const ToothContact& v) {
                                     if (deeper++ % 20 != 0) return;  // every twentieth: the probes cost
                                     const double brute = brute_force_depth(*cad.gears[0].table, pa, *cad.gears[1].table, pb, u, 20000);
-                                    const double from_b = brute_force_depth_from_b(*cad.gears[0].table, pa, *cad.gears[1].table, pb, u, 20000);
+                                    const double from_b =
+                                        brute_force_depth_from_b(*cad.gears[0].table, pa, *cad.gears[1].table, pb, u, 20000);
                                     worst = std::max(worst, std::min(std::abs(brute - v.depth_m), std::abs(from_b - v.depth_m)));
                                   });
   EXPECT_EQ(sw.different_sets, 0);

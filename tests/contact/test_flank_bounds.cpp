@@ -36,8 +36,8 @@ TEST(FirstOrderRise, BoundsHowFarTheFirstOrderDepthMovesWithThePoint) {
       int h0 = -1, h1 = -1;
       const double d0 = t.first_order_depth(q0, h0), d1 = t.first_order_depth(q1, h1);
       const FlankTable::FirstOrderRise rise = t.first_order_rise(r - delta, r + delta);
-      if (d0 <= FlankTable::kNoDepth || d1 <= FlankTable::kNoDepth || !(rise.slope < FlankTable::kInfinity) ||
-          rise.growth * delta >= 0.5 || rise.jump >= 1)
+      if (d0 <= FlankTable::kNoDepth || d1 <= FlankTable::kNoDepth || !(rise.slope < FlankTable::kInfinity) || rise.growth * delta >= 0.5 ||
+          rise.jump >= 1)
         continue;
       const double top = d0 < 0 ? d0 * (1 - rise.jump) : d0;
       const double f = top + delta * (rise.slope + rise.growth * (std::abs(top) + rise.slope * delta) / (1 - rise.growth * delta));

@@ -21,9 +21,8 @@ namespace test_flank_knots {
 
 // The outer loop of an MCAD mesh's outline (about its own z axis), m.
 Polygon2 mcad_loop(int teeth) {
-  const TriMesh mesh = import_mesh(std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(teeth) +
-                                       "_a20_f5_b005.stl",
-                                   LengthUnit::Millimetre);
+  const TriMesh mesh = import_mesh(
+      std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(teeth) + "_a20_f5_b005.stl", LengthUnit::Millimetre);
   const Result<Prism> pr = recover_prism(mesh, 0.1e-6);
   EXPECT_TRUE(pr) << pr.reason();
   return pr->outline.outer;
@@ -71,8 +70,8 @@ TEST(FlankTable, TurnsWithTheInvoluteAcrossItsKnotsUpToTheFillet) {
     int teeth;
     double r_lo, r_hi;
   };
-  for (const Case& c : {Case{"sun", 24, 11.34e-3, 12.99e-3}, Case{"planet_1", 36, 17.222e-3, 18.99e-3},
-                        Case{"ring", 96, 47.21e-3, 49.017e-3}}) {
+  for (const Case& c :
+       {Case{"sun", 24, 11.34e-3, 12.99e-3}, Case{"planet_1", 36, 17.222e-3, 18.99e-3}, Case{"ring", 96, 47.21e-3, 49.017e-3}}) {
     const FlankTable& t = *test::named(g, c.name).table;
     const double r_b = 0.5e-3 * c.teeth * std::cos(20.0 * M_PI / 180);
     auto tan_alpha = [&](double r) { return std::sqrt(r * r - r_b * r_b) / r_b; };

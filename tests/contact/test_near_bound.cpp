@@ -47,8 +47,8 @@ TEST(FlankConvexity, IsTheInvolutesCurvatureOnTheActiveFlanks) {
     int teeth;
     double r_lo, r_hi, sign;
   };
-  for (const Case& c : {Case{"sun", 24, 11.36e-3, 12.9e-3, 1}, Case{"planet_1", 36, 17.24e-3, 18.9e-3, 1},
-                        Case{"ring", 96, 47.3e-3, 49.0e-3, -1}}) {
+  for (const Case& c :
+       {Case{"sun", 24, 11.36e-3, 12.9e-3, 1}, Case{"planet_1", 36, 17.24e-3, 18.9e-3, 1}, Case{"ring", 96, 47.3e-3, 49.0e-3, -1}}) {
     const FlankTable& t = *named(g, c.name).table;
     const double r_b = base_radius(c.teeth);
     std::vector<double> departures;
@@ -62,8 +62,8 @@ TEST(FlankConvexity, IsTheInvolutesCurvatureOnTheActiveFlanks) {
     }
     std::sort(departures.begin(), departures.end());
     const double median = departures[departures.size() / 2], p95 = departures[departures.size() * 95 / 100];
-    std::printf("%s: convexity against ±1/sqrt(r² − r_b²): median %.2g, 95th percentile %.2g, worst %.2g relative\n", c.name, median,
-                p95, departures.back());
+    std::printf("%s: convexity against ±1/sqrt(r² − r_b²): median %.2g, 95th percentile %.2g, worst %.2g relative\n", c.name, median, p95,
+                departures.back());
     EXPECT_LT(median, 0.005) << c.name;
     EXPECT_LT(p95, 0.02) << c.name;
   }
@@ -91,13 +91,16 @@ TEST(FlankConvexity, TheRangeOfABandHoldsEveryConvexityInIt) {
         if (!t.flank_jet(tooth, f, r - w + 2 * w * i / 20, &jet)) continue;
         const double c = FlankTable::convexity(f, jet);
         const double out = std::max(range.lo - c, c - range.hi);
-        if (out > 0) ++outside, most_out = std::max(most_out, out / std::max(std::abs(c), 1.0));
-        else ++inside;
+        if (out > 0)
+          ++outside, most_out = std::max(most_out, out / std::max(std::abs(c), 1.0));
+        else
+          ++inside;
       }
     }
     EXPECT_GT(inside, 4000) << name;
     EXPECT_LT(most_out, 1e-3) << name << ": a convexity beyond its band's range, relative";
-    std::printf("%s: %ld of %ld convexities beyond their band's range, by %.2g relative at most\n", name, outside, inside + outside, most_out);
+    std::printf("%s: %ld of %ld convexities beyond their band's range, by %.2g relative at most\n", name, outside, inside + outside,
+                most_out);
   }
 }
 
@@ -131,9 +134,9 @@ struct Stepper {
 struct NearSweep {
   long calls = 0, contacts = 0, different_sets = 0, reference_near = 0, parked = 0;
   long parked_unlisted = 0;  // parked pairs the reference lists no near pair for (its gap beyond the window)
-  long lost = 0;             // reference near pairs neither listed nor parked
-  long below_bound = 0;      // parked pairs whose gap is below their bound
-  long would_split = 0;      // parked pairs the onset prediction would have split the step for
+  long lost = 0;  // reference near pairs neither listed nor parked
+  long below_bound = 0;  // parked pairs whose gap is below their bound
+  long would_split = 0;  // parked pairs the onset prediction would have split the step for
   long reference_splits = 0;  // near pairs the onset prediction splits a step for
   double max_depth_diff_m = 0, least_slack_m = 1e300, least_ratio = 1e300;
 };
@@ -209,10 +212,12 @@ NearSweep sweep_near(const Gear& a, const Gear& b, double dt, long steps, const 
 }
 
 void expect_bounded(const NearSweep& sw, const std::string& what) {
-  std::printf("%s: %ld calls, %ld contacts, %ld near pairs, %ld parked (%ld beyond the window), %ld closing within a step; least gap − bound %.3g m, "
-              "least bound/gap %.3g; depths within %.3g m\n",
-              what.c_str(), sw.calls, sw.contacts, sw.reference_near, sw.parked, sw.parked_unlisted, sw.reference_splits, sw.least_slack_m, sw.least_ratio,
-              sw.max_depth_diff_m);
+  std::printf(
+      "%s: %ld calls, %ld contacts, %ld near pairs, %ld parked (%ld beyond the window), %ld closing within a step; least gap − bound %.3g "
+      "m, "
+      "least bound/gap %.3g; depths within %.3g m\n",
+      what.c_str(), sw.calls, sw.contacts, sw.reference_near, sw.parked, sw.parked_unlisted, sw.reference_splits, sw.least_slack_m,
+      sw.least_ratio, sw.max_depth_diff_m);
   EXPECT_GT(sw.contacts, sw.calls / 2) << what;
   EXPECT_EQ(sw.different_sets, 0) << what << ": calls whose contact sets differ";
   // Parked pairs leave a continuation whose next solve starts from older radii: the same

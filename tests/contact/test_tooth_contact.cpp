@@ -18,7 +18,7 @@ namespace {
 
 using gearsim::constants::kPi;
 constexpr double kChord = 0.5e-6;  // the outline's default chordal deviation, m: flank knots lie on the curve
-constexpr int kSamples = 4096;    // flank-table radii
+constexpr int kSamples = 4096;  // flank-table radii
 
 GearSpec fine(GearSpec s) {
   s.chordal_deviation_m = kChord;
@@ -94,8 +94,8 @@ TEST(ToothContact, APoseCarryingItsRotationIsSearchedAtItsAngle) {
   auto same = [](const std::vector<ToothContact>& u, const std::vector<ToothContact>& v) {
     if (u.size() != v.size()) return false;
     for (std::size_t i = 0; i < u.size(); ++i)
-      if (u[i].tooth_a != v[i].tooth_a || u[i].tooth_b != v[i].tooth_b || u[i].flank_a != v[i].flank_a ||
-          u[i].depth_m != v[i].depth_m || u[i].point_m != v[i].point_m || u[i].normal_on_b != v[i].normal_on_b)
+      if (u[i].tooth_a != v[i].tooth_a || u[i].tooth_b != v[i].tooth_b || u[i].flank_a != v[i].flank_a || u[i].depth_m != v[i].depth_m ||
+          u[i].point_m != v[i].point_m || u[i].normal_on_b != v[i].normal_on_b)
         return false;
     return true;
   };
@@ -275,7 +275,6 @@ TEST(FlankTable, FirstOrderProbeAgreesWithTheExactOne) {
 
 }  // namespace
 }  // namespace gearsim::contact
-
 
 namespace gearsim::contact {
 namespace {

@@ -74,8 +74,7 @@ TEST(FolderManifest, AManifestNamingAPathOutsideTheFolderIsRefused) {
       FolderManifest::read(dir);
       ADD_FAILURE() << "accepted " << bad;
     } catch (const InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(std::string(FolderManifest::kFileName) + ":3: not a manifest of gearsim's"),
-                std::string::npos)
+      EXPECT_NE(std::string(e.what()).find(std::string(FolderManifest::kFileName) + ":3: not a manifest of gearsim's"), std::string::npos)
           << e.what();
     }
   }

@@ -42,8 +42,7 @@ TEST(InputFile, AFifoIsRefusedAtOnceNotWaitedOn) {
 }
 
 TEST(InputFile, ADeviceAndAFolderAreRefusedByKind) {
-  EXPECT_NE(refusal("/dev/zero", 100).find("/dev/zero: expected a scenario file (a regular file), got a device"),
-            std::string::npos);
+  EXPECT_NE(refusal("/dev/zero", 100).find("/dev/zero: expected a scenario file (a regular file), got a device"), std::string::npos);
   const fs::path d = test::fresh_test_dir();
   EXPECT_NE(refusal(d, 100).find("got a folder"), std::string::npos) << refusal(d, 100);
 }
@@ -57,8 +56,7 @@ TEST(InputFile, ALinkToADeviceIsRefusedAsTheDevice) {
 TEST(InputFile, AFileLargerThanTheBoundIsRefusedWithBothSizes) {
   const fs::path p = test::fresh_test_dir() / "big.yaml";
   std::ofstream(p) << std::string(101, 'x');
-  EXPECT_NE(refusal(p, 100).find("big.yaml: 101 bytes: larger than the 100 bytes a scenario file may have"),
-            std::string::npos)
+  EXPECT_NE(refusal(p, 100).find("big.yaml: 101 bytes: larger than the 100 bytes a scenario file may have"), std::string::npos)
       << refusal(p, 100);
   EXPECT_EQ(refusal(p, 101), "");
 }

@@ -72,8 +72,7 @@ TEST(OutputFile, AMissingFolderIsAnOutputErrorNamingTheFile) {
     OutputFile f(p);
     FAIL() << "created " << p;
   } catch (const OutputError& e) {
-    EXPECT_NE(std::string(e.what()).find(p.string() + ": cannot create: No such file or directory"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find(p.string() + ": cannot create: No such file or directory"), std::string::npos) << e.what();
   }
 }
 
@@ -102,8 +101,7 @@ TEST_F(FullDisk, AWriteBeyondTheDiskIsAnOutputErrorWithTheSystemsReason) {
     f.commit();
     FAIL() << "a truncated file was committed";
   } catch (const OutputError& e) {
-    EXPECT_NE(std::string(e.what()).find("record.json: cannot write: No space left on device"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("record.json: cannot write: No space left on device"), std::string::npos) << e.what();
   }
   EXPECT_EQ(text_of(dir_ / "record.json"), "{\"kept\": true}\n");
 }

@@ -71,14 +71,12 @@ Deck solve(const DeckDef& def, const fs::path& dir) {
 }
 
 // Value of a node's dof at the end of step k (total time k).
-double at_step(const std::vector<DatBlock>& blocks, const std::string& q, const std::string& set,
-               int node, int dof, int k) {
+double at_step(const std::vector<DatBlock>& blocks, const std::string& q, const std::string& set, int node, int dof, int k) {
   for (const DatBlock& b : blocks)
     if (b.quantity == q && b.set == set && std::abs(b.time - k) < 1e-9) return b.rows.at(node)[dof];
   ADD_FAILURE() << "no " << q << " at time " << k;
   return NAN;
 }
-
 
 // Annulus r_i = 5 mm, r_o = 15 mm, t = 10 mm, outer edge held, hub turned by T = 10 N·m:
 // θ = T/(4π G t)·(1/r_i² − 1/r_o²) = 3.502e-5 rad (plane stress, G = E/2(1+ν)). Tolerance 1 %:

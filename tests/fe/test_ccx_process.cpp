@@ -31,18 +31,17 @@ void write_bar_deck(const fs::path& file, double L, double h, double t, int nx, 
   std::ofstream o(file);
   o << "*NODE, NSET=NALL\n";
   for (int j = 0; j <= 1; ++j)
-    for (int i = 0; i <= nx; ++i)
-      o << 1 + i + j * (nx + 1) << ", " << L * i / nx << ", " << h * j << ", 0\n";
+    for (int i = 0; i <= nx; ++i) o << 1 + i + j * (nx + 1) << ", " << L * i / nx << ", " << h * j << ", 0\n";
   o << "*ELEMENT, TYPE=CPS4, ELSET=EALL\n";
-  for (int i = 0; i < nx; ++i)
-    o << i + 1 << ", " << i + 1 << ", " << i + 2 << ", " << i + nx + 3 << ", " << i + nx + 2 << "\n";
-  o << "*NSET, NSET=LEFT\n1, " << nx + 2 << "\n*NSET, NSET=RIGHT\n" << nx + 1 << ", " << 2 * nx + 2
-    << "\n*MATERIAL, NAME=STEEL\n*ELASTIC\n" << kYoungModulus_Pa << ", " << kPoissonRatio
-    << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n" << t << "\n*BOUNDARY\nLEFT, 1, 1\n1, 2, 2\n"
-    << "*STEP\n*STATIC\n*CLOAD\n" << nx + 1 << ", 1, " << F / 2 << "\n" << 2 * nx + 2 << ", 1, "
-    << F / 2 << "\n*NODE PRINT, NSET=RIGHT\nU\n*END STEP\n";
+  for (int i = 0; i < nx; ++i) o << i + 1 << ", " << i + 1 << ", " << i + 2 << ", " << i + nx + 3 << ", " << i + nx + 2 << "\n";
+  o << "*NSET, NSET=LEFT\n1, " << nx + 2 << "\n*NSET, NSET=RIGHT\n"
+    << nx + 1 << ", " << 2 * nx + 2 << "\n*MATERIAL, NAME=STEEL\n*ELASTIC\n"
+    << kYoungModulus_Pa << ", " << kPoissonRatio << "\n*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n"
+    << t << "\n*BOUNDARY\nLEFT, 1, 1\n1, 2, 2\n"
+    << "*STEP\n*STATIC\n*CLOAD\n"
+    << nx + 1 << ", 1, " << F / 2 << "\n"
+    << 2 * nx + 2 << ", 1, " << F / 2 << "\n*NODE PRINT, NSET=RIGHT\nU\n*END STEP\n";
 }
-
 
 // Uniform tension is reproduced exactly by bilinear plane-stress elements, so the FE tip
 // displacement equals F L / (E h t) to the solver's print precision (7 significant digits → 1e-6

@@ -111,8 +111,7 @@ TEST(gear_mesher, BoundaryNodesLieOnTheOutline) {
     // Nodes are outline vertices or points on its chords: distance ~1e-18 m; 1 µm is the bound
     // asked of the FE model (the flank errors are tens of µm).
     const Polygon2& teeth = toothed_loop(c.outline, c.spec.kind);
-    for (const QuadEdge& e : m.toothed_edges)
-      ASSERT_LT(test::distance_to_boundary(teeth, edge_points(m, e).first), 1e-6) << g;
+    for (const QuadEdge& e : m.toothed_edges) ASSERT_LT(test::distance_to_boundary(teeth, edge_points(m, e).first), 1e-6) << g;
     // Bore and rim nodes on their circles within the outline's 0.5 µm chordal deviation.
     for (int n : m.bore_nodes) ASSERT_NEAR(m.nodes[n].norm(), c.spec.bore_diameter_m / 2, 1e-6) << g;
     for (int n : m.rim_nodes) ASSERT_NEAR(m.nodes[n].norm(), c.spec.rim_diameter_m / 2, 1e-6) << g;
@@ -131,7 +130,7 @@ TEST(gear_mesher, BoundaryGroupsMatchTheGearKind) {
   // The ring's toothed loop is its hole: its nodes lie between the tip and root circles.
   for (const QuadEdge& e : r.toothed_edges) {
     const double rad = edge_points(r, e).first.norm();
-    ASSERT_GT(rad, 47e-3 - 1e-6);    // tip circle r = 48 − 1 mm
+    ASSERT_GT(rad, 47e-3 - 1e-6);  // tip circle r = 48 − 1 mm
     ASSERT_LT(rad, 49.25e-3 + 1e-6);  // root circle r = 48 + 1.25 mm
   }
 }
@@ -270,8 +269,7 @@ TEST(gear_mesher, ToothTagsSelectEachFlankOfEachTooth) {
   // Every tooth has flank edges on both sides; the selection of tooth 0's Ccw flank holds exactly
   // the edges whose nodes the 43 µm error moved off the healthy outline.
   for (int k = 0; k < c.spec.teeth; ++k)
-    for (Flank f : {Flank::Ccw, Flank::Cw})
-      EXPECT_GE(select_tooth_edges(c.mesh.mesh, tags, {{k}, true, true, f}).size(), 3u) << k;
+    for (Flank f : {Flank::Ccw, Flank::Cw}) EXPECT_GE(select_tooth_edges(c.mesh.mesh, tags, {{k}, true, true, f}).size(), 3u) << k;
   const Polygon2& healthy = meshed("planet").outline.outline.outer;
   for (const QuadEdge& e : select_tooth_edges(c.mesh.mesh, tags, {{0}, true, true, Flank::Ccw})) {
     const auto [a, b] = edge_points(c.mesh.mesh, e);
@@ -317,9 +315,9 @@ TEST(gear_mesher, GradingFollowsTheRadialRule) {
   const MeshSizingDef s;
   const double root = c.outline.dims.root_radius_m;
   const auto size = [&](double r) { return mesh_size_at_radius(c.outline, GearKind::External, s, r); };
-  EXPECT_DOUBLE_EQ(size(root + 1e-3), s.flank_size_m);                                     // in the teeth
+  EXPECT_DOUBLE_EQ(size(root + 1e-3), s.flank_size_m);  // in the teeth
   EXPECT_DOUBLE_EQ(size(root - s.transition_m / 2), 0.5 * (s.flank_size_m + s.core_size_m));  // half way
-  EXPECT_DOUBLE_EQ(size(root - 2 * s.transition_m), s.core_size_m);                        // in the core
+  EXPECT_DOUBLE_EQ(size(root - 2 * s.transition_m), s.core_size_m);  // in the core
   const Case& r = meshed("ring");
   EXPECT_DOUBLE_EQ(mesh_size_at_radius(r.outline, GearKind::Internal, s, r.outline.dims.root_radius_m + 4e-3),
                    s.core_size_m);  // internal: the core lies outward

@@ -21,14 +21,14 @@ GearSpec gear(const std::string& name, GearKind kind, int z, double thinning) {
   g.module_m = 1e-3;
   g.face_width_m = 10e-3;
   g.thinning_per_flank_m = thinning;
-  if (kind == GearKind::External) g.bore_diameter_m = 8e-3;
+  if (kind == GearKind::External)
+    g.bore_diameter_m = 8e-3;
   else {
     g.rim_diameter_m = 110e-3;
     g.addendum_coeff = 0.8;  // the paper scenarios' relieved ring (no fillet interference)
   }
   return g;
 }
-
 
 // Sun 24 / planet 36 / ring 96, m = 1 mm, x = 0, each flank thinned by t = 20 µm: the standard set
 // meshes without backlash, so a planet turns (t_p + t_r)/r_b,p before it touches the ring and then
@@ -51,8 +51,7 @@ TEST(PlanetaryPositions, ClosingTurnsEqualTheBacklash) {
     // A hair further and every planet is touched by the sun.
     contact::PlanarPose s = pos.sun;
     s.angle_rad += 1e-6;
-    for (int k = 0; k < 3; ++k)
-      EXPECT_FALSE(contact::find_tooth_contacts(ts, s, tp, pos.planets[k]).empty()) << "planet " << k;
+    for (int k = 0; k < 3; ++k) EXPECT_FALSE(contact::find_tooth_contacts(ts, s, tp, pos.planets[k]).empty()) << "planet " << k;
   }
 }
 

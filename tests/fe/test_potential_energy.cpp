@@ -41,7 +41,6 @@ IsoPairDef iso_pair(const PotentialEnergyPairDef& d) {
   return iso;
 }
 
-
 // k_h = π E b / (4 (1 − ν²)) (Yang & Lin); tolerance 1e-12 relative: rounding only.
 TEST(PotentialEnergy, HertzTermIsClosedForm) {
   const PotentialEnergyPairDef d = pair(20, 31);
@@ -72,8 +71,8 @@ TEST(PotentialEnergy, CurveContactRatioMatchesClosedForm) {
     const double rb1 = m * z1 / 2.0 * std::cos(al), rb2 = m * std::abs(z2) / 2.0 * std::cos(al);
     const double ra1 = m * z1 / 2.0 + m, ra2 = m * std::abs(z2) / 2.0 + (z2 > 0 ? m : -m);
     const double s = z2 > 0 ? 1.0 : -1.0;
-    const double eps = (std::sqrt(ra1 * ra1 - rb1 * rb1) + s * std::sqrt(ra2 * ra2 - rb2 * rb2) -
-                        s * a * std::sin(al)) / (std::numbers::pi * m * std::cos(al));
+    const double eps = (std::sqrt(ra1 * ra1 - rb1 * rb1) + s * std::sqrt(ra2 * ra2 - rb2 * rb2) - s * a * std::sin(al)) /
+                       (std::numbers::pi * m * std::cos(al));
     EXPECT_NEAR(contact_path(d).contact_ratio, eps, 1e-12) << z1 << "/" << z2;
     EXPECT_NEAR(summarize_mesh_stiffness(d, kSamples).contact_ratio, eps, 1.0 / kSamples) << z1 << "/" << z2;
   }
@@ -91,8 +90,7 @@ TEST(PotentialEnergy, SinglePairStiffestNearPitchPoint) {
     const double k = single_pair_stiffness(d, radius_on_path(d, i / 200.0));
     if (k > k_max) k_max = k, f_max = i / 200.0;
   }
-  const double f_pitch = (d.module_m * d.z1 / 2.0 * std::sin(d.pressure_angle_rad) - p.start_roll_m) /
-                         (p.end_roll_m - p.start_roll_m);
+  const double f_pitch = (d.module_m * d.z1 / 2.0 * std::sin(d.pressure_angle_rad) - p.start_roll_m) / (p.end_roll_m - p.start_roll_m);
   EXPECT_NEAR(f_max, f_pitch, 0.25);
   EXPECT_LT(single_pair_stiffness(d, radius_on_path(d, 0.0)), 0.8 * k_max);
   EXPECT_LT(single_pair_stiffness(d, radius_on_path(d, 1.0)), 0.8 * k_max);

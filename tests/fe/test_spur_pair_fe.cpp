@@ -69,7 +69,6 @@ fs::path work_dir(const std::string& name) {
   return d;
 }
 
-
 // Standard gears with every flank thinned by t: at the kinematic position each side has 2t of
 // clearance along the line of action, so the wheel turns 2t / r_b2 to touch the pinion's driving
 // flank, wherever the contact is. Tolerance 0.5 %: the flank tables resolve ~2 nm against 40 µm.
@@ -79,8 +78,7 @@ TEST(SpurPairPlacement, ExactClosingEqualsTheBacklash) {
   const SpurPairPath path = spur_pair_path(d.pair);
   for (double roll : rolls_over_base_pitch(path, 3)) {
     const SpurPairPlacement p = place_spur_pair(d.pair, m.pinion.mesh, m.wheel.mesh, roll);
-    EXPECT_NEAR(p.wheel_closing_exact_rad * path.wheel_base_radius_m / (2 * d.pair.thinning_per_flank_m), 1.0, 5e-3)
-        << "roll " << roll;
+    EXPECT_NEAR(p.wheel_closing_exact_rad * path.wheel_base_radius_m / (2 * d.pair.thinning_per_flank_m), 1.0, 5e-3) << "roll " << roll;
   }
 }
 
@@ -206,8 +204,8 @@ TEST_F(SpurPairFeSolved, TwoPairsStifferThanOne) {
   EXPECT_EQ(two().pe_pairs, 2);
   EXPECT_EQ(two().loaded_pairs, 2);
   EXPECT_GT(two().stiffness_N_per_m / pitch().stiffness_N_per_m, 1.3)
-      << "two pairs " << two().stiffness_N_per_m << " N/m at roll " << two().roll_m << " m, one pair "
-      << pitch().stiffness_N_per_m << " N/m";
+      << "two pairs " << two().stiffness_N_per_m << " N/m at roll " << two().roll_m << " m, one pair " << pitch().stiffness_N_per_m
+      << " N/m";
 }
 
 }  // namespace test_spur_pair_fe

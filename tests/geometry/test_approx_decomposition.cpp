@@ -143,8 +143,7 @@ TEST(ApproxDecomposition, CurvedConcaveSolidDeviatesByAMeasuredNonZeroAmount) {
 // A 40 × 20 × 10 mm box with its lowest corner at `corner_m`; 12 triangles.
 TriMesh box(const Vec3& corner_m) {
   TriMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.push_back(corner_m + Vec3(i & 1 ? 0.040 : 0.0, i & 2 ? 0.020 : 0.0, i & 4 ? 0.010 : 0.0));
+  for (int i = 0; i < 8; ++i) m.vertices.push_back(corner_m + Vec3(i & 1 ? 0.040 : 0.0, i & 2 ? 0.020 : 0.0, i & 4 ? 0.010 : 0.0));
   m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                  {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
   return m;

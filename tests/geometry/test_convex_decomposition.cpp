@@ -41,8 +41,7 @@ Polygon2 circle_cw(double r, int n) {
 // External gear-like outline: 24 teeth, root radius 10.5 mm, tip 12.5 mm, a 20% wide tip land,
 // straight flanks and concave (seen from the material) root fillets, an 8 mm bore. Samples fall
 // exactly on the gap mid-lines, so the sector cut meets existing vertices.
-Outline2 external_gear(int teeth, int per_tooth, std::vector<Polygon2> extra_holes = {},
-                       bool bore = true) {
+Outline2 external_gear(int teeth, int per_tooth, std::vector<Polygon2> extra_holes = {}, bool bore = true) {
   const double period = 2.0 * kPi / teeth, r_root = 10.5e-3, r_tip = 12.5e-3;
   const double t1 = 0.12 * period, t2 = 0.3 * period, q = 0.25, half = 0.5 * period;
   auto height = [&](double s) {  // 0 at the root, 1 at the tip; s = |angle from tooth centre|
@@ -55,8 +54,7 @@ Outline2 external_gear(int teeth, int per_tooth, std::vector<Polygon2> extra_hol
   for (int k = 0; k < teeth; ++k)
     for (int i = 0; i < per_tooth; ++i) {
       const double u = -half + period * i / per_tooth;
-      o.outer.points.push_back(
-          polar(r_root + (r_tip - r_root) * height(std::abs(u)), k * period + u));
+      o.outer.points.push_back(polar(r_root + (r_tip - r_root) * height(std::abs(u)), k * period + u));
     }
   if (bore) o.holes.push_back(circle_cw(4e-3, 90));
   for (auto& h : extra_holes) o.holes.push_back(h);
@@ -97,10 +95,8 @@ void expect_convex(const ConvexDecomposition& d) {
 }
 
 // The pieces, extruded, against the extruded outline: measured surface deviation and volumes.
-DecompositionDeviation measure(const Outline2& o, const ConvexDecomposition& d, double h,
-                               double spacing) {
-  return decomposition_deviation(extrude(o, 0.0, h), extrude_pieces(d, PrismFrame{}, 0.0, h),
-                                 spacing);
+DecompositionDeviation measure(const Outline2& o, const ConvexDecomposition& d, double h, double spacing) {
+  return decomposition_deviation(extrude(o, 0.0, h), extrude_pieces(d, PrismFrame{}, 0.0, h), spacing);
 }
 
 TEST(ConvexDecomposition, LShapeSplitsIntoTwoConvexPieces) {
@@ -137,10 +133,8 @@ TEST(ConvexDecomposition, ExternalGearSectorsAreExactAndConvex) {
   std::set<int> teeth;
   for (const auto& p : d.pieces) {
     teeth.insert(p.tooth);
-    for (const Vec2& q :
-         p.polygon.points) {  // inside its sector, up to rounding of the cut (1e-12 rad)
-      const double off =
-          std::remainder(std::atan2(q.y(), q.x()) - p.tooth * 2.0 * kPi / 24, 2.0 * kPi);
+    for (const Vec2& q : p.polygon.points) {  // inside its sector, up to rounding of the cut (1e-12 rad)
+      const double off = std::remainder(std::atan2(q.y(), q.x()) - p.tooth * 2.0 * kPi / 24, 2.0 * kPi);
       EXPECT_LE(std::abs(off), kPi / 24 + 1e-12);
     }
   }
@@ -179,8 +173,7 @@ TEST(ConvexDecomposition, InternalRingOf96TeethIsFastExactAndConvex) {
   const Outline2 ring = internal_ring(96);
   const auto t0 = std::chrono::steady_clock::now();
   const ConvexDecomposition d = decompose(ring, {ToothLayout{96, 0.0}});
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_LT(seconds, 1.0);  // the brief's budget for generate + decompose
   ASSERT_TRUE(d.sectors_exact) << d.fallback_reason;
   expect_convex(d);
@@ -216,8 +209,7 @@ TEST(ConvexDecomposition, BoltHolesFallBackToCentroidTeeth) {
 
 TEST(ConvexDecomposition, OutlineAwayFromTheAxisFallsBack) {
   Outline2 l;  // the origin lies outside: the gap mid-lines miss the outline
-  l.outer = Polygon2{
-      {{0.01, 0.01}, {0.03, 0.01}, {0.03, 0.02}, {0.02, 0.02}, {0.02, 0.03}, {0.01, 0.03}}};
+  l.outer = Polygon2{{{0.01, 0.01}, {0.03, 0.01}, {0.03, 0.02}, {0.02, 0.02}, {0.02, 0.03}, {0.01, 0.03}}};
   const ConvexDecomposition d = decompose(l, {ToothLayout{12, 0.0}});
   EXPECT_FALSE(d.sectors_exact);
   EXPECT_NE(d.fallback_reason.find("star-shaped"), std::string::npos) << d.fallback_reason;
@@ -228,22 +220,18 @@ TEST(ConvexDecomposition, OutlineAwayFromTheAxisFallsBack) {
 TEST(ConvexDecomposition, RotatedMeshRoundTripStaysExact) {
   // Mesh -> prism -> pieces back in the mesh frame: the union still matches the mesh.
   TriMesh m = extrude(external_gear(24, 32), 0.0, 0.004);
-  const Eigen::Matrix3d rot =
-      Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -1, 2).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, -1, 2).normalized()).toRotationMatrix();
   for (auto& v : m.vertices) v = rot * v + Eigen::Vector3d(0.01, 0.02, -0.03);
   const Result<Prism> r = recover_prism(m, 1e-9);
   ASSERT_TRUE(r) << r.reason();
   const ConvexDecomposition d = decompose(r->outline);
   expect_convex(d);
-  const DecompositionDeviation dev =
-      decomposition_deviation(m, extrude_pieces(d, *r), 0.25e-3);
+  const DecompositionDeviation dev = decomposition_deviation(m, extrude_pieces(d, *r), 0.25e-3);
   EXPECT_LT(dev.hausdorff_m, 1e-6);  // rotation rounding is ~1e-17 m
   EXPECT_NEAR(dev.relative_volume_error, 0.0, 1e-12);
 }
 
-TEST(ConvexDecomposition, RejectsTooFewTeeth) {
-  EXPECT_THROW(decompose(external_gear(24, 16), {ToothLayout{2, 0.0}}), InputError);
-}
+TEST(ConvexDecomposition, RejectsTooFewTeeth) { EXPECT_THROW(decompose(external_gear(24, 16), {ToothLayout{2, 0.0}}), InputError); }
 
 }  // namespace test_convex_decomposition
 }  // namespace gearsim

@@ -13,8 +13,7 @@ namespace test_extrude {
 // Signed volume by the divergence theorem: positive when the triangles face outward.
 double signed_volume(const TriMesh& m) {
   double v = 0.0;
-  for (const auto& t : m.triangles)
-    v += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]]));
+  for (const auto& t : m.triangles) v += m.vertices[t[0]].dot(m.vertices[t[1]].cross(m.vertices[t[2]]));
   return v / 6.0;
 }
 
@@ -26,8 +25,7 @@ void expect_closed(const TriMesh& m) {
   for (const auto& [e, count] : edges) {
     EXPECT_EQ(count, 1) << "edge " << e.first << "->" << e.second;
     const auto twin = edges.find({e.second, e.first});
-    EXPECT_TRUE(twin != edges.end() && twin->second == 1)
-        << "open edge " << e.first << "->" << e.second;
+    EXPECT_TRUE(twin != edges.end() && twin->second == 1) << "open edge " << e.first << "->" << e.second;
   }
 }
 
@@ -52,8 +50,7 @@ TEST(Extrude, HoleIsCarvedOutOfTheVolume) {
 }
 
 TEST(Extrude, ConvexPolygonWithCollinearCornerGivesAPrism) {
-  const Polygon2 hex{
-      {{1, 0}, {0.5, 0.866}, {-0.5, 0.866}, {-1, 0}, {-0.5, -0.866}, {0, -0.866}, {0.5, -0.866}}};
+  const Polygon2 hex{{{1, 0}, {0.5, 0.866}, {-0.5, 0.866}, {-1, 0}, {-0.5, -0.866}, {0, -0.866}, {0.5, -0.866}}};
   const TriMesh m = extrude_convex(hex, 1.0, 1.5);
   expect_closed(m);
   EXPECT_NEAR(signed_volume(m), signed_area(hex) * 0.5, 1e-14);
@@ -61,8 +58,7 @@ TEST(Extrude, ConvexPolygonWithCollinearCornerGivesAPrism) {
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (const auto& v : m.vertices) c += v / double(m.vertices.size());
   for (const auto& t : m.triangles) {
-    const Eigen::Vector3d n =
-        (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]);
+    const Eigen::Vector3d n = (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]);
     EXPECT_GT(n.dot(m.vertices[t[0]] - c), 0.0);
   }
 }

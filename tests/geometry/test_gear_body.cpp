@@ -53,12 +53,9 @@ GearSpec faulty_planet() {
   return s;
 }
 
-INSTANTIATE_TEST_SUITE_P(Paper, PaperGear,
-                         ::testing::Values(test::external_gear(24), test::external_gear(36, 0.010), faulty_planet(),
-                                           test::internal_gear(96)),
-                         [](const ::testing::TestParamInfo<GearSpec>& i) {
-                           return std::string(i.index == 2 ? "faulty_planet" : i.param.name);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Paper, PaperGear, ::testing::Values(test::external_gear(24), test::external_gear(36, 0.010), faulty_planet(), test::internal_gear(96)),
+    [](const ::testing::TestParamInfo<GearSpec>& i) { return std::string(i.index == 2 ? "faulty_planet" : i.param.name); });
 
 }  // namespace test_gear_body
 }  // namespace gearsim

@@ -30,8 +30,7 @@ TEST(GearMesh, ShiftedPairHasZeroBacklashOnTheWorkingPitchCircles) {
   const double dw1 = 2 * aw * 13 / 53.0, dw2 = 2 * aw * 40 / 53.0;
   auto sw = [&](const GearSpec& g, double dw) {
     const GearDimensions d = gear_dimensions(g);
-    return dw * (d.tooth_thickness_m / (2 * d.reference_radius_m) + involute(kAlpha) -
-                 involute(m.working_pressure_angle_rad));
+    return dw * (d.tooth_thickness_m / (2 * d.reference_radius_m) + involute(kAlpha) - involute(m.working_pressure_angle_rad));
   };
   EXPECT_NEAR(sw(a, dw1) + sw(b, dw2), std::numbers::pi * dw1 / 13, 1e-12);
 }
@@ -39,8 +38,8 @@ TEST(GearMesh, ShiftedPairHasZeroBacklashOnTheWorkingPitchCircles) {
 TEST(GearMesh, PaperSunPlanetContactRatioFromThePathOfContact) {
   // ε = [√(ra1² − rb1²) + √(ra2² − rb2²) − a sin α] / (π m cos α), radii in mm.
   const double rb1 = 12 * std::cos(kAlpha), rb2 = 18 * std::cos(kAlpha);
-  const double eps = (std::sqrt(13 * 13 - rb1 * rb1) + std::sqrt(19 * 19 - rb2 * rb2) - 30 * std::sin(kAlpha)) /
-                     (std::numbers::pi * std::cos(kAlpha));
+  const double eps =
+      (std::sqrt(13 * 13 - rb1 * rb1) + std::sqrt(19 * 19 - rb2 * rb2) - 30 * std::sin(kAlpha)) / (std::numbers::pi * std::cos(kAlpha));
   const MeshGeometry m = analyse_mesh(test::external_gear(24), test::external_gear(36), 30e-3);
   EXPECT_NEAR(m.contact_ratio, eps, 1e-12);
   EXPECT_TRUE(m.problems.empty()) << m.problems.front();
@@ -51,8 +50,8 @@ TEST(GearMesh, PaperPlanetRingReportsTheRingTipReachingThePlanetFillet) {
   // starts contact at roll length √(47² − rb2²) − 30 sin α = 2.95 mm on the planet, below its
   // form circle (3.23 mm): the standard-addendum ring reaches the planet's fillet.
   const double rb1 = 18 * std::cos(kAlpha), rb2 = 48 * std::cos(kAlpha);
-  const double eps = (std::sqrt(19 * 19 - rb1 * rb1) - std::sqrt(47 * 47 - rb2 * rb2) + 30 * std::sin(kAlpha)) /
-                     (std::numbers::pi * std::cos(kAlpha));
+  const double eps =
+      (std::sqrt(19 * 19 - rb1 * rb1) - std::sqrt(47 * 47 - rb2 * rb2) + 30 * std::sin(kAlpha)) / (std::numbers::pi * std::cos(kAlpha));
   const MeshGeometry m = analyse_mesh(test::external_gear(36), test::internal_gear(96), 30e-3);
   EXPECT_NEAR(m.contact_ratio, eps, 1e-12);
   EXPECT_NEAR(m.active_start_roll_a_m, std::sqrt(47 * 47 - rb2 * rb2) * 1e-3 - 30e-3 * std::sin(kAlpha), 1e-15);

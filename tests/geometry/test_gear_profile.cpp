@@ -26,8 +26,10 @@ double arc_across_angle_zero(const Polygon2& loop, double r) {
   double lo = -kPi, hi = kPi;
   for (const Vector2d& p : test::circle_crossings(loop, r)) {
     const double a = test::polar(p);
-    if (a < 0) lo = std::max(lo, a);
-    else hi = std::min(hi, a);
+    if (a < 0)
+      lo = std::max(lo, a);
+    else
+      hi = std::min(hi, a);
   }
   return (hi - lo) * r;
 }
@@ -169,8 +171,10 @@ TEST(GearProfile, PitchErrorMovesBothFlanksAlongTheReferenceCircle) {
   double lo = -kPi, hi = kPi;
   for (const Vector2d& p : test::circle_crossings(g.outline.outer, 12e-3)) {
     const double a = test::polar(p);
-    if (a < 0) lo = std::max(lo, a);
-    else hi = std::min(hi, a);
+    if (a < 0)
+      lo = std::max(lo, a);
+    else
+      hi = std::min(hi, a);
   }
   const double half = kPi / 2 / s.teeth;  // nominal half-thickness angle at the reference circle
   EXPECT_NEAR(hi * 12e-3, half * 12e-3 + 20e-6, kChord);
@@ -188,8 +192,7 @@ TEST(GearProfile, ProfileSlopeGrowsLinearlyWithRollLength) {
   for (double share : {0.0, 0.5, 0.98}) {
     const double L = l0 + share * (l1 - l0);
     const double r = std::hypot(d.base_radius_m, L);
-    const auto hit = test::line_hit(g.outline.outer, flank_point(s, d, 0, Flank::Cw, r),
-                                    flank_normal(s, d, 0, Flank::Cw, r), 100e-6);
+    const auto hit = test::line_hit(g.outline.outer, flank_point(s, d, 0, Flank::Cw, r), flank_normal(s, d, 0, Flank::Cw, r), 100e-6);
     ASSERT_TRUE(hit.has_value());
     EXPECT_NEAR(*hit, 10e-6 * share, kChord) << "share " << share;
   }

@@ -77,9 +77,8 @@ TEST_P(ExternalGear, CountToothZeroBaseRadiusModuleAndPressureAngle) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Grid, ExternalGear,
-                         ::testing::Values(Case{12, 1e-3, 20, 0, 0.4}, Case{24, 1e-3, 14.5, 3.0, 0.3},
-                                           Case{36, 1e-3, 20, -4.0, 0}, Case{80, 4e-3, 25, 1.0, 0},
-                                           Case{17, 4e-3, 20, 10.0, 0.1}, Case{55, 2.5e-3, 25, 0.5, -0.2}));
+                         ::testing::Values(Case{12, 1e-3, 20, 0, 0.4}, Case{24, 1e-3, 14.5, 3.0, 0.3}, Case{36, 1e-3, 20, -4.0, 0},
+                                           Case{80, 4e-3, 25, 1.0, 0}, Case{17, 4e-3, 20, 10.0, 0.1}, Case{55, 2.5e-3, 25, 0.5, -0.2}));
 
 TEST(GearRecognition, InternalGearIsTheToothedHole) {
   GearSpec s = test::internal_gear(96);

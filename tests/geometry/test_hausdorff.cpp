@@ -53,8 +53,7 @@ TEST(Hausdorff, MicrometreBumpAtAVertexIsSeenAtCoarseSpacing) {
 TEST(Hausdorff, ExactDecompositionHasZeroDeviation) {
   const Outline2 l = l_shape();
   const ConvexDecomposition d = decompose(l);
-  const DecompositionDeviation dev = decomposition_deviation(
-      extrude(l, 0.0, 0.005), extrude_pieces(d, PrismFrame{}, 0.0, 0.005), 0.5e-3);
+  const DecompositionDeviation dev = decomposition_deviation(extrude(l, 0.0, 0.005), extrude_pieces(d, PrismFrame{}, 0.0, 0.005), 0.5e-3);
   EXPECT_NEAR(dev.hausdorff_m, 0.0, 1e-17);  // rounding of 1e-2 m coordinates
   EXPECT_NEAR(dev.input_volume_m3, 3e-4 * 0.005, 1e-20);
   EXPECT_NEAR(dev.relative_volume_error, 0.0, 1e-14);

@@ -47,8 +47,7 @@ TEST(InvolutePair, TheZeroBacklashToleranceIsTheThicknessTolerancesOverTwoSinAlp
   EXPECT_NEAR(out.normal_backlash_m, 2.88e-6, 0.005e-6);
   // Base radii known to 0.9 and 0.8 µm add (0.9 + 0.8) µm / cos α_w: a = (r_b1 + r_b2)/cos α_w.
   a.base_radius_tolerance_m = 0.9e-6, b.base_radius_tolerance_m = 0.8e-6;
-  EXPECT_NEAR(involute_pair(a, b, 0.0, "t").zero_backlash_tolerance_m,
-              2.88e-6 / (2 * std::sin(kAlpha)) + 1.7e-6 / std::cos(kAlpha), 1e-15);
+  EXPECT_NEAR(involute_pair(a, b, 0.0, "t").zero_backlash_tolerance_m, 2.88e-6 / (2 * std::sin(kAlpha)) + 1.7e-6 / std::cos(kAlpha), 1e-15);
   a.base_radius_tolerance_m = b.base_radius_tolerance_m = 0;
   // Internal: the ring's side closes as the distance grows.
   InvoluteTeeth ring = teeth(80, true);
@@ -116,8 +115,8 @@ TEST(InvolutePair, AStandardDistanceBeyondTheToleranceIsNotUsed) {
 TEST(InvolutePair, APlanetaryConflictWithinTheFitsToleranceIsMetAtTheStandardDistance) {
   // The fits as `gearsim inspect` printed them (ccw and cw flanks): base radius (mm), base
   // half-angle (°), rms (µm); involute_teeth(RecognisedGear) takes the means and the tolerances.
-  auto fitted = [](int z, bool internal, double rb_ccw, double rb_cw, double half_ccw, double half_cw, double rms_ccw,
-                   double rms_cw, double tip_mm) {
+  auto fitted = [](int z, bool internal, double rb_ccw, double rb_cw, double half_ccw, double half_cw, double rms_ccw, double rms_cw,
+                   double tip_mm) {
     InvoluteTeeth t = teeth(z, internal);
     t.base_radius_m = 0.5e-3 * (rb_ccw + rb_cw);
     t.base_half_angle_rad = 0.5 * (half_ccw + half_cw) * M_PI / 180;
@@ -126,12 +125,12 @@ TEST(InvolutePair, APlanetaryConflictWithinTheFitsToleranceIsMetAtTheStandardDis
     t.base_radius_tolerance_m = std::max(0.5e-3 * std::abs(rb_ccw - rb_cw), std::abs(t.base_radius_m - 0.5e-3 * z * std::cos(kAlpha)));
     return t;
   };
-  const InvoluteTeeth sun = fitted(12, false, 5.63718609130974, 5.637301107598253, 8.35877916074773, 8.358205293587213,
-                                   0.0071004, 0.0135565, 7.0013693);
-  const InvoluteTeeth planet = fitted(18, false, 8.456408760864623, 8.456421265714154, 5.856313774955483, 5.856296280616414,
-                                      0.0050494, 0.0036857, 10.0011339);
-  const InvoluteTeeth ring = fitted(48, true, 22.55260655124676, 22.552606622995672, 1.0210282713010004, 1.021028339618041,
-                                    0.0003793, 0.0003186, 23.3999992);
+  const InvoluteTeeth sun =
+      fitted(12, false, 5.63718609130974, 5.637301107598253, 8.35877916074773, 8.358205293587213, 0.0071004, 0.0135565, 7.0013693);
+  const InvoluteTeeth planet =
+      fitted(18, false, 8.456408760864623, 8.456421265714154, 5.856313774955483, 5.856296280616414, 0.0050494, 0.0036857, 10.0011339);
+  const InvoluteTeeth ring =
+      fitted(48, true, 22.55260655124676, 22.552606622995672, 1.0210282713010004, 1.021028339618041, 0.0003793, 0.0003186, 23.3999992);
   const InvolutePair sp = involute_pair(sun, planet, 0.0, "t"), pr = involute_pair(planet, ring, 0.0, "t");
   EXPECT_NEAR(sp.zero_backlash_centre_distance_m - pr.zero_backlash_centre_distance_m, 0.62e-6, 0.01e-6);  // the conflict
   const PairPlacement p = place_planetary(sun, planet, ring);

@@ -37,7 +37,7 @@ TriMesh prism(int n, double r, double h) {
     const std::uint32_t j = (i + 1) % N;
     m.triangles.push_back({i, j, N + j});  // side, outward
     m.triangles.push_back({i, N + j, N + i});
-    m.triangles.push_back({2 * N, j, i});              // bottom, seen from -z
+    m.triangles.push_back({2 * N, j, i});  // bottom, seen from -z
     m.triangles.push_back({2 * N + 1, N + i, N + j});  // top
   }
   return m;
@@ -47,9 +47,9 @@ TriMesh prism(int n, double r, double h) {
 TriMesh annulus(int n, double r1, double r2, double h) {
   TriMesh m;
   add_ring(m, n, r2, 0.0);  // outer bottom: 0..n-1
-  add_ring(m, n, r2, h);    // outer top:    n..2n-1
+  add_ring(m, n, r2, h);  // outer top:    n..2n-1
   add_ring(m, n, r1, 0.0);  // inner bottom: 2n..3n-1
-  add_ring(m, n, r1, h);    // inner top:    3n..4n-1
+  add_ring(m, n, r1, h);  // inner top:    3n..4n-1
   const auto N = static_cast<std::uint32_t>(n);
   for (std::uint32_t i = 0; i < N; ++i) {
     const std::uint32_t j = (i + 1) % N;
@@ -69,8 +69,7 @@ TriMesh annulus(int n, double r1, double r2, double h) {
 // Box [0,a]×[0,b]×[0,c], faces counter-clockwise from outside.
 TriMesh box(double a, double b, double c) {
   TriMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.emplace_back(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1));
+  for (int i = 0; i < 8; ++i) m.vertices.emplace_back(a * (i & 1), b * ((i >> 1) & 1), c * ((i >> 2) & 1));
   m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 5}, {0, 5, 4},
                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
   return m;
@@ -156,14 +155,12 @@ TEST(MassProperties, RotatedTranslatedBoxGivesTheRotatedTensor) {
   const Eigen::Vector3d t(0.3, -0.2, 0.5);
   const MassProperties p = mass_properties(transformed(box(a, b, c), R, t), kSteel_kg_m3);
   const double m = p0.mass_kg;
-  const Eigen::Matrix3d i_box =
-      Eigen::Vector3d(b * b + c * c, a * a + c * c, a * a + b * b).asDiagonal() * (m / 12);
+  const Eigen::Matrix3d i_box = Eigen::Vector3d(b * b + c * c, a * a + c * c, a * a + b * b).asDiagonal() * (m / 12);
   const Eigen::Matrix3d expected = R * i_box * R.transpose();
   // Positions 0.5 m from the origin on a 0.05 m part: ~1e-15 m rounding, 1e-12 relative.
   EXPECT_TRUE(p.centre_of_mass_m.isApprox(R * Eigen::Vector3d(a, b, c) / 2 + t, kExactRel));
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j)
-      EXPECT_NEAR(p.inertia_com_kg_m2(i, j), expected(i, j), kExactRel * i_box.norm());
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(p.inertia_com_kg_m2(i, j), expected(i, j), kExactRel * i_box.norm());
   }
 }
 
@@ -185,15 +182,13 @@ TEST(MassProperties, PrincipalAxesOfARotatedBoxAreItsEdges) {
   const MassProperties p = mass_properties(transformed(box(a, b, c), R, {0.1, 0, 0}), 1000.0);
   const double m = p.mass_kg;
   // Ascending: the long edge c (smallest moment) first, then b, then a.
-  const Eigen::Vector3d moments(m / 12 * (a * a + b * b), m / 12 * (a * a + c * c),
-                                m / 12 * (b * b + c * c));
+  const Eigen::Vector3d moments(m / 12 * (a * a + b * b), m / 12 * (a * a + c * c), m / 12 * (b * b + c * c));
   EXPECT_TRUE(p.principal_moments_kg_m2.isApprox(moments, 1e-10));
   EXPECT_NEAR(std::abs(p.principal_axes.col(0).dot(R.col(2))), 1.0, 1e-10);
   EXPECT_NEAR(std::abs(p.principal_axes.col(1).dot(R.col(1))), 1.0, 1e-10);
   EXPECT_NEAR(std::abs(p.principal_axes.col(2).dot(R.col(0))), 1.0, 1e-10);
   EXPECT_NEAR(p.principal_axes.determinant(), 1.0, 1e-12);  // a rotation
-  const Eigen::Matrix3d rebuilt =
-      p.principal_axes * p.principal_moments_kg_m2.asDiagonal() * p.principal_axes.transpose();
+  const Eigen::Matrix3d rebuilt = p.principal_axes * p.principal_moments_kg_m2.asDiagonal() * p.principal_axes.transpose();
   EXPECT_TRUE(rebuilt.isApprox(p.inertia_com_kg_m2, 1e-10));
 }
 
@@ -202,8 +197,7 @@ TEST(MassProperties, PartFarFromTheOriginKeepsItsPrecision) {
   // which would leave ~1e-6 relative; from a reference point near the centroid only the
   // coordinates' own rounding (1e-13 m on 1e-2 m) remains. 1e-9 relative sits between.
   const double s = 0.01;
-  const MassProperties p = mass_properties(
-      transformed(box(s, s, s), Eigen::Matrix3d::Identity(), {1000, -1000, 1000}), 1000.0);
+  const MassProperties p = mass_properties(transformed(box(s, s, s), Eigen::Matrix3d::Identity(), {1000, -1000, 1000}), 1000.0);
   const double i = p.mass_kg * s * s / 6;
   EXPECT_NEAR(p.inertia_com_kg_m2(0, 0), i, 1e-9 * i);
   EXPECT_NEAR(p.inertia_com_kg_m2(0, 1), 0.0, 1e-9 * i);

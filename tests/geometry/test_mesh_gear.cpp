@@ -78,8 +78,8 @@ TEST(MeshGear, LayoutChecksNameWhatTheMeshShows) {
   const RecognisedGear& r = *g.recognition;
   const double pitch = 2 * kPi / 23, t0 = 5 * kPi / 180;
   EXPECT_TRUE(check_layout(r, {23, t0}));
-  EXPECT_TRUE(check_layout(r, {23, t0 + 7 * pitch}));       // another tooth numbered 0: same layout
-  EXPECT_TRUE(check_layout(r, {23, t0 + 0.015 * pitch}));   // within 2 % of a pitch
+  EXPECT_TRUE(check_layout(r, {23, t0 + 7 * pitch}));  // another tooth numbered 0: same layout
+  EXPECT_TRUE(check_layout(r, {23, t0 + 0.015 * pitch}));  // within 2 % of a pitch
   EXPECT_NE(check_layout(r, {23, t0 + 0.5 * pitch}).reason().find("50 % of a pitch"), std::string::npos);
   EXPECT_NE(check_layout(r, {24, t0}).reason().find("24 teeth given, the mesh shows 23"), std::string::npos);
   EXPECT_TRUE(check_unit(r, LengthUnit::Millimetre));
@@ -93,8 +93,7 @@ TEST(MeshGear, LayoutChecksNameWhatTheMeshShows) {
 // 0.2 % that separates standard pressure angles).
 TEST(MeshGear, CoarselyFacetedMcadInvolutesGiveTheirBaseCircles) {
   for (int z : {12, 24}) {
-    const std::string file =
-        std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(z) + "_a20_f5_b005.stl";
+    const std::string file = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/mcad_m1_z" + std::to_string(z) + "_a20_f5_b005.stl";
     const MeshGearFile f = read_mesh_gear(file, LengthUnit::Millimetre);
     ASSERT_TRUE(f.gear.has_value()) << f.prism.reason();
     ASSERT_TRUE(f.gear->recognition.ok()) << f.gear->recognition.reason();

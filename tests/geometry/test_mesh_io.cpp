@@ -30,8 +30,7 @@ TriMesh hex_prism() {
   for (double z : {0.0, 8.3e-3}) {
     for (int i = 0; i < n; ++i) {
       const double a = 2.0 * std::numbers::pi * i / n + 0.1;
-      m.vertices.push_back(centre +
-                           Eigen::Vector3d(23.7e-3 * std::cos(a), 23.7e-3 * std::sin(a), z));
+      m.vertices.push_back(centre + Eigen::Vector3d(23.7e-3 * std::cos(a), 23.7e-3 * std::sin(a), z));
     }
   }
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -40,7 +39,7 @@ TriMesh hex_prism() {
     m.triangles.push_back({i, n + j, n + i});
   }
   for (std::uint32_t i = 1; i + 1 < n; ++i) {
-    m.triangles.push_back({0, i + 1, i});          // bottom, seen from -z
+    m.triangles.push_back({0, i + 1, i});  // bottom, seen from -z
     m.triangles.push_back({n, n + i, n + i + 1});  // top
   }
   return m;
@@ -65,8 +64,7 @@ std::string input_error(F&& f) {
   return "";
 }
 
-#define EXPECT_CONTAINS(text, part) \
-  EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
 // Same triangles over the same vertices, matched by nearest position within tol_m.
 void expect_same_mesh(const TriMesh& expected, const TriMesh& actual, double tol_m) {
@@ -108,8 +106,7 @@ class MeshIo : public ::testing::Test {
  protected:
   void SetUp() override {
     const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    dir_ =
-        fs::temp_directory_path() / ("gearsim_mesh_io_" + test + "_" + std::to_string(::getpid()));
+    dir_ = fs::temp_directory_path() / ("gearsim_mesh_io_" + test + "_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -166,8 +163,9 @@ TEST_F(MeshIo, ObjRoundTripKeepsTrianglesAndVerticesToFloat32) {
 TEST_F(MeshIo, AnObjsMaterialLibraryThatIsMissingOrAFifoIsSkippedNotWaitedOn) {
   // The geometry is all a gear needs: a material library Assimp cannot open is skipped (a FIFO
   // under its name is refused by the bounded reader's checks, so the import does not block).
-  const std::string obj = "mtllib gone.mtl\nmtllib pipe.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
-                          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const std::string obj =
+      "mtllib gone.mtl\nmtllib pipe.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+      "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
   ASSERT_EQ(::mkfifo((dir_ / "pipe.mtl").c_str(), 0600), 0);
   const TriMesh m = import_mesh(file("tet.obj", obj), LengthUnit::Metre);
   EXPECT_EQ(m.triangles.size(), 4u);
@@ -230,8 +228,8 @@ TEST_F(MeshIo, WrongUnitScalesByTheUnitRatio) {
 }
 
 TEST_F(MeshIo, LengthUnitSymbolsParseBack) {
-  for (LengthUnit u : {LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Millimetre,
-                       LengthUnit::Micrometre, LengthUnit::Inch, LengthUnit::Foot}) {
+  for (LengthUnit u :
+       {LengthUnit::Metre, LengthUnit::Centimetre, LengthUnit::Millimetre, LengthUnit::Micrometre, LengthUnit::Inch, LengthUnit::Foot}) {
     EXPECT_EQ(parse_length_unit(symbol(u)), u);
   }
   EXPECT_EQ(parse_length_unit("\u00b5m"), LengthUnit::Micrometre);
@@ -257,11 +255,10 @@ TEST_F(MeshIo, SceneMeshesMergeWithTheirNodeTransforms) {
   const TriMesh m = import_mesh(two_node_tetrahedra());
   EXPECT_EQ(m.triangles.size(), 8u);
   EXPECT_EQ(m.vertices.size(), 8u);  // no shared positions between the two copies
-  const auto [lo, hi] = std::minmax_element(
-      m.vertices.begin(), m.vertices.end(),
-      [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.x() < b.x(); });
+  const auto [lo, hi] = std::minmax_element(m.vertices.begin(), m.vertices.end(),
+                                            [](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return a.x() < b.x(); });
   EXPECT_DOUBLE_EQ(lo->x(), -0.001);  // the mirrored copy
-  EXPECT_DOUBLE_EQ(hi->x(), 0.011);   // the translated copy
+  EXPECT_DOUBLE_EQ(hi->x(), 0.011);  // the translated copy
 }
 
 TEST_F(MeshIo, MirroringNodeKeepsOutwardWinding) {

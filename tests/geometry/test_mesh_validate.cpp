@@ -15,8 +15,7 @@ namespace test_mesh_validate {
 // Unit cube [0,1]³ in m; vertex index = x + 2y + 4z; faces counter-clockwise from outside.
 TriMesh cube(const Eigen::Vector3d& offset = Eigen::Vector3d::Zero()) {
   TriMesh m;
-  for (int i = 0; i < 8; ++i)
-    m.vertices.push_back(offset + Eigen::Vector3d(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+  for (int i = 0; i < 8; ++i) m.vertices.push_back(offset + Eigen::Vector3d(i & 1, (i >> 1) & 1, (i >> 2) & 1));
   m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 5}, {0, 5, 4},
                  {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
   return m;
@@ -33,8 +32,7 @@ std::string rejection(const TriMesh& m) {
   return "";
 }
 
-#define EXPECT_CONTAINS(text, part) \
-  EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
+#define EXPECT_CONTAINS(text, part) EXPECT_NE(std::string(text).find(part), std::string::npos) << "in: " << (text)
 
 TEST(MeshValidate, ClosedCubeIsAValidSolid) {
   const MeshReport r = validate_mesh(cube());
@@ -86,8 +84,7 @@ TEST(MeshValidate, CubesTouchingAtACornerHaveANonManifoldVertex) {
   const TriMesh other = cube(Eigen::Vector3d(1, 1, 1));
   for (int i = 1; i < 8; ++i) m.vertices.push_back(other.vertices[i]);
   const auto remap = [](std::uint32_t v) { return v == 0 ? 7u : 7u + v; };
-  for (const auto& t : other.triangles)
-    m.triangles.push_back({remap(t[0]), remap(t[1]), remap(t[2])});
+  for (const auto& t : other.triangles) m.triangles.push_back({remap(t[0]), remap(t[1]), remap(t[2])});
   const MeshReport r = validate_mesh(m);
   EXPECT_TRUE(r.watertight());
   EXPECT_FALSE(r.manifold());
@@ -176,9 +173,7 @@ TEST(MeshValidate, DegenerateToleranceIsHeightOverLongestEdge) {
   EXPECT_EQ(sliver(0.5e-7), 1u);
 }
 
-TEST(MeshValidate, EmptyMeshIsRejected) {
-  EXPECT_CONTAINS(rejection(TriMesh{}), "gear.stl: no triangles");
-}
+TEST(MeshValidate, EmptyMeshIsRejected) { EXPECT_CONTAINS(rejection(TriMesh{}), "gear.stl: no triangles"); }
 
 TEST(MeshValidate, IndexOutOfRangeIsAnInternalError) {
   TriMesh m = cube();

@@ -56,8 +56,7 @@ TEST(Planetary, PlacedPlanetsTouchSunAndRingWithoutOverlap) {
   // mesh (GearMesh tests); a shortened ring addendum isolates what this test checks: placement.
   s.ring.addendum_coeff = 0.8;
   const PlanetaryGeometry g = analyse_planetary(s);
-  const GearOutline sun = make_gear_outline(s.sun), planet = make_gear_outline(s.planet),
-                    ring = make_gear_outline(s.ring);
+  const GearOutline sun = make_gear_outline(s.sun), planet = make_gear_outline(s.planet), ring = make_gear_outline(s.ring);
   Polygon2 ring_teeth = ring.outline.holes.front();
   for (Vector2d& p : ring_teeth.points) p = Eigen::Rotation2Dd(g.ring_angle_rad) * p;
   for (const PlanetPlacement& pl : g.placements) {

@@ -24,9 +24,7 @@ Outline2 l_shape() {  // 20 mm L, one reflex corner
 }
 
 std::vector<Vec2> sorted(std::vector<Vec2> v) {
-  std::sort(v.begin(), v.end(), [](const Vec2& a, const Vec2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
+  std::sort(v.begin(), v.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   return v;
 }
 
@@ -56,13 +54,12 @@ TEST(Prism, HoleIsRecoveredClockwise) {
 TEST(Prism, RotatedAndTallPrismIsFoundAlongItsAxis) {
   // 50 mm tall: every side wall is larger than the caps, so the axis is not the biggest face.
   TriMesh m = extrude(l_shape(), 0.0, 0.05);
-  const Eigen::Matrix3d rot =
-      (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())).toRotationMatrix();
+  const Eigen::Matrix3d rot = (Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized())).toRotationMatrix();
   for (Vec3& v : m.vertices) v = rot * v + Vec3(0.1, -0.2, 0.3);
   const Result<Prism> r = recover_prism(m, 1e-9);
   ASSERT_TRUE(r) << r.reason();
   EXPECT_NEAR(std::abs(r->frame.z.dot(rot * Vec3::UnitZ())), 1.0, 1e-15);
-  EXPECT_NEAR(r->height_m, 0.05, 1e-15);       // rounding of rotated coordinates
+  EXPECT_NEAR(r->height_m, 0.05, 1e-15);  // rounding of rotated coordinates
   EXPECT_NEAR(area(r->outline), 3e-4, 1e-17);  // m^2
   // Mapping the recovered outline back lands on mesh vertices (within rounding, 1e-15 m).
   for (const Vec2& p : r->outline.outer.points) {
@@ -75,8 +72,7 @@ TEST(Prism, RotatedAndTallPrismIsFoundAlongItsAxis) {
 
 TEST(Prism, ExactlyCollinearPointsGoButNearlyCollinearOnesStay) {
   Outline2 o;
-  o.outer =
-      Polygon2{{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0.5, 1 + 1e-9}, {0, 1}}};  // 1 nm bump on top
+  o.outer = Polygon2{{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0.5, 1 + 1e-9}, {0, 1}}};  // 1 nm bump on top
   const Result<Prism> r = recover_prism(extrude(o, 0.0, 1.0), 1e-12);
   ASSERT_TRUE(r) << r.reason();
   EXPECT_EQ(r->outline.outer.points.size(), 5u);  // (0.5, 0) dropped, the bump kept
@@ -123,8 +119,7 @@ TriMesh caps_only(const Outline2& o, double z0, double z1) {
   TriMesh m = extrude(o, z0, z1);
   std::vector<std::array<std::uint32_t, 3>> caps;
   for (const auto& t : m.triangles)
-    if (m.vertices[t[0]].z() == m.vertices[t[1]].z() && m.vertices[t[1]].z() == m.vertices[t[2]].z())
-      caps.push_back(t);
+    if (m.vertices[t[0]].z() == m.vertices[t[1]].z() && m.vertices[t[1]].z() == m.vertices[t[2]].z()) caps.push_back(t);
   m.triangles = caps;
   return m;
 }

@@ -37,9 +37,7 @@ TEST(Tessellate, ArcSagittaStaysWithinTheBound) {
 
 TEST(Tessellate, InvoluteDeviationIsBelowHalfAMicrometre) {
   const double rb = 0.016914;  // the paper planet's base radius, m
-  const Curve2 inv = [rb](double t) {
-    return Vector2d(rb * (std::cos(t) + t * std::sin(t)), rb * (std::sin(t) - t * std::cos(t)));
-  };
+  const Curve2 inv = [rb](double t) { return Vector2d(rb * (std::cos(t) + t * std::sin(t)), rb * (std::sin(t) - t * std::cos(t))); };
   std::vector<Vector2d> pts;
   tessellate_curve(inv, 0.05, 0.6, 0.5e-6, pts);
   const double dev = max_deviation(inv, 0.05, 0.6, pts);

@@ -59,8 +59,7 @@ TEST(Tolerance, IsoClass8PaperSingleFlankErrorIs44um) {
 TEST(Tolerance, IsoStepIsSqrt2PerClass) {
   EXPECT_NEAR(class_step_factor(ToleranceStandard::Iso1328, 5), 1.0, kExactTol);
   for (int q = 0; q < 12; ++q) {
-    const double ratio = class_step_factor(ToleranceStandard::Iso1328, q + 1) /
-                         class_step_factor(ToleranceStandard::Iso1328, q);
+    const double ratio = class_step_factor(ToleranceStandard::Iso1328, q + 1) / class_step_factor(ToleranceStandard::Iso1328, q);
     EXPECT_NEAR(ratio, std::sqrt(2.0), kExactTol) << "class " << q;
   }
 }
@@ -69,8 +68,7 @@ TEST(Tolerance, IsoStepIsSqrt2PerClass) {
 TEST(Tolerance, DinStepIs1_4PerClass) {
   EXPECT_NEAR(class_step_factor(ToleranceStandard::Din3961, 5), 1.0, kExactTol);
   for (int q = 1; q < 12; ++q) {
-    const double ratio = class_step_factor(ToleranceStandard::Din3961, q + 1) /
-                         class_step_factor(ToleranceStandard::Din3961, q);
+    const double ratio = class_step_factor(ToleranceStandard::Din3961, q + 1) / class_step_factor(ToleranceStandard::Din3961, q);
     EXPECT_NEAR(ratio, 1.4, kExactTol) << "class " << q;
   }
 }
@@ -156,8 +154,7 @@ TEST(Tolerance, TolerancesGrowWithClass) {
       for (std::size_t i = 0; i < lo.components.size(); ++i) {
         EXPECT_GT(hi.components[i].unrounded_um, lo.components[i].unrounded_um)
             << standard_key(s) << " class " << q << " " << lo.components[i].key;
-        EXPECT_GE(hi.components[i].value_um, lo.components[i].value_um)
-            << standard_key(s) << " class " << q << " " << lo.components[i].key;
+        EXPECT_GE(hi.components[i].value_um, lo.components[i].value_um) << standard_key(s) << " class " << q << " " << lo.components[i].key;
       }
     }
   }
@@ -201,8 +198,7 @@ TEST(Tolerance, OutOfRangeInputIsRejectedNamingTheParameter) {
 // formulas graded by the ISO step alike.
 TEST(Tolerance, IsoRangeAppliesToPaperFormulasWithIsoStep) {
   expect_rejected({0.3, 36, 36.0, 8, {}}, ToleranceStandard::Iso1328, "expected 0.5 to 70 mm");
-  EXPECT_THROW((void)paper_tolerances({0.3, 36, 36.0, 8, {}}, ToleranceStandard::Iso1328),
-               InputError);
+  EXPECT_THROW((void)paper_tolerances({0.3, 36, 36.0, 8, {}}, ToleranceStandard::Iso1328), InputError);
   EXPECT_NO_THROW((void)paper_tolerances({0.3, 36, 36.0, 8, {}}, ToleranceStandard::Din3961));
 }
 

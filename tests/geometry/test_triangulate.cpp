@@ -62,7 +62,7 @@ TEST(Triangulate, CombKeepsNMinusTwoTrianglesAndItsArea) {
   const Polygon2 c = comb(7);
   const Tris t = triangulate(c);
   EXPECT_EQ(t.size(), c.points.size() - 2);
-  EXPECT_NEAR(signed_area(c), 13.0 + 7 * 3.0, 1e-12);             // base 13 x 1, seven 1 x 3 teeth
+  EXPECT_NEAR(signed_area(c), 13.0 + 7 * 3.0, 1e-12);  // base 13 x 1, seven 1 x 3 teeth
   EXPECT_NEAR(checked_area(c.points, t), signed_area(c), 1e-12);  // rounding only
 }
 
@@ -91,7 +91,7 @@ TEST(Triangulate, HoleAreaIsSubtracted) {
   Outline2 o;
   o.outer = Polygon2{{{0, 0}, {4, 0}, {4, 4}, {0, 4}}};
   o.holes.push_back(Polygon2{{{1, 1}, {1, 2}, {2, 2}, {2, 1}}});  // clockwise
-  o.holes.push_back(Polygon2{{{3, 2}, {2.5, 3}, {3.5, 3}}});      // clockwise triangle
+  o.holes.push_back(Polygon2{{{3, 2}, {2.5, 3}, {3.5, 3}}});  // clockwise triangle
   const OutlineTriangulation t = triangulate(o);
   EXPECT_EQ(t.vertices.size(), 11u);
   EXPECT_EQ(t.triangles.size(),
@@ -108,8 +108,7 @@ TEST(Triangulate, HolesInAGearLikeRing) {
   }
   for (int h = 0; h < 6; ++h) {
     Polygon2 hole;
-    const Vec2 c(0.03 * std::cos(h * std::numbers::pi / 3),
-                 0.03 * std::sin(h * std::numbers::pi / 3));
+    const Vec2 c(0.03 * std::cos(h * std::numbers::pi / 3), 0.03 * std::sin(h * std::numbers::pi / 3));
     for (int i = 0; i < 16; ++i) {
       const double a = -2.0 * std::numbers::pi * i / 16;  // clockwise
       hole.points.push_back(c + 0.006 * Vec2(std::cos(a), std::sin(a)));

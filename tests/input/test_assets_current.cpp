@@ -22,8 +22,9 @@ void expect_current(const std::string& spec, const std::string& folder) {
   const std::filesystem::path src(GEARSIM_SOURCE_DIR);
   const GearSetFile f = load_gearset(src / spec);
   // One folder per test: ctest runs the tests of this file in parallel.
-  const std::filesystem::path tmp = std::filesystem::temp_directory_path() /
-                                    ("gearsim_assets_check_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  const std::filesystem::path tmp =
+      std::filesystem::temp_directory_path() /
+      ("gearsim_assets_check_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
   std::filesystem::create_directories(tmp);
   for (const GearSpec& s : f.gears) {
     const GearBody b = make_gear_body(s, f.density_kg_m3);
@@ -40,9 +41,7 @@ void expect_current(const std::string& spec, const std::string& folder) {
 
 TEST(Assets, PaperGearMeshesMatchTheirSpec) { expect_current("assets/specs/paper_gearset.yaml", "assets/gears"); }
 
-TEST(Assets, SpurPairMeshesMatchTheirSpec) {
-  expect_current("assets/specs/spur_pair_gearset.yaml", "assets/gears/spur_pair");
-}
+TEST(Assets, SpurPairMeshesMatchTheirSpec) { expect_current("assets/specs/spur_pair_gearset.yaml", "assets/gears/spur_pair"); }
 
 }  // namespace test_assets_current
 }  // namespace gearsim::input

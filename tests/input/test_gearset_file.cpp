@@ -38,9 +38,9 @@ TEST(GearSetFile, PaperSpecDescribesThePapersPlanetarySet) {
 
 // Writes `text` to a temp file and returns the error message load_gearset gives for it.
 std::string error_for(const std::string& text) {
-  const std::filesystem::path p = std::filesystem::temp_directory_path() /
-                                  ("gearsim_spec_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                   ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml");
+  const std::filesystem::path p =
+      std::filesystem::temp_directory_path() / ("gearsim_spec_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                                ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml");
   { std::ofstream(p) << text; }
   try {
     load_gearset(p);
@@ -148,7 +148,8 @@ TEST(GearSetFile, EveryNumberOfAGearIsCheckedAgainstItsLimit) {
        "gears.pinion.errors.flank_offsets[0].normal_offset_m: expected a tooth error in [-0.001, 0.001] m"},
       {"errors: {pitch_errors: [{tooth: 0, error_m: -1e300}]}", "gears.pinion.errors.pitch_errors[0].error_m: expected a tooth error"},
       {"errors: {profile_slopes: [{flank: cw, slope_m: 1e300}]}", "gears.pinion.errors.profile_slopes[0].slope_m: expected a tooth error"},
-      {"errors: {eccentricity: {eccentricity_m: 1e300}}", "gears.pinion.errors.eccentricity.eccentricity_m: expected an eccentricity in [0, 0.01] m"},
+      {"errors: {eccentricity: {eccentricity_m: 1e300}}",
+       "gears.pinion.errors.eccentricity.eccentricity_m: expected an eccentricity in [0, 0.01] m"},
       {"errors: {eccentricity: {eccentricity_m: 1e-5, phase_rad: 1e300}}", "gears.pinion.errors.eccentricity.phase_rad: expected an angle"},
   };
   for (const Case& c : cases) {

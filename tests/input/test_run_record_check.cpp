@@ -43,9 +43,9 @@ json with(const std::string& at, const json& value) {
   return j;
 }
 
-#define EXPECT_REFUSED(summary, message)                                  \
-  do {                                                                    \
-    const std::string e_ = error_of(summary);                             \
+#define EXPECT_REFUSED(summary, message)                                                          \
+  do {                                                                                            \
+    const std::string e_ = error_of(summary);                                                     \
     EXPECT_NE(e_.find(std::string("run/summary.json: key ") + message), std::string::npos) << e_; \
   } while (0)
 
@@ -84,7 +84,8 @@ TEST(RunRecordCheck, TheReportsOtherKeysHaveTheirTypes) {
   EXPECT_REFUSED(with("/gear_pairs/0/stiffness_N_per_m", 1e300), "gear_pairs[0].stiffness_N_per_m: expected a stiffness in (0, 1e+15] N/m");
   EXPECT_REFUSED(with("/gear_pairs/0/reduced_mass_kg", -1), "gear_pairs[0].reduced_mass_kg: expected a reduced mass in (0, 1e+06] kg");
   EXPECT_REFUSED(with("/gear_pairs/0/b", 7), "gear_pairs[0].b: expected a string, got 7");
-  EXPECT_REFUSED(with("/gear_pairs/0/mean_normal_force_N/cw_flanks_of_a", "x"), "gear_pairs[0].mean_normal_force_N.cw_flanks_of_a: expected a number");
+  EXPECT_REFUSED(with("/gear_pairs/0/mean_normal_force_N/cw_flanks_of_a", "x"),
+                 "gear_pairs[0].mean_normal_force_N.cw_flanks_of_a: expected a number");
   EXPECT_REFUSED(with("/gear_pairs/0", 3), "gear_pairs[0]: expected an object");
   EXPECT_REFUSED(with("/gear_pairs", "none"), "gear_pairs: expected a list, got \"none\"");
 }

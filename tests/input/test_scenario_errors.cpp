@@ -17,8 +17,8 @@ const fs::path kPaperSpec = fs::path(GEARSIM_SOURCE_DIR) / "assets/specs/paper_g
 
 // A fresh folder per test for the scenario (and any spec) files it writes.
 fs::path test_dir() {
-  const fs::path d = fs::temp_directory_path() / "gearsim_scenario_errors" /
-                     ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path d =
+      fs::temp_directory_path() / "gearsim_scenario_errors" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(d);
   return d;
 }
@@ -58,10 +58,10 @@ std::string edited(const std::string& from, const std::string& to) {
 }
 
 // The message names the file, its line (when the key is in the file) and the key path.
-#define EXPECT_NAMES(error, ...)                                                         \
-  do {                                                                                   \
-    const std::string e_ = (error);                                                      \
-    EXPECT_NE(e_.find("bad.yaml"), std::string::npos) << e_;                             \
+#define EXPECT_NAMES(error, ...)                                                              \
+  do {                                                                                        \
+    const std::string e_ = (error);                                                           \
+    EXPECT_NE(e_.find("bad.yaml"), std::string::npos) << e_;                                  \
     for (const char* part : {__VA_ARGS__}) EXPECT_NE(e_.find(part), std::string::npos) << e_; \
   } while (0)
 
@@ -70,16 +70,14 @@ TEST(ScenarioErrors, GoodScenarioLoads) { EXPECT_EQ(error_for(kGood), ""); }
 TEST(ScenarioErrors, ASampleRateThatIsNoWholeNumberOfStepsIsRefused) {
   // 2000 Hz at 4e-5 s steps is 12.5 steps per sample: samples are taken at whole steps, so the
   // rows would come at 1923 Hz (13 steps) — refused, naming both whole-step rates nearby.
-  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 4.0e-5}\noutput: {sample_rate_hz: 2000}\n"),
-               "output.sample_rate_hz", "12.5 time steps", "2083.33 Hz", "1923.08 Hz");
+  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 4.0e-5}\noutput: {sample_rate_hz: 2000}\n"), "output.sample_rate_hz",
+               "12.5 time steps", "2083.33 Hz", "1923.08 Hz");
   // Without an output section the default 2000 Hz is checked against the solver's step.
   EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 4.0e-5}\n"), "solver", "defaults to 2000 Hz");
   EXPECT_EQ(error_for(kGood + "solver: {time_step_s: 4.0e-5}\noutput: {sample_rate_hz: 2500}\n"), "");  // 10 steps
 }
 
-TEST(ScenarioErrors, UnknownKey) {
-  EXPECT_NAMES(error_for(kGood + "colour: blue\n"), "bad.yaml:11:", "colour: unknown key");
-}
+TEST(ScenarioErrors, UnknownKey) { EXPECT_NAMES(error_for(kGood + "colour: blue\n"), "bad.yaml:11:", "colour: unknown key"); }
 
 TEST(ScenarioErrors, UnknownKeyInsideABody) {
   EXPECT_NAMES(error_for(edited("mass_kg: 1.0", "mass_kg: 1.0, colour: red")), "bodies[0].colour: unknown key");
@@ -117,10 +115,12 @@ TEST(ScenarioErrors, ParkedNearPairsNeedTheContinuation) {
 
 TEST(ScenarioErrors, TheRowSolverAndTheMassMatrixAreOneOfTwoAndTheMultibodyEnginesOnly) {
   EXPECT_NAMES(error_for(kGood + "verify: {row_solver: lemke}\n"), "bad.yaml:11:", "verify.row_solver", "active_set", "dantzig", "lemke");
-  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {row_solver: dantzig}\n"), "verify.row_solver", "only engine multibody");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {row_solver: dantzig}\n"), "verify.row_solver",
+               "only engine multibody");
   EXPECT_EQ(error_for(kGood + "verify: {row_solver: dantzig}\n"), "");
   EXPECT_NAMES(error_for(kGood + "verify: {mass_matrix: dense}\n"), "bad.yaml:11:", "verify.mass_matrix", "planar", "articulated", "dense");
-  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {mass_matrix: planar}\n"), "verify.mass_matrix", "only engine multibody");
+  EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {mass_matrix: planar}\n"), "verify.mass_matrix",
+               "only engine multibody");
   EXPECT_EQ(error_for(kGood + "verify: {mass_matrix: articulated}\n"), "");
 }
 
@@ -136,7 +136,8 @@ TEST(ScenarioErrors, LocatingContactOnsetsIsTheMultibodyEnginesWithEqualStepInte
   EXPECT_NAMES(error_for(kGood + "verify: {locate_contact_onset: 1}\n"), "verify.locate_contact_onset", "expected true or false");
   EXPECT_NAMES(error_for(kGood + "solver: {engine: rigid_bodies}\nverify: {locate_contact_onset: true}\n"), "verify.locate_contact_onset",
                "only engine multibody");
-  EXPECT_NAMES(error_for(kGood + "solver: {integrator: bdf2}\nverify: {locate_contact_onset: true}\n"), "verify.locate_contact_onset", "bdf2");
+  EXPECT_NAMES(error_for(kGood + "solver: {integrator: bdf2}\nverify: {locate_contact_onset: true}\n"), "verify.locate_contact_onset",
+               "bdf2");
   EXPECT_EQ(error_for(kGood + "solver: {integrator: bdf2}\nverify: {locate_contact_onset: false}\n"), "");
   EXPECT_EQ(error_for(kGood + "solver: {integrator: theta}\nverify: {locate_contact_onset: true}\n"), "");
 }
@@ -149,13 +150,12 @@ TEST(ScenarioErrors, AVerificationSwitchInSolverOrContactIsNamedWithWhereItBelon
 }
 
 TEST(ScenarioErrors, DuplicateBodyName) {
-  EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")),
-               "bodies[1].name", "a second body named 'wheel'");
+  EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")), "bodies[1].name",
+               "a second body named 'wheel'");
 }
 
 TEST(ScenarioErrors, DuplicateJointName) {
-  EXPECT_NAMES(error_for(edited("motors:", "  - {name: hinge, body: wheel}\nmotors:")), "joints[1].name",
-               "a second joint named 'hinge'");
+  EXPECT_NAMES(error_for(edited("motors:", "  - {name: hinge, body: wheel}\nmotors:")), "joints[1].name", "a second joint named 'hinge'");
 }
 
 TEST(ScenarioErrors, JointOfAMissingBody) {
@@ -163,31 +163,28 @@ TEST(ScenarioErrors, JointOfAMissingBody) {
 }
 
 TEST(ScenarioErrors, MotorOfAMissingJoint) {
-  EXPECT_NAMES(error_for(edited("{joint: hinge, target", "{joint: hinj, target")), "motors[0].joint",
-               "no joint named 'hinj'");
+  EXPECT_NAMES(error_for(edited("{joint: hinge, target", "{joint: hinj, target")), "motors[0].joint", "no joint named 'hinj'");
 }
 
 TEST(ScenarioErrors, LoadOfAMissingJoint) {
-  EXPECT_NAMES(error_for(edited("{joint: hinge, constant", "{joint: axle, constant")), "loads[0].joint",
-               "no joint named 'axle'");
+  EXPECT_NAMES(error_for(edited("{joint: hinge, constant", "{joint: axle, constant")), "loads[0].joint", "no joint named 'axle'");
 }
 
 TEST(ScenarioErrors, TransmissionOfAMissingJoint) {
-  EXPECT_NAMES(error_for(kGood + "transmission: {input_joint: hinge, output_joint: shaft, ratio: 2}\n"),
-               "transmission.output_joint", "no joint named 'shaft'");
+  EXPECT_NAMES(error_for(kGood + "transmission: {input_joint: hinge, output_joint: shaft, ratio: 2}\n"), "transmission.output_joint",
+               "no joint named 'shaft'");
 }
 
 TEST(ScenarioErrors, BodyWithBothGearAndMesh) {
-  const std::string e = error_for(edited(
-      "mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
-      "density_kg_m3: 7850, gear: {kind: external, teeth: 20, module_m: 0.002, face_width_m: 0.01}, "
-      "mesh: {file: wheel.stl, unit: mm}"));
+  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
+                                         "density_kg_m3: 7850, gear: {kind: external, teeth: 20, module_m: 0.002, face_width_m: 0.01}, "
+                                         "mesh: {file: wheel.stl, unit: mm}"));
   EXPECT_NAMES(e, "bodies[0]", "more than one shape");
 }
 
 TEST(ScenarioErrors, MissingMeshFileNamesTheResolvedPath) {
-  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
-                                         "density_kg_m3: 7850, mesh: {file: parts/wheel.stl, unit: mm}"));
+  const std::string e = error_for(
+      edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]", "density_kg_m3: 7850, mesh: {file: parts/wheel.stl, unit: mm}"));
   const std::string resolved = (test_dir() / "parts/wheel.stl").string();
   EXPECT_NAMES(e, "bodies[0].mesh.file", "mesh file not found", resolved.c_str());
 }
@@ -196,8 +193,8 @@ TEST(ScenarioErrors, MissingMeshFileNamesTheResolvedPath) {
 // std::filesystem throw filesystem_error (an internal error, exit 3) instead of refusing it.
 TEST(ScenarioErrors, MeshFileNameTooLongForTheSystemIsRefusedAsNotFound) {
   const std::string name = "parts/" + std::string(300, 'w') + ".stl";
-  const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
-                                         "density_kg_m3: 7850, mesh: {file: " + name + ", unit: mm}"));
+  const std::string e = error_for(
+      edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]", "density_kg_m3: 7850, mesh: {file: " + name + ", unit: mm}"));
   EXPECT_NAMES(e, "bodies[0].mesh.file", "mesh file not found");
 }
 
@@ -205,8 +202,8 @@ TEST(ScenarioErrors, AMeshThatIsAFifoOrADeviceIsRefusedAtItsKeyNotWaitedOn) {
   fs::create_directories(test_dir() / "parts");
   ::mkfifo((test_dir() / "parts/fifo.stl").c_str(), 0600);
   for (const std::string& file : {std::string("parts/fifo.stl"), std::string("/dev/zero")}) {
-    const std::string e = error_for(edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]",
-                                           "density_kg_m3: 7850, mesh: {file: " + file + ", unit: mm}"));
+    const std::string e = error_for(
+        edited("mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]", "density_kg_m3: 7850, mesh: {file: " + file + ", unit: mm}"));
     EXPECT_NAMES(e, "bad.yaml:", "bodies[0].mesh.file", "expected a mesh file (a regular file), got a");
   }
 }
@@ -251,23 +248,25 @@ TEST(ScenarioErrors, DriveLoadContactAndSupportNumbersOf1e300AreRefused) {
   // A motor torque limit of 1e300 ran to exit 0 before; the others diverged at the first step.
   EXPECT_NAMES(error_for(edited("max_torque_N_m: 1", "max_torque_N_m: 1.0e300")), "bad.yaml:8:", "motors[0].max_torque_N_m",
                "expected a torque limit in (0, 1e+08] N·m, got 1e+300");
-  EXPECT_NAMES(error_for(edited("target_speed_rad_s: 1", "target_speed_rad_s: -1.0e300")), "bad.yaml:8:",
-               "motors[0].target_speed_rad_s", "expected a motor speed in [-20000, 20000] rad/s");
-  EXPECT_NAMES(error_for(edited("constant_torque_N_m: -0.1", "constant_torque_N_m: -1.0e300")), "bad.yaml:10:",
-               "loads[0].constant_torque_N_m", "expected a torque in [-1e+08, 1e+08] N·m");
+  EXPECT_NAMES(error_for(edited("target_speed_rad_s: 1", "target_speed_rad_s: -1.0e300")), "bad.yaml:8:", "motors[0].target_speed_rad_s",
+               "expected a motor speed in [-20000, 20000] rad/s");
+  EXPECT_NAMES(error_for(edited("constant_torque_N_m: -0.1", "constant_torque_N_m: -1.0e300")),
+               "bad.yaml:10:", "loads[0].constant_torque_N_m", "expected a torque in [-1e+08, 1e+08] N·m");
   EXPECT_NAMES(error_for(edited("constant_torque_N_m: -0.1", "constant_torque_N_m: -0.1, viscous_N_m_s_per_rad: 1.0e300")),
                "loads[0].viscous_N_m_s_per_rad", "expected a viscous coefficient in [0, 1e+08] N·m·s/rad");
   EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]", "axis: [0, 0, 1], bearing: {radial_stiffness_N_per_m: 1.0e300}")),
                "bad.yaml:6:", "joints[0].bearing.radial_stiffness_N_per_m", "expected a stiffness in (0, 1e+13] N/m");
-  EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]", "axis: [0, 0, 1], bearing: {radial_stiffness_N_per_m: 1e8, torsional_damping_N_m_s_per_rad: 1.0e300}")),
+  EXPECT_NAMES(error_for(edited("axis: [0, 0, 1]",
+                                "axis: [0, 0, 1], bearing: {radial_stiffness_N_per_m: 1e8, torsional_damping_N_m_s_per_rad: 1.0e300}")),
                "joints[0].bearing.torsional_damping_N_m_s_per_rad", "expected a torsional damping in [0, 1e+10] N·m·s/rad");
-  for (const auto& [line, key, what] : {std::tuple{"stiffness_N_per_m_per_m: 1.0e300", "contact.stiffness_N_per_m_per_m", "a contact stiffness in (0, 1e+13] N/m per m"},
-                                        {"damping_ratio: 1.0e300", "contact.damping_ratio", "a damping ratio in [0, 10]"},
-                                        {"friction: 1.0e300", "contact.friction", "a friction coefficient in [0, 2]"},
-                                        {"max_flank_departure_m: 1.0e300", "contact.max_flank_departure_m", "a flank departure in (0, 0.01] m"}})
+  for (const auto& [line, key, what] :
+       {std::tuple{"stiffness_N_per_m_per_m: 1.0e300", "contact.stiffness_N_per_m_per_m", "a contact stiffness in (0, 1e+13] N/m per m"},
+        {"damping_ratio: 1.0e300", "contact.damping_ratio", "a damping ratio in [0, 10]"},
+        {"friction: 1.0e300", "contact.friction", "a friction coefficient in [0, 2]"},
+        {"max_flank_departure_m: 1.0e300", "contact.max_flank_departure_m", "a flank departure in (0, 0.01] m"}})
     EXPECT_NAMES(error_for(kGood + "contact: {" + line + "}\n"), "bad.yaml:11:", key, what);
-  EXPECT_NAMES(error_for(kGood + "impulses: [{body: wheel, duration_s: 0.01, torque_N_m: [0, 0, 1.0e300]}]\n"), "bad.yaml:11:",
-               "impulses[0].torque_N_m", "z: expected a torque in [-1e+08, 1e+08] N·m");
+  EXPECT_NAMES(error_for(kGood + "impulses: [{body: wheel, duration_s: 0.01, torque_N_m: [0, 0, 1.0e300]}]\n"),
+               "bad.yaml:11:", "impulses[0].torque_N_m", "z: expected a torque in [-1e+08, 1e+08] N·m");
   EXPECT_NAMES(error_for(kGood + "output: {sample_rate_hz: 1.0e300}\n"), "output.sample_rate_hz", "expected a rate in (0, 1e+07] Hz");
 }
 
@@ -309,8 +308,9 @@ TEST(ScenarioErrors, AnImpulseOutsideTheRunIsRefused) {
   EXPECT_EQ(error_for(with_at("0.05")), "");
   EXPECT_EQ(error_for(with_at("0.099")), "");  // ends at the run's end
   // Unchecked, the run would skip a pulse at 9999 s in a 0.1 s run without a word.
-  EXPECT_NAMES(error_for(with_at("9999")), "bad.yaml:12:", "impulses[0].at_s",
-               "the pulse from 9999 s to 9999.001 s ends after the run's end at 0.1 s: expected a pulse within [0, 0.1] s (the run would skip it)");
+  EXPECT_NAMES(
+      error_for(with_at("9999")), "bad.yaml:12:", "impulses[0].at_s",
+      "the pulse from 9999 s to 9999.001 s ends after the run's end at 0.1 s: expected a pulse within [0, 0.1] s (the run would skip it)");
   EXPECT_NAMES(error_for(with_at("0.0995")), "bad.yaml:12:", "impulses[0].at_s", "ends after the run's end at 0.1 s",
                "(the run would skip its end)");
   EXPECT_NAMES(error_for(with_at("-1")), "bad.yaml:12:", "impulses[0].at_s", "expected a time in [0, 10000] s, got -1");
@@ -327,7 +327,8 @@ TEST(ScenarioErrors, ZeroDuration) {
 }
 
 TEST(ScenarioErrors, NegativeTimeStep) {
-  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: -1e-5}\n"), "solver.time_step_s", "expected a time step in [1e-07, 0.01] s, got -1e-05");
+  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: -1e-5}\n"), "solver.time_step_s",
+               "expected a time step in [1e-07, 0.01] s, got -1e-05");
 }
 
 TEST(ScenarioErrors, HingeAxisOfZeroLength) {
@@ -335,20 +336,28 @@ TEST(ScenarioErrors, HingeAxisOfZeroLength) {
 }
 
 TEST(ScenarioErrors, SampleRateAboveTheStepRate) {
-  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 1.0e-3}\noutput: {sample_rate_hz: 2000}\n"),
-               "output.sample_rate_hz", "above the step rate");
+  EXPECT_NAMES(error_for(kGood + "solver: {time_step_s: 1.0e-3}\noutput: {sample_rate_hz: 2000}\n"), "output.sample_rate_hz",
+               "above the step rate");
 }
 
 // A planetary scenario on a gear-set spec written beside it (sun, planet and ring teeth given).
 // Outlines at 20 µm chordal deviation keep the mesh analysis fast (it samples every outline point).
 std::string planetary_error(int sun, int planet, int ring, int planets) {
   const fs::path d = test_dir();
-  write(d / "set.yaml", "name: s\ndensity_kg_m3: 7850\ndefaults: {module_m: 1.0e-3, face_width_m: 0.01, chordal_deviation_m: 2.0e-5}\ngears:\n"
-                        "  sun: {kind: external, teeth: " + std::to_string(sun) + "}\n"
-                        "  planet: {kind: external, teeth: " + std::to_string(planet) + "}\n"
-                        "  ring: {kind: internal, teeth: " + std::to_string(ring) + ", rim_diameter_m: 0.12}\n");
-  return error_for("duration_s: 0.1\nplanetary:\n  spec: set.yaml\n  sun: sun\n  planet: planet\n  ring: ring\n"
-                   "  planets: " + std::to_string(planets) + "\n  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n");
+  write(d / "set.yaml",
+        "name: s\ndensity_kg_m3: 7850\ndefaults: {module_m: 1.0e-3, face_width_m: 0.01, chordal_deviation_m: 2.0e-5}\ngears:\n"
+        "  sun: {kind: external, teeth: " +
+            std::to_string(sun) +
+            "}\n"
+            "  planet: {kind: external, teeth: " +
+            std::to_string(planet) +
+            "}\n"
+            "  ring: {kind: internal, teeth: " +
+            std::to_string(ring) + ", rim_diameter_m: 0.12}\n");
+  return error_for(
+      "duration_s: 0.1\nplanetary:\n  spec: set.yaml\n  sun: sun\n  planet: planet\n  ring: ring\n"
+      "  planets: " +
+      std::to_string(planets) + "\n  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n");
 }
 
 TEST(ScenarioErrors, RingThatCannotMeshWithThePlanets) {

@@ -76,9 +76,7 @@ TEST(ScenarioFe, GearsWithoutBacklashAreRefused) {
   EXPECT_HAS(error_for(kPaper, {"fe.thinning_per_flank_m=0"}), "fe.thinning_per_flank_m", "backlash");
 }
 
-TEST(ScenarioFe, NoOutputLoadToReflect) {
-  EXPECT_HAS(error_for(kPaper, {"loads=[]"}), "fe.sun_torque_N_m", "no resisting constant load");
-}
+TEST(ScenarioFe, NoOutputLoadToReflect) { EXPECT_HAS(error_for(kPaper, {"loads=[]"}), "fe.sun_torque_N_m", "no resisting constant load"); }
 
 TEST(ScenarioFe, OnlyPlanetaryTrains) {
   const std::string pair = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/spur_pair.yaml";

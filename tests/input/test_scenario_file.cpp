@@ -188,9 +188,7 @@ TEST(ScenarioFile, SpurPairTurnsOppositeWaysSoItsRatioIsNegative) {
 physics::Scenario planet_ring_pair(const std::string& driver, const std::string& driven) {
   const fs::path dir = test::fresh_test_dir();
   const std::string spec = (kSource / "assets/specs/paper_gearset.yaml").string();
-  auto member = [&](const std::string& gear) {
-    return "{name: " + gear + ", gear_from: {spec: " + spec + ", gear: " + gear + "}}";
-  };
+  auto member = [&](const std::string& gear) { return "{name: " + gear + ", gear_from: {spec: " + spec + ", gear: " + gear + "}}"; };
   std::ofstream(dir / "ring_pair.yaml") << "name: ring_pair\nduration_s: 0.01\npair:\n  driver: " << member(driver)
                                         << "\n  driven: " << member(driven) << "\nmotors: [{joint: " << driver
                                         << ", target_speed_rad_s: 20, max_torque_N_m: 10}]\n";
@@ -231,7 +229,8 @@ std::string planetary_from_shapes(const std::string& sun, const std::string& rin
   const std::string spec = (kSource / "assets/specs/paper_gearset.yaml").string();
   auto member = [&](const std::string& gear) { return "{gear_from: {spec: " + spec + ", gear: " + gear + "}}"; };
   return "name: shapes\nduration_s: 0.01\nplanetary:\n  sun: " + sun + "\n  planet: " + member("planet") +
-         "\n  ring: " + (ring.empty() ? member("ring_relieved") : ring) + "\n  planets: 3\n"
+         "\n  ring: " + (ring.empty() ? member("ring_relieved") : ring) +
+         "\n  planets: 3\n"
          "  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n";
 }
 
@@ -243,8 +242,7 @@ physics::Scenario load_text(const std::string& text) {
 
 TEST(ScenarioFile, PlanetaryFromShapesPlacesItsMembersAsFromNames) {
   const std::string spec = (kSource / "assets/specs/paper_gearset.yaml").string();
-  const physics::Scenario s =
-      load_text(planetary_from_shapes("{gear_from: {spec: " + spec + ", gear: sun}}", ""));
+  const physics::Scenario s = load_text(planetary_from_shapes("{gear_from: {spec: " + spec + ", gear: sun}}", ""));
   const physics::Scenario& named = paper();  // the paper scenario: sun, planet, ring_relieved by name
   for (const char* name : {"sun", "planet_0", "planet_1", "planet_2", "ring"}) {
     EXPECT_NEAR((body(s, name).pose.position_m - body(named, name).pose.position_m).norm(), 0.0, 1e-12) << name;
@@ -266,8 +264,7 @@ TEST(ScenarioFile, PlanetaryMembersAreAllNamesOrAllShapesAndTheRingIsInternal) {
   };
   std::string m = refusal(planetary_from_shapes("sun", ""));
   EXPECT_NE(m.find("all as gear names of `spec`, or all as shapes"), std::string::npos) << m;
-  m = refusal(planetary_from_shapes("{gear_from: {spec: " + spec + ", gear: sun}}",
-                                    "{gear_from: {spec: " + spec + ", gear: sun}}"));
+  m = refusal(planetary_from_shapes("{gear_from: {spec: " + spec + ", gear: sun}}", "{gear_from: {spec: " + spec + ", gear: sun}}"));
   EXPECT_NE(m.find("the ring must be an internal gear"), std::string::npos) << m;
 }
 
@@ -293,8 +290,7 @@ TEST(ScenarioOverrides, SetReplacesTopLevelAndNestedValues) {
 }
 
 TEST(ScenarioOverrides, SetReachesListItemsAndNestedMappings) {
-  const physics::Scenario s =
-      load_scenario(kSpur, {"motors[0].target_speed_rad_s=10", "pair.driven.density_kg_m3=7000"});
+  const physics::Scenario s = load_scenario(kSpur, {"motors[0].target_speed_rad_s=10", "pair.driven.density_kg_m3=7000"});
   EXPECT_DOUBLE_EQ(s.motors[0].target_speed_rad_s, 10);
   EXPECT_DOUBLE_EQ(*body(s, "wheel").density_kg_m3, 7000);
 }

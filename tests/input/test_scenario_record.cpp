@@ -31,8 +31,8 @@ std::string error_of(const nlohmann::json& j) {
 }
 
 TEST(ScenarioRecord, EveryAssetScenarioReadsBackToTheSameScenario) {
-  for (const char* name : {"paper_dynamics.yaml", "paper_dynamics_healthy.yaml", "paper_te_loaded.yaml",
-                           "paper_te_rigid.yaml", "spur_pair.yaml"}) {
+  for (const char* name :
+       {"paper_dynamics.yaml", "paper_dynamics_healthy.yaml", "paper_te_loaded.yaml", "paper_te_rigid.yaml", "spur_pair.yaml"}) {
     const physics::Scenario s = load_scenario(asset(name));
     const nlohmann::ordered_json j = scenario_json(s);
     const physics::Scenario back = scenario_from_json(nlohmann::json::parse(j.dump()), "rec.json");
@@ -73,7 +73,8 @@ TEST(ScenarioRecord, TheIntegratorReadsBack) {
   // alone chooses the θ-method; a record without an integrator ran the θ-method.
   physics::Scenario s = load_scenario(asset("paper_dynamics_healthy.yaml"));
   EXPECT_EQ(s.solver.integrator, physics::SolverDef::Integrator::trapezoid_closed);
-  EXPECT_EQ(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.theta=0.6"}).solver.integrator, physics::SolverDef::Integrator::theta);
+  EXPECT_EQ(load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.theta=0.6"}).solver.integrator,
+            physics::SolverDef::Integrator::theta);
   // The rigid-body engine integrates by implicit Euler, and its scenario says so.
   const physics::Scenario rigid = load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"});
   EXPECT_EQ(rigid.solver.integrator, physics::SolverDef::Integrator::theta);
@@ -113,15 +114,17 @@ TEST(ScenarioRecord, TheMassMatrixReadsBack) {
   // verify.mass_matrix: planar (the default) and articulated read back; a record without it ran
   // the articulated-body solves.
   using M = physics::SolverDef::MassMatrix;
-  expect_choice_reads_back("verify", "mass_matrix", [](const physics::Scenario& s) { return s.solver.mass_matrix; }, M::planar,
-                           "articulated", M::articulated, M::articulated, "dense");
+  expect_choice_reads_back(
+      "verify", "mass_matrix", [](const physics::Scenario& s) { return s.solver.mass_matrix; }, M::planar, "articulated", M::articulated,
+      M::articulated, "dense");
 }
 
 TEST(ScenarioRecord, TheRowSolverReadsBack) {
   // verify.row_solver: active_set (the default) and dantzig read back; a record without it ran Dantzig.
   using R = physics::SolverDef::RowSolver;
-  expect_choice_reads_back("verify", "row_solver", [](const physics::Scenario& s) { return s.solver.row_solver; }, R::active_set,
-                           "dantzig", R::dantzig, R::dantzig, "lemke");
+  expect_choice_reads_back(
+      "verify", "row_solver", [](const physics::Scenario& s) { return s.solver.row_solver; }, R::active_set, "dantzig", R::dantzig,
+      R::dantzig, "lemke");
 }
 
 TEST(ScenarioRecord, TheFrictionModelReadsBack) {
@@ -129,8 +132,9 @@ TEST(ScenarioRecord, TheFrictionModelReadsBack) {
   // written before the key existed ran the stick–slip rows; rigid_bodies records stick_slip
   // (Bullet's friction box).
   using F = physics::ContactDef::FrictionModel;
-  expect_choice_reads_back("verify", "friction_model", [](const physics::Scenario& s) { return s.contact.friction_model; },
-                           F::sliding, "stick_slip", F::stick_slip, F::stick_slip, "viscous");
+  expect_choice_reads_back(
+      "verify", "friction_model", [](const physics::Scenario& s) { return s.contact.friction_model; }, F::sliding, "stick_slip",
+      F::stick_slip, F::stick_slip, "viscous");
   EXPECT_EQ(scenario_json(load_scenario(asset("paper_dynamics_healthy.yaml")))["verify"]["friction_model"], "sliding");
   const physics::Scenario rigid = load_scenario(asset("paper_dynamics_healthy.yaml"), {"solver.engine=rigid_bodies"});
   EXPECT_EQ(rigid.contact.friction_model, F::stick_slip);
@@ -208,8 +212,7 @@ TEST(ScenarioRecord, ARecordsGearAndBodyNumbersAreCheckedAgainstTheReadersLimits
   const nlohmann::json good = nlohmann::json::parse(scenario_json(load_scenario(asset("paper_dynamics.yaml"))).dump());
   nlohmann::json j = good;
   j["bodies"][1]["gear"]["module_m"] = 1e300;
-  EXPECT_NE(error_of(j).find("rec.json: key bodies[1].gear.module_m: expected a module in [1e-05, 0.1] m, got 1e+300"),
-            std::string::npos)
+  EXPECT_NE(error_of(j).find("rec.json: key bodies[1].gear.module_m: expected a module in [1e-05, 0.1] m, got 1e+300"), std::string::npos)
       << error_of(j);
   j = good;
   j["bodies"][1]["gear"]["face_width_m"] = 1e300;
@@ -227,12 +230,16 @@ TEST(ScenarioRecord, ARecordsDrivesContactAndSupportsAreCheckedAgainstTheReaders
     return error_of(j);
   };
   using P = nlohmann::json::json_pointer;
-  EXPECT_NE(error_with(P("/motors/0/max_torque_N_m"), 1e300).find("key motors[0].max_torque_N_m: expected a torque limit"), std::string::npos)
+  EXPECT_NE(error_with(P("/motors/0/max_torque_N_m"), 1e300).find("key motors[0].max_torque_N_m: expected a torque limit"),
+            std::string::npos)
       << error_with(P("/motors/0/max_torque_N_m"), 1e300);
-  EXPECT_NE(error_with(P("/loads/0/constant_torque_N_m"), -1e300).find("key loads[0].constant_torque_N_m: expected a torque"), std::string::npos);
-  EXPECT_NE(error_with(P("/contact/friction"), 1e300).find("key contact.friction: expected a friction coefficient in [0, 2]"), std::string::npos);
-  EXPECT_NE(error_with(P("/contact/stiffness_N_per_m_per_m"), 1e300).find("key contact.stiffness_N_per_m_per_m: expected a contact stiffness"),
+  EXPECT_NE(error_with(P("/loads/0/constant_torque_N_m"), -1e300).find("key loads[0].constant_torque_N_m: expected a torque"),
             std::string::npos);
+  EXPECT_NE(error_with(P("/contact/friction"), 1e300).find("key contact.friction: expected a friction coefficient in [0, 2]"),
+            std::string::npos);
+  EXPECT_NE(
+      error_with(P("/contact/stiffness_N_per_m_per_m"), 1e300).find("key contact.stiffness_N_per_m_per_m: expected a contact stiffness"),
+      std::string::npos);
   EXPECT_NE(error_with(P("/transmission/ratio"), 1e300).find("key transmission.ratio: expected a ratio's magnitude"), std::string::npos)
       << error_with(P("/transmission/ratio"), 1e300);
 }
@@ -257,8 +264,7 @@ TEST(ScenarioRecord, TheRunFoldersGearSetCopyIsCheckedAsTheOriginal) {
 
 TEST(ScenarioRecord, AMeshEditedSinceTheRunIsRefused) {
   const fs::path dir = test::fresh_test_dir();
-  for (const char* f : {"pinion.stl", "wheel.stl"})
-    fs::copy_file(fs::path(GEARSIM_SOURCE_DIR) / "assets/gears/spur_pair" / f, dir / f);
+  for (const char* f : {"pinion.stl", "wheel.stl"}) fs::copy_file(fs::path(GEARSIM_SOURCE_DIR) / "assets/gears/spur_pair" / f, dir / f);
   std::string text;
   {
     std::ifstream in(asset("spur_pair.yaml"));

@@ -16,8 +16,8 @@ namespace test_scenario_stiffness_tables {
 namespace fs = std::filesystem;
 
 fs::path test_dir() {
-  const fs::path d = fs::temp_directory_path() / "gearsim_stiffness_tables" /
-                     ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path d =
+      fs::temp_directory_path() / "gearsim_stiffness_tables" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
   fs::create_directories(d);
   return d;
 }
@@ -28,15 +28,18 @@ void write(const fs::path& p, const std::string& text) { std::ofstream(p) << tex
 // under contact.stiffness_tables (line 5 on), saved as bad.yaml beside the CSV files.
 fs::path scenario(const std::string& entries) {
   const fs::path p = test_dir() / "bad.yaml";
-  write(p, "name: t\n"
-           "duration_s: 0.01\n"
-           "contact:\n"
-           "  stiffness_tables:\n" +
-               entries +
-               "planetary:\n"
-               "  spec: " + std::string(GEARSIM_SOURCE_DIR) + "/assets/specs/paper_gearset.yaml\n"
-               "  ring: ring_relieved\n"
-               "  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n");
+  write(p,
+        "name: t\n"
+        "duration_s: 0.01\n"
+        "contact:\n"
+        "  stiffness_tables:\n" +
+            entries +
+            "planetary:\n"
+            "  spec: " +
+            std::string(GEARSIM_SOURCE_DIR) +
+            "/assets/specs/paper_gearset.yaml\n"
+            "  ring: ring_relieved\n"
+            "  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n");
   return p;
 }
 
@@ -75,14 +78,14 @@ TEST(ScenarioStiffnessTables, BodyNameSelectsOnePair) {
 }
 
 TEST(ScenarioStiffnessTables, MissingFile) {
-  EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: nowhere.csv}\n")), "bad.yaml:5:",
-             "contact.stiffness_tables[0].file", "stiffness table not found", "nowhere.csv");
+  EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: nowhere.csv}\n")), "bad.yaml:5:", "contact.stiffness_tables[0].file",
+             "stiffness table not found", "nowhere.csv");
 }
 
 TEST(ScenarioStiffnessTables, UnsortedRadiiNameTheCsvLine) {
   write(test_dir() / "sun.csv", "radius_a_m,stiffness_N_per_m_per_m\n0.0110,1.2e10\n0.0125,1.4e10\n0.0120,1.4e10\n0.0131,1e10\n");
-  EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: sun.csv}\n")), "bad.yaml:5:",
-             "sun.csv:4:", "radii must increase strictly");
+  EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: sun.csv}\n")),
+             "bad.yaml:5:", "sun.csv:4:", "radii must increase strictly");
 }
 
 TEST(ScenarioStiffnessTables, NonPositiveStiffness) {
@@ -117,18 +120,18 @@ TEST(ScenarioStiffnessTables, TableOnTheRingCoversItsActiveFlank) {
 
 TEST(ScenarioStiffnessTables, UnknownKey) {
   write(test_dir() / "sun.csv", kSunTable);
-  EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: sun.csv, smoothing: 3}\n")), "bad.yaml:5:",
-             "contact.stiffness_tables[0].smoothing: unknown key");
+  EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: sun.csv, smoothing: 3}\n")),
+             "bad.yaml:5:", "contact.stiffness_tables[0].smoothing: unknown key");
 }
 
 TEST(ScenarioStiffnessTables, BodyStiffnessIsReadAndMustBePositive) {
   write(test_dir() / "sun.csv", kSunTable);
-  const physics::Scenario s =
-      load_scenario(scenario("    - {gears: [sun, planet], file: sun.csv, body_stiffness_N_per_m: 1.35e8}\n"));
+  const physics::Scenario s = load_scenario(scenario("    - {gears: [sun, planet], file: sun.csv, body_stiffness_N_per_m: 1.35e8}\n"));
   ASSERT_FALSE(s.contact.stiffness_tables.empty());
   EXPECT_DOUBLE_EQ(s.contact.stiffness_tables[0].body_stiffness_N_per_m, 1.35e8);
   EXPECT_HAS(error_for(scenario("    - {gears: [sun, planet], file: sun.csv, body_stiffness_N_per_m: 0}\n")),
-             "bad.yaml:5:", "contact.stiffness_tables[0].body_stiffness_N_per_m", "expected a stiffness in (0, 1e+13] N/m, got 0 (omit the key for rigid gear bodies)");
+             "bad.yaml:5:", "contact.stiffness_tables[0].body_stiffness_N_per_m",
+             "expected a stiffness in (0, 1e+13] N/m, got 0 (omit the key for rigid gear bodies)");
 }
 
 TEST(ScenarioStiffnessTables, GearsThatDoNotMesh) {
@@ -156,7 +159,7 @@ TEST(ScenarioStiffnessTables, PaperTeLoadedIsTheRigidSunLoadedFaultyRun) {
   EXPECT_DOUBLE_EQ(s.loads[0].constant_torque_N_m, -20.0);
   EXPECT_EQ(s.bodies[1].name, "planet_0");
   EXPECT_EQ(s.bodies[1].gear->name, "planet_faulty");
-  EXPECT_TRUE(s.contact.stiffness_tables.empty());     // the constant ISO stiffness
+  EXPECT_TRUE(s.contact.stiffness_tables.empty());  // the constant ISO stiffness
 }
 
 }  // namespace test_scenario_stiffness_tables

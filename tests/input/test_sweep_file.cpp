@@ -39,13 +39,13 @@ const std::string kHead = "name: t\nscenario: " + kScenario + "\n";
 
 TEST(SweepFile, GridAxesAndCollectAreRead) {
   const fs::path p = write(test::fresh_test_dir(), kHead +
-                                                      "set: [\"duration_s=0.2\"]\n"
-                                                      "grid:\n"
-                                                      "  motors[0].target_speed_rad_s: {from: 10, to: 100, steps: 4}\n"
-                                                      "  loads[0].constant_torque_N_m: [-1, 0.1, 2e-5]\n"
-                                                      "collect:\n"
-                                                      "  summary: [bodies.wheel.mean_speed_rad_s]\n"
-                                                      "  metrics: [dynamic_factor, rms_dynamic_te_rad]\n");
+                                                       "set: [\"duration_s=0.2\"]\n"
+                                                       "grid:\n"
+                                                       "  motors[0].target_speed_rad_s: {from: 10, to: 100, steps: 4}\n"
+                                                       "  loads[0].constant_torque_N_m: [-1, 0.1, 2e-5]\n"
+                                                       "collect:\n"
+                                                       "  summary: [bodies.wheel.mean_speed_rad_s]\n"
+                                                       "  metrics: [dynamic_factor, rms_dynamic_te_rad]\n");
   const SweepFile f = load_sweep_file(p);
   EXPECT_TRUE(f.grid);
   EXPECT_EQ(f.case_count, 12u);  // 4 × 3

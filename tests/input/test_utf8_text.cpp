@@ -18,23 +18,21 @@ TEST(Utf8Text, ValidSequencesOfOneToFourBytesPass) {
   EXPECT_TRUE(is_utf8(""));
   EXPECT_TRUE(is_utf8("sun_planet 0"));
   EXPECT_TRUE(is_utf8("r\xc3\xa9sum\xc3\xa9 \xe2\x82\xac \xf0\x9d\x84\x9e"));  // é, €, U+1D11E
-  EXPECT_TRUE(is_utf8("\xf4\x8f\xbf\xbf"));                                 // U+10FFFF, the last code point
+  EXPECT_TRUE(is_utf8("\xf4\x8f\xbf\xbf"));  // U+10FFFF, the last code point
 }
 
 TEST(Utf8Text, InvalidSequencesAreFoundAtTheirFirstByte) {
-  EXPECT_EQ(invalid_utf8_at("ab\xff"), 2u);                // never in UTF-8
-  EXPECT_EQ(invalid_utf8_at("a\x80"), 1u);                 // a continuation byte alone
-  EXPECT_EQ(invalid_utf8_at("a\xe2\x82"), 1u);             // a truncated sequence
-  EXPECT_EQ(invalid_utf8_at("\xc0\xaf"), 0u);              // overlong '/'
-  EXPECT_EQ(invalid_utf8_at("x\xe0\x80\xaf"), 1u);         // overlong, three bytes
-  EXPECT_EQ(invalid_utf8_at("\xed\xa0\x80"), 0u);          // a surrogate (U+D800)
-  EXPECT_EQ(invalid_utf8_at("\xf4\x90\x80\x80"), 0u);      // past U+10FFFF
-  EXPECT_EQ(invalid_utf8_at("gear\xe9"), 4u);              // Latin-1 é
+  EXPECT_EQ(invalid_utf8_at("ab\xff"), 2u);  // never in UTF-8
+  EXPECT_EQ(invalid_utf8_at("a\x80"), 1u);  // a continuation byte alone
+  EXPECT_EQ(invalid_utf8_at("a\xe2\x82"), 1u);  // a truncated sequence
+  EXPECT_EQ(invalid_utf8_at("\xc0\xaf"), 0u);  // overlong '/'
+  EXPECT_EQ(invalid_utf8_at("x\xe0\x80\xaf"), 1u);  // overlong, three bytes
+  EXPECT_EQ(invalid_utf8_at("\xed\xa0\x80"), 0u);  // a surrogate (U+D800)
+  EXPECT_EQ(invalid_utf8_at("\xf4\x90\x80\x80"), 0u);  // past U+10FFFF
+  EXPECT_EQ(invalid_utf8_at("gear\xe9"), 4u);  // Latin-1 é
 }
 
-TEST(Utf8Text, MessagesQuoteInvalidBytesAsHex) {
-  EXPECT_EQ(escaped_bytes("gear\xe9 \xc3\xa9"), "gear\\xE9 \xc3\xa9");
-}
+TEST(Utf8Text, MessagesQuoteInvalidBytesAsHex) { EXPECT_EQ(escaped_bytes("gear\xe9 \xc3\xa9"), "gear\\xE9 \xc3\xa9"); }
 
 TEST(Utf8Text, TheFirstKeyOrValueThatIsNotUtf8IsNamedWithItsLine) {
   const YAML::Node root = parse_yaml_mapping("name: ok\nbodies:\n  - {name: \"w\xff\"}\n", "f.yaml");

@@ -153,8 +153,10 @@ TEST(PaperGearbox, HealthySetHasOnlyRotationalSinglesAndTranslationalPairs) {
   const Solved s = solve(asset("paper_dynamics_healthy.yaml"));
   EXPECT_EQ(s.modes.free_coordinates, 6);  // sun x, y; carrier turn; three planet turns
   for (const linear::ModeGroup& g : s.modes.groups) {
-    if (g.type == ModeType::Rotational) EXPECT_EQ(g.multiplicity, 1) << g.frequency_hz;
-    else EXPECT_TRUE(g.type == ModeType::Translational && g.multiplicity == 2) << linear::to_string(g.type) << " " << g.frequency_hz;
+    if (g.type == ModeType::Rotational)
+      EXPECT_EQ(g.multiplicity, 1) << g.frequency_hz;
+    else
+      EXPECT_TRUE(g.type == ModeType::Translational && g.multiplicity == 2) << linear::to_string(g.type) << " " << g.frequency_hz;
   }
   // The flawed planet lowers its own sun mesh's mean stiffness and splits the pairs.
   const Solved f = solve(asset("paper_dynamics.yaml"));
@@ -190,8 +192,8 @@ TEST(CadPlanetary, McadSetHasRotationalModesAndTranslationalNearPairs) {
         nearest = std::min(nearest, std::abs(s.modes.modes[j].frequency_hz - m.frequency_hz));
     EXPECT_LT(nearest, 1e-3 * m.frequency_hz) << m.frequency_hz;
   }
-  EXPECT_EQ(rotational, 4);       // carrier turn + three planet turns, the sun held by its motor
-  EXPECT_EQ(translational, 8);    // sun x, y and the planets' x, y: four pairs
+  EXPECT_EQ(rotational, 4);  // carrier turn + three planet turns, the sun held by its motor
+  EXPECT_EQ(translational, 8);  // sun x, y and the planets' x, y: four pairs
 }
 
 }  // namespace test_modes

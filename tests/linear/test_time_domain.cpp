@@ -24,9 +24,9 @@
 namespace gearsim {
 namespace test_time_domain {
 
-constexpr double kPulseAt_s = 0.02;      // after the loads' 10 ms ramps
-constexpr double kPulse_s = 1e-4;        // flat spectrum to ≈ 6 kHz
-constexpr int kEvery = 10;               // record every 10th 2 µs step: 50 kHz
+constexpr double kPulseAt_s = 0.02;  // after the loads' 10 ms ramps
+constexpr double kPulse_s = 1e-4;  // flat spectrum to ≈ 6 kHz
+constexpr int kEvery = 10;  // record every 10th 2 µs step: 50 kHz
 
 // Body coordinates after the pulse, every kEvery steps.
 class Recorder : public sim::Observer {
@@ -37,8 +37,10 @@ class Recorder : public sim::Observer {
     std::vector<double> row;
     for (const physics::BodyState& b : w.bodies()) {
       if (!only_.empty() && std::find(only_.begin(), only_.end(), b.name) == only_.end()) continue;
-      if (turns_) row.push_back(b.angle_rad);
-      else row.push_back(b.position_m.x()), row.push_back(b.position_m.y());
+      if (turns_)
+        row.push_back(b.angle_rad);
+      else
+        row.push_back(b.position_m.x()), row.push_back(b.position_m.y());
     }
     rows.push_back(row);
   }
@@ -64,7 +66,8 @@ std::vector<double> summed_spectrum(const std::vector<std::vector<double>>& rows
     const double nn = static_cast<double>(n), slope = (nn * sty - st * sy) / (nn * stt - st * st), icept = (sy - slope * st) / nn;
     std::vector<double> x(n);
     for (std::size_t i = 0; i < n; ++i)
-      x[i] = (rows[i][s] - icept - slope * static_cast<double>(i)) * (0.5 - 0.5 * std::cos(2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n - 1)));
+      x[i] = (rows[i][s] - icept - slope * static_cast<double>(i)) *
+             (0.5 - 0.5 * std::cos(2 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n - 1)));
     std::vector<double> mag(total.size());
     double top = 0;
     for (int f = f0; f <= f1; ++f) {
@@ -93,25 +96,25 @@ void expect_peaks_at_modes(const std::vector<std::string>& pulse_sets, bool turn
   std::vector<double> peaks;
   linear::ModalAnalysis modes;
   for (const std::string& pulses : pulse_sets) {
-  const std::filesystem::path dir = test::fresh_test_dir();
-  const auto file = test::asset_scenario_copy(
-      asset, dir, {{"  damping_ratio: 0.01", "  damping_ratio: 0.001"}, {"loads:", "impulses:\n" + pulses + "loads:"}});
-  physics::Scenario s = input::load_scenario(file, {"duration_s=0.14", "output.per_step_log=false"});
-  {
-    const physics::World w(s);
-    modes = linear::solve_modes(linear::build_lumped_model(w, s, {}));
-  }
-  Recorder rec(turns, bodies);
-  sim::simulate(s, {&rec});
-  const int f0 = 300, f1 = 3200;
-  const std::vector<double> spec = summed_spectrum(rec.rows, 1.0 / (kEvery * s.solver.time_step_s), f0, f1);
-  // Peaks: local maxima above 2 % of the largest, refined by a parabola through three points.
-  const double top = *std::max_element(spec.begin(), spec.end());
-  for (std::size_t k = 1; k + 1 < spec.size(); ++k)
-    if (spec[k] > spec[k - 1] && spec[k] >= spec[k + 1] && spec[k] > 0.02 * top) {
-      const double a = spec[k - 1], b = spec[k], c = spec[k + 1];
-      peaks.push_back(f0 + static_cast<double>(k) + 0.5 * (a - c) / (a - 2 * b + c));
+    const std::filesystem::path dir = test::fresh_test_dir();
+    const auto file = test::asset_scenario_copy(
+        asset, dir, {{"  damping_ratio: 0.01", "  damping_ratio: 0.001"}, {"loads:", "impulses:\n" + pulses + "loads:"}});
+    physics::Scenario s = input::load_scenario(file, {"duration_s=0.14", "output.per_step_log=false"});
+    {
+      const physics::World w(s);
+      modes = linear::solve_modes(linear::build_lumped_model(w, s, {}));
     }
+    Recorder rec(turns, bodies);
+    sim::simulate(s, {&rec});
+    const int f0 = 300, f1 = 3200;
+    const std::vector<double> spec = summed_spectrum(rec.rows, 1.0 / (kEvery * s.solver.time_step_s), f0, f1);
+    // Peaks: local maxima above 2 % of the largest, refined by a parabola through three points.
+    const double top = *std::max_element(spec.begin(), spec.end());
+    for (std::size_t k = 1; k + 1 < spec.size(); ++k)
+      if (spec[k] > spec[k - 1] && spec[k] >= spec[k + 1] && spec[k] > 0.02 * top) {
+        const double a = spec[k - 1], b = spec[k], c = spec[k + 1];
+        peaks.push_back(f0 + static_cast<double>(k) + 0.5 * (a - c) / (a - 2 * b + c));
+      }
   }
   int checked = 0;
   for (const linear::ModeGroup& g : modes.groups) {
@@ -119,15 +122,16 @@ void expect_peaks_at_modes(const std::vector<std::string>& pulse_sets, bool turn
     double nearest = 0;
     for (double p : peaks)
       if (std::abs(p - g.frequency_hz) < std::abs(nearest - g.frequency_hz)) nearest = p;
-    std::printf("  %-13s ×%d  modes %8.1f Hz   time domain %8.1f Hz   %+6.2f %%\n", linear::to_string(g.type), g.multiplicity, g.frequency_hz,
-                nearest, 100 * (nearest / g.frequency_hz - 1));
+    std::printf("  %-13s ×%d  modes %8.1f Hz   time domain %8.1f Hz   %+6.2f %%\n", linear::to_string(g.type), g.multiplicity,
+                g.frequency_hz, nearest, 100 * (nearest / g.frequency_hz - 1));
     EXPECT_NEAR(nearest, g.frequency_hz, 0.02 * g.frequency_hz) << linear::to_string(g.type) << " mode";
     // The peak is this mode's, not a neighbour's of another type (the 1896 Hz translational pair
     // sits 1.8 % below the 1930 Hz rotational mode).
     const linear::ModeGroup* closest = &g;
     for (const linear::ModeGroup& o : modes.groups)
       if (std::abs(o.frequency_hz - nearest) < std::abs(closest->frequency_hz - nearest)) closest = &o;
-    EXPECT_EQ(closest, &g) << "the peak at " << nearest << " Hz is the " << linear::to_string(closest->type) << " mode's at " << closest->frequency_hz << " Hz";
+    EXPECT_EQ(closest, &g) << "the peak at " << nearest << " Hz is the " << linear::to_string(closest->type) << " mode's at "
+                           << closest->frequency_hz << " Hz";
     ++checked;
   }
   EXPECT_GE(checked, type == linear::ModeType::Planet ? 1 : 3);
@@ -154,8 +158,9 @@ TEST(TimeDomain, ATorquePulseOnTheRingRingsAtTheRotationalModes) {
   // on the ring) open the zero-backlash meshes of this ζ = 0.001 set and shift its peaks (the
   // 1475.7 Hz mode to 1507.7 Hz) unless the step's own damping (implicit Euler, ≈ ω·h/2) keeps the
   // response small; at this size every integrator finds the modes (docs/solver.md).
-  expect_peaks_at_modes({pulse_on("ring", "torque_N_m: [0, 0, 20]") + pulse_on("sun", "torque_N_m: [0, 0, 2]") + pulse_on("carrier", carrier)}, true,
-                        linear::ModeType::Rotational, "lin_parker_1999.yaml", {"sun", "carrier", "ring"});
+  expect_peaks_at_modes(
+      {pulse_on("ring", "torque_N_m: [0, 0, 20]") + pulse_on("sun", "torque_N_m: [0, 0, 2]") + pulse_on("carrier", carrier)}, true,
+      linear::ModeType::Rotational, "lin_parker_1999.yaml", {"sun", "carrier", "ring"});
 }
 
 TEST(TimeDomain, ForcePulsesOnSunAndRingRingAtTheTranslationalModes) {

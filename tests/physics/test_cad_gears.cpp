@@ -30,10 +30,9 @@ const double kForce_N = 100;
 // ≤ 0: none given (the macro derives it from the recognised gears).
 // `driver_file`, `driven_file` in tests/data/mcad/ and the driven gear's load torque (N·m, about
 // +z) default to the external pair z 12 → z 24.
-fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, double centre_distance_m,
-                        const std::string& unit = "mm", const std::string& driver_file = "mcad_m1_z12_a20_f5_b005.stl",
-                        const std::string& driven_file = "mcad_m1_z24_a20_f5_b005.stl",
-                        double load_N_m = kForce_N * kRbWheel) {
+fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, double centre_distance_m, const std::string& unit = "mm",
+                        const std::string& driver_file = "mcad_m1_z12_a20_f5_b005.stl",
+                        const std::string& driven_file = "mcad_m1_z24_a20_f5_b005.stl", double load_N_m = kForce_N * kRbWheel) {
   const fs::path dir = test::fresh_test_dir();  // ctest runs this file's cases in parallel
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
   std::ofstream f(dir / "pair.yaml");
@@ -41,24 +40,24 @@ fs::path mcad_pair_file(const std::string& pinion, const std::string& wheel, dou
        "solver: {time_step_s: 1.0e-5}\n"
        "output: {sample_rate_hz: 2000, per_step_log: false}\n"
        "pair:\n"
-       "  driver: {name: pinion, mesh: {file: " << data << driver_file << ", unit: " << unit << pinion
+       "  driver: {name: pinion, mesh: {file: "
+    << data << driver_file << ", unit: " << unit << pinion
     << "}, density_kg_m3: 7850}\n"
-       "  driven: {name: wheel, mesh: {file: " << data << driven_file << ", unit: " << unit << wheel
-    << "}, density_kg_m3: 7850}\n";
+       "  driven: {name: wheel, mesh: {file: "
+    << data << driven_file << ", unit: " << unit << wheel << "}, density_kg_m3: 7850}\n";
   if (centre_distance_m > 0) f << "  centre_distance_m: " << centre_distance_m << "\n";
   f << "motors: [{joint: pinion, target_speed_rad_s: 20, ramp_time_s: 0.01, max_torque_N_m: 5}]\n"
-       "loads: [{joint: wheel, constant_torque_N_m: " << load_N_m << ", ramp_time_s: 0.01}]\n";
+       "loads: [{joint: wheel, constant_torque_N_m: "
+    << load_N_m << ", ramp_time_s: 0.01}]\n";
   return dir / "pair.yaml";
 }
 
-Scenario mcad_pair(const std::string& pinion, const std::string& wheel, double centre_distance_m,
-                   const std::string& unit = "mm") {
+Scenario mcad_pair(const std::string& pinion, const std::string& wheel, double centre_distance_m, const std::string& unit = "mm") {
   return input::load_scenario(mcad_pair_file(pinion, wheel, centre_distance_m, unit), {});
 }
 
 // The InputError reading the scenario or building its World throws ("" when both succeed).
-std::string refusal(const std::string& pinion, const std::string& wheel, double centre_distance_m,
-                    const std::string& unit = "mm") {
+std::string refusal(const std::string& pinion, const std::string& wheel, double centre_distance_m, const std::string& unit = "mm") {
   try {
     World w(mcad_pair(pinion, wheel, centre_distance_m, unit));
   } catch (const InputError& e) {
@@ -94,11 +93,11 @@ TEST(CadGears, McadPairCarriesItsLoadAlongTheLineOfAction) {
 TEST(CadGears, McadRingFromThePairMacroTurnsWithItsPinionAndCarriesTheLoad) {
   const double rb_ring = 0.5 * 48e-3 * std::cos(20 * M_PI / 180);
   // The ring turns +z with the pinion; its load resists: −F·r_b.
-  const Scenario s = input::load_scenario(mcad_pair_file("", "", 12e-3, "mm", "mcad_m1_z24_a20_f5_b005.stl",
-                                                       "mcadring_m1_z48_a20_f5_b005.stl", -kForce_N * rb_ring), {});
+  const Scenario s = input::load_scenario(
+      mcad_pair_file("", "", 12e-3, "mm", "mcad_m1_z24_a20_f5_b005.stl", "mcadring_m1_z48_a20_f5_b005.stl", -kForce_N * rb_ring), {});
   ASSERT_TRUE(s.transmission);
   EXPECT_DOUBLE_EQ(s.transmission->ratio, 2.0);
-  EXPECT_NEAR(s.bodies[1].pose.position_m.norm(), 0.0, 1e-15);                 // the ring
+  EXPECT_NEAR(s.bodies[1].pose.position_m.norm(), 0.0, 1e-15);  // the ring
   EXPECT_NEAR((s.bodies[0].pose.position_m - Eigen::Vector3d(12e-3, 0, 0)).norm(), 0.0, 1e-15);
   World w(s);
   sim::RunBounds bounds(s, w);
@@ -131,17 +130,21 @@ TEST(CadGears, TheTipCornersOfAFreecadRingCarryWhatTheirSpringsGive) {
   const std::string data = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/freecad/";
   const double rb_ring = 0.5 * 24e-3 * std::cos(20 * M_PI / 180);
   const fs::path dir = test::fresh_test_dir();
-  std::ofstream(dir / "pair.yaml")
-      << "name: freecad_internal_pair\nduration_s: 0.15\n"
-         "solver: {time_step_s: 5.0e-6}\n"
-         "output: {sample_rate_hz: 2000, per_step_log: false}\n"
-         "contact: {stiffness_N_per_m_per_m: 1.4e10, damping_ratio: 0.05, friction: 0.05}\n"
-         "pair:\n"
-         "  driver: {name: pinion, density_kg_m3: 7850, mesh: {file: " << data << "fc_m1_z12_a20_face4_l0p02a15.stl, unit: mm, teeth: 12, tooth0_deg: 0}}\n"
-         "  driven: {name: ring, density_kg_m3: 7850, mesh: {file: " << data << "fcring_m1_z24_a20_face4_l0p02a15.stl, unit: mm, teeth: 24, tooth0_deg: 0}}\n"
-         "  centre_distance_m: 0.006\n"
-         "motors: [{joint: pinion, target_speed_rad_s: 20, ramp_time_s: 0.05, max_torque_N_m: 1.69245}]\n"
-         "loads: [{joint: ring, constant_torque_N_m: " << -kForce_N * rb_ring << "}]\n";
+  std::ofstream(dir / "pair.yaml") << "name: freecad_internal_pair\nduration_s: 0.15\n"
+                                      "solver: {time_step_s: 5.0e-6}\n"
+                                      "output: {sample_rate_hz: 2000, per_step_log: false}\n"
+                                      "contact: {stiffness_N_per_m_per_m: 1.4e10, damping_ratio: 0.05, friction: 0.05}\n"
+                                      "pair:\n"
+                                      "  driver: {name: pinion, density_kg_m3: 7850, mesh: {file: "
+                                   << data
+                                   << "fc_m1_z12_a20_face4_l0p02a15.stl, unit: mm, teeth: 12, tooth0_deg: 0}}\n"
+                                      "  driven: {name: ring, density_kg_m3: 7850, mesh: {file: "
+                                   << data
+                                   << "fcring_m1_z24_a20_face4_l0p02a15.stl, unit: mm, teeth: 24, tooth0_deg: 0}}\n"
+                                      "  centre_distance_m: 0.006\n"
+                                      "motors: [{joint: pinion, target_speed_rad_s: 20, ramp_time_s: 0.05, max_torque_N_m: 1.69245}]\n"
+                                      "loads: [{joint: ring, constant_torque_N_m: "
+                                   << -kForce_N * rb_ring << "}]\n";
   const Scenario s = input::load_scenario(dir / "pair.yaml", {});
   World w(s);
   sim::RunBounds bounds(s, w);
@@ -170,13 +173,19 @@ TEST(CadGears, APlanetarySetWithoutRecognisedInvolutesRunsAtItsGivenCentreDistan
   const std::string mcad = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
   auto file = [&](const std::string& extra) {
     const fs::path dir = test::fresh_test_dir();
-    std::ofstream(dir / "set.yaml")
-        << "name: mixed_set\nduration_s: 0.01\nsolver: {time_step_s: 1.0e-5}\n"
-           "planetary:\n"
-           "  sun: {density_kg_m3: 7850, mesh: {file: " << fc << "fc_m1_z12_a20_face4_l0p02a15.stl, unit: mm}}\n"
-           "  planet: {density_kg_m3: 7850, mesh: {file: " << mcad << "mcad_m1_z18_a20_f5_b005.stl, unit: mm}}\n"
-           "  ring: {density_kg_m3: 7850, mesh: {file: " << mcad << "mcadring_m1_z48_a20_f5_b005.stl, unit: mm}}\n"
-           "  planets: 3\n  carrier: {mass_kg: 0.1, inertia_z_kg_m2: 5.0e-5}\n" << extra;
+    std::ofstream(dir / "set.yaml") << "name: mixed_set\nduration_s: 0.01\nsolver: {time_step_s: 1.0e-5}\n"
+                                       "planetary:\n"
+                                       "  sun: {density_kg_m3: 7850, mesh: {file: "
+                                    << fc
+                                    << "fc_m1_z12_a20_face4_l0p02a15.stl, unit: mm}}\n"
+                                       "  planet: {density_kg_m3: 7850, mesh: {file: "
+                                    << mcad
+                                    << "mcad_m1_z18_a20_f5_b005.stl, unit: mm}}\n"
+                                       "  ring: {density_kg_m3: 7850, mesh: {file: "
+                                    << mcad
+                                    << "mcadring_m1_z48_a20_f5_b005.stl, unit: mm}}\n"
+                                       "  planets: 3\n  carrier: {mass_kg: 0.1, inertia_z_kg_m2: 5.0e-5}\n"
+                                    << extra;
     return dir / "set.yaml";
   };
   try {
@@ -361,8 +370,8 @@ TEST(CadGears, MeshesWithoutTeethOrCentreDistanceSetThemselvesUp) {
   // backlash as an arc on the pitch circle) thins each tooth by half of it, 0.025 mm: 0.05 mm of
   // circular backlash for the pair at 18 mm, 0.05·cos 20° along the line of action. The
   // zero-backlash distance closes it: Δa = j_n / (2 sin α_w) to first order, 0.069 mm.
-  const InvolutePair at18 = involute_pair(involute_teeth(*s.bodies[0].mesh->recognised),
-                                          involute_teeth(*s.bodies[1].mesh->recognised), 18e-3, "test");
+  const InvolutePair at18 =
+      involute_pair(involute_teeth(*s.bodies[0].mesh->recognised), involute_teeth(*s.bodies[1].mesh->recognised), 18e-3, "test");
   EXPECT_NEAR(at18.normal_backlash_m, 0.05e-3 * std::cos(20 * M_PI / 180), 1e-6);
   EXPECT_NEAR(p.zero_backlash_centre_distance_m, 18e-3 - at18.normal_backlash_m / (2 * std::sin(20 * M_PI / 180)), 2e-6);
   // Placed not tighter than the flank fits can tell (place_pair): their tolerance (MCAD's vertices

@@ -48,16 +48,17 @@ struct NewContacts : sim::Observer {
 };
 
 NewContacts run(bool locate, long& splits) {
-  const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics.yaml",
-                                                   {"duration_s=0.15", "output.per_step_log=false",
-                                                    std::string("verify.locate_contact_onset=") + (locate ? "true" : "false")});
+  const physics::Scenario s = input::load_scenario(
+      kScenarios / "paper_dynamics.yaml",
+      {"duration_s=0.15", "output.per_step_log=false", std::string("verify.locate_contact_onset=") + (locate ? "true" : "false")});
   NewContacts obs;
   const sim::RunSummary r = sim::simulate(s, {&obs});
   EXPECT_EQ(r.status, sim::RunStatus::Completed);
   splits = r.profile.onset_splits;
-  std::printf("  locate_contact_onset %-5s: %ld new contacts after 0.06 s, Σ ½kδ₀² %.3e J, deepest δ₀ %.3e m, %ld splits, "
-              "mean sun–planet 0 force %.4f N\n",
-              locate ? "true" : "false", obs.count, obs.energy_J, obs.deepest_m, splits, obs.force_sum / static_cast<double>(obs.steps));
+  std::printf(
+      "  locate_contact_onset %-5s: %ld new contacts after 0.06 s, Σ ½kδ₀² %.3e J, deepest δ₀ %.3e m, %ld splits, "
+      "mean sun–planet 0 force %.4f N\n",
+      locate ? "true" : "false", obs.count, obs.energy_J, obs.deepest_m, splits, obs.force_sum / static_cast<double>(obs.steps));
   return obs;
 }
 
@@ -74,7 +75,8 @@ TEST(ContactOnset, NewContactsStartWithTheirSpringNearlyAtRest) {
   // before (closing faster than the search's window per step) still start late.
   EXPECT_LT(on.energy_J, 0.05 * off.energy_J);
   EXPECT_LT(on.deepest_m, off.deepest_m);
-  EXPECT_NEAR(on.force_sum / static_cast<double>(on.steps), off.force_sum / static_cast<double>(off.steps), 1e-3 * off.force_sum / static_cast<double>(off.steps));
+  EXPECT_NEAR(on.force_sum / static_cast<double>(on.steps), off.force_sum / static_cast<double>(off.steps),
+              1e-3 * off.force_sum / static_cast<double>(off.steps));
 }
 
 }  // namespace test_contact_onset

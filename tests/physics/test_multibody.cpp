@@ -57,10 +57,9 @@ TEST(Multibody, ARigidSunSharesItsTorqueEquallyBetweenThreePlanetsAtDefaultSetti
   // The paper's set turned slowly (9 rad/s) against 20 N·m on the carrier, the sun in a rigid
   // hinge, all three planets the healthy gear, frictionless flanks: each sun–planet mesh carries
   // T_sun/(3·r_b,sun) = (20/5)/(3·0.012·cos 20°) = 118.24 N.
-  const physics::Scenario s = input::load_scenario(kScenarios / "paper_te_loaded.yaml",
-                                                   {"duration_s=0.4", "planetary.faulty_planets={}"});
+  const physics::Scenario s = input::load_scenario(kScenarios / "paper_te_loaded.yaml", {"duration_s=0.4", "planetary.faulty_planets={}"});
   ASSERT_EQ(s.solver.engine, physics::SolverEngine::multibody);  // the default
-  MeanForces obs(0.2);                                            // after the 0.1 s ramp
+  MeanForces obs(0.2);  // after the 0.1 s ramp
   const sim::RunSummary r = sim::simulate(s, {&obs});
   ASSERT_EQ(r.status, sim::RunStatus::Completed);
   const double expected = (20.0 / 5.0) / (3 * 0.012 * std::cos(20.0 * M_PI / 180.0));
@@ -107,9 +106,9 @@ TEST(Multibody, TheActiveSetSolvesTheRowsFromTheLastStepAndAgreesWithDantzig) {
   // friction impulse is a fixed multiple of its normal's, which both solve exactly (Dantzig in
   // rounds, the fixed impulses on the right-hand side): within the solves' 1e-9.
   auto run = [](const std::string& row_solver, const std::string& friction, sim::RunSummary& r) {
-    const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml",
-                                                     {"duration_s=0.15", "output.per_step_log=false", "verify.row_solver=" + row_solver,
-                                                      "verify.friction_model=" + friction});
+    const physics::Scenario s = input::load_scenario(
+        kScenarios / "paper_dynamics_healthy.yaml",
+        {"duration_s=0.15", "output.per_step_log=false", "verify.row_solver=" + row_solver, "verify.friction_model=" + friction});
     MeanForces obs(0.07);
     r = sim::simulate(s, {&obs});
     EXPECT_EQ(r.status, sim::RunStatus::Completed) << row_solver << " " << friction;
@@ -118,7 +117,8 @@ TEST(Multibody, TheActiveSetSolvesTheRowsFromTheLastStepAndAgreesWithDantzig) {
   for (const std::string friction : {"stick_slip", "sliding"}) {
     sim::RunSummary ra, rd;
     const MeanForces as = run("active_set", friction, ra), dz = run("dantzig", friction, rd);
-    std::printf("  %s: active set %ld steps by it, %ld by Dantzig\n", friction.c_str(), ra.profile.active_set_solves, ra.profile.dantzig_solves);
+    std::printf("  %s: active set %ld steps by it, %ld by Dantzig\n", friction.c_str(), ra.profile.active_set_solves,
+                ra.profile.dantzig_solves);
     EXPECT_EQ(rd.profile.active_set_solves, 0);
     EXPECT_EQ(rd.profile.dantzig_solves, rd.steps + rd.profile.onset_splits);  // a split step is solved per piece
     EXPECT_EQ(ra.profile.active_set_solves + ra.profile.dantzig_solves, ra.steps + ra.profile.onset_splits);
@@ -146,18 +146,19 @@ TEST(Multibody, TheProfileCountsTheFlankVisitsThatFoundEveryContact) {
     void on_step(const physics::World& w) override { contacts += static_cast<long>(w.contacts().size()); }
   };
   for (const bool coherent : {true, false}) {
-    const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml",
-                                                     {"duration_s=0.02", "output.per_step_log=false",
-                                                      std::string("verify.coherent_search=") + (coherent ? "true" : "false")});
+    const physics::Scenario s = input::load_scenario(
+        kScenarios / "paper_dynamics_healthy.yaml",
+        {"duration_s=0.02", "output.per_step_log=false", std::string("verify.coherent_search=") + (coherent ? "true" : "false")});
     ContactCount count;
     const sim::RunSummary r = sim::simulate(s, {&count});
     ASSERT_EQ(r.status, sim::RunStatus::Completed);
     const auto& v = r.profile.flank_visits;
     const auto per = [&](long c) { return static_cast<double>(c) / static_cast<double>(r.steps); };
-    std::printf("  coherent %d: %ld steps, %.2f contacts a step; flanks a step: %.2f continued (%.2f at a tip circle), %.2f shared, %.2f searched, "
-                "%.2f tracked, %.2f skipped, %.2f renewed, %.2f parked\n",
-                coherent, r.steps, per(count.contacts), per(v.continued), per(v.crossings), per(v.shared), per(v.searched), per(v.tracked),
-                per(v.skipped), per(v.renewed), per(v.parked));
+    std::printf(
+        "  coherent %d: %ld steps, %.2f contacts a step; flanks a step: %.2f continued (%.2f at a tip circle), %.2f shared, %.2f searched, "
+        "%.2f tracked, %.2f skipped, %.2f renewed, %.2f parked\n",
+        coherent, r.steps, per(count.contacts), per(v.continued), per(v.crossings), per(v.shared), per(v.searched), per(v.tracked),
+        per(v.skipped), per(v.renewed), per(v.parked));
     if (!coherent) {
       EXPECT_EQ(v.searched + v.tracked + v.skipped + v.continued + v.renewed + v.shared + v.crossings + v.parked, 0);
       continue;
@@ -201,7 +202,8 @@ TEST(Multibody, ThePlanarMassMatrixGivesTheArticulatedBodySolvesAnswer) {
       set.insert(set.end(), c.settings.begin(), c.settings.end());
       set.insert(set.end(), file.settings.begin(), file.settings.end());
       const physics::Scenario s = input::load_scenario(kScenarios / file.scenario, set);
-      EXPECT_EQ(s.solver.mass_matrix, mass_matrix == "planar" ? physics::SolverDef::MassMatrix::planar : physics::SolverDef::MassMatrix::articulated);
+      EXPECT_EQ(s.solver.mass_matrix,
+                mass_matrix == "planar" ? physics::SolverDef::MassMatrix::planar : physics::SolverDef::MassMatrix::articulated);
       MeanForces obs(rigid ? 0.1 : 0.07);
       const sim::RunSummary r = sim::simulate(s, {&obs});
       EXPECT_EQ(r.status, sim::RunStatus::Completed) << c.name << " " << mass_matrix;
@@ -211,7 +213,8 @@ TEST(Multibody, ThePlanarMassMatrixGivesTheArticulatedBodySolvesAnswer) {
     ASSERT_EQ(pl.force_N.size(), 6u) << c.name;
     ASSERT_GT(pl.n, 0) << c.name;
     EXPECT_NEAR(pl.carrier_speed / static_cast<double>(pl.n), ar.carrier_speed / static_cast<double>(ar.n),
-                1e-9 * std::abs(ar.carrier_speed / static_cast<double>(ar.n))) << c.name;
+                1e-9 * std::abs(ar.carrier_speed / static_cast<double>(ar.n)))
+        << c.name;
     for (const auto& [pair, total] : ar.force_N) {
       const double a = pl.mean(pair), b = ar.mean(pair);
       std::printf("  %s, %-16s %.9f vs %.9f N\n", c.name.c_str(), pair.c_str(), a, b);
@@ -241,8 +244,10 @@ TEST(Multibody, ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEverySt
     w.set_mass_matrix_check(true);
     for (int i = 0; i < 3000; ++i) w.step();
     const physics::World::MassMatrixCheck& c = w.mass_matrix_check();
-    std::printf("  %s: %ld steps checked, max |M·M⁻¹ − I| %.2e, link Jacobians max difference %.2e, free-motion q̈ max difference %.2e of the largest\n",
-                scenario.c_str(), c.steps, c.identity_residual, c.jacobian_difference, c.free_velocity_difference);
+    std::printf(
+        "  %s: %ld steps checked, max |M·M⁻¹ − I| %.2e, link Jacobians max difference %.2e, free-motion q̈ max difference %.2e of the "
+        "largest\n",
+        scenario.c_str(), c.steps, c.identity_residual, c.jacobian_difference, c.free_velocity_difference);
     EXPECT_GE(c.steps, 3000) << scenario;
     EXPECT_LT(c.identity_residual, 1e-13) << scenario;
     EXPECT_LT(c.jacobian_difference, 1e-14) << scenario;
@@ -250,8 +255,9 @@ TEST(Multibody, ThePlanarMassMatrixLinkJacobiansAndFreeMotionAreBulletsAtEverySt
     // The planar kinematics (planar_kinematics.cpp: positions, poses, link velocities in
     // closed form) against Bullet's position step, forward kinematics and link velocities from
     // the same coordinates, at every step.
-    std::printf("  %s: planar kinematics, %ld steps: coordinates %.2e, centres %.2e m, bases %.2e, link velocities %.2e\n", scenario.c_str(),
-                c.kinematics_steps, c.coordinate_difference, c.centre_difference_m, c.basis_difference, c.link_velocity_difference);
+    std::printf("  %s: planar kinematics, %ld steps: coordinates %.2e, centres %.2e m, bases %.2e, link velocities %.2e\n",
+                scenario.c_str(), c.kinematics_steps, c.coordinate_difference, c.centre_difference_m, c.basis_difference,
+                c.link_velocity_difference);
     EXPECT_GE(c.kinematics_steps, 3000) << scenario;
     EXPECT_LT(c.coordinate_difference, 1e-18) << scenario;
     EXPECT_LT(c.centre_difference_m, 1e-15) << scenario;
@@ -292,9 +298,10 @@ TEST(Multibody, TheDofSpaceSolveIsTheRowSpaceSolve) {
     w.set_mass_matrix_check(true);
     for (int i = 0; i < 3000; ++i) w.step();
     const physics::World::MassMatrixCheck& k = w.mass_matrix_check();
-    std::printf("  %s %s: %ld solves compared, max |Δλ| %.2e of the largest; %ld did not settle (%ld of them settled by the row-space solve)\n",
-                c.scenario.c_str(), c.settings.empty() ? "" : c.settings[0].c_str(), k.row_solves_compared, k.row_solve_difference,
-                k.row_solve_fallbacks, k.row_solve_fallbacks_settled);
+    std::printf(
+        "  %s %s: %ld solves compared, max |Δλ| %.2e of the largest; %ld did not settle (%ld of them settled by the row-space solve)\n",
+        c.scenario.c_str(), c.settings.empty() ? "" : c.settings[0].c_str(), k.row_solves_compared, k.row_solve_difference,
+        k.row_solve_fallbacks, k.row_solve_fallbacks_settled);
     EXPECT_GE(k.row_solves_compared, 3000) << c.scenario;
     EXPECT_EQ(k.row_solve_fallbacks_settled, 0) << c.scenario;  // it settles wherever the row-space solve does
     EXPECT_LT(k.row_solve_difference, 1e-9) << c.scenario;
@@ -357,11 +364,12 @@ namespace test_multibody {
 // The angle at t = 0.05 s (ωt = 5) against that, at steps h and h/2 (ω·h = 0.1, 0.05).
 double oscillator_error(const std::string& integrator, double h) {
   const fs::path file = test::fresh_test_dir() / "oscillator.yaml";
-  std::ofstream(file) << "name: oscillator\nduration_s: 0.05\n"
-                         "bodies:\n  - {name: wheel, mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]}\n"
-                         "joints:\n  - {name: hinge, body: wheel, bearing: {radial_stiffness_N_per_m: 1.0e7, torsional_stiffness_N_m_per_rad: 200}}\n"
-                         "loads:\n  - {joint: hinge, constant_torque_N_m: 1}\n"
-                         "output: {sample_rate_hz: 100, per_step_log: false}\n";
+  std::ofstream(file)
+      << "name: oscillator\nduration_s: 0.05\n"
+         "bodies:\n  - {name: wheel, mass_kg: 1.0, principal_inertia_kg_m2: [0.01, 0.01, 0.02]}\n"
+         "joints:\n  - {name: hinge, body: wheel, bearing: {radial_stiffness_N_per_m: 1.0e7, torsional_stiffness_N_m_per_rad: 200}}\n"
+         "loads:\n  - {joint: hinge, constant_torque_N_m: 1}\n"
+         "output: {sample_rate_hz: 100, per_step_log: false}\n";
   const physics::Scenario s = input::load_scenario(file, {"solver.time_step_s=" + std::to_string(h), "solver.integrator=" + integrator});
   struct Angle : sim::Observer {
     double angle = 0, time = 0;

@@ -94,9 +94,12 @@ double breach(const Problem& p, const std::vector<double>& x) {
     worst = std::max({worst, below, above});
     // On a bound or between: w's sign (inside, w = 0).
     const double gap_lo = (x[u] - l) / xs, gap_hi = (h - x[u]) / xs;
-    if (gap_lo > 1e-7 && gap_hi > 1e-7) worst = std::max(worst, std::abs(w[u]) / ws);
-    else if (gap_lo <= 1e-7 && gap_hi > 1e-7) worst = std::max(worst, -w[u] / ws);
-    else if (gap_hi <= 1e-7 && gap_lo > 1e-7) worst = std::max(worst, w[u] / ws);
+    if (gap_lo > 1e-7 && gap_hi > 1e-7)
+      worst = std::max(worst, std::abs(w[u]) / ws);
+    else if (gap_lo <= 1e-7 && gap_hi > 1e-7)
+      worst = std::max(worst, -w[u] / ws);
+    else if (gap_hi <= 1e-7 && gap_lo > 1e-7)
+      worst = std::max(worst, w[u] / ws);
   }
   return worst;
 }
@@ -111,7 +114,8 @@ TEST(RowLcp, GivesDantzigsImpulsesOnTheEnginesKindOfSystem) {
     std::vector<double> x(static_cast<std::size_t>(p.n), 0.0);
     std::vector<RowBound> state(static_cast<std::size_t>(p.n), RowBound::free);
     RowLcpScratch scratch;
-    const int solves = solve_row_lcp(p.n, p.A.data(), p.b.data(), p.lo.data(), p.hi.data(), p.findex.data(), x.data(), state.data(), scratch, 30);
+    const int solves =
+        solve_row_lcp(p.n, p.A.data(), p.b.data(), p.lo.data(), p.hi.data(), p.findex.data(), x.data(), state.data(), scratch, 30);
     ASSERT_GT(solves, 0) << "trial " << trial << ": no settled active set from a cold start";
     cold_solves += solves, ++cases;
     EXPECT_LT(breach(p, x), 1e-8) << "trial " << trial;
@@ -125,14 +129,18 @@ TEST(RowLcp, GivesDantzigsImpulsesOnTheEnginesKindOfSystem) {
     const double dantzig_breach = breach(p, d);
     worst_dantzig = std::max(worst_dantzig, dantzig_breach);
     worst_diff = std::max(worst_diff, diff / scale);
-    if (trial % 3 == 0) EXPECT_LE(diff, 1e-9 * scale) << "trial " << trial << " (" << contacts << " contacts, frictionless)";
-    else EXPECT_LE(diff, 10 * std::max(dantzig_breach, 1e-9) * scale) << "trial " << trial << " (" << contacts << " contacts)";
+    if (trial % 3 == 0)
+      EXPECT_LE(diff, 1e-9 * scale) << "trial " << trial << " (" << contacts << " contacts, frictionless)";
+    else
+      EXPECT_LE(diff, 10 * std::max(dantzig_breach, 1e-9) * scale) << "trial " << trial << " (" << contacts << " contacts)";
     // Warm: the same problem from its own solution's states takes one solve.
     std::vector<double> x2(static_cast<std::size_t>(p.n), 0.0);
     EXPECT_EQ(solve_row_lcp(p.n, p.A.data(), p.b.data(), p.lo.data(), p.hi.data(), p.findex.data(), x2.data(), state.data(), scratch), 1);
   }
-  std::printf("  %d systems, %.2f solves each from a cold start; Dantzig's largest breach of the conditions %.2g, largest difference %.2g of the impulses\n",
-              cases, static_cast<double>(cold_solves) / cases, worst_dantzig, worst_diff);
+  std::printf(
+      "  %d systems, %.2f solves each from a cold start; Dantzig's largest breach of the conditions %.2g, largest difference %.2g of the "
+      "impulses\n",
+      cases, static_cast<double>(cold_solves) / cases, worst_dantzig, worst_diff);
 }
 
 TEST(RowLcp, ARowHeldAtOneValueStaysThereWhateverItsRate) {
@@ -147,7 +155,8 @@ TEST(RowLcp, ARowHeldAtOneValueStaysThereWhateverItsRate) {
     std::vector<double> x(static_cast<std::size_t>(p.n), 0.0);
     std::vector<RowBound> state(static_cast<std::size_t>(p.n), RowBound::free);
     RowLcpScratch scratch;
-    ASSERT_GT(solve_row_lcp(p.n, p.A.data(), p.b.data(), p.lo.data(), p.hi.data(), p.findex.data(), x.data(), state.data(), scratch, 30), 0);
+    ASSERT_GT(solve_row_lcp(p.n, p.A.data(), p.b.data(), p.lo.data(), p.hi.data(), p.findex.data(), x.data(), state.data(), scratch, 30),
+              0);
     EXPECT_EQ(x[static_cast<std::size_t>(motor)], 0.0);
     EXPECT_LT(breach(p, x), 1e-8);
   }

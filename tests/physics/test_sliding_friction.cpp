@@ -52,7 +52,8 @@ struct FrictionSteps : sim::Observer {
     // The paper set: m 1 mm, 24/36 teeth at the standard centre distance 30 mm; operating pitch
     // radius of the sun 12 mm, base radius 12·cos 20° mm; the contact runs along the line of
     // action at r_b·(ω_sun − ω_carrier), its radius changing by sin α_w of that near the pitch point.
-    const double r_w = 0.012, r_b = 0.012 * std::cos(20 * M_PI / 180), travel = r_b * std::abs(sun_speed - carrier_speed) * dt * std::sin(20 * M_PI / 180);
+    const double r_w = 0.012, r_b = 0.012 * std::cos(20 * M_PI / 180),
+                 travel = r_b * std::abs(sun_speed - carrier_speed) * dt * std::sin(20 * M_PI / 180);
     for (const physics::ContactSample& c : w.contacts()) {
       if (w.gear_pairs()[static_cast<std::size_t>(c.pair)].body_a != "sun" || !(c.normal_force_N > 0)) continue;
       ++contact_steps;
@@ -69,17 +70,18 @@ struct FrictionSteps : sim::Observer {
 };
 
 FrictionSteps run(const std::string& model, const std::string& dt) {
-  const physics::Scenario s = input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml",
-                                                   {"duration_s=0.12", "output.per_step_log=false", "solver.time_step_s=" + dt,
-                                                    "verify.friction_model=" + model});
+  const physics::Scenario s =
+      input::load_scenario(kScenarios / "paper_dynamics_healthy.yaml",
+                           {"duration_s=0.12", "output.per_step_log=false", "solver.time_step_s=" + dt, "verify.friction_model=" + model});
   FrictionSteps obs(s.contact.friction, 0.06);
   obs.dt = s.solver.time_step_s;
   const sim::RunSummary r = sim::simulate(s, {&obs});
   EXPECT_EQ(r.status, sim::RunStatus::Completed) << model;
-  std::printf("  %-10s dt %s: %ld sun–planet contact steps, %ld below μ·F_n in %zu engagements (at most %d in one), "
-              "worst |r − r_w| %.2f steps' radial travel\n",
-              model.c_str(), dt.c_str(), obs.contact_steps, obs.below, obs.below_per_engagement.size(), obs.worst_engagement,
-              obs.worst_pitch_offset);
+  std::printf(
+      "  %-10s dt %s: %ld sun–planet contact steps, %ld below μ·F_n in %zu engagements (at most %d in one), "
+      "worst |r − r_w| %.2f steps' radial travel\n",
+      model.c_str(), dt.c_str(), obs.contact_steps, obs.below, obs.below_per_engagement.size(), obs.worst_engagement,
+      obs.worst_pitch_offset);
   return obs;
 }
 

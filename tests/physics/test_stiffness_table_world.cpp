@@ -20,9 +20,9 @@ namespace test_stiffness_table_world {
 
 namespace fs = std::filesystem;
 
-constexpr double kFace_m = 10e-3;             // paper gears' face width
-constexpr double kTorque_N_m = 4.0;           // on the planet
-constexpr double kBaseSun_m = 11.2763e-3;     // r_b = 12 mm · cos 20°
+constexpr double kFace_m = 10e-3;  // paper gears' face width
+constexpr double kTorque_N_m = 4.0;  // on the planet
+constexpr double kBaseSun_m = 11.2763e-3;  // r_b = 12 mm · cos 20°
 constexpr double kBasePlanet_m = 16.9145e-3;  // r_b = 18 mm · cos 20°
 
 // Where the pair macro places the sun (a tooth centred on the line of centres), two tooth pairs
@@ -42,10 +42,15 @@ Scenario held_pair() {
                          "duration_s: 0.02\n"
                          "contact: {stiffness_N_per_m_per_m: 1.4e10, damping_ratio: 0.2, friction: 0}\n"
                          "pair:\n"
-                         "  driver: {name: sun, gear_from: {spec: " << spec << ", gear: sun}}\n"
-                         "  driven: {name: planet, gear_from: {spec: " << spec << ", gear: planet}}\n"
+                         "  driver: {name: sun, gear_from: {spec: "
+                      << spec
+                      << ", gear: sun}}\n"
+                         "  driven: {name: planet, gear_from: {spec: "
+                      << spec
+                      << ", gear: planet}}\n"
                          "motors: [{joint: sun, target_speed_rad_s: 0, max_torque_N_m: 50}]\n"
-                         "loads: [{joint: planet, constant_torque_N_m: " << kTorque_N_m << "}]\n";
+                         "loads: [{joint: planet, constant_torque_N_m: "
+                      << kTorque_N_m << "}]\n";
   Scenario s = input::load_scenario(file);
   auto turn = [](Pose& p, double angle_rad) {
     p.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(angle_rad, Eigen::Vector3d::UnitZ())) * p.orientation;
@@ -93,7 +98,6 @@ double radius_on(const Held& h, bool sun) {
   const Eigen::Vector2d on = c.point_m + (sun ? -0.5 : 0.5) * c.depth_m * c.normal_on_b;
   return (on - (sun ? h.sun_centre_m : h.planet_centre_m)).norm();
 }
-
 
 TEST(StiffnessTableWorld, HeldPairDeflectsByLoadOverStiffness) {
   const Held h = settle(held_pair());

@@ -39,7 +39,7 @@ TEST(Supports, ARingOnATorsionalSpringTurnsByTheReactionTorqueOverItsStiffness) 
   for (const physics::JointDef& j : s.joints)
     if (j.body == "ring") k_t = j.bearing->torsional_stiffness_N_m_per_rad;
   const double held = -(s.loads[0].constant_torque_N_m + s.loads[1].constant_torque_N_m);  // +36.15 N·m on the ring's spring
-  const double expected = -held / k_t;                                                        // −1.847 µrad
+  const double expected = -held / k_t;  // −1.847 µrad
   EXPECT_NEAR(obs.sum / static_cast<double>(obs.n), expected, 0.02 * std::abs(expected));
 }
 

@@ -13,9 +13,9 @@ namespace test_world {
 // The paper's healthy scenario (assets/scenarios), shortened and sped down for a unit test: sun
 // at 50 rad/s reached in 2 ms, friction off so that normal forces alone carry the torque.
 Scenario paper(double seconds) {
-  return input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
-                            {"duration_s=" + std::to_string(seconds), "motors[0].target_speed_rad_s=50",
-                             "motors[0].ramp_time_s=0.002", "contact.friction=0"});
+  return input::load_scenario(
+      std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+      {"duration_s=" + std::to_string(seconds), "motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002", "contact.friction=0"});
 }
 
 // Runs `seconds` and averages over the last half: sun and carrier speed, motor torque, and the
@@ -89,8 +89,8 @@ TEST(World, SpurPairFromStlFilesTurnsAtItsToothRatio) {
   // An external pair imported from STL meshes (assets/scenarios/spur_pair.yaml): z 20 drives
   // z 31 at 50 rad/s (ramp shortened to 2 ms). Over 2–12 ms (1.6 mesh periods) the mean speed
   // ratio is 31/20 to within the transmission-error ripple, 0.5 %.
-  const Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/spur_pair.yaml",
-                                        {"motors[0].ramp_time_s=0.002"});
+  const Scenario s =
+      input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/spur_pair.yaml", {"motors[0].ramp_time_s=0.002"});
   World w(s);
   double pinion = 0, wheel = 0;
   for (int i = 1; i <= 600; ++i) {

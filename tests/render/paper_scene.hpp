@@ -12,9 +12,7 @@
 
 namespace gearsim::test {
 
-inline PlanetarySpec paper_planetary() {
-  return {external_gear(24), external_gear(36, 0.010), internal_gear(96), 3};
-}
+inline PlanetarySpec paper_planetary() { return {external_gear(24), external_gear(36, 0.010), internal_gear(96), 3}; }
 
 inline GearSpec paper_faulty_planet() {
   GearSpec s = external_gear(36, 0.010);
@@ -41,9 +39,7 @@ inline const PaperSet& paper_set() {
   return set;
 }
 
-inline std::filesystem::path golden_dir() {
-  return std::filesystem::path(GEARSIM_SOURCE_DIR) / "tests" / "render" / "golden";
-}
+inline std::filesystem::path golden_dir() { return std::filesystem::path(GEARSIM_SOURCE_DIR) / "tests" / "render" / "golden"; }
 
 // A scratch folder for this test binary's outputs, inside the build tree.
 inline std::filesystem::path output_dir(const std::string& name) {

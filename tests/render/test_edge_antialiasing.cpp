@@ -109,9 +109,9 @@ TEST(EdgeAntiAliasing, PixelsAlongAStraightEdgeTakeTheirExactCoveredFraction) {
 // The grey levels of a gear seen along its axis, summed, against its outline's area; and how many
 // silhouette pixels are neither gear nor background.
 struct SilhouetteCoverage {
-  double area_ratio = 0;        // Σ grey/255 · pixel area / outline area
-  long partial_pixels = 0;      // grey strictly between 0 and 255
-  double perimeter_px = 0;      // the outline's length in pixels
+  double area_ratio = 0;  // Σ grey/255 · pixel area / outline area
+  long partial_pixels = 0;  // grey strictly between 0 and 255
+  double perimeter_px = 0;  // the outline's length in pixels
 };
 
 SilhouetteCoverage silhouette_coverage(const GearSpec& spec, AntiAliasing aa) {
@@ -178,12 +178,11 @@ Image paper_frame(AntiAliasing aa, bool closeup, int scale = 1) {
   s.anti_aliasing = aa;
   Renderer r(s);
   const double period = 2 * std::numbers::pi * p.spec.planet.teeth / p.spec.ring.teeth;
-  const PlanetaryPose pose = kinematic_planetary_pose(
-      p.spec, p.geometry, carrier_angle_tooth_at_sun(p.spec, p.geometry, 0, 0) + 0.5 * period);
+  const PlanetaryPose pose =
+      kinematic_planetary_pose(p.spec, p.geometry, carrier_angle_tooth_at_sun(p.spec, p.geometry, 0, 0) + 0.5 * period);
   const Scene scene = planetary_scene(p.meshes, pose);
-  const Camera camera =
-      closeup ? closeup_camera(sun_mesh_point(p.spec, p.geometry, pose, 0, 5e-3), Eigen::Vector3d(0.3, 1, -0.7), 12e-3)
-              : overview_camera(scene_bounds(scene), r.aspect(), 30 * std::numbers::pi / 180);
+  const Camera camera = closeup ? closeup_camera(sun_mesh_point(p.spec, p.geometry, pose, 0, 5e-3), Eigen::Vector3d(0.3, 1, -0.7), 12e-3)
+                                : overview_camera(scene_bounds(scene), r.aspect(), 30 * std::numbers::pi / 180);
   const Image im = r.render(scene, camera);
   return scale > 1 ? downscale(im, scale) : im;
 }

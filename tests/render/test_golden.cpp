@@ -49,8 +49,7 @@ Image overview(Renderer& r, const Paper& p, double extra_carrier_rad = 0) {
 
 // The faulty tooth in the middle of the sun mesh, seen along the mesh from above, with a contact force.
 Image closeup(Renderer& r, const Paper& p) {
-  const PlanetaryPose pose =
-      kinematic_planetary_pose(p.spec, p.geometry, carrier_angle_tooth_at_sun(p.spec, p.geometry, 0, 0));
+  const PlanetaryPose pose = kinematic_planetary_pose(p.spec, p.geometry, carrier_angle_tooth_at_sun(p.spec, p.geometry, 0, 0));
   Scene scene = planetary_scene(p.meshes, pose);
   const Eigen::Vector3d contact = sun_mesh_point(p.spec, p.geometry, pose, 0, 0.5 * p.spec.sun.face_width_m);
   const double beta = pose.carrier_angle_rad;
@@ -68,8 +67,7 @@ void expect_matches_golden(const Image& frame, const std::string& name) {
   const ImageDifference d = compare_images(frame, read_png(golden));
   EXPECT_LE(d.max, kMaxThreshold) << name;
   EXPECT_LE(d.mean, kMeanThreshold) << name;
-  if (d.max > kMaxThreshold || d.mean > kMeanThreshold)
-    write_png(frame, test::output_dir("golden") / (name + ".png"));
+  if (d.max > kMaxThreshold || d.mean > kMeanThreshold) write_png(frame, test::output_dir("golden") / (name + ".png"));
 }
 
 TEST(Golden, OverviewMatches) {
@@ -87,8 +85,7 @@ TEST(Golden, ThresholdsCatchHalfAToothOfRotation) {
   Renderer r(golden_settings());
   const Paper& p = test::paper_set();
   const double half_tooth_carrier = std::numbers::pi / p.spec.ring.teeth;  // planet moves ½ ring pitch
-  const ImageDifference d =
-      compare_images(overview(r, p, half_tooth_carrier), read_png(test::golden_dir() / "overview.png"));
+  const ImageDifference d = compare_images(overview(r, p, half_tooth_carrier), read_png(test::golden_dir() / "overview.png"));
   EXPECT_GT(d.mean, kMeanThreshold);
   EXPECT_GT(d.max, kMaxThreshold);
 }

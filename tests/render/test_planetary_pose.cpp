@@ -70,8 +70,7 @@ TEST(PlanetaryPose, PlanetsKeepMeshingAsTheCarrierTurns) {
       const Vector2d at_sun = sun_mesh_point(s, g, p, k).head<2>(), at_ring = ring_mesh_point(s, g, p, k).head<2>();
       // Zero backlash: the flanks touch within the tessellation (chords within 0.5 µm of curves).
       EXPECT_NEAR(clearance(pl, placed(sun, p.sun), true, at_sun), 0.0, 1e-6) << "carrier " << carrier << " planet " << k;
-      EXPECT_NEAR(clearance(pl, placed(ring, p.ring), false, at_ring), 0.0, 1e-6)
-          << "carrier " << carrier << " planet " << k;
+      EXPECT_NEAR(clearance(pl, placed(ring, p.ring), false, at_ring), 0.0, 1e-6) << "carrier " << carrier << " planet " << k;
     }
   }
 }
@@ -95,7 +94,7 @@ TEST(PlanetaryPose, MeshPointsLieOnThePitchCircles) {
   const PlanetarySpec& s = test::paper_set().spec;
   const PlanetaryGeometry& g = test::paper_set().geometry;
   const PlanetaryPose p = kinematic_planetary_pose(s, g, 0.2);
-  EXPECT_NEAR(sun_mesh_point(s, g, p, 2).head<2>().norm(), 0.012, 1e-15);   // sun pitch radius
+  EXPECT_NEAR(sun_mesh_point(s, g, p, 2).head<2>().norm(), 0.012, 1e-15);  // sun pitch radius
   EXPECT_NEAR(ring_mesh_point(s, g, p, 2).head<2>().norm(), 0.048, 1e-15);  // ring pitch radius
   EXPECT_THROW(sun_mesh_point(s, g, p, 3), InputError);
 }

@@ -63,12 +63,12 @@ TEST(Renderer, ContactMarkerAndForceArrowAreDrawnOverTheBodies) {
   Renderer r(flat());
   Scene s = ball_at({0, 0, 0}, 0.04);  // the contact point lies inside this body
   s.contacts.push_back({{0, 0, 0}, {-200, 0, 0}});  // 200 N along −x
-  s.arrow_m_per_N = 1e-4;                           // 20 mm arrow
+  s.arrow_m_per_N = 1e-4;  // 20 mm arrow
   s.marker_radius_m = 2e-3;
   const Image im = r.render(s, top_view());
   EXPECT_EQ(im.at(50, 50), s.marker_colour);
   EXPECT_EQ(im.at(40, 50), s.arrow_colour);  // 10 mm along the arrow
-  EXPECT_EQ(im.at(60, 50), kRed);            // behind the point: the body
+  EXPECT_EQ(im.at(60, 50), kRed);  // behind the point: the body
 }
 
 TEST(Renderer, OverlayTextIsDrawnTopLeft) {

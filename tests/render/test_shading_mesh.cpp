@@ -49,8 +49,7 @@ TEST(ShadingMesh, ZeroCreaseAngleGivesFaceNormals) {
   const ShadingMesh sm = shading_mesh(m, 0.0);
   for (std::size_t t = 0; t < m.triangles.size(); t += 97) {
     const auto& tri = m.triangles[t];
-    const Eigen::Vector3d n =
-        (m.vertices[tri[1]] - m.vertices[tri[0]]).cross(m.vertices[tri[2]] - m.vertices[tri[0]]).normalized();
+    const Eigen::Vector3d n = (m.vertices[tri[1]] - m.vertices[tri[0]]).cross(m.vertices[tri[2]] - m.vertices[tri[0]]).normalized();
     const ShadedVertex& v = sm.vertices[sm.indices[3 * t]];
     EXPECT_NEAR(n.dot(Eigen::Vector3d(v.normal[0], v.normal[1], v.normal[2])), 1.0, 1e-6) << t;
   }
@@ -89,8 +88,7 @@ TEST(ToothHighlight, MeshIsTheSameSolidWithTheToothMarked) {
       EXPECT_LE(std::abs(std::atan2(v.y(), v.x())), kPi / 36 + 0.015);
       EXPECT_GE(std::hypot(v.x(), v.y()), d.root_radius_m - 1e-6);
     }
-    const Eigen::Vector3d n = (h.mesh.vertices[tri[1]] - h.mesh.vertices[tri[0]])
-                                  .cross(h.mesh.vertices[tri[2]] - h.mesh.vertices[tri[0]]);
+    const Eigen::Vector3d n = (h.mesh.vertices[tri[1]] - h.mesh.vertices[tri[0]]).cross(h.mesh.vertices[tri[2]] - h.mesh.vertices[tri[0]]);
     if (n.z() > 0) top_area += 0.5 * n.z();
   }
   // The marked top cap is one tooth: roughly the annulus root–tip over z teeth, halved (a

@@ -66,9 +66,10 @@ std::string json_value(const std::string& json, const std::string& key) {
 TEST(Video, Mp4HasTheFramesRateDurationAndH264) {
   if (run("command -v ffprobe").empty()) GTEST_SKIP() << "ffprobe not installed";
   const std::filesystem::path path = write_video("bar.mp4");
-  const std::string json = run(
-      "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
-      "stream=codec_name,nb_read_frames,r_frame_rate,duration,pix_fmt -of json '" + path.string() + "'");
+  const std::string json =
+      run("ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+          "stream=codec_name,nb_read_frames,r_frame_rate,duration,pix_fmt -of json '" +
+          path.string() + "'");
   EXPECT_EQ(json_value(json, "codec_name"), "h264") << json;
   EXPECT_EQ(json_value(json, "nb_read_frames"), std::to_string(kFrames)) << json;
   EXPECT_EQ(json_value(json, "r_frame_rate"), std::to_string(kFps) + "/1") << json;

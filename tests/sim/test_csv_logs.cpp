@@ -61,7 +61,7 @@ TEST(CsvLogs, ForceColumnIsTheDecimatedPerStepForceAndThePointColumnTheSample) {
   const std::vector<double>& time = t.column("time_s");
   const std::vector<double>& filtered = t.column("pinion__wheel_force_N");
   const std::vector<double>& point = t.column("pinion__wheel_force_point_N");
-  ASSERT_EQ(time.size(), 240u);                     // 0.12 s at 2 kHz, no row at t = 0
+  ASSERT_EQ(time.size(), 240u);  // 0.12 s at 2 kHz, no row at t = 0
   ASSERT_EQ(expected.values.size(), time.size() + 1);  // the decimated record includes t = 0
   for (std::size_t k = 0; k < time.size(); ++k) {
     EXPECT_NEAR(time[k], static_cast<double>(k + 1) / 2000.0, 1e-12);

@@ -26,10 +26,29 @@ std::string via_stream(double v) {
 }
 
 TEST(NumberText, DoublesAreWhatAnIostreamWithPrecision17Writes) {
-  std::vector<double> values = {0.0, -0.0, 1.0, -1.0, 0.1, 1.0 / 3, 2.0 / 3, 1e-300, 4.9406564584124654e-324, 2.2250738585072014e-308,
-                                1e300, 1.7976931348623157e308, 123456789012345678.0, 1e17, 1e16, 9.999999999999999e16, 0.5e-5,
-                                4.0000000000000003e-05, 104.7, -118.78, std::numeric_limits<double>::infinity(),
-                                -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                1.0,
+                                -1.0,
+                                0.1,
+                                1.0 / 3,
+                                2.0 / 3,
+                                1e-300,
+                                4.9406564584124654e-324,
+                                2.2250738585072014e-308,
+                                1e300,
+                                1.7976931348623157e308,
+                                123456789012345678.0,
+                                1e17,
+                                1e16,
+                                9.999999999999999e16,
+                                0.5e-5,
+                                4.0000000000000003e-05,
+                                104.7,
+                                -118.78,
+                                std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::quiet_NaN()};
   std::mt19937_64 rng(36);
   for (int i = 0; i < 200000; ++i) {  // every bit pattern: subnormals, huge, tiny, NaNs with payloads
     const std::uint64_t bits = rng();
@@ -53,7 +72,8 @@ TEST(NumberText, DoublesAreWhatAnIostreamWithPrecision17Writes) {
 }
 
 TEST(NumberText, IntegersAreDecimal) {
-  for (const long long v : {0LL, 1LL, -1LL, 42LL, -32768LL, 2147483647LL, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max()}) {
+  for (const long long v :
+       {0LL, 1LL, -1LL, 42LL, -32768LL, 2147483647LL, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max()}) {
     std::string text = "x";
     gearsim::append_number(text, v);
     std::ostringstream s;

@@ -12,10 +12,9 @@ namespace test_power_balance {
 
 // The paper's healthy scenario, sun at 50 rad/s reached in 2 ms, averaged over 2–10 ms.
 PowerBalance balance(double friction) {
-  const physics::Scenario s =
-      input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
-                         {"motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002",
-                          "contact.friction=" + std::to_string(friction)});
+  const physics::Scenario s = input::load_scenario(
+      std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+      {"motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002", "contact.friction=" + std::to_string(friction)});
   physics::World w(s);
   PowerBalance b;
   for (int i = 0; i < 500; ++i) {

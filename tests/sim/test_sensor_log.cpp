@@ -25,9 +25,9 @@ namespace test_sensor_log {
 TEST(SensorLog, ThePlanetPassWindowIsAHannOfTheAngleToTheSensor) {
   const Eigen::Vector2d c(0, 0);
   const double w = 2 * std::numbers::pi / 3, up = std::numbers::pi / 2;
-  EXPECT_DOUBLE_EQ(sim::planet_pass_window({0, 0.05}, c, up, w), 1.0);                                       // under the sensor
+  EXPECT_DOUBLE_EQ(sim::planet_pass_window({0, 0.05}, c, up, w), 1.0);  // under the sensor
   EXPECT_NEAR(sim::planet_pass_window({0.05 * std::cos(up + w / 4), 0.05 * std::sin(up + w / 4)}, c, up, w), 0.5, 1e-12);
-  EXPECT_EQ(sim::planet_pass_window({0, -0.05}, c, up, w), 0.0);                                             // opposite
+  EXPECT_EQ(sim::planet_pass_window({0, -0.05}, c, up, w), 0.0);  // opposite
 }
 
 // The sensor's amplitude at f (Hz) over t ≥ 0.1 s of sensors.csv (Hann, coherent gain corrected).
@@ -46,8 +46,8 @@ struct SensorRecord {
 
 SensorRecord run_sensor(const std::string& asset) {
   const std::filesystem::path dir = test::fresh_test_dir();
-  const physics::Scenario s = input::load_scenario(std::filesystem::path(GEARSIM_SOURCE_DIR) / "assets/scenarios" / asset,
-                                                   {"output.per_step_log=false"});
+  const physics::Scenario s =
+      input::load_scenario(std::filesystem::path(GEARSIM_SOURCE_DIR) / "assets/scenarios" / asset, {"output.per_step_log=false"});
   sim::SensorLog log(dir, s);
   const sim::RunSummary r = sim::simulate(s, {&log});
   EXPECT_EQ(r.status, sim::RunStatus::Completed);
@@ -77,8 +77,10 @@ TEST(SensorLog, InPhasePlanetsLeaveOnlyEveryThirdSidebandAndTheFlawFillsTheRestI
     double kept = 0, cancelled = 0, faulty_cancelled = 0;
     for (int n = -3; n <= 3; ++n) {
       const double f = k * fm + n * fc;
-      if (planet_pass_line_survives(3, 96, k, n)) kept = std::max(kept, healthy.amplitude(f));
-      else cancelled = std::max(cancelled, healthy.amplitude(f)), faulty_cancelled = std::max(faulty_cancelled, faulty.amplitude(f));
+      if (planet_pass_line_survives(3, 96, k, n))
+        kept = std::max(kept, healthy.amplitude(f));
+      else
+        cancelled = std::max(cancelled, healthy.amplitude(f)), faulty_cancelled = std::max(faulty_cancelled, faulty.amplitude(f));
     }
     EXPECT_LT(20 * std::log10(cancelled / kept), -20.0) << "harmonic " << k;
     EXPECT_GT(20 * std::log10(faulty_cancelled / cancelled), 10.0) << "harmonic " << k;
@@ -95,8 +97,10 @@ TEST(SensorLog, SequentialPlanetsShiftTheSurvivingSidebandsAsPredicted) {
     double kept = 0, cancelled = 0;
     for (int n = -5; n <= 5; ++n) {
       const double a = rec.amplitude(k * fm + n * fc);
-      if (planet_pass_line_survives(3, 95, k, n)) kept = std::max(kept, a);
-      else cancelled = std::max(cancelled, a);
+      if (planet_pass_line_survives(3, 95, k, n))
+        kept = std::max(kept, a);
+      else
+        cancelled = std::max(cancelled, a);
     }
     EXPECT_LT(20 * std::log10(cancelled / kept), -20.0) << "harmonic " << k;
   }
@@ -170,7 +174,7 @@ TEST(SensorLog, TheStepLogHoldsEverySensorsAccelerationAtEveryStep) {
   const std::filesystem::path dir25 = test::fresh_test_dir();
   const std::vector<double> logged25 = run_with_step_log("25000", dir25, &steps, &columns);
   EXPECT_EQ(static_cast<long>(logged25.size()), steps);  // one per step, whatever the acquisition rate
-  EXPECT_EQ(logged25, logged);                           // the same signal before acquisition
+  EXPECT_EQ(logged25, logged);  // the same signal before acquisition
 }
 
 }  // namespace test_sensor_log

@@ -69,7 +69,7 @@ TEST(Simulate, ARequestedStopEndsTheRunAtThatStepWithALastSampleThere) {
   EXPECT_EQ(rec.steps, 333);
   ASSERT_FALSE(rec.times_s.empty());
   EXPECT_NEAR(rec.times_s.back(), 333 * 2e-5, 1e-12);  // not a sample time (every 25 steps): added
-  EXPECT_EQ(rec.times_s.size(), 13u + 1u);             // 13 regular samples up to step 325, then the stop
+  EXPECT_EQ(rec.times_s.size(), 13u + 1u);  // 13 regular samples up to step 325, then the stop
   EXPECT_NEAR(rec.stop_time_s, 333 * 2e-5, 1e-12);
 }
 
@@ -89,7 +89,7 @@ TEST(Simulate, SteadyMeansFollowTheGearRatio) {
   ASSERT_GT(r.steady_steps, 0);
   EXPECT_NEAR(r.steady_from_s, physics::ramps_end_s(s), 1e-15);
   const double pinion = r.bodies[0].mean_speed_rad_s, wheel = r.bodies[1].mean_speed_rad_s;
-  EXPECT_NEAR(pinion, 50.0, 0.05);                       // the motor's target
+  EXPECT_NEAR(pinion, 50.0, 0.05);  // the motor's target
   EXPECT_NEAR(std::abs(wheel / pinion), 20.0 / 31.0, 2e-4);  // rigid teeth: the tooth ratio
   ASSERT_EQ(r.pairs.size(), 1u);
   EXPECT_GT(r.pairs[0].mean_ccw_flank_force_N + r.pairs[0].mean_cw_flank_force_N, 0.0);
@@ -103,8 +103,8 @@ TEST(Simulate, TheMeanSpeedsAreTheRatesTheBodiesTurnAt) {
   // A steady planetary turns its carrier at the sun's speed / 5 up to the change of the
   // transmission error between the window's ends, less than 1e-4 rad (its per-step peak-to-peak
   // is 7.0e-5 rad), against the sun's turn over the window (104.7 rad/s · 0.15 s = 15.7 rad).
-  const physics::Scenario s =
-      input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_healthy.yaml", {"duration_s=0.2", "output.per_step_log=false"});
+  const physics::Scenario s = input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_healthy.yaml",
+                                                   {"duration_s=0.2", "output.per_step_log=false"});
   ASSERT_EQ(s.solver.integrator, physics::SolverDef::Integrator::trapezoid_closed);
   const RunSummary r = simulate(s, {});
   ASSERT_TRUE(r.ratio.has_value());

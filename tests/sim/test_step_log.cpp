@@ -26,8 +26,8 @@ std::vector<double> read_doubles(hid_t file, const char* name, hsize_t* dims_out
 }
 
 TEST(StepLog, HoldsEveryStepAndEveryToothContact) {
-  const physics::Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
-                                       {"duration_s=0.0024"});
+  const physics::Scenario s =
+      input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml", {"duration_s=0.0024"});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "gearsim_step_log_test.h5";
   physics::World world(s);
   std::vector<double> forces;  // every contact's normal force, in order
@@ -72,9 +72,9 @@ TEST(StepLog, LoggedContactsCarryTheMotorTorque) {
   // Read back from the file alone: Σ (p × n)·F over the sun's tooth contacts is the torque the
   // planets put on the sun; in steady running it balances the motor's torque. Friction off (its
   // impulses are logged as magnitudes without direction); sun at 50 rad/s, reached in 2 ms.
-  const physics::Scenario s = input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
-                                       {"motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002",
-                                        "contact.friction=0"});
+  const physics::Scenario s =
+      input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
+                           {"motors[0].target_speed_rad_s=50", "motors[0].ramp_time_s=0.002", "contact.friction=0"});
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "gearsim_step_log_torque.h5";
   physics::World world(s);
   constexpr int kSteps = 500, kFrom = 100;  // average over 2–10 ms
@@ -101,8 +101,7 @@ TEST(StepLog, LoggedContactsCarryTheMotorTorque) {
   // ~1e-4 relative.
   double contact = 0;
   for (std::size_t c = 0; c < step.size(); ++c)
-    if (pair[c] < 3 && step[c] > kFrom)
-      contact += (px[c] * ny[c] - py[c] * nx[c]) * impulse[c] / s.solver.time_step_s;
+    if (pair[c] < 3 && step[c] > kFrom) contact += (px[c] * ny[c] - py[c] * nx[c]) * impulse[c] / s.solver.time_step_s;
   contact /= kSteps - kFrom;
   EXPECT_NEAR(motor, 20.0 / 5, 0.1);  // the carrier's 20 N·m over the ratio 5
   // Newton about the sun axis: motor + contacts = I·dω/dt, whose mean over 8 ms is below

@@ -24,8 +24,7 @@ namespace test_step_log_round_trip {
 namespace fs = std::filesystem;
 
 physics::Scenario paper() {
-  return input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml",
-                              {"duration_s=0.1"});
+  return input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml", {"duration_s=0.1"});
 }
 
 // What the world reported, step by step and contact by contact, in the log's order.
@@ -46,8 +45,8 @@ void record(const physics::World& w, double dt, Reference& r) {
     r.tooth_a.push_back(c.geometry.tooth_a);
     r.tooth_b.push_back(c.geometry.tooth_b);
     r.flank_a.push_back(c.geometry.flank_a == Flank::Ccw ? 0 : 1);
-    r.values.push_back({c.geometry.point_m.x(), c.geometry.point_m.y(), c.geometry.normal_on_b.x(),
-                        c.geometry.normal_on_b.y(), c.geometry.depth_m, c.friction_force_N * dt, c.normal_force_N * dt});
+    r.values.push_back({c.geometry.point_m.x(), c.geometry.point_m.y(), c.geometry.normal_on_b.x(), c.geometry.normal_on_b.y(),
+                        c.geometry.depth_m, c.friction_force_N * dt, c.normal_force_N * dt});
   }
 }
 
@@ -174,8 +173,7 @@ TEST(StepLogRoundTrip, AnExceptionMidRunLeavesEveryAppendedStep) {
     StepLog log(path, world, s.name, s.solver.time_step_s);
     run(world, log, kSteps, s.solver.time_step_s, r);
     throw std::runtime_error("the run stops here");  // the log is never closed by hand
-  } catch (const std::runtime_error&) {
-  }
+  } catch (const std::runtime_error&) {}
   const OnDisk o = on_disk(path);
   EXPECT_EQ(o.state_rows, static_cast<std::size_t>(kSteps));
   EXPECT_EQ(o.contact_rows, r.step.size());

@@ -20,8 +20,7 @@ namespace gearsim::test {
 inline std::filesystem::path fresh_test_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::filesystem::path d = std::filesystem::temp_directory_path() /
-                                  ("gearsim_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-                                   std::to_string(getpid()));
+                                  ("gearsim_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#define EXPECT_HAS(text, ...)                                                                  \
-  do {                                                                                         \
-    const std::string t_ = (text);                                                             \
+#define EXPECT_HAS(text, ...)                                                                 \
+  do {                                                                                        \
+    const std::string t_ = (text);                                                            \
     for (const char* part : {__VA_ARGS__}) EXPECT_NE(t_.find(part), std::string::npos) << t_; \
   } while (0)

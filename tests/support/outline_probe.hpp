@@ -35,8 +35,7 @@ inline std::vector<Eigen::Vector2d> circle_crossings(const Polygon2& poly, doubl
 }
 
 // Nearest intersection (signed parameter s) of the line p + s·n with the polygon, within |s| < span.
-inline std::optional<double> line_hit(const Polygon2& poly, const Eigen::Vector2d& p,
-                                      const Eigen::Vector2d& n, double span) {
+inline std::optional<double> line_hit(const Polygon2& poly, const Eigen::Vector2d& p, const Eigen::Vector2d& n, double span) {
   std::optional<double> best;
   const auto& v = poly.points;
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -57,8 +56,7 @@ inline std::optional<double> line_hit(const Polygon2& poly, const Eigen::Vector2
 inline double distance_to_boundary(const Polygon2& poly, const Eigen::Vector2d& p) {
   double d = std::numeric_limits<double>::infinity();
   const auto& v = poly.points;
-  for (std::size_t i = 0; i < v.size(); ++i)
-    d = std::min(d, distance_to_segment(p, v[i], v[(i + 1) % v.size()]));
+  for (std::size_t i = 0; i < v.size(); ++i) d = std::min(d, distance_to_segment(p, v[i], v[(i + 1) % v.size()]));
   return d;
 }
 
@@ -67,8 +65,7 @@ inline double signed_distance(const Polygon2& poly, const Eigen::Vector2d& p) {
   bool inside = false;
   const auto& v = poly.points;
   for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
-    if ((v[i].y() > p.y()) != (v[j].y() > p.y()) &&
-        p.x() < (v[j].x() - v[i].x()) * (p.y() - v[i].y()) / (v[j].y() - v[i].y()) + v[i].x())
+    if ((v[i].y() > p.y()) != (v[j].y() > p.y()) && p.x() < (v[j].x() - v[i].x()) * (p.y() - v[i].y()) / (v[j].y() - v[i].y()) + v[i].x())
       inside = !inside;
   const double d = distance_to_boundary(poly, p);
   return inside ? d : -d;

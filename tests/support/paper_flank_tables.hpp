@@ -47,8 +47,8 @@ inline std::vector<Gear> gears_of(const physics::Scenario& s, const std::string&
 
 // The paper's faulty set (paper_dynamics.yaml), built once.
 inline const std::vector<Gear>& paper_gears() {
-  static const std::vector<Gear> gears = gears_of(
-      input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml"), "sun", 24);
+  static const std::vector<Gear> gears =
+      gears_of(input::load_scenario(std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics.yaml"), "sun", 24);
   return gears;
 }
 

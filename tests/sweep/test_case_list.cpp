@@ -31,8 +31,8 @@ TEST(CaseList, GridIsTheProductFirstKeySlowest) {
     EXPECT_EQ(cases[i].index, i);
     EXPECT_EQ(cases[i].parameters[0], KeyValue("a", expected[i][0])) << i;
     EXPECT_EQ(cases[i].parameters[1], KeyValue("b", expected[i][1])) << i;
-    EXPECT_EQ(cases[i].overrides, (std::vector<std::string>{"duration_s=0.2", std::string("a=") + expected[i][0],
-                                                            std::string("b=") + expected[i][1]}));
+    EXPECT_EQ(cases[i].overrides,
+              (std::vector<std::string>{"duration_s=0.2", std::string("a=") + expected[i][0], std::string("b=") + expected[i][1]}));
   }
 }
 

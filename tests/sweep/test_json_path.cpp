@@ -18,9 +18,7 @@ TEST(JsonPath, DottedKeysAndListItems) {
   EXPECT_EQ(number_at_path(kDoc, "bodies.gear.x", "f"), json(1));
 }
 
-TEST(JsonPath, KeyHoldingADotWinsByLength) {
-  EXPECT_EQ(number_at_path(kDoc, "bodies.gear.a.mean_speed_rad_s", "f"), json(2.5));
-}
+TEST(JsonPath, KeyHoldingADotWinsByLength) { EXPECT_EQ(number_at_path(kDoc, "bodies.gear.a.mean_speed_rad_s", "f"), json(2.5)); }
 
 TEST(JsonPath, NullStaysNull) { EXPECT_TRUE(number_at_path(kDoc, "none", "f").is_null()); }
 

@@ -40,8 +40,7 @@ TEST_F(SweepFolder, ALinkPlantedUnderACaseLogIsReplacedNotFollowed) {
   const test::CliRun r = sweep();
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(test::file_text(precious_), "the user's\n");
-  for (const char* log : {"run.out.log", "run.err.log"})
-    EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(case_dir(0) / log))) << log;
+  for (const char* log : {"run.out.log", "run.err.log"}) EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(case_dir(0) / log))) << log;
 }
 
 TEST_F(SweepFolder, ACaseFolderThatIsALinkFailsThatCaseAndWritesNothingThrough) {
@@ -73,8 +72,8 @@ TEST_F(SweepFolder, AFileWhereACaseFolderBelongsFailsThatCaseNotTheSweep) {
 }
 
 TEST_F(SweepFolder, ASecondSweepIntoTheSameFolderIsRefused) {
-  const std::string first = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim sweep " + file_.string() + " --out " +
-                            out_.string() + " > /dev/null 2>&1";
+  const std::string first =
+      std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim sweep " + file_.string() + " --out " + out_.string() + " > /dev/null 2>&1";
   std::thread t([&] { std::system(first.c_str()); });
   for (int i = 0; i < 200 && test::file_text(out_ / ".gearsim.lock").find("gearsim sweep") == std::string::npos; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -31,8 +31,8 @@ TEST(SweepMpi, SameTableAsLocal) {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   const auto start = std::chrono::steady_clock::now();
-  const test::CliRun mpi = test::gearsim_under("mpirun --oversubscribe -np 3 ",
-                                               "sweep " + file.string() + " --out " + (dir / "mpi").string());
+  const test::CliRun mpi =
+      test::gearsim_under("mpirun --oversubscribe -np 3 ", "sweep " + file.string() + " --out " + (dir / "mpi").string());
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ASSERT_EQ(mpi.exit_code, 0) << mpi.output;
   EXPECT_NE(mpi.output.find("on 2 MPI workers"), std::string::npos) << mpi.output;

@@ -47,9 +47,9 @@ TEST_F(SweepRun, DivergedCaseIsRecordedAndTheOthersComplete) {
   EXPECT_EQ(r.exit_code, 5) << r.output;  // some cases did not complete
   const auto rows = test::csv_rows(out_ / "sweep.csv");
   ASSERT_EQ(rows.size(), 4u) << r.output;
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"index", "loads[0].constant_torque_N_m", "status",
-                                               "summary.bodies.wheel.mean_speed_rad_s", "dynamic_factor",
-                                               "dynamic_factor.pinion__wheel", "mesh_frequency_hz", "rms_dynamic_te_rad"}));
+  EXPECT_EQ(rows[0],
+            (std::vector<std::string>{"index", "loads[0].constant_torque_N_m", "status", "summary.bodies.wheel.mean_speed_rad_s",
+                                      "dynamic_factor", "dynamic_factor.pinion__wheel", "mesh_frequency_hz", "rms_dynamic_te_rad"}));
   EXPECT_EQ(rows[1][2], "completed");
   EXPECT_EQ(rows[2][2], "completed");
   EXPECT_EQ(rows[3][2], "diverged");
@@ -117,8 +117,9 @@ TEST_F(SweepRun, EditedSweepFileRefusedUnlessFresh) {
 }
 
 TEST_F(SweepRun, BadKeyRefusedBeforeAnyCaseRuns) {
-  file_ = test::spur_sweep_file(dir_, "cases:\n  - loads[0].constant_torque_N_m: 5\n  - loads[0].constant_torque_N_m: 6\n"
-                                      "  - loads[0].torque_typo_N_m: 7\n");
+  file_ = test::spur_sweep_file(dir_,
+                                "cases:\n  - loads[0].constant_torque_N_m: 5\n  - loads[0].constant_torque_N_m: 6\n"
+                                "  - loads[0].torque_typo_N_m: 7\n");
   const test::CliRun r = sweep();
   EXPECT_EQ(r.exit_code, 2) << r.output;
   // The sweep file, line and key of the case; the case's number; the scenario's own complaint.

@@ -41,11 +41,12 @@ TEST(Table, RowsInIndexOrderFromTheRecords) {
   record(dir, 0, CaseStatus::Diverged, nlohmann::ordered_json::object());
   const SweepTable t = gather_table(dir, {"a"}, 4);
   write_table_csv(t, dir / "sweep.csv");
-  EXPECT_EQ(text(dir / "sweep.csv"), "index,a,status,m_N,k\n"
-                                     "0,0,diverged,,\n"
-                                     "1,,not run,,\n"
-                                     "2,2,completed,0.10000000000000001,3\n"
-                                     "3,,not run,,\n");
+  EXPECT_EQ(text(dir / "sweep.csv"),
+            "index,a,status,m_N,k\n"
+            "0,0,diverged,,\n"
+            "1,,not run,,\n"
+            "2,2,completed,0.10000000000000001,3\n"
+            "3,,not run,,\n");
   const StatusCounts c = count_statuses(t);
   EXPECT_EQ(c.completed, 1u);
   EXPECT_EQ(c.diverged, 1u);
@@ -53,8 +54,7 @@ TEST(Table, RowsInIndexOrderFromTheRecords) {
 }
 
 TEST(Table, MetricTextReadsBackExactly) {
-  for (const double v : {0.1, 1.0 / 3.0, 6.02214076e23, -1e-300})
-    EXPECT_EQ(std::stod(metric_text(v)), v) << metric_text(v);
+  for (const double v : {0.1, 1.0 / 3.0, 6.02214076e23, -1e-300}) EXPECT_EQ(std::stod(metric_text(v)), v) << metric_text(v);
   EXPECT_EQ(metric_text(std::nullopt), "");
 }
 
