@@ -178,6 +178,37 @@ std::optional<physics::TransmissionDef> parse_transmission(const YamlMap& top, c
   return proposed;
 }
 
+// solver.engine multibody holds the joints as one tree on the ground and the welded bodies:
+// every body that is not welded turns in a joint (a free body is rigid_bodies' alone), no chain
+// of joints closes on itself, and bodies touch only through teeth (a mesh body without teeth is a
+// shape that only rigid_bodies collides). where[i]: the map and key body i was given at.
+void require_multibody_tree(const physics::Scenario& s, const Names& names,
+                            const std::vector<std::pair<const YamlMap*, std::string>>& where) {
+  if (s.solver.engine != physics::SolverEngine::multibody) return;
+  std::map<std::string, std::string> parent_of;  // body → the body its joint turns it on, or ground
+  for (const physics::JointDef& j : s.joints) parent_of[j.body] = j.parent;
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const physics::BodyDef& b = s.bodies[i];
+    const YamlMap& map = *where[i].first;
+    const std::string& key = where[i].second;
+    if (!b.fixed && !names.joint_of_body.count(b.name))
+      map.fail(key,
+               "body '" + b.name + "' has no joint; a free body needs solver.engine: rigid_bodies (multibody turns every body in a joint)");
+    if (b.mesh && !b.mesh->teeth)
+      map.fail(key, "body '" + b.name +
+                        "' has a shape but no teeth; bodies touch only through tooth contact in solver.engine multibody (rigid_bodies "
+                        "collides shapes)");
+    std::string up = b.name;
+    for (std::size_t n = 0; !b.fixed; ++n) {
+      const auto p = parent_of.find(up);
+      if (p == parent_of.end() || p->second == kGround) break;
+      up = p->second;
+      if (up == b.name || n == s.bodies.size())
+        map.fail(key, "body '" + b.name + "' turns on a loop of joints (the joints must form a tree)");
+    }
+  }
+}
+
 physics::Scenario parse(const YamlMap& top, const fs::path& file) {
   const fs::path dir = file.parent_path();
   physics::Scenario s;
@@ -205,10 +236,17 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
     for (const physics::PairTableDef& t : e.pair_tables) s.pair_tables.push_back(t);
   }
   Names names;
+  std::vector<std::pair<const YamlMap*, std::string>> where;  // per body: where it was given
   std::size_t bi = 0;
-  for (const YamlMap& m : body_maps) add_body(names, s.bodies[bi++], m, "name");
+  for (const YamlMap& m : body_maps) {
+    add_body(names, s.bodies[bi++], m, "name");
+    where.emplace_back(&m, "name");
+  }
   for (const auto& [e, key] : macros)
-    for (std::size_t k = 0; k < e.bodies.size(); ++k) add_body(names, s.bodies[bi++], top, key);
+    for (std::size_t k = 0; k < e.bodies.size(); ++k) {
+      add_body(names, s.bodies[bi++], top, key);
+      where.emplace_back(&top, key);
+    }
 
   // Joints: the macros' first, then explicit ones (which may hinge to macro bodies).
   for (const auto& [e, key] : macros)
@@ -222,6 +260,7 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       add_joint(names, s.joints.back(), m, "name");
     }
 
+  require_multibody_tree(s, names, where);
   parse_drives(top, names, s);
   s.transmission = parse_transmission(top, macros, names);
   if (given(top, "contact")) {

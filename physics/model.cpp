@@ -23,7 +23,7 @@ Model::Model(const Scenario& s) : scenario(s) {
 
 void Model::add_bodies() {
   for (const BodyDef& def : scenario.bodies) {
-    if (body_index.count(def.name)) throw InputError("scenario: duplicate body name '" + def.name + "'");
+    GEARSIM_CHECK(!body_index.count(def.name), "a second body named '" + def.name + "' (input/ refuses a scenario's)");
     body_index[def.name] = static_cast<int>(bodies.size());
     bodies.push_back(build_body(def, scenario.contact));
     BuiltBody& b = bodies.back();
@@ -40,7 +40,7 @@ void Model::add_bodies() {
 void Model::add_joints() {
   auto body_of = [&](const std::string& name, const std::string& who) {
     auto it = body_index.find(name);
-    if (it == body_index.end()) throw InputError("scenario: " + who + ": no body named '" + name + "'");
+    GEARSIM_CHECK(it != body_index.end(), who + ": no body named '" + name + "' (input/ refuses a scenario's)");
     return it->second;
   };
   joints.reserve(scenario.joints.size());
@@ -49,7 +49,7 @@ void Model::add_joints() {
     j.def = jd;
     j.body = body_of(jd.body, "joint '" + jd.name + "'");
     j.parent = jd.parent == "ground" ? -1 : body_of(jd.parent, "joint '" + jd.name + "'");
-    if (jd.axis.norm() < 1e-12) throw InputError("scenario: joint '" + jd.name + "': axis has zero length");
+    GEARSIM_CHECK(jd.axis.norm() >= 1e-12, "joint '" + jd.name + "': an axis of zero length (input/ refuses a scenario's)");
     j.axis_world = jd.axis.normalized();
     joints.push_back(j);
   }
@@ -59,7 +59,8 @@ void Model::attach_drives() {
   auto joint_of = [&](const std::string& name, const std::string& who) -> ModelJoint& {
     for (ModelJoint& j : joints)
       if (j.def.name == name) return j;
-    throw InputError("scenario: " + who + ": no joint named '" + name + "'");
+    GEARSIM_CHECK(false, who + ": no joint named '" + name + "' (input/ refuses a scenario's)");
+    return joints.front();
   };
   for (const MotorDef& md : scenario.motors) joint_of(md.joint, "motor").motor = &md;
   for (const LoadDef& ld : scenario.loads) joint_of(ld.joint, "load").load = &ld;

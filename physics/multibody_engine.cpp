@@ -38,33 +38,26 @@ void set_joint_velocities(btMultiBody& t, const double* v) {
 
 const char* const kWho = "scenario: solver.engine multibody: ";
 
-// The joint each body turns in (−1: none), checked: one joint per body, none turning a fixed
-// body, every movable body in one, no shapes but teeth.
+// The joint each body turns in (−1: none). input/ has checked the tree (one joint per body, none
+// turning a welded body, every other body in one, no shapes but teeth:
+// require_multibody_tree in scenario_file.cpp).
 std::vector<int> joints_of_bodies(const std::vector<BuiltBody>& bodies, const std::vector<ModelJoint>& joints) {
-  const std::string who = kWho;
   std::vector<int> joint_of(bodies.size(), -1);
   for (std::size_t j = 0; j < joints.size(); ++j) {
-    const int b = joints[j].body;
-    if (joint_of[static_cast<std::size_t>(b)] >= 0)
-      throw InputError(who + "body '" + bodies[static_cast<std::size_t>(b)].name + "' turns in two joints (the joints must form a tree)");
-    if (bodies[static_cast<std::size_t>(b)].fixed)
-      throw InputError(who + "joint '" + joints[j].def.name + "' turns the fixed body '" + bodies[static_cast<std::size_t>(b)].name + "'");
-    joint_of[static_cast<std::size_t>(b)] = static_cast<int>(j);
+    const std::size_t b = static_cast<std::size_t>(joints[j].body);
+    GEARSIM_CHECK(joint_of[b] < 0 && !bodies[b].fixed, "body '" + bodies[b].name + "': one joint per body, none on a welded one");
+    joint_of[b] = static_cast<int>(j);
   }
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const BuiltBody& b = bodies[i];
-    if (!b.fixed && joint_of[i] < 0)
-      throw InputError(who + "body '" + b.name + "' has no joint; a free body needs solver.engine rigid_bodies");
-    if (!b.flanks && b.shape->getShapeType() != EMPTY_SHAPE_PROXYTYPE)
-      throw InputError(who + "body '" + b.name +
-                       "' has a shape but no teeth; bodies touch only through tooth contact in this engine (solver.engine rigid_bodies "
-                       "collides shapes)");
+    GEARSIM_CHECK(b.fixed || joint_of[i] >= 0, "body '" + b.name + "': every movable body turns in a joint");
+    GEARSIM_CHECK(b.flanks || b.shape->getShapeType() == EMPTY_SHAPE_PROXYTYPE, "body '" + b.name + "': no shape but teeth");
   }
   return joint_of;
 }
 
 // The movable bodies as links, in an order where every parent comes before its children
-// (link_of_body: each body's link, −1 for fixed ones); InputError for a loop of joints.
+// (link_of_body: each body's link, −1 for fixed ones); the joints form a tree (input/ checked).
 std::vector<int> link_order(const std::vector<BuiltBody>& bodies, const std::vector<ModelJoint>& joints, const std::vector<int>& joint_of,
                             std::vector<int>& link_of_body) {
   link_of_body.assign(bodies.size(), -1);
@@ -81,8 +74,7 @@ std::vector<int> link_order(const std::vector<BuiltBody>& bodies, const std::vec
     }
   }
   for (std::size_t i = 0; i < bodies.size(); ++i)
-    if (!bodies[i].fixed && link_of_body[i] < 0)
-      throw InputError(std::string(kWho) + "body '" + bodies[i].name + "' is in a loop of joints (the joints must form a tree)");
+    GEARSIM_CHECK(bodies[i].fixed || link_of_body[i] >= 0, "body '" + bodies[i].name + "': the joints form a tree");
   return order;
 }
 

@@ -149,6 +149,19 @@ TEST(ScenarioErrors, AVerificationSwitchInSolverOrContactIsNamedWithWhereItBelon
     EXPECT_NAMES(error_for(kGood + "contact: {" + key + "}\n"), "bad.yaml:11:", "verify.");
 }
 
+TEST(ScenarioErrors, TheMultibodyEngineRefusesAFreeBodyAndALoopOfJointsNamingThem) {
+  const std::string free_body = edited("joints:", "  - {name: loose_weight, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:");
+  EXPECT_NAMES(error_for(free_body), "bad.yaml:5:", "bodies[1].name", "'loose_weight' has no joint", "rigid_bodies");
+  EXPECT_EQ(error_for(free_body + "solver: {engine: rigid_bodies}\n"), "");
+  // wheel on arm, arm on wheel: a loop.
+  std::string loop =
+      edited("joints:\n",
+             "  - {name: arm, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:\n  - {name: pivot, body: arm, parent: wheel}\n");
+  const std::string hinge = "body: wheel, axis";
+  loop.replace(loop.find(hinge), hinge.size(), "body: wheel, parent: arm, axis");
+  EXPECT_NAMES(error_for(loop), "loop of joints");
+}
+
 TEST(ScenarioErrors, DuplicateBodyName) {
   EXPECT_NAMES(error_for(edited("joints:", "  - {name: wheel, mass_kg: 1, principal_inertia_kg_m2: [1, 1, 1]}\njoints:")), "bodies[1].name",
                "a second body named 'wheel'");
