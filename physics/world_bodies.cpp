@@ -82,7 +82,7 @@ void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string
   GearSpec spec = *def.gear;
   spec.chordal_deviation_m = contact.chordal_deviation_m;
   const double density = def.density_kg_m3.value_or(0);
-  if (!def.mass_kg && !(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
+  GEARSIM_CHECK(def.mass_kg || density > 0, who + ": density_kg_m3 or mass_kg (input/ refuses a scenario without)");
   GearBody g = make_gear_body(spec, def.mass_kg ? 1.0 : density);
   if (def.mass_kg) g.mass = mass_properties(g.mesh, *def.mass_kg / g.mass.volume_m3);
   mass = g.mass;
@@ -104,7 +104,7 @@ void mesh_shape(const BodyDef& def, const ContactDef& contact, const std::string
   double density = def.density_kg_m3.value_or(0);
   const MassProperties unit = mass_properties(mesh, 1.0);
   if (def.mass_kg) density = *def.mass_kg / unit.volume_m3;
-  if (!(density > 0)) throw InputError(who + ": needs density_kg_m3 or mass_kg");
+  GEARSIM_CHECK(density > 0, who + ": density_kg_m3 or mass_kg (input/ refuses a scenario without)");
   if (def.mesh->teeth) {
     const std::string file = def.mesh->path.string();
     if (!f.gear)
@@ -145,14 +145,14 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
   const std::string who = "body '" + def.name + "'";
   std::optional<MassProperties> mass;
   ConvexPieces3 pieces;
-  if (def.gear && def.mesh) throw InputError(who + ": give a gear or a mesh, not both");
+  GEARSIM_CHECK(!(def.gear && def.mesh), who + ": one shape, a gear or a mesh (input/ refuses a scenario with both)");
   if (def.gear) {
     gear_shape(def, contact, who, b, mass, pieces);
   } else if (def.mesh) {
     mesh_shape(def, contact, who, b, mass, pieces);
   } else {
-    if (!def.mass_kg || !def.principal_inertia_kg_m2)
-      throw InputError(who + ": a body without gear or mesh needs mass_kg and principal_inertia_kg_m2");
+    GEARSIM_CHECK(def.mass_kg && def.principal_inertia_kg_m2,
+                  who + ": a shapeless body's mass_kg and principal_inertia_kg_m2 (input/ refuses one without)");
     MassProperties m;
     m.mass_kg = *def.mass_kg;
     m.principal_moments_kg_m2 = *def.principal_inertia_kg_m2;
@@ -160,7 +160,7 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
   }
   if ((def.gear || def.mesh) && def.principal_inertia_kg_m2) {
     // Given moments replace the shape's (about its centre of mass, in the body's own axes).
-    if (!def.mass_kg) throw InputError(who + ": principal_inertia_kg_m2 on a shaped body needs mass_kg");
+    GEARSIM_CHECK(def.mass_kg.has_value(), who + ": principal_inertia_kg_m2 on a shaped body with mass_kg (input/ refuses it without)");
     mass->principal_moments_kg_m2 = *def.principal_inertia_kg_m2;
     mass->principal_axes = Eigen::Matrix3d::Identity();
     mass->inertia_com_kg_m2 = def.principal_inertia_kg_m2->asDiagonal();
