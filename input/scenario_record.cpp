@@ -325,8 +325,12 @@ physics::Scenario scenario_from_json(const nlohmann::json& j, const fs::path& fi
   s.contact = contact_of(r.object("contact"));
   // The verification switches: a record's verify object, or in records written before it the
   // same keys in solver and contact.
-  const bool has_verify = r.has("verify");
-  verify_switches_of(has_verify ? r.object("verify") : solver, has_verify ? r.object("verify") : r.object("contact"), s);
+  if (r.has("verify")) {
+    const Node verify = r.object("verify");
+    verify_switches_of(verify, verify, s);
+  } else {
+    verify_switches_of(solver, r.object("contact"), s);
+  }
   for (const Node& b : r.list("bodies")) s.bodies.push_back(body_of(b));
   for (const Node& jd : r.list("joints")) s.joints.push_back(joint_of(jd));
   read_rest(r, s);
