@@ -37,9 +37,12 @@ double knot_resolution_m(const std::vector<FlankKnots>& flanks);
 // where a stencil shifted by one knot has a third divided difference at least 4 times smaller,
 // that one — next to the knot where an involute meets its fillet the centred cubic would reach
 // into the fillet's curvature), or, where that cubic leaves the range of its interval's two
-// knots (a corner, a straight radial piece next to an involute), the shape-preserving Hermite
-// cubic of Fritsch and Carlson (PCHIP) instead.
-void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double* out);
+// knots (a corner, a straight radial piece next to an involute) or bows off its interval's chord
+// by more than twice the sagitta of the circles through neighbouring knots plus the larger of
+// 0.5 µm and `resolution_m` (knots so far apart that the cubic reaches for a neighbour's
+// curvature: a flank of one or two chords), the shape-preserving Hermite cubic of Fritsch and
+// Carlson (PCHIP) instead.
+void sample_flank(const FlankKnots& k, double r0, double dr, int samples, double* out, double resolution_m = 0);
 
 // How far sampled flank values stray from the polyline of their knots, beyond the sagitta a
 // smooth curve through those knots has (from the circles through neighbouring knots), m.

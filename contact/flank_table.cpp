@@ -64,7 +64,7 @@ FlankTable::FlankTable(const Polygon2& loop, const ToothLayout& layout, bool int
     for (int side = 0; side < 2; ++side) {
       const FlankKnots& k = flanks[static_cast<std::size_t>(t) * 2 + side];
       double* row = (side == 0 ? ccw_ : cw_).data() + static_cast<std::size_t>(t) * samples;
-      sample_flank(k, r_min_, dr_, samples, row);
+      sample_flank(k, r_min_, dr_, samples, row, knot_resolution_m_);
       const FlankDeparture d = flank_departure(k, r_min_, dr_, samples, row);
       if (d.departure_m > departure_.departure_m) departure_ = {d.departure_m, t, side == 0 ? Flank::Ccw : Flank::Cw, d.r_m};
     }
