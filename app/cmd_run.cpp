@@ -88,10 +88,12 @@ void run(const RunOptions& o) {
   throw_if_stopped(r, dir);
   // The analysis and the scenario's renders of the finished run; a run too short (or of a train
   // the analysis does not know) keeps its logs and says why it was not analysed or rendered.
+  std::string not_analysed;  // why the analysis was refused: the command's exit code says so at its end
   if (!o.no_analyze) try {
       print_analysis(write_run_analysis(open_run_dir(dir)), std::cout);
     } catch (const InputError& e) {
-      std::cout << "not analysed: " << e.what() << "\n";
+      not_analysed = e.what();
+      std::cout << "not analysed: " << not_analysed << "\n";
     }
   // A signal during the analysis (not interruptible: it takes a fraction of the run's time)
   // ends the command with the signal's code once the analysis is written, and what was asked
@@ -100,15 +102,16 @@ void run(const RunOptions& o) {
     throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint,
                      std::string("interrupted by ") + signal_name(sig) + " after the run and its analysis" +
                          (s.render ? ": not rendered" : "") + " (the run is complete in " + dir.string() + ")");
-  if (!s.render) return;
-  try {
-    const RenderResult rendered = render_run(open_run_dir(dir), *s.render, stop_signal);
-    throw_if_render_stopped(rendered, dir);
-    std::cout << "rendered " << rendered.frames << " frames of " << rendered.from_s << "–" << rendered.to_s
-              << " s: " << rendered.video.string() << "\n";
-  } catch (const InputError& e) {
-    std::cout << "not rendered: " << e.what() << "\n";
-  }
+  if (s.render) try {
+      const RenderResult rendered = render_run(open_run_dir(dir), *s.render, stop_signal);
+      throw_if_render_stopped(rendered, dir);
+      std::cout << "rendered " << rendered.frames << " frames of " << rendered.from_s << "–" << rendered.to_s
+                << " s: " << rendered.video.string() << "\n";
+    } catch (const InputError& e) {
+      std::cout << "not rendered: " << e.what() << "\n";
+    }
+  if (!not_analysed.empty())
+    throw RunStopped(kExitNotAnalysed, "the run completed (logs in " + dir.string() + ") but was not analysed: " + not_analysed);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ constexpr int kExitSweepCasesFailed = 5;  // a sweep ran to its end, some cases 
 constexpr int kExitOutputError = 6;  // an output could not be written (disk full, permission): named, nothing half-written left
 constexpr int kExitFolderBusy = 7;  // another gearsim command is writing into the output folder (named)
 constexpr int kExitToolFailed = 8;  // a program or library gearsim drives failed (CalculiX, OSMesa, FFmpeg): named, what was kept said
+constexpr int kExitNotAnalysed = 9;  // a run completed (logs valid) but its analysis was refused: the message says why
 constexpr int kExitSigint = 130;  // a run stopped by SIGINT (128 + 2): logs kept up to that step
 constexpr int kExitSigterm = 143;  // the same for SIGTERM (128 + 15)
 

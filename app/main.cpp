@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
       "6 an output could not be written (disk full, no permission: the file and the reason named; nothing half-written\n"
       "left in its place), 7 another gearsim command is writing into the output folder (the holder named),\n"
       "8 a program or library gearsim drives failed (CalculiX, OSMesa, FFmpeg: named, and what was kept),\n"
+      "9 a run completed (its logs valid) but its analysis was refused (the message says why),\n"
       "130/143 a run stopped by SIGINT/SIGTERM (summary.json status interrupted; logs kept up to that step)."};
   app.require_subcommand(1);
   gearsim::app::register_tolerance(app);

@@ -67,7 +67,10 @@ json summary_json(const RunSource& source, const physics::Scenario& s, const sim
   j["wall_seconds_per_sim_second"] = r.sim_seconds > 0 ? r.wall_seconds / r.sim_seconds : 0.0;
   j["mean_speed_window_s"] = {r.steady_from_s, r.sim_seconds};
   json bodies = json::object();
-  for (const sim::BodyResult& b : r.bodies) bodies[b.name] = {{"mean_speed_rad_s", b.mean_speed_rad_s}};
+  for (const sim::BodyResult& b : r.bodies)
+    bodies[b.name] = {{"parent", b.parent},
+                      {"mean_absolute_speed_rad_s", b.mean_absolute_speed_rad_s},
+                      {"mean_speed_relative_to_parent_rad_s", b.mean_speed_relative_rad_s}};
   j["bodies"] = bodies;
   if (r.ratio) {
     j["ratio"] = *r.ratio;

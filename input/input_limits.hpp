@@ -157,6 +157,11 @@ constexpr Limit kDamping_N_s_per_m{0, 1e10, false, "N·s/m", "a damping"};
 constexpr Limit kTorsionalStiffness_N_m_per_rad{0, 1e12, false, "N·m/rad", "a torsional stiffness"};
 // Torsional damping, N·m·s/rad.
 constexpr Limit kTorsionalDamping_N_m_s_per_rad{0, 1e10, false, "N·m·s/rad", "a torsional damping"};
+// A shaft's length between the members it joins, m: a coupling's few mm to a wind turbine's
+// main shaft (a few m).
+constexpr Limit kShaftLength_m{0, 100, false, "m", "a shaft length"};
+// Shear modulus of a shaft's material, Pa: polymers (~1 GPa) to tungsten carbide (~270 GPa).
+constexpr Limit kShearModulus_Pa{1e8, 1e12, false, "Pa", "a shear modulus"};
 // Damping ratios ζ: 1 is critical; 10 stops any vibration within a fraction of a period.
 constexpr Limit kDampingRatio{0, 10, false, "", "a damping ratio"};
 // Coulomb friction coefficient: dry steel on steel is 0.6–0.8; 2 is past any metal pair.

@@ -57,6 +57,7 @@ struct Names {
   std::map<std::string, const physics::BodyDef*> bodies;
   std::map<std::string, std::string> joint_of_body;  // body → its hinge
   std::set<std::string> joints;
+  std::set<std::string> shaft_joints;  // joints of members that turn on a shaft
 };
 
 physics::JointDef parse_joint(const YamlMap& m, const Names& names) {
@@ -94,6 +95,10 @@ void add_joint(Names& names, const physics::JointDef& j, const YamlMap& at, cons
 std::string joint_ref(const YamlMap& m, const std::string& key, const Names& names) {
   const std::string j = m.string(key);
   if (!names.joints.count(j)) m.fail(key, "no joint named '" + j + "'");
+  if (names.shaft_joints.count(j))
+    m.fail(key, "joint '" + j +
+                    "' is a shaft's downstream end (it turns relative to the shaft's upstream member): a motor, a load or a "
+                    "transmission acts on a member that turns on the ground, e.g. the shaft's upstream member");
   return j;
 }
 
@@ -227,8 +232,25 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
   if (given(top, "bodies")) body_maps = top.list_of_maps("bodies");
   for (const YamlMap& m : body_maps) s.bodies.push_back(parse_body(m, dir));
   std::vector<std::pair<Expansion, std::string>> macros;
+  if (given(top, "stages"))
+    for (const char* single : {"planetary", "pair"})
+      if (given(top, single))
+        top.fail(single, "give it as one of `stages` (a train of stages), or give no `stages`: a scenario is one or the other");
   if (given(top, "planetary")) macros.emplace_back(expand_planetary(top.map("planetary"), dir), "planetary");
   if (given(top, "pair")) macros.emplace_back(expand_pair(top.map("pair"), dir), "pair");
+  std::vector<Stage> stages;
+  if (given(top, "stages")) {
+    stages = expand_stages(top, dir);
+    for (const Stage& st : stages) {
+      Expansion e = st.expansion;
+      e.transmission.reset();  // the train's, chained through the shafts below, instead
+      e.planetary.reset();  // the single-stage planetary train's tools (FE TE, its analysis) do not apply
+      e.gearset_spec.clear();
+      macros.emplace_back(std::move(e), "stages");
+    }
+  } else if (given(top, "shafts")) {
+    top.fail("shafts", "shafts join the members of `stages`: give the train as stages");
+  }
   for (const auto& [e, key] : macros) {
     s.bodies.insert(s.bodies.end(), e.bodies.begin(), e.bodies.end());
     if (!e.gearset_spec.empty()) s.gearset_spec = e.gearset_spec;
@@ -260,6 +282,14 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
       add_joint(names, s.joints.back(), m, "name");
     }
 
+  if (!stages.empty()) {
+    if (given(top, "shafts")) names.shaft_joints = apply_shafts(top, s, stages);
+    if (std::optional<physics::TransmissionDef> t = chained_transmission(stages, s.joints)) {
+      Expansion train;
+      train.transmission = t;
+      macros.emplace_back(std::move(train), "stages");
+    }
+  }
   require_multibody_tree(s, names, where);
   parse_drives(top, names, s);
   s.transmission = parse_transmission(top, macros, names);

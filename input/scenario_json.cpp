@@ -80,7 +80,8 @@ ojson joint_json(const physics::JointDef& jd) {
     j["bearing"] = {{"radial_stiffness_N_per_m", jd.bearing->radial_stiffness_N_per_m},
                     {"radial_damping_N_s_per_m", jd.bearing->radial_damping_N_s_per_m},
                     {"torsional_stiffness_N_m_per_rad", jd.bearing->torsional_stiffness_N_m_per_rad},
-                    {"torsional_damping_N_m_s_per_rad", jd.bearing->torsional_damping_N_m_s_per_rad}};
+                    {"torsional_damping_N_m_s_per_rad", jd.bearing->torsional_damping_N_m_s_per_rad},
+                    {"radially_rigid", jd.bearing->radially_rigid}};
   return j;
 }
 

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,29 @@ Expansion expand_planetary(const YamlMap& m, const std::filesystem::path& dir);
 // The `pair:` macro: two gears on hinges, meshing. External: driver at the origin, driven on
 // +x. Internal (one member a ring, either the driver): the ring at the origin, the pinion on +x.
 Expansion expand_pair(const YamlMap& m, const std::filesystem::path& dir);
+
+// `stages:` — each stage a planetary or pair macro (its keys; origin_m places it), its bodies,
+// joints and gear tables named "<stage>_<member>" (scenario_stages.cpp).
+struct Stage {
+  std::string name;
+  std::string key;  // planetary or pair
+  Expansion expansion;
+};
+std::vector<Stage> expand_stages(const YamlMap& top, const std::filesystem::path& dir);
+
+// `shafts:` (after the joints): each {from, to, torsional_stiffness_N_m_per_rad or length_m and
+// diameter_m [inner_diameter_m, shear_modulus_Pa], torsional_damping_N_m_s_per_rad, name} makes
+// `to` turn on `from` about their common axis, held by the shaft's torsional spring and damper
+// (a radially rigid BearingDef). InputError naming the entry for an unknown or fixed body, two
+// members of one stage, members not on one axis line, a `to` that does not turn on the ground
+// on a plain hinge or already turns on a shaft. Returns the joints that now turn on shafts.
+std::set<std::string> apply_shafts(const YamlMap& top, physics::Scenario& s, const std::vector<Stage>& stages);
+
+// The train's transmission when every stage proposes one and shafts join each stage's output
+// member to the next one's input member: the first stage's input, the last one's output, the
+// product of the ratios. None otherwise.
+std::optional<physics::TransmissionDef> chained_transmission(const std::vector<Stage>& stages,
+                                                             const std::vector<physics::JointDef>& joints);
 
 // contact.stiffness_tables (after the bodies are known): each entry {gears: [A, B], file: CSV}
 // becomes one physics::PairStiffnessDef per meshing body pair it matches (A names a body, or the

@@ -123,8 +123,13 @@ physics::JointDef joint_of(const Node& n) {
                       {}};
   if (n.has("bearing")) {
     const Node b = n.object("bearing");
-    j.bearing = physics::BearingDef{b.number_within("radial_stiffness_N_per_m", limits::kStiffness_N_per_m),
-                                    b.number_within("radial_damping_N_s_per_m", limits::kDamping_N_s_per_m), 0, 0};
+    // Records written before shafts existed have no radially_rigid (a bearing). A shaft has no
+    // radial spring (0).
+    const bool shaft = b.has("radially_rigid") && b.boolean("radially_rigid");
+    j.bearing = physics::BearingDef{
+        b.number_within("radial_stiffness_N_per_m",
+                        shaft ? Limit{0, 0, false, "N/m", "a shaft's radial stiffness (none)"} : limits::kStiffness_N_per_m),
+        b.number_within("radial_damping_N_s_per_m", limits::kDamping_N_s_per_m), 0, 0, shaft};
     // Records written before torsional supports existed have neither key (a torsionally free bearing).
     if (b.has("torsional_stiffness_N_m_per_rad"))
       j.bearing->torsional_stiffness_N_m_per_rad =

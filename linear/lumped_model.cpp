@@ -53,17 +53,17 @@ void add_joints(LumpedModel& m, const physics::WorldStructure& w) {
     const Eigen::RowVectorXd rx = rows.point(j.body, pivot, ex) - rows.point(j.parent, pivot, ex);
     const Eigen::RowVectorXd ry = rows.point(j.body, pivot, ey) - rows.point(j.parent, pivot, ey);
     const Eigen::RowVectorXd rt = rows.turn(j.body) - rows.turn(j.parent);
-    if (!jd.bearing) {
+    if (!jd.bearing || jd.bearing->radially_rigid) {
       add_constraint(m, rx, "hinge " + jd.name + " x");
       add_constraint(m, ry, "hinge " + jd.name + " y");
     } else {
       Element e{Element::Kind::Bearing, jd.body, jd.bearing->radial_stiffness_N_per_m * (rx.transpose() * rx + ry.transpose() * ry),
                 jd.bearing->radial_stiffness_N_per_m};
       m.elements.push_back(std::move(e));
-      if (jd.bearing->torsional_stiffness_N_m_per_rad > 0)
-        m.elements.push_back({Element::Kind::Torsion, jd.body, jd.bearing->torsional_stiffness_N_m_per_rad * (rt.transpose() * rt),
-                              jd.bearing->torsional_stiffness_N_m_per_rad});
     }
+    if (jd.bearing && jd.bearing->torsional_stiffness_N_m_per_rad > 0)  // a torsional support, or a shaft
+      m.elements.push_back({Element::Kind::Torsion, jd.body, jd.bearing->torsional_stiffness_N_m_per_rad * (rt.transpose() * rt),
+                            jd.bearing->torsional_stiffness_N_m_per_rad});
     if (j.motor) add_constraint(m, rt, "motor " + jd.name);
   }
 }

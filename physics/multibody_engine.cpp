@@ -125,7 +125,7 @@ void MultibodyEngine::build_tree() {
     const btVector3 inertia(1 / inv.x(), 1 / inv.y(), 1 / inv.z());
     const btVector3 pivot = bt(jr.def.pivot_m);
     const btVector3 axis_here = quatRotate(ti.getRotation().inverse(), bt(jr.axis_world));
-    if (jr.def.bearing)
+    if (jr.def.bearing && !jr.def.bearing->radially_rigid)
       tree_->setupPlanar(static_cast<int>(l), b.mass_kg, inertia, parent_link, parent_to_this, axis_here, tp.invXform(ti.getOrigin()),
                          false);
     else

@@ -148,7 +148,7 @@ void bearing_rows(RowBuilder& rb, const Model& model, const Integrator& integ, s
   const btVector3 axis = bt(jr.axis_world);
   const btVector3 e1 = unit_perpendicular(axis), e2 = axis.cross(e1);
   for (const btVector3& d : {e1, e2}) {
-    if (!(bd.radial_stiffness_N_per_m > 0 || bd.radial_damping_N_s_per_m > 0)) break;
+    if (bd.radially_rigid || !(bd.radial_stiffness_N_per_m > 0 || bd.radial_damping_N_s_per_m > 0)) break;
     MultibodyRow r = integ.spring_row(bd.radial_stiffness_N_per_m, bd.radial_damping_N_s_per_m,
                                       -bd.radial_stiffness_N_per_m * (centre - housing).dot(d));
     r.kind = MultibodyRow::bearing;

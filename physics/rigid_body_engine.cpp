@@ -37,11 +37,13 @@ btGeneric6DofSpring2Constraint* make_spring(const JointDef& jd, btRigidBody& rb,
   } else {
     spring = new btGeneric6DofSpring2Constraint(rb, in_body);
   }
-  spring->setLinearLowerLimit(btVector3(1, 1, 0));  // x, y free (lower > upper), z locked
-  spring->setLinearUpperLimit(btVector3(-1, -1, 0));
+  // x, y free (lower > upper) on their springs, z locked; all locked for a shaft.
+  const double radial = jd.bearing->radially_rigid ? 0 : 1;
+  spring->setLinearLowerLimit(btVector3(radial, radial, 0));
+  spring->setLinearUpperLimit(btVector3(-radial, -radial, 0));
   spring->setAngularLowerLimit(btVector3(0, 0, 1));  // tilts locked, spin free
   spring->setAngularUpperLimit(btVector3(0, 0, -1));
-  for (int axis = 0; axis < 2; ++axis) {
+  for (int axis = 0; axis < 2 && !jd.bearing->radially_rigid; ++axis) {
     spring->enableSpring(axis, true);
     spring->setStiffness(axis, jd.bearing->radial_stiffness_N_per_m);
     spring->setDamping(axis, jd.bearing->radial_damping_N_s_per_m);

@@ -59,11 +59,14 @@ struct BodyDef {
 // radial spring and damper, and (torsional_stiffness > 0) the body's turn relative to its parent
 // is held by a torsional spring and damper (a ring gear held against rotation, a flexible
 // coupling). Torsional 0: free to turn, as a hinge.
+// radially_rigid: a shaft or coupling between coaxial members instead: the pivot held as by a
+// hinge (no radial spring), only the turn relative to the parent elastic.
 struct BearingDef {
   double radial_stiffness_N_per_m = 0;
   double radial_damping_N_s_per_m = 0;
   double torsional_stiffness_N_m_per_rad = 0;
   double torsional_damping_N_m_s_per_rad = 0;
+  bool radially_rigid = false;
 };
 
 // A revolute joint of `body` about `axis` through `pivot_m` (world, at t = 0), to `parent`

@@ -185,10 +185,34 @@ BuiltBody build_body(const BodyDef& def, const ContactDef& contact) {
   return b;
 }
 
-bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
+namespace {
+
+// Where gear b's frame lies from gear a's: along a's axis and across it (in a's plane), m.
+struct AxialOffset {
+  double along_m = 0, across_m = 0;
+};
+AxialOffset offset_of(const BuiltBody& a, const BuiltBody& b) {
   const btTransform ta = a.rigid->getWorldTransform() * a.com_from_gear;
   const btTransform tb = b.rigid->getWorldTransform() * b.com_from_gear;
-  const double d = (ta.getOrigin() - tb.getOrigin()).length();
+  const btVector3 axis = ta.getBasis().getColumn(2), sep = tb.getOrigin() - ta.getOrigin();
+  const double along = sep.dot(axis);
+  return {along, (sep - along * axis).length()};
+}
+
+}  // namespace
+
+double axial_overlap_m(const BuiltBody& a, const BuiltBody& b) {
+  // Each gear frame sits at mid face width: the faces span ±w/2 about it along the axis.
+  const double along = offset_of(a, b).along_m;
+  return std::min(0.5 * a.face_width_m, along + 0.5 * b.face_width_m) - std::max(-0.5 * a.face_width_m, along - 0.5 * b.face_width_m);
+}
+
+bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
+  // Gears mesh in a plane: their faces must overlap along the axis (gears of two stages side by
+  // side on one shaft line do not touch however close their axes are), and their toothed
+  // zones must reach each other across it.
+  if (!(axial_overlap_m(a, b) > 0)) return false;
+  const double d = offset_of(a, b).across_m;
   const contact::FlankTable &fa = *a.flanks, &fb = *b.flanks;
   bool reach;
   if (!fa.internal() && !fb.internal())
@@ -199,8 +223,9 @@ bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b) {
     reach = d + ext.r_max_m() > ring.r_min_m() && d < ring.r_max_m();
   }
   if (!reach) return false;
-  const double parallel = ta.getBasis().getColumn(2).dot(tb.getBasis().getColumn(2));
-  if (std::abs(parallel) < 1 - 1e-9)
+  const btVector3 za = (a.rigid->getWorldTransform() * a.com_from_gear).getBasis().getColumn(2);
+  const btVector3 zb = (b.rigid->getWorldTransform() * b.com_from_gear).getBasis().getColumn(2);
+  if (std::abs(za.dot(zb)) < 1 - 1e-9)
     throw InputError("gears '" + a.name + "' and '" + b.name +
                      "' overlap but their axes are not parallel: tooth contact "
                      "supports spur gears on parallel axes");
@@ -226,12 +251,13 @@ void require_clear_mesh(const BuiltBody& a, const contact::PlanarPose& pose_a, c
   const bool ring = fb.internal();
   if (ring ? d + fa.r_max_m() > fb.r_max_m() : d < fa.r_min_m() + fb.r_min_m()) {
     std::ostringstream msg;
-    msg << "scenario: gears '" << a.name << "' and '" << b.name << "' are " << d * 1e3 << " mm apart but "
+    msg << "scenario: gears '" << a.name << "' and '" << b.name << "' share a plane (their faces overlap by " << axial_overlap_m(a, b) * 1e3
+        << " mm along the axis) and are " << std::round(d * 1e9) * 1e-6 << " mm apart, but "
         << (ring ? "the external gear's tip circle (" + std::to_string(fa.r_max_m() * 1e3) + " mm) crosses the ring's root circle (" +
                        std::to_string(fb.r_max_m() * 1e3) + " mm)"
                  : "their root circles (" + std::to_string(fa.r_min_m() * 1e3) + " and " + std::to_string(fb.r_min_m() * 1e3) +
                        " mm) overlap: one body lies inside the other")
-        << ". Check the centre distance and the meshes' unit";
+        << ". Check the centre distance, the meshes' unit and the gears' positions along the axis (gears in different planes do not mesh)";
     throw InputError(msg.str());
   }
   const contact::MeshCycleOverlap o = contact::mesh_cycle_overlap(*a.flanks, pose_a, *b.flanks, pose_b, kMeshCycleSteps);
@@ -261,7 +287,7 @@ GearPairInfo pair_contact(const BuiltBody& a, const BuiltBody& b, const ContactD
   GearPairInfo info;
   info.body_a = a.name;
   info.body_b = b.name;
-  info.face_width_m = std::min(a.face_width_m, b.face_width_m);
+  info.face_width_m = axial_overlap_m(a, b);  // both faces' width where they share a plane
   info.stiffness_N_per_m = c.stiffness_N_per_m_per_m * info.face_width_m;
   // Effective mass along the line of action from the rotational inertias (J/r²); a fixed gear
   // contributes none. Planet translation on its carrier is neglected here.

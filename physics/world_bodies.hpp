@@ -44,8 +44,13 @@ struct BuiltBody {
 
 BuiltBody build_body(const BodyDef& def, const ContactDef& contact);
 
-// Can the two gears' toothed zones reach each other (at their initial poses)? Throws InputError
-// when they could but their axes are not parallel.
+// How far the two gears' faces overlap along a's axis at their initial poses, m (≤ 0: they lie
+// side by side, in different planes): the face width their mesh has.
+double axial_overlap_m(const BuiltBody& a, const BuiltBody& b);
+
+// Can the two gears' toothed zones reach each other (at their initial poses)? Only gears whose
+// faces overlap along the axis do: gears in different planes never mesh, however close their
+// axes. Throws InputError when they could but their axes are not parallel.
 bool gears_can_mesh(const BuiltBody& a, const BuiltBody& b);
 
 // Whether a pair macro chose the centre distance of gears a and b (no centre_distance_m given).

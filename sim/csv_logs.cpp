@@ -43,10 +43,13 @@ std::vector<double> CsvLogs::filtered_channels(const physics::World& world) cons
 
 double CsvLogs::transmission_error_rad(const physics::World& world) const {
   return world.bodies()[static_cast<std::size_t>(te_in_)].angle_rad -
-         scenario_.transmission->ratio * world.bodies()[static_cast<std::size_t>(te_out_)].angle_rad;
+         scenario_.transmission->ratio * world.bodies()[static_cast<std::size_t>(te_out_)].angle_rad - assembly_phase_rad_;
 }
 
 void CsvLogs::on_start(const physics::World& world) {
+  // The transmission error of the start poses: the assembly phase, removed from every sample.
+  assembly_phase_rad_ = 0;
+  if (scenario_.transmission) assembly_phase_rad_ = transmission_error_rad(world);
   state_ = open_log(dir_ / "state.csv");
   contacts_ = open_log(dir_ / "contacts.csv");
   pairs_ = world.gear_pairs().size();
@@ -57,7 +60,7 @@ void CsvLogs::on_start(const physics::World& world) {
   // sensor on the housing at that bearing sees), after every other column.
   moving_.clear();
   for (const physics::JointDef& j : scenario_.joints)
-    if (j.bearing && j.parent == "ground")
+    if (j.bearing && !j.bearing->radially_rigid && j.parent == "ground")
       for (std::size_t i = 0; i < world.bodies().size(); ++i)
         if (world.bodies()[i].name == j.body) {
           moving_.push_back({i, world.bodies()[i].position_m});
@@ -72,7 +75,7 @@ void CsvLogs::on_start(const physics::World& world) {
     return -1L;
   };
   for (const physics::JointDef& j : scenario_.joints) {
-    if (!j.bearing || j.parent == "ground") continue;
+    if (!j.bearing || j.bearing->radially_rigid || j.parent == "ground") continue;
     bool parent_on_ground = false;
     for (const physics::JointDef& pj : scenario_.joints)
       parent_on_ground = parent_on_ground || (pj.body == j.parent && pj.parent == "ground");

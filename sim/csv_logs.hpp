@@ -2,7 +2,8 @@
 // SI units in every column name:
 //  - state.csv: every body's angle and speed — POINT SAMPLES of the step at the sample time (slow
 //    states; their spectra are not reported from this file) — and, when the scenario names a
-//    transmission, its error `te_rad` ANTI-ALIASED like the forces below (the peak-to-peak and
+//    transmission, its error `te_rad` (θ_in − ratio·θ_out less its value at the start poses, the
+//    assembly phase: 0 for gears that start in mesh unloaded) ANTI-ALIASED like the forces below (the peak-to-peak and
 //    spectra `analyze` reports; the per-step TE carries the contact modes' ringing, which a point
 //    sample folds in and which is not converged at the usual steps) and `te_point_rad`, the point
 //    sample; bearing displacements, point samples.
@@ -76,6 +77,7 @@ class CsvLogs : public Observer {
   };
   std::vector<Carried> carried_;
   int te_in_ = -1, te_out_ = -1;  // bodies of the transmission's input and output joints
+  double assembly_phase_rad_ = 0;  // θ_in − ratio·θ_out of the start poses (before the first step)
   long every_ = 1;  // steps per output sample
   std::optional<DecimationFilter> filter_;
   std::optional<Decimator> decimator_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 
 #include "core/errors.hpp"
 
@@ -51,6 +52,42 @@ struct SteadyWindow {
   long steps = 0;
 };
 
+// Each body's mean speeds, relative and absolute (world bodies in the scenario's order). A
+// body's absolute angular velocity is its parent's plus its relative speed along its joint axis.
+std::vector<BodyResult> body_results(const physics::Scenario& s, const physics::World& world, const SteadyWindow& steady, double h) {
+  const std::size_t n = world.bodies().size();
+  std::map<std::string, std::size_t> index;
+  for (std::size_t b = 0; b < n; ++b) index[world.bodies()[b].name] = b;
+  std::vector<int> parent(n, -1);
+  std::vector<Eigen::Vector3d> axis(n, Eigen::Vector3d::UnitZ());
+  std::vector<BodyResult> out(n);
+  for (std::size_t b = 0; b < n; ++b) out[b] = {world.bodies()[b].name, "ground", steady.mean_speed_rad_s(b, h), 0.0};
+  for (const physics::JointDef& j : s.joints) {
+    const auto b = index.find(j.body), p = index.find(j.parent);
+    if (b == index.end()) continue;
+    axis[b->second] = j.axis.normalized();
+    if (p != index.end()) parent[b->second] = static_cast<int>(p->second), out[b->second].parent = j.parent;
+  }
+  std::vector<Eigen::Vector3d> omega(n, Eigen::Vector3d::Zero());
+  std::vector<char> done(n, 0);
+  for (std::size_t b = 0; b < n; ++b) {
+    // The chain up to the ground or a body already done (the joints form a tree; a loop, which
+    // only rigid_bodies accepts, is cut where it closes), then down it.
+    std::vector<std::size_t> chain{b};
+    while (!done[chain.back()] && parent[chain.back()] >= 0 && chain.size() <= n)
+      chain.push_back(static_cast<std::size_t>(parent[chain.back()]));
+    for (auto c = chain.rbegin(); c != chain.rend(); ++c) {
+      if (done[*c]) continue;
+      const Eigen::Vector3d up = parent[*c] >= 0 && done[static_cast<std::size_t>(parent[*c])] ? omega[static_cast<std::size_t>(parent[*c])]
+                                                                                               : Eigen::Vector3d::Zero();
+      omega[*c] = up + out[*c].mean_speed_relative_rad_s * axis[*c];
+      done[*c] = 1;
+    }
+    out[b].mean_absolute_speed_rad_s = omega[b].dot(axis[b]);
+  }
+  return out;
+}
+
 // Means over the steady window, the pairs and the counters into the summary.
 void fill_results(const physics::Scenario& s, const physics::World& world, const SteadyWindow& steady, RunSummary& r) {
   const double n = static_cast<double>(steady.steps);
@@ -62,10 +99,10 @@ void fill_results(const physics::Scenario& s, const physics::World& world, const
   r.dropped_contacts = world.dropped_contacts();
   r.stiffness_table_misses = world.stiffness_table_misses();
   const double h = s.solver.time_step_s;
-  for (std::size_t b = 0; b < world.bodies().size(); ++b) r.bodies.push_back({world.bodies()[b].name, steady.mean_speed_rad_s(b, h)});
+  r.bodies = body_results(s, world, steady, h);
   if (s.transmission && steady.steps) {
-    const double out = steady.mean_speed_rad_s(static_cast<std::size_t>(body_of_joint(s, s.transmission->output_joint)), h);
-    const double in = steady.mean_speed_rad_s(static_cast<std::size_t>(body_of_joint(s, s.transmission->input_joint)), h);
+    const double out = r.bodies[static_cast<std::size_t>(body_of_joint(s, s.transmission->output_joint))].mean_absolute_speed_rad_s;
+    const double in = r.bodies[static_cast<std::size_t>(body_of_joint(s, s.transmission->input_joint))].mean_absolute_speed_rad_s;
     r.ratio = out != 0 ? in / out : 0.0;
   }
   for (std::size_t p = 0; p < world.gear_pairs().size(); ++p)

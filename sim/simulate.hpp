@@ -32,10 +32,15 @@ struct SimOptions {
   std::function<void(long step, long total, double time_s)> progress;
 };
 
-// One body's mean speed over the steady window (rad/s, relative to its parent).
+// One body's mean speed over the steady window, rad/s, about its joint's axis (+z for a body
+// without a joint): relative to the body it turns on (its joint's parent; a planet on its
+// carrier), and absolute (in the world frame: the parent's absolute angular velocity along that
+// axis added, down the joint tree).
 struct BodyResult {
   std::string name;
-  double mean_speed_rad_s = 0;
+  std::string parent;  // the joint's parent body, or "ground"
+  double mean_speed_relative_rad_s = 0;
+  double mean_absolute_speed_rad_s = 0;
 };
 
 // One gear pair as the world built it, with the mean normal force on each flank side of body a's
@@ -60,7 +65,7 @@ struct RunSummary {
   double steady_from_s = 0;  // the steady window: after the motor and load ramps …
   long steady_steps = 0;  // … this many steps, to sim_seconds
   std::vector<BodyResult> bodies;
-  std::optional<double> ratio;  // mean input over mean output speed (scenario transmission)
+  std::optional<double> ratio;  // mean absolute input over output speed (scenario transmission)
   std::vector<PairResult> pairs;
   double max_penetration_m = 0;
   double created_energy_J = 0;  // energy the solver created over the run (run_bounds.hpp)

@@ -1,5 +1,5 @@
 // A value inside a JSON document by its key path, as a sweep file names what to collect:
-// `bodies.wheel.mean_speed_rad_s`, `gear_pairs[0].mean_normal_force_N.ccw_flanks_of_a`. Keys may
+// `bodies.wheel.mean_absolute_speed_rad_s`, `gear_pairs[0].mean_normal_force_N.ccw_flanks_of_a`. Keys may
 // themselves hold dots (body names such as "gear.a"): at each level the longest key that matches
 // wins. Not JSON Pointer: the sweep's column names are these paths.
 #pragma once

@@ -1,6 +1,7 @@
 // What `gearsim run` reports in summary.json: the measured ratio and power balance of a short
-// paper run, numerical trouble counted as warnings, and a run that leaves its physical bounds
-// stopped as "diverged" with exit code 4 and its logs complete up to that step.
+// paper run, numerical trouble counted as warnings, a run that leaves its physical bounds
+// stopped as "diverged" with exit code 4 and its logs complete up to that step, and a completed
+// run whose analysis is refused ending with exit code 9.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -75,6 +76,25 @@ TEST(RunSummary, ADivergingRunStopsWithItsOwnExitCodeAndCompleteLogs) {
   EXPECT_DOUBLE_EQ(last_time(dir / "state.csv"), t);
   EXPECT_DOUBLE_EQ(last_time(dir / "contacts.csv"), t);
   EXPECT_FALSE(fs::exists(dir / "analysis.json"));  // a diverged run is not analysed
+}
+
+TEST(RunSummary, ACompletedRunWhoseAnalysisIsRefusedEndsWithItsOwnExitCode) {
+  // 10 ms of the spur pair: its load ramp alone lasts longer, the analysis has no steady window.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_summary_not_analysed";
+  fs::remove_all(dir);
+  const gearsim::test::CliRun r = gearsim::test::gearsim(std::string("run ") + GEARSIM_SOURCE_DIR +
+                                                         "/assets/scenarios/spur_pair.yaml --out " + dir.string() + " --duration 0.01");
+  EXPECT_EQ(r.exit_code, 9) << r.output;
+  EXPECT_NE(r.output.find("not analysed: "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("the run completed (logs in"), std::string::npos) << r.output;
+  std::ifstream f(dir / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(f)["status"], "completed");
+  EXPECT_FALSE(fs::exists(dir / "analysis.json"));
+  // --no-analyze asks for no analysis: nothing refused, exit 0.
+  const gearsim::test::CliRun plain =
+      gearsim::test::gearsim(std::string("run ") + GEARSIM_SOURCE_DIR + "/assets/scenarios/spur_pair.yaml --out " + dir.string() +
+                             " --duration 0.01 --no-analyze");
+  EXPECT_EQ(plain.exit_code, 0) << plain.output;
 }
 
 }  // namespace test_run_summary

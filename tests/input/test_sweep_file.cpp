@@ -44,7 +44,7 @@ TEST(SweepFile, GridAxesAndCollectAreRead) {
                                                        "  motors[0].target_speed_rad_s: {from: 10, to: 100, steps: 4}\n"
                                                        "  loads[0].constant_torque_N_m: [-1, 0.1, 2e-5]\n"
                                                        "collect:\n"
-                                                       "  summary: [bodies.wheel.mean_speed_rad_s]\n"
+                                                       "  summary: [bodies.wheel.mean_absolute_speed_rad_s]\n"
                                                        "  metrics: [dynamic_factor, rms_dynamic_te_rad]\n");
   const SweepFile f = load_sweep_file(p);
   EXPECT_TRUE(f.grid);

@@ -5,6 +5,8 @@
 // the same time, on the same rows.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -26,8 +28,8 @@ physics::Scenario spur_pair(const std::string& duration_s) {
                               {"duration_s=" + duration_s, "output.per_step_log=false"});
 }
 
-// Every step's summed force of pair 0 and transmission error (θ_pinion − ratio·θ_wheel), from
-// t = 0 (the world before the first step).
+// Every step's summed force of pair 0 and transmission error (θ_pinion − ratio·θ_wheel, less its
+// value at the start poses: the assembly phase), from t = 0 (the world before the first step).
 struct ForceRecorder : Observer {
   explicit ForceRecorder(double r) : ratio(r) {}
   void on_start(const physics::World& w) override { add(w); }
@@ -39,9 +41,10 @@ struct ForceRecorder : Observer {
     force_N.push_back(f);
     double pinion = 0, wheel = 0;
     for (const physics::BodyState& b : w.bodies()) (b.name == "pinion" ? pinion : b.name == "wheel" ? wheel : f) = b.angle_rad;
-    te_rad.push_back(pinion - ratio * wheel);
+    if (force_N.size() == 1) assembly_phase_rad = pinion - ratio * wheel;
+    te_rad.push_back(pinion - ratio * wheel - assembly_phase_rad);
   }
-  double ratio;
+  double ratio, assembly_phase_rad = 0;
   std::vector<double> force_N, te_rad;
 };
 
@@ -68,7 +71,12 @@ TEST(CsvLogs, ForceColumnIsTheDecimatedPerStepForceAndThePointColumnTheSample) {
     EXPECT_EQ(filtered[k], expected.values[k + 1]) << "row " << k;  // the same kernel: bit for bit
     EXPECT_EQ(point[k], rec.force_N[25 * (k + 1)]) << "row " << k;
   }
-  // state.csv's transmission error the same way: te_rad through the filter, te_point_rad the sample.
+  // state.csv's transmission error the same way: te_rad through the filter, te_point_rad the sample,
+  // both from 0 at the start poses. The wheel starts turned so that a pinion tooth sits in its gap
+  // (the assembly phase, here 3π/2 = 4.712 rad of θ_pinion − ratio·θ_wheel): a TE is the departure from it.
+  EXPECT_GT(std::abs(rec.assembly_phase_rad), 0.1);
+  EXPECT_EQ(rec.te_rad.front(), 0.0);
+  std::printf("assembly phase %.6f rad\n", rec.assembly_phase_rad);
   const UniformSignal te = decimate(rec.te_rad, filter, 0.0);
   const input::CsvTable st = input::read_csv(dir / "state.csv");
   ASSERT_EQ(st.column("time_s"), time);

@@ -88,7 +88,9 @@ TEST(Simulate, SteadyMeansFollowTheGearRatio) {
   ASSERT_EQ(r.bodies.size(), 2u);
   ASSERT_GT(r.steady_steps, 0);
   EXPECT_NEAR(r.steady_from_s, physics::ramps_end_s(s), 1e-15);
-  const double pinion = r.bodies[0].mean_speed_rad_s, wheel = r.bodies[1].mean_speed_rad_s;
+  const double pinion = r.bodies[0].mean_absolute_speed_rad_s, wheel = r.bodies[1].mean_absolute_speed_rad_s;
+  EXPECT_EQ(r.bodies[1].parent, "ground");
+  EXPECT_EQ(r.bodies[1].mean_speed_relative_rad_s, wheel);  // on the ground: the same
   EXPECT_NEAR(pinion, 50.0, 0.05);  // the motor's target
   EXPECT_NEAR(std::abs(wheel / pinion), 20.0 / 31.0, 2e-4);  // rigid teeth: the tooth ratio
   ASSERT_EQ(r.pairs.size(), 1u);
@@ -110,6 +112,22 @@ TEST(Simulate, TheMeanSpeedsAreTheRatesTheBodiesTurnAt) {
   ASSERT_TRUE(r.ratio.has_value());
   const double sun_turn_rad = 104.7 * (0.2 - r.steady_from_s);
   EXPECT_NEAR(*r.ratio, 5.0, 5.0 * 1e-4 / sun_turn_rad);
+  // A planet turns on its carrier: relative to it at −(z_ring/z_planet)·ω_c (it rolls inside the
+  // fixed ring), absolutely at (1 − z_ring/z_planet)·ω_c, ring 96, planets 36.
+  double carrier = 0;
+  for (const BodyResult& b : r.bodies)
+    if (b.name == "carrier") carrier = b.mean_absolute_speed_rad_s;
+  EXPECT_NEAR(carrier, 104.7 / 5, 104.7 / 5 * 1e-4);
+  int planets = 0;
+  for (const BodyResult& b : r.bodies) {
+    if (b.name.rfind("planet_", 0) != 0) continue;
+    ++planets;
+    EXPECT_EQ(b.parent, "carrier");
+    EXPECT_NEAR(b.mean_speed_relative_rad_s, -96.0 / 36 * carrier, 1e-4 * carrier) << b.name;
+    EXPECT_NEAR(b.mean_absolute_speed_rad_s, (1 - 96.0 / 36) * carrier, 1e-4 * carrier) << b.name;
+    EXPECT_NEAR(b.mean_absolute_speed_rad_s - b.mean_speed_relative_rad_s, carrier, 1e-12 * carrier) << b.name;
+  }
+  EXPECT_EQ(planets, 3);
 }
 
 }  // namespace test_simulate

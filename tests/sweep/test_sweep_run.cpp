@@ -26,7 +26,7 @@ const std::string kCases =
     "  - loads[0].constant_torque_N_m: 10\n"
     "  - loads[0].constant_torque_N_m: 200\n"
     "collect:\n"
-    "  summary: [bodies.wheel.mean_speed_rad_s]\n"
+    "  summary: [bodies.wheel.mean_absolute_speed_rad_s]\n"
     "  metrics: [dynamic_factor, mesh_frequency_hz, rms_dynamic_te_rad]\n";
 
 class SweepRun : public ::testing::Test {
@@ -48,7 +48,7 @@ TEST_F(SweepRun, DivergedCaseIsRecordedAndTheOthersComplete) {
   const auto rows = test::csv_rows(out_ / "sweep.csv");
   ASSERT_EQ(rows.size(), 4u) << r.output;
   EXPECT_EQ(rows[0],
-            (std::vector<std::string>{"index", "loads[0].constant_torque_N_m", "status", "summary.bodies.wheel.mean_speed_rad_s",
+            (std::vector<std::string>{"index", "loads[0].constant_torque_N_m", "status", "summary.bodies.wheel.mean_absolute_speed_rad_s",
                                       "dynamic_factor", "dynamic_factor.pinion__wheel", "mesh_frequency_hz", "rms_dynamic_te_rad"}));
   EXPECT_EQ(rows[1][2], "completed");
   EXPECT_EQ(rows[2][2], "completed");

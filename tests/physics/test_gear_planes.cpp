@@ -1,0 +1,202 @@
+// Gears mesh in planes: a two-stage reducer whose stages lie side by side along one shaft line
+// (stage 2's pinion on stage 1's wheel, 15 mm further along the axis) has exactly its two meshes,
+// whatever the distance between gears of different stages; gears of two stages whose faces
+// overlap along the axis are refused when one lies inside the other. A train written as
+// `stages:` joined by a `shafts:` entry turns at the product of its stages' ratios and each mesh
+// carries the torque its stage passes on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/errors.hpp"
+#include "input/scenario_file.hpp"
+#include "physics/world.hpp"
+#include "sim/run_bounds.hpp"
+#include "sim/simulate.hpp"
+#include "tests/support/asset_scenario.hpp"
+
+namespace gearsim::physics {
+namespace test_gear_planes {
+
+namespace fs = std::filesystem;
+
+// Stage 1: pinion_1 z 20 drives wheel_1 z 40 in the plane z = 0; stage 2: pinion_2 z 20 on
+// wheel_1's shaft line at z = `stage2_z_m`, turning on wheel_1 through a stiff torsional
+// coupling, drives wheel_2 z 40. Module 1 mm, 20°, faces 10 mm, zero-backlash distance 30 mm.
+// wheel_2 carries `load_N_m`.
+fs::path two_stage_file(double stage2_z_m, double load_N_m) {
+  const fs::path file = test::fresh_test_dir() / "two_stage.yaml";
+  auto gear = [](int z) {
+    return "{kind: external, teeth: " + std::to_string(z) + ", module_m: 0.001, face_width_m: 0.01, bore_diameter_m: 0.005}";
+  };
+  const std::string z2 = std::to_string(stage2_z_m);
+  std::ofstream(file) << "name: two_stage\nduration_s: 0.06\n"
+                         "solver: {time_step_s: 1.0e-5}\n"
+                         "output: {sample_rate_hz: 2000, per_step_log: false}\n"
+                         "bodies:\n"
+                         "  - {name: pinion_1, density_kg_m3: 7850, gear: "
+                      << gear(20)
+                      << "}\n"
+                         "  - {name: wheel_1, density_kg_m3: 7850, gear: "
+                      << gear(40)
+                      << ", position_m: [0.03, 0, 0], angle_deg: 4.5}\n"
+                         "  - {name: pinion_2, density_kg_m3: 7850, gear: "
+                      << gear(20) << ", position_m: [0.03, 0, " << z2
+                      << "]}\n"
+                         "  - {name: wheel_2, density_kg_m3: 7850, gear: "
+                      << gear(40) << ", position_m: [0.06, 0, " << z2
+                      << "], angle_deg: 4.5}\n"
+                         "joints:\n"
+                         "  - {name: pinion_1, body: pinion_1}\n"
+                         "  - {name: wheel_1, body: wheel_1}\n"
+                         "  - {name: pinion_2, body: pinion_2, parent: wheel_1,\n"
+                         "     bearing: {radial_stiffness_N_per_m: 1.0e9, torsional_stiffness_N_m_per_rad: 1.0e5,\n"
+                         "               torsional_damping_N_m_s_per_rad: 1.0}}\n"
+                         "  - {name: wheel_2, body: wheel_2}\n"
+                         "motors: [{joint: pinion_1, target_speed_rad_s: 20, ramp_time_s: 0.02, max_torque_N_m: 50}]\n"
+                         "loads: [{joint: wheel_2, constant_torque_N_m: "
+                      << load_N_m << ", ramp_time_s: 0.02}]\n";
+  return file;
+}
+
+TEST(GearPlanes, GearsOfStagesSideBySideMeshOnlyInTheirOwnPlane) {
+  // wheel_1 and pinion_2 share an axis 15 mm apart along it; wheel_1 and wheel_2 are 33.5 mm
+  // apart in space with tips reaching 42 mm: neither is a mesh. (Taken by their distance in
+  // space, both were, and refused: "root circles overlap: one body lies inside the other".)
+  const double rb40 = 0.5 * 40e-3 * std::cos(20 * M_PI / 180), force_N = 100;
+  const Scenario s = input::load_scenario(two_stage_file(0.015, -force_N * rb40), {});
+  World w(s);
+  ASSERT_EQ(w.gear_pairs().size(), 2u);
+  EXPECT_EQ(w.gear_pairs()[0].body_a + "–" + w.gear_pairs()[0].body_b, "pinion_1–wheel_1");
+  EXPECT_EQ(w.gear_pairs()[1].body_a + "–" + w.gear_pairs()[1].body_b, "pinion_2–wheel_2");
+  for (const GearPairInfo& p : w.gear_pairs()) EXPECT_DOUBLE_EQ(p.face_width_m, 0.01);
+  // Running: wheel_2 turns at a quarter of pinion_1's speed (the product of the stages' 2 and
+  // 2), and each mesh carries its torque over its base radius: stage 2 F = 100 N, stage 1
+  // 50 N (wheel_1's torque is pinion_2's, on half the base radius).
+  sim::RunBounds bounds(s, w);
+  double speed_in = 0, speed_out = 0, force[2] = {0, 0};
+  long n = 0;
+  while (w.time_s() < 0.06 - 1e-9) {
+    w.step();
+    ASSERT_FALSE(bounds.check(w)) << bounds.check(w)->message;
+    if (w.time_s() < 0.03) continue;
+    for (const BodyState& b : w.bodies()) {
+      if (b.name == "pinion_1") speed_in += b.speed_rad_s;
+      if (b.name == "wheel_2") speed_out += b.speed_rad_s;
+    }
+    for (const ContactSample& c : w.contacts()) force[c.pair] += c.normal_force_N;
+    ++n;
+  }
+  EXPECT_NEAR(speed_out / speed_in, 0.25, 1e-3);
+  EXPECT_NEAR(force[1] / static_cast<double>(n), force_N, 0.01 * force_N);
+  EXPECT_NEAR(force[0] / static_cast<double>(n), 0.5 * force_N, 0.01 * 0.5 * force_N);
+  std::printf("ratio %.6f, stage 1 %.3f N, stage 2 %.3f N\n", speed_in / speed_out, force[0] / static_cast<double>(n),
+              force[1] / static_cast<double>(n));
+}
+
+TEST(GearPlanes, GearsOfTwoStagesWhoseFacesOverlapAlongTheAxisAreRefusedWhenInsideEachOther) {
+  // Stage 2 only 5 mm further along: pinion_2's face overlaps wheel_1's by 5 mm on one axis.
+  const Scenario s = input::load_scenario(two_stage_file(0.005, -1.0), {});
+  try {
+    World w(s);
+    ADD_FAILURE() << "gears inside each other were built";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "gears 'wheel_1' and 'pinion_2' share a plane (their faces overlap by 5 mm along the axis) and are 0 mm apart"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("one body lies inside the other"), std::string::npos) << e.what();
+  }
+}
+
+// The two-stage reducer of issue 47 as stages: a planetary stage (sun 21, three planets 39, ring
+// 99 with the shortened addendum h_a* = 0.8 that clears the planets' fillets; ring fixed, carrier
+// out) whose carrier drives, through an elastic shaft, a 23 → 82 spur pair 40 mm further along
+// the axis. Module 1 mm, 20°, faces 10 mm.
+fs::path two_stage_train_file(const std::string& shaft) {
+  const fs::path file = test::fresh_test_dir() / "train.yaml";
+  auto gear = [](const std::string& kind, int z, const std::string& extra) {
+    return "{density_kg_m3: 7850, gear: {kind: " + kind + ", teeth: " + std::to_string(z) + ", module_m: 0.001, face_width_m: 0.01, " +
+           extra + "}}";
+  };
+  std::ofstream(file) << "name: two_stage_train\nduration_s: 0.08\n"
+                         "solver: {time_step_s: 1.0e-5}\n"
+                         "output: {sample_rate_hz: 2000, per_step_log: false}\n"
+                         "stages:\n"
+                         "  - name: s1\n"
+                         "    planetary:\n"
+                         "      sun: "
+                      << gear("external", 21, "bore_diameter_m: 0.004")
+                      << "\n      planet: " << gear("external", 39, "bore_diameter_m: 0.004")
+                      << "\n      ring: " << gear("internal", 99, "addendum_coeff: 0.8, rim_diameter_m: 0.11")
+                      << "\n      planets: 3\n"
+                         "      carrier: {mass_kg: 0.2, inertia_z_kg_m2: 2.0e-4}\n"
+                         "  - name: s2\n"
+                         "    pair:\n"
+                         "      origin_m: [0, 0, 0.04]\n"
+                         "      driver: {name: pinion, "
+                      << gear("external", 23, "bore_diameter_m: 0.004").substr(1) << "\n      driven: {name: wheel, "
+                      << gear("external", 82, "bore_diameter_m: 0.01").substr(1) << "\nshafts:\n  - " << shaft
+                      << "\nmotors: [{joint: s1_sun, target_speed_rad_s: 50, ramp_time_s: 0.02, max_torque_N_m: 20}]\n"
+                         "loads: [{joint: s2_wheel, constant_torque_N_m: 7.7066, ramp_time_s: 0.02}]\n";
+  return file;
+}
+
+TEST(GearTrain, TwoStagesOnAShaftTurnAtTheProductOfTheirRatiosAndCarryTheirTorques) {
+  const Scenario s = input::load_scenario(
+      two_stage_train_file("{name: low_speed, from: s1_carrier, to: s2_pinion, torsional_stiffness_N_m_per_rad: 5.0e3, "
+                           "torsional_damping_N_m_s_per_rad: 0.05}"),
+      {});
+  // Members named by stage; the pinion turns on the carrier through the shaft.
+  ASSERT_TRUE(s.transmission);
+  EXPECT_EQ(s.transmission->input_joint, "s1_sun");
+  EXPECT_EQ(s.transmission->output_joint, "s2_wheel");
+  const double ratio = (1 + 99.0 / 21) * (-82.0 / 23);  // Willis, then the pair: −20.3727
+  EXPECT_NEAR(s.transmission->ratio, ratio, 1e-12);
+  for (const JointDef& j : s.joints)
+    if (j.body == "s2_pinion") {
+      EXPECT_EQ(j.parent, "s1_carrier");
+      ASSERT_TRUE(j.bearing);
+      EXPECT_TRUE(j.bearing->radially_rigid);
+      EXPECT_EQ(j.bearing->torsional_stiffness_N_m_per_rad, 5.0e3);
+    }
+  const sim::RunSummary r = sim::simulate(s, {});
+  ASSERT_EQ(r.status, sim::RunStatus::Completed);
+  ASSERT_TRUE(r.ratio);
+  EXPECT_NEAR(*r.ratio, ratio, 1e-4 * std::abs(ratio));
+  // Stage 2: F = T/r_b,wheel; stage 1: the carrier's torque F·r_b,pinion over the Willis ratio
+  // and the three planets, on the sun's base radius (and the same on each planet–ring mesh).
+  const double cos20 = std::cos(20 * M_PI / 180);
+  const double f2 = 7.7066 / (41e-3 * cos20), f1 = f2 * 11.5e-3 * cos20 / ((1 + 99.0 / 21) * 3 * 10.5e-3 * cos20);
+  ASSERT_EQ(r.pairs.size(), 7u);
+  for (const sim::PairResult& p : r.pairs) {
+    const double drive = p.mean_ccw_flank_force_N + p.mean_cw_flank_force_N;
+    const double expected = p.info.body_a == "s2_pinion" ? f2 : f1;
+    EXPECT_NEAR(drive, expected, 0.01 * expected) << p.info.body_a << "–" << p.info.body_b;
+    EXPECT_LT(std::min(p.mean_ccw_flank_force_N, p.mean_cw_flank_force_N), 0.01 * expected);  // one flank side loaded
+  }
+  // The pinion turns with the carrier (its speed relative to it: the shaft's twist rate, ~0).
+  for (const sim::BodyResult& b : r.bodies)
+    if (b.name == "s2_pinion") {
+      EXPECT_EQ(b.parent, "s1_carrier");
+      EXPECT_NEAR(b.mean_absolute_speed_rad_s, 50 / (1 + 99.0 / 21), 1e-4 * 50);
+      EXPECT_NEAR(b.mean_speed_relative_rad_s, 0.0, 1e-4);
+    }
+  std::printf("ratio %.6f (nominal %.6f); stage 2 %.3f N (T/r_b %.3f), stage 1 %.3f N per mesh (%.3f)\n", *r.ratio, ratio,
+              r.pairs.back().mean_ccw_flank_force_N + r.pairs.back().mean_cw_flank_force_N, f2,
+              r.pairs.front().mean_ccw_flank_force_N + r.pairs.front().mean_cw_flank_force_N, f1);
+}
+
+TEST(GearTrain, AShaftSizedByLengthAndDiameterTakesSteelsShearModulus) {
+  // k = G·π·d⁴/(32·L): 20 mm over 100 mm of steel (G = 79.3 GPa) is 12 456 N·m/rad.
+  const Scenario s = input::load_scenario(two_stage_train_file("{from: s1_carrier, to: s2_pinion, length_m: 0.1, diameter_m: 0.02}"),
+                                          {"duration_s=0.001"});
+  for (const JointDef& j : s.joints)
+    if (j.body == "s2_pinion") EXPECT_NEAR(j.bearing->torsional_stiffness_N_m_per_rad, 79.3e9 * M_PI * std::pow(0.02, 4) / 3.2, 1e-6);
+}
+
+}  // namespace test_gear_planes
+}  // namespace gearsim::physics
