@@ -194,8 +194,69 @@ TEST(GearTrain, AShaftSizedByLengthAndDiameterTakesSteelsShearModulus) {
   // k = G·π·d⁴/(32·L): 20 mm over 100 mm of steel (G = 79.3 GPa) is 12 456 N·m/rad.
   const Scenario s = input::load_scenario(two_stage_train_file("{from: s1_carrier, to: s2_pinion, length_m: 0.1, diameter_m: 0.02}"),
                                           {"duration_s=0.001"});
-  for (const JointDef& j : s.joints)
-    if (j.body == "s2_pinion") EXPECT_NEAR(j.bearing->torsional_stiffness_N_m_per_rad, 79.3e9 * M_PI * std::pow(0.02, 4) / 3.2, 1e-6);
+  for (const JointDef& j : s.joints) {
+    if (j.body == "s2_pinion") {
+      EXPECT_NEAR(j.bearing->torsional_stiffness_N_m_per_rad, 79.3e9 * M_PI * std::pow(0.02, 4) / 3.2, 1e-6);
+    }
+  }
+}
+
+// Each mesh's mean normal force over the steady window (drive and back flanks of a summed).
+double mesh_force(const sim::PairResult& p) { return p.mean_ccw_flank_force_N + p.mean_cw_flank_force_N; }
+
+TEST(GearTrain, TheShippedWindTurbineGearboxTurnsAtItsRatioAndEveryMeshCarriesItsTorque) {
+  // assets/scenarios/wind_turbine_3stage.yaml (NREL GRC gear data, spur): the carrier at 22 rpm,
+  // 3995 N·m on the high-speed pinion. Each mesh carries the torque of the stage's output over
+  // its base radius: stage 3 T/r_b,pinion; stage 2 the pinion's torque ·88/22 (the stage-3
+  // wheel's) over the stage-2 pinion's r_b; stage 1 the sun's torque (the stage-2 wheel's) over
+  // three sun–planet meshes, and the same on each planet–ring mesh. Without flank friction: with
+  // the scenario's μ = 0.05 the friction forces' moments shift the normal forces (measured: +0.5 %
+  // in stage 3 to +3.2 % on the planet–ring meshes).
+  const Scenario s =
+      input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/wind_turbine_3stage.yaml", {"contact.friction=0"});
+  const sim::RunSummary r = sim::simulate(s, {});
+  ASSERT_EQ(r.status, sim::RunStatus::Completed);
+  // The ratio of the turns over the steady window (0.8 s after the 0.2 s ramps): the twist of
+  // the shafts and meshes still swings after the ramps, and its change between the window's
+  // ends is a share of the high-speed pinion's 150 rad turn (over a 0.2 s window: 2.5e-4).
+  const double product = (1 + 99.0 / 21) * (82.0 / 23) * (88.0 / 22);
+  ASSERT_TRUE(r.ratio);
+  EXPECT_NEAR(1 / *r.ratio, product, 1e-4 * product);
+  std::printf("overall ratio 1 : %.5f (product of the stages' %.5f)\n", 1 / *r.ratio, product);
+  EXPECT_NEAR(s.transmission->ratio, 1 / product, 1e-9);
+  const double cos20 = std::cos(20 * M_PI / 180), t_out = 3995;
+  const double f3 = t_out / (0.5 * 22 * 5e-3 * cos20);
+  const double t_w3 = t_out * 88 / 22;
+  const double f2 = t_w3 / (0.5 * 23 * 8.25e-3 * cos20);
+  const double t_sun = t_w3 * 82 / 23;
+  const double f1 = t_sun / (3 * 0.5 * 21 * 10e-3 * cos20);
+  ASSERT_EQ(r.pairs.size(), 8u);
+  for (const sim::PairResult& p : r.pairs) {
+    const std::string stage = p.info.body_a.substr(0, 2);
+    const double expected = stage == "s3" ? f3 : stage == "s2" ? f2 : f1;
+    EXPECT_NEAR(mesh_force(p), expected, 0.01 * expected) << p.info.body_a << "–" << p.info.body_b;
+    std::printf("%s–%s: %.1f N (T/r_b %.1f N)\n", p.info.body_a.c_str(), p.info.body_b.c_str(), mesh_force(p), expected);
+  }
+}
+
+TEST(GearTrain, TheShippedTwoStagePlanetaryTurnsAtTwentyFiveToOne) {
+  // assets/scenarios/two_stage_planetary.yaml: the paper's set twice, stage 1's carrier driving
+  // stage 2's sun through an 8 mm shaft; 50 N·m on stage 2's carrier: 10 N·m into its sun over
+  // three meshes, 2 N·m into stage 1's. Without flank friction, as above (with μ = 0.05: stage 1's
+  // sun–planet meshes +1.3 %).
+  const Scenario s = input::load_scenario(fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/two_stage_planetary.yaml",
+                                          {"duration_s=0.25", "contact.friction=0"});
+  ASSERT_TRUE(s.transmission);
+  EXPECT_DOUBLE_EQ(s.transmission->ratio, 25.0);
+  const sim::RunSummary r = sim::simulate(s, {});
+  ASSERT_EQ(r.status, sim::RunStatus::Completed);
+  EXPECT_NEAR(*r.ratio, 25.0, 25.0 * 1e-4);
+  const double rb_sun = 0.5 * 24e-3 * std::cos(20 * M_PI / 180);
+  for (const sim::PairResult& p : r.pairs) {
+    const double expected = (p.info.body_a.substr(0, 2) == "s2" ? 10.0 : 2.0) / (3 * rb_sun);
+    EXPECT_NEAR(mesh_force(p), expected, 0.01 * expected) << p.info.body_a << "–" << p.info.body_b;
+    std::printf("%s–%s: %.3f N (T/r_b %.3f N)\n", p.info.body_a.c_str(), p.info.body_b.c_str(), mesh_force(p), expected);
+  }
 }
 
 }  // namespace test_gear_planes
