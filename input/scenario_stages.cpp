@@ -40,8 +40,7 @@ void prefix_names(Expansion& e, const std::string& stage) {
   for (physics::PairTableDef& t : e.pair_tables) {
     t.driver = prefixed(stage, t.driver);
     t.driven = prefixed(stage, t.driven);
-    t.placement_note = "stage '" + stage + "': " + t.placement_note;
-    if (t.placement_note == "stage '" + stage + "': ") t.placement_note.clear();
+    if (!t.placement_note.empty()) t.placement_note = "stage '" + stage + "': " + t.placement_note;
   }
 }
 

@@ -1,5 +1,6 @@
 #include "linear/lumped_model.hpp"
 
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -62,7 +63,8 @@ void add_joints(LumpedModel& m, const physics::WorldStructure& w) {
       m.elements.push_back(std::move(e));
     }
     if (jd.bearing && jd.bearing->torsional_stiffness_N_m_per_rad > 0)  // a torsional support, or a shaft
-      m.elements.push_back({Element::Kind::Torsion, jd.body, jd.bearing->torsional_stiffness_N_m_per_rad * (rt.transpose() * rt),
+      m.elements.push_back({Element::Kind::Torsion, jd.bearing->radially_rigid ? "shaft " + jd.parent + "–" + jd.body : jd.body,
+                            jd.bearing->torsional_stiffness_N_m_per_rad * (rt.transpose() * rt),
                             jd.bearing->torsional_stiffness_N_m_per_rad});
     if (j.motor) add_constraint(m, rt, "motor " + jd.name);
   }
@@ -93,6 +95,46 @@ std::pair<int, int> find_drive(const LumpedModel& m, const physics::WorldStructu
   throw InputError(
       "modes: no motor, and no load torque on a transmission input, says which flanks carry the load: "
       "give --drive BODY=ccw|cw");
+}
+
+// Each body's speed about +z when the drive turns at `sense` rad/s and the train is rigid: every
+// mesh rolls without slip in the frame of the body that carries its gears (a planet's carrier,
+// else the ground: z_a·(ω_a − ω_c) = ∓z_b·(ω_b − ω_c), − external, + internal), a shaft turns
+// its ends alike, a welded body stands. Least squares: a train that can turn satisfies every
+// equation; the speeds of bodies it leaves free (none in a train) are 0.
+std::vector<double> rigid_speeds(const LumpedModel& m, const physics::WorldStructure& w, int driver, int sense) {
+  const int n = static_cast<int>(m.bodies.size());
+  std::vector<Eigen::RowVectorXd> rows;
+  std::vector<double> rhs;
+  auto row = [&] { return Eigen::RowVectorXd::Zero(n).eval(); };
+  Eigen::RowVectorXd r = row();
+  r(driver) = 1;
+  rows.push_back(r), rhs.push_back(sense);
+  for (int b = 0; b < n; ++b)
+    if (m.bodies[b].first_dof < 0) {
+      r = row(), r(b) = 1;
+      rows.push_back(r), rhs.push_back(0);
+    }
+  for (const physics::StructurePair& pr : w.pairs) {
+    const int pa = m.bodies[pr.a].parent, pb = m.bodies[pr.b].parent;
+    const int c = pa == pb ? pa : (pa >= 0 && m.bodies[pa].gear) || pa < 0 ? pb : pa;  // the carrier of the two, or −1
+    const double za = m.bodies[pr.a].teeth, zb = m.bodies[pr.b].teeth;
+    const double s = w.bodies[pr.b].flanks->internal() ? -1.0 : 1.0;
+    r = row();
+    r(pr.a) += za, r(pr.b) += s * zb;
+    if (c >= 0) r(c) -= za + s * zb;
+    rows.push_back(r), rhs.push_back(0);
+  }
+  for (const physics::StructureJoint& j : w.joints)
+    if (j.def->bearing && j.def->bearing->radially_rigid && j.parent >= 0) {
+      r = row(), r(j.body) = 1, r(j.parent) = -1;
+      rows.push_back(r), rhs.push_back(0);
+    }
+  Eigen::MatrixXd a(rows.size(), n);
+  Eigen::VectorXd y(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k) a.row(static_cast<Eigen::Index>(k)) = rows[k], y(static_cast<Eigen::Index>(k)) = rhs[k];
+  const Eigen::VectorXd omega = a.completeOrthogonalDecomposition().solve(y);
+  return std::vector<double>(omega.data(), omega.data() + n);
 }
 
 }  // namespace
@@ -137,8 +179,26 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
   depth[driver] = 0;
   auto internal = [&](const physics::StructurePair& pr) { return w.bodies[pr.a].flanks->internal() || w.bodies[pr.b].flanks->internal(); };
   std::vector<int> driven_of(w.pairs.size(), -1);
+  // A shaft passes the drive on to the next stage: its far end, reached from the drive's side,
+  // takes power in, its driving torque in the sense it turns (from the train's rigid speeds; the
+  // near end may be a carrier, which no mesh gives a sense).
+  const std::vector<double> omega = rigid_speeds(m, w, driver, sense);
+  auto reached = [&](int b) { return senses[b] != 0 || (!m.bodies[b].gear && std::abs(omega[b]) > 0 && depth[b] >= 0); };
   for (bool grew = true; grew;) {
     grew = false;
+    for (const physics::StructureJoint& j : w.joints) {
+      if (!j.def->bearing || !j.def->bearing->radially_rigid || j.parent < 0) continue;
+      for (auto [near, far] : {std::pair{j.parent, j.body}, std::pair{j.body, j.parent}}) {
+        if (!reached(near) || senses[far] != 0 || !(std::abs(omega[far]) > 1e-12)) continue;
+        senses[far] = omega[far] > 0 ? 1 : -1;
+        depth[far] = *std::max_element(depth.begin(), depth.end()) + 1;
+        grew = true;
+      }
+    }
+    // A carrier is reached once a gear it carries is.
+    for (const physics::StructureJoint& j : w.joints)
+      if (j.parent >= 0 && !m.bodies[j.parent].gear && senses[j.body] != 0 && depth[j.parent] < 0)
+        depth[j.parent] = depth[j.body], grew = true;
     for (std::size_t p = 0; p < w.pairs.size(); ++p) {
       const physics::StructurePair& pr = w.pairs[p];
       if (driven_of[p] >= 0 || (senses[pr.a] == 0 && senses[pr.b] == 0)) continue;

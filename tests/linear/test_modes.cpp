@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -194,6 +195,29 @@ TEST(CadPlanetary, McadSetHasRotationalModesAndTranslationalNearPairs) {
   }
   EXPECT_EQ(rotational, 4);  // carrier turn + three planet turns, the sun held by its motor
   EXPECT_EQ(translational, 8);  // sun x, y and the planets' x, y: four pairs
+}
+
+// A train of two planetary stages joined by a shaft (assets/scenarios/two_stage_planetary.yaml:
+// stage 1's carrier drives stage 2's sun through 8 mm of steel, 1063 N·m/rad): the drive's
+// flanks reach stage 2 through the shaft (a carrier has no mesh of its own to take a sense from),
+// and the train's lowest mode is the shaft's: nearly all its strain energy is in the shaft, so a
+// shaft four times softer halves its frequency.
+TEST(Modes, AShaftCarriesTheDriveToTheNextStageAndItsSpringSetsTheLowestMode) {
+  auto lowest = [](const Solved& s, double& shaft_share) {
+    const linear::Mode& m = s.modes.modes.at(s.modes.modes.front().frequency_hz > 0 ? 0 : 1);
+    shaft_share = 0;
+    for (std::size_t e = 0; e < s.model.elements.size(); ++e)
+      if (s.model.elements[e].name == "shaft s1_carrier–s2_sun") shaft_share = m.energy_share[e];
+    return m.frequency_hz;
+  };
+  double share = 0, soft_share = 0;
+  const Solved s = solve(asset("two_stage_planetary.yaml"));
+  const double f = lowest(s, share);
+  const double f_soft = lowest(solve(asset("two_stage_planetary.yaml"), {"shafts[0].length_m=0.12"}), soft_share);
+  EXPECT_GT(share, 0.95);
+  EXPECT_GT(soft_share, 0.95);
+  EXPECT_NEAR(f_soft / f, 0.5, 0.5 * (1 - share));
+  std::printf("lowest mode %.2f Hz (shaft %.1f %% of its strain energy), 4x softer shaft %.2f Hz\n", f, 100 * share, f_soft);
 }
 
 }  // namespace test_modes

@@ -201,6 +201,60 @@ TEST(GearTrain, AShaftSizedByLengthAndDiameterTakesSteelsShearModulus) {
   }
 }
 
+TEST(GearTrain, McadMeshesAsOneStageOfATwoStageTrain) {
+  // Stage 1: OpenSCAD MCAD's z 12 drives its z 24 (tests/data/mcad: module 1 mm, 20°, 0.05 mm
+  // backlash each, 5 facets per involute) at their standard 18 mm (their zero-backlash distance,
+  // where the macro would place them, is 69.7 µm closer: off stage 2's axis); stage 2, 20 mm
+  // along the axis: a generated z 20 → z 40 on the MCAD wheel's shaft. 100 N on stage 2's mesh
+  // is the wheel's 0.9397 N·m on stage 1, 83.3 N on its mesh.
+  const std::string mcad = std::string(GEARSIM_SOURCE_DIR) + "/tests/data/mcad/";
+  const fs::path file = test::fresh_test_dir() / "mcad_train.yaml";
+  const double cos20 = std::cos(20 * M_PI / 180);
+  const double load = 100 * 0.5 * 40e-3 * cos20;
+  auto gear = [](int z) {
+    return "{kind: external, teeth: " + std::to_string(z) + ", module_m: 0.001, face_width_m: 0.005, bore_diameter_m: 0.004}";
+  };
+  std::ofstream(file)
+      << "name: mcad_train\nduration_s: 0.15\n"
+         "solver: {time_step_s: 1.0e-5}\n"
+         "output: {sample_rate_hz: 2000, per_step_log: false}\n"
+         "stages:\n"
+         "  - name: a\n"
+         "    pair:\n"
+         "      driver: {name: pinion, density_kg_m3: 7850, mesh: {file: "
+      << mcad
+      << "mcad_m1_z12_a20_f5_b005.stl, unit: mm}}\n"
+         "      driven: {name: wheel, density_kg_m3: 7850, mesh: {file: "
+      << mcad
+      << "mcad_m1_z24_a20_f5_b005.stl, unit: mm}}\n"
+         "      centre_distance_m: 0.018\n"
+         "  - name: b\n"
+         "    pair:\n"
+         "      origin_m: [0.018, 0, 0.02]\n"
+         "      driver: {name: pinion, density_kg_m3: 7850, gear: "
+      << gear(20) << "}\n      driven: {name: wheel, density_kg_m3: 7850, gear: " << gear(40)
+      << "}\n"
+         "shafts: [{from: a_wheel, to: b_pinion, torsional_stiffness_N_m_per_rad: 2.0e3, torsional_damping_N_m_s_per_rad: 0.01}]\n"
+         "motors: [{joint: a_pinion, target_speed_rad_s: 20, ramp_time_s: 0.05, max_torque_N_m: 5}]\n"
+         "loads: [{joint: b_wheel, constant_torque_N_m: "
+      << -load << ", ramp_time_s: 0.05}]\n";
+  const Scenario s = input::load_scenario(file, {});
+  ASSERT_TRUE(s.transmission);
+  EXPECT_DOUBLE_EQ(s.transmission->ratio, 4.0);
+  const sim::RunSummary r = sim::simulate(s, {});
+  ASSERT_EQ(r.status, sim::RunStatus::Completed);
+  EXPECT_NEAR(*r.ratio, 4.0, 4e-4);
+  ASSERT_EQ(r.pairs.size(), 2u);
+  const double f_b = 100, f_a = 100 * 0.5 * 20e-3 * cos20 / (0.5 * 24e-3 * cos20);
+  for (const sim::PairResult& p : r.pairs) {
+    const double expected = p.info.body_a == "a_pinion" ? f_a : f_b;
+    const double drive = std::max(p.mean_ccw_flank_force_N, p.mean_cw_flank_force_N);
+    EXPECT_NEAR(drive, expected, 0.01 * expected) << p.info.body_a << "–" << p.info.body_b;
+    EXPECT_LT(std::min(p.mean_ccw_flank_force_N, p.mean_cw_flank_force_N), 0.01 * expected);
+    std::printf("%s–%s: %.3f N (T/r_b %.3f N)\n", p.info.body_a.c_str(), p.info.body_b.c_str(), drive, expected);
+  }
+}
+
 // Each mesh's mean normal force over the steady window (drive and back flanks of a summed).
 double mesh_force(const sim::PairResult& p) { return p.mean_ccw_flank_force_N + p.mean_cw_flank_force_N; }
 
