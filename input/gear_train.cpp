@@ -52,6 +52,11 @@ GearTrain gear_train_of(const physics::Scenario& s) {
     return "";  // welded or free: no joint
   };
   GearTrain t;
+  for (const physics::JointDef& j : s.joints)
+    if (j.bearing && j.bearing->radially_rigid)
+      throw InputError(where + "a train of stages joined by shafts ('" + j.parent + "' to '" + j.body +
+                       "'): the analysis takes one planetary set or one gear pair so far (the run's logs and summary.json hold "
+                       "the train's speeds, ratio and mesh forces)");
   if (s.motors.empty()) throw InputError(where + "no motor: the analysis needs to know which member is the input");
   for (const physics::JointDef& j : s.joints)
     if (j.name == s.motors.front().joint) t.input_body = j.body;

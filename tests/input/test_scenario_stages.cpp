@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "input/gear_train.hpp"
 #include "input/scenario_file.hpp"
 
 namespace gearsim::input {
@@ -72,6 +73,13 @@ TEST(ScenarioStages, MembersAreNamedByStageAndTheTransmissionChainsThroughTheSha
   EXPECT_DOUBLE_EQ(s.transmission->ratio, 4.0);  // (−40/20)·(−40/20)
   // Without the shaft the stages are not one train: no transmission is proposed.
   EXPECT_FALSE(loaded(train("")).transmission);
+  // The run analysis takes one set or pair so far, and says so of a train.
+  try {
+    gear_train_of(s);
+    ADD_FAILURE() << "a train of stages was analysed as one stage";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a train of stages joined by shafts ('a_wheel' to 'b_pinion')"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ScenarioStages, AShaftJoiningTwoMembersOfOneStageIsRefused) {
