@@ -124,7 +124,16 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
   const double carrier_jz = number_within(c, "inertia_z_kg_m2", limits::kInertia_kg_m2);
   c.reject_unknown_keys();
   const Supports supports = parse_supports(m);
-  const bool ring_fixed = m.boolean_or("ring_fixed", true);
+  // Which member stands: the ring (the default), the carrier (a star stage), the sun, or none.
+  // `ring_fixed: false` is the older spelling of `fixed: none`.
+  if (m.has("fixed") && m.has("ring_fixed")) m.fail("ring_fixed", "give fixed: ring|carrier|sun|none, not also ring_fixed");
+  const std::string fixed = m.has("ring_fixed") ? (m.boolean_or("ring_fixed", true) ? "ring" : "none")
+                                                : m.choice_or("fixed", {"ring", "carrier", "sun", "none"}, "ring");
+  const bool ring_fixed = fixed == "ring";
+  if (fixed == "carrier" && supports.carrier)
+    m.map("supports").fail("carrier", "a fixed carrier is welded to the ground: no support (or fixed: none)");
+  if (fixed == "sun" && supports.sun)
+    m.fail(m.has("floating_sun") ? "floating_sun" : "supports", "a fixed sun is welded to the ground: no support (or fixed: none)");
   if (ring_fixed && supports.ring && !(supports.ring->torsional_stiffness_N_m_per_rad > 0))
     m.map("supports")
         .map("ring")
@@ -151,16 +160,22 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
     e.bodies.push_back(std::move(b));
   };
   place(s.sun, origin, 0.0);
-  e.joints.push_back(hinge("sun", "ground", origin));
-  e.joints.back().bearing = supports.sun;
-  e.joints.push_back(hinge("carrier", "ground", origin));  // before the planets it carries
-  e.joints.back().bearing = supports.carrier;
+  e.bodies.back().fixed = fixed == "sun";
+  if (fixed != "sun") {
+    e.joints.push_back(hinge("sun", "ground", origin));
+    e.joints.back().bearing = supports.sun;
+  }
+  if (fixed != "carrier") {
+    e.joints.push_back(hinge("carrier", "ground", origin));  // before the planets it carries
+    e.joints.back().bearing = supports.carrier;
+  }
   physics::BodyDef carrier;
   carrier.name = "carrier";
   carrier.mass_kg = carrier_mass_kg;
   // Shapeless carrier: a thin disc's moments, J_x = J_y = J_z/2, about the sun axis.
   carrier.principal_inertia_kg_m2 = Eigen::Vector3d(carrier_jz / 2, carrier_jz / 2, carrier_jz);
   carrier.pose.position_m = origin;
+  carrier.fixed = fixed == "carrier";
   for (int k = 0; k < s.count; ++k) {
     const PlanetPlacement& p = g.placements[static_cast<std::size_t>(k)];
     const physics::BodyDef& planet = s.planets[static_cast<std::size_t>(k)];
@@ -179,8 +194,13 @@ Expansion expand_planetary(const YamlMap& m, const fs::path& dir) {
     e.joints.back().bearing = supports.ring;
   }
   e.bodies.push_back(carrier);
-  // Ring fixed, sun in, carrier out: θ_sun = (1 + z_r/z_s)·θ_carrier (Willis).
+  // Willis, ω_s − ω_c = −(z_r/z_s)·(ω_r − ω_c). Ring fixed: sun in, carrier out,
+  // θ_sun = (1 + z_r/z_s)·θ_carrier. Carrier fixed (star): sun in, ring out, θ_sun = −(z_r/z_s)·θ_ring.
+  // Sun fixed: ring in, carrier out, θ_ring = (1 + z_s/z_r)·θ_carrier.
+  const double zs = teeth_of(s.sun), zr = teeth_of(s.ring);
   if (ring_fixed) e.transmission = physics::TransmissionDef{"sun", "carrier", g.ratio_sun_to_carrier};
+  if (fixed == "carrier") e.transmission = physics::TransmissionDef{"sun", "ring", -zr / zs};
+  if (fixed == "sun") e.transmission = physics::TransmissionDef{"ring", "carrier", 1 + zs / zr};
   return e;
 }
 

@@ -113,6 +113,19 @@ TEST(ScenarioStages, ATopLevelMacroBesideStagesAndShaftsWithoutStagesAreRefused)
   EXPECT_SAYS(error_for("name: t\nduration_s: 0.01\n" + kShaft), "shafts", "shafts join the members of `stages`");
 }
 
+TEST(ScenarioStages, APlanetarySetHoldsOneMemberStillNamedOnce) {
+  const std::string set = "name: t\nduration_s: 0.01\nplanetary:\n  spec: " + std::string(GEARSIM_SOURCE_DIR) +
+                          "/assets/specs/paper_gearset.yaml\n  sun: sun\n  planet: planet\n  ring: ring_relieved\n  planets: 3\n"
+                          "  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n";
+  const physics::Scenario star = loaded(set + "  fixed: carrier\n");
+  for (const physics::BodyDef& b : star.bodies) EXPECT_EQ(b.fixed, b.name == "carrier") << b.name;
+  EXPECT_EQ(star.transmission->input_joint + ">" + star.transmission->output_joint, "sun>ring");
+  EXPECT_SAYS(error_for(set + "  fixed: carrier\n  ring_fixed: true\n"), "planetary.ring_fixed", "not also ring_fixed");
+  EXPECT_SAYS(error_for(set + "  fixed: planet\n"), "planetary.fixed");
+  EXPECT_SAYS(error_for(set + "  fixed: sun\n  floating_sun: {radial_stiffness_N_per_m: 1.0e7}\n"), "planetary.floating_sun",
+              "a fixed sun is welded");
+}
+
 TEST(ScenarioStages, TwoStagesOfOneName) {
   std::string t = train("");
   t.replace(t.find("name: b"), 7, "name: a");

@@ -258,6 +258,50 @@ TEST(GearTrain, McadMeshesAsOneStageOfATwoStageTrain) {
 // Each mesh's mean normal force over the steady window (drive and back flanks of a summed).
 double mesh_force(const sim::PairResult& p) { return p.mean_ccw_flank_force_N + p.mean_cw_flank_force_N; }
 
+// The paper's set (sun 24, planets 36, ring 96 relieved) with `fixed:` carrier or sun, driven at
+// `driver` and loaded at `loaded` with `load_N_m`, frictionless, 0.2 s.
+sim::RunSummary planetary_with_fixed(const std::string& fixed, const std::string& driver, double speed, const std::string& loaded,
+                                     double load_N_m, Scenario& s) {
+  const fs::path file = test::fresh_test_dir() / (fixed + ".yaml");
+  std::ofstream(file) << "name: fixed_" << fixed
+                      << "\nduration_s: 0.2\nsolver: {time_step_s: 2.0e-5}\noutput: {sample_rate_hz: 2000, per_step_log: false}\n"
+                         "contact: {friction: 0}\n"
+                         "planetary:\n  spec: "
+                      << GEARSIM_SOURCE_DIR
+                      << "/assets/specs/paper_gearset.yaml\n  sun: sun\n  planet: planet\n  ring: ring_relieved\n  planets: 3\n"
+                         "  carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}\n  fixed: "
+                      << fixed << "\nmotors: [{joint: " << driver << ", target_speed_rad_s: " << speed
+                      << ", ramp_time_s: 0.05, max_torque_N_m: 50}]\nloads: [{joint: " << loaded << ", constant_torque_N_m: " << load_N_m
+                      << ", ramp_time_s: 0.05}]\n";
+  s = input::load_scenario(file, {});
+  return sim::simulate(s, {});
+}
+
+TEST(GearTrain, AStarStageTurnsItsRingAgainstItsSunAndAFixedSunStageItsCarrierWithItsRing) {
+  // Carrier fixed: θ_sun/θ_ring = −z_r/z_s = −4; 16 N·m on the ring is 4 N·m on the sun, F =
+  // 4 N·m/(3·r_b,sun) on every mesh.
+  Scenario star;
+  const sim::RunSummary r = planetary_with_fixed("carrier", "sun", 104.7, "ring", 16, star);
+  ASSERT_EQ(r.status, sim::RunStatus::Completed);
+  EXPECT_EQ(star.transmission->input_joint + ">" + star.transmission->output_joint, "sun>ring");
+  EXPECT_DOUBLE_EQ(star.transmission->ratio, -4.0);
+  EXPECT_NEAR(*r.ratio, -4.0, 4e-4);
+  const double cos20 = std::cos(20 * M_PI / 180), f = 4 / (3 * 12e-3 * cos20);
+  for (const sim::PairResult& p : r.pairs) EXPECT_NEAR(mesh_force(p), f, 0.01 * f) << p.info.body_a << "–" << p.info.body_b;
+  // Sun fixed: θ_ring/θ_carrier = 1 + z_s/z_r = 1.25; 10 N·m on the carrier is 8 N·m on the
+  // ring, F = 8 N·m/(3·r_b,ring).
+  Scenario sun_fixed;
+  const sim::RunSummary q = planetary_with_fixed("sun", "ring", 20, "carrier", -10, sun_fixed);
+  ASSERT_EQ(q.status, sim::RunStatus::Completed);
+  EXPECT_EQ(sun_fixed.transmission->input_joint + ">" + sun_fixed.transmission->output_joint, "ring>carrier");
+  EXPECT_DOUBLE_EQ(sun_fixed.transmission->ratio, 1.25);
+  EXPECT_NEAR(*q.ratio, 1.25, 1.25e-4);
+  const double g = 8 / (3 * 48e-3 * cos20);
+  for (const sim::PairResult& p : q.pairs) EXPECT_NEAR(mesh_force(p), g, 0.01 * g) << p.info.body_a << "–" << p.info.body_b;
+  std::printf("star: ratio %.6f, %.3f N per mesh (%.3f); sun fixed: ratio %.6f, %.3f N (%.3f)\n", *r.ratio, mesh_force(r.pairs[0]), f,
+              *q.ratio, mesh_force(q.pairs[0]), g);
+}
+
 TEST(GearTrain, TheShippedWindTurbineGearboxTurnsAtItsRatioAndEveryMeshCarriesItsTorque) {
   // assets/scenarios/wind_turbine_3stage.yaml (NREL GRC gear data, spur): the carrier at 22 rpm,
   // 3995 N·m on the high-speed pinion. Each mesh carries the torque of the stage's output over
