@@ -57,9 +57,16 @@ void throw_if_stopped(const sim::RunSummary& r, const std::filesystem::path& dir
 }
 
 void run(const RunOptions& o) {
+  // SIGINT and SIGTERM are caught from the start until the command ends: while the scenario loads
+  // (seconds for a large set) the command ends before it writes anything; once the output folder
+  // is taken they stop the run between two steps, and its render between two frames.
+  const StopSignals stop_signals;
   physics::Scenario s = input::load_scenario(o.scenario, o.sets);
   if (o.duration_s > 0) set_duration(s, o.duration_s);
   const std::filesystem::path dir(o.out_dir);
+  if (const int sig = stop_signal())
+    throw RunStopped(sig == SIGTERM ? kExitSigterm : kExitSigint,
+                     "interrupted by " + signal_name(sig) + " while the scenario loaded: nothing was written to " + dir.string());
   // Held until the command ends: the run, its analysis and its renders write into it.
   OutputFolder folder(dir, "gearsim run", OutputFolder::ForNewRun{o.force});
   if (const int n = folder.removed(); n > 0) std::cout << "removed " << n << " outputs of a previous run in " << dir.string() << "\n";
@@ -73,9 +80,6 @@ void run(const RunOptions& o) {
     std::cerr << "\r  " << s.name << ": " << percent << "% (t = " << std::fixed << std::setprecision(4) << t << " s)" << std::flush;
     last_percent = percent;
   };
-  // SIGINT and SIGTERM stop the run between two steps, and its render between two frames, until
-  // the command ends.
-  const StopSignals stop_signals;
   const DirRun run = run_into_dir(s, RunSource{o.scenario, o.sets}, folder, options);
   if (tty) std::cerr << "\n";
   const sim::RunSummary& r = run.result;

@@ -119,6 +119,40 @@ TEST(RunStop, SigtermEndsTheRunAtOneStepWithExitCode143) {
   expect_interrupted(dir, "SIGTERM");
 }
 
+// Whether process `pid` has a handler for `sig` (its SigCgt mask in /proc).
+bool catches(pid_t pid, int sig) {
+  std::ifstream f("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(f, line);)
+    if (line.starts_with("SigCgt:")) return (std::stoull(line.substr(7), nullptr, 16) >> (sig - 1)) & 1u;
+  return false;
+}
+
+TEST(RunStop, ASignalWhileTheScenarioLoadsEndsTheCommandWithItsCodeAndNothingWritten) {
+  // SIGTERM as soon as `gearsim run` catches it: the handlers come before the scenario is read,
+  // so the signal falls in the loading (the paper set's, ~0.2 s) and the command ends with 143
+  // before it takes the output folder. Before, the handlers came after the folder was taken and
+  // its records written: a signal in the loading killed the process by the default action.
+  const fs::path dir = fs::temp_directory_path() / "gearsim_run_stop_loading";
+  fs::remove_all(dir);
+  const std::string bin = std::string(GEARSIM_BINARY_DIR) + "/bin/gearsim";
+  const std::string scenario = std::string(GEARSIM_SOURCE_DIR) + "/assets/scenarios/paper_dynamics_healthy.yaml";
+  const pid_t pid = fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    execl(bin.c_str(), bin.c_str(), "run", scenario.c_str(), "--out", dir.c_str(), "--duration", "2", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (!catches(pid, SIGTERM) && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::microseconds(200));
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  EXPECT_FALSE(fs::exists(dir)) << "the output folder was taken before the signal was caught";
+}
+
 TEST(RunStop, SigintEndsTheRunAtOneStepWithExitCode130) {
   const fs::path dir = fs::temp_directory_path() / "gearsim_stop_int";
   EXPECT_EQ(run_and_signal(dir, SIGINT), 130);
