@@ -1,6 +1,5 @@
 #include "linear/campbell.hpp"
 
-#include <Eigen/QR>
 #include <cmath>
 
 #include "geometry/constants.hpp"
@@ -23,46 +22,12 @@ Campbell campbell(const LumpedModel& m, const physics::WorldStructure& w, const 
                   double max_speed_rad_s) {
   Campbell c;
   c.drive = m.bodies[m.driver].name;
-  // Unknowns: every body's absolute speed (welded bodies' rows pin theirs to 0).
-  const int n = static_cast<int>(m.bodies.size());
-  std::vector<Eigen::RowVectorXd> rows;
-  std::vector<double> rhs;
-  auto row = [&]() {
-    rows.push_back(Eigen::RowVectorXd::Zero(n));
-    rhs.push_back(0);
-    return rows.size() - 1;
-  };
-  for (int b = 0; b < n; ++b)
-    if (m.bodies[b].first_dof < 0) rows[row()](b) = 1;
-  const std::size_t d = row();
-  rows[d](m.driver) = 1, rhs[d] = 1;
-  for (const physics::StructureJoint& j : w.joints)
-    if (j.def->bearing && j.def->bearing->torsional_stiffness_N_m_per_rad > 0) {
-      const std::size_t r = row();
-      rows[r](j.body) = 1;
-      if (j.parent >= 0) rows[r](j.parent) -= 1;
-    }
-  for (const MeshInfo& mi : m.meshes) {
-    const bool internal = w.bodies[mi.a].flanks->internal() || w.bodies[mi.b].flanks->internal();
-    const int carrier = carrier_of(m, mi);
-    const double za = m.bodies[mi.a].teeth, zb = (internal ? -1.0 : 1.0) * m.bodies[mi.b].teeth;
-    const std::size_t r = row();
-    rows[r](mi.a) += za, rows[r](mi.b) += zb;
-    if (carrier >= 0) rows[r](carrier) -= za + zb;
-  }
-  Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), n);
-  Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
-  for (std::size_t r = 0; r < rows.size(); ++r) A.row(static_cast<Eigen::Index>(r)) = rows[r], y(static_cast<Eigen::Index>(r)) = rhs[r];
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
-  if (qr.rank() < n) {
-    c.why_not = "the drive's speed does not fix every body's speed (a body free to turn without a mesh, torsional support or weld)";
+  const RigidSpeeds rigid = rigid_speeds(m, w, m.driver);
+  if (!rigid.why_not.empty()) {
+    c.why_not = rigid.why_not;
     return c;
   }
-  const Eigen::VectorXd omega = qr.solve(y);
-  if ((A * omega - y).norm() > 1e-9 * (1 + y.norm())) {
-    c.why_not = "the gear train's kinematics contradict each other (a locked train)";
-    return c;
-  }
+  const Eigen::VectorXd& omega = rigid.omega;
   for (std::size_t k = 0; k < m.meshes.size(); ++k) {
     const MeshInfo& mi = m.meshes[k];
     const int carrier = carrier_of(m, mi);

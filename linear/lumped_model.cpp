@@ -97,46 +97,6 @@ std::pair<int, int> find_drive(const LumpedModel& m, const physics::WorldStructu
       "give --drive BODY=ccw|cw");
 }
 
-// Each body's speed about +z when the drive turns at `sense` rad/s and the train is rigid: every
-// mesh rolls without slip in the frame of the body that carries its gears (a planet's carrier,
-// else the ground: z_a·(ω_a − ω_c) = ∓z_b·(ω_b − ω_c), − external, + internal), a shaft turns
-// its ends alike, a welded body stands. Least squares: a train that can turn satisfies every
-// equation; the speeds of bodies it leaves free (none in a train) are 0.
-std::vector<double> rigid_speeds(const LumpedModel& m, const physics::WorldStructure& w, int driver, int sense) {
-  const int n = static_cast<int>(m.bodies.size());
-  std::vector<Eigen::RowVectorXd> rows;
-  std::vector<double> rhs;
-  auto row = [&] { return Eigen::RowVectorXd::Zero(n).eval(); };
-  Eigen::RowVectorXd r = row();
-  r(driver) = 1;
-  rows.push_back(r), rhs.push_back(sense);
-  for (int b = 0; b < n; ++b)
-    if (m.bodies[b].first_dof < 0) {
-      r = row(), r(b) = 1;
-      rows.push_back(r), rhs.push_back(0);
-    }
-  for (const physics::StructurePair& pr : w.pairs) {
-    const int pa = m.bodies[pr.a].parent, pb = m.bodies[pr.b].parent;
-    const int c = pa == pb ? pa : (pa >= 0 && m.bodies[pa].gear) || pa < 0 ? pb : pa;  // the carrier of the two, or −1
-    const double za = m.bodies[pr.a].teeth, zb = m.bodies[pr.b].teeth;
-    const double s = w.bodies[pr.b].flanks->internal() ? -1.0 : 1.0;
-    r = row();
-    r(pr.a) += za, r(pr.b) += s * zb;
-    if (c >= 0) r(c) -= za + s * zb;
-    rows.push_back(r), rhs.push_back(0);
-  }
-  for (const physics::StructureJoint& j : w.joints)
-    if (j.def->bearing && j.def->bearing->radially_rigid && j.parent >= 0) {
-      r = row(), r(j.body) = 1, r(j.parent) = -1;
-      rows.push_back(r), rhs.push_back(0);
-    }
-  Eigen::MatrixXd a(rows.size(), n);
-  Eigen::VectorXd y(rows.size());
-  for (std::size_t k = 0; k < rows.size(); ++k) a.row(static_cast<Eigen::Index>(k)) = rows[k], y(static_cast<Eigen::Index>(k)) = rhs[k];
-  const Eigen::VectorXd omega = a.completeOrthogonalDecomposition().solve(y);
-  return std::vector<double>(omega.data(), omega.data() + n);
-}
-
 }  // namespace
 
 LumpedModel build_lumped_model(const physics::World& world, const physics::Scenario& s, const ModelOptions& o) {
@@ -182,7 +142,8 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
   // A shaft passes the drive on to the next stage: its far end, reached from the drive's side,
   // takes power in, its driving torque in the sense it turns (from the train's rigid speeds; the
   // near end may be a carrier, which no mesh gives a sense).
-  const std::vector<double> omega = rigid_speeds(m, w, driver, sense);
+  const RigidSpeeds rigid = rigid_speeds(m, w, driver);
+  const Eigen::VectorXd omega = rigid.why_not.empty() ? Eigen::VectorXd(sense * rigid.omega) : Eigen::VectorXd::Zero(m.bodies.size());
   auto reached = [&](int b) { return senses[b] != 0 || (!m.bodies[b].gear && std::abs(omega[b]) > 0 && depth[b] >= 0); };
   for (bool grew = true; grew;) {
     grew = false;
@@ -275,6 +236,56 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
   m.stiffness = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   for (const Element& e : m.elements) m.stiffness += e.stiffness;
   return m;
+}
+
+RigidSpeeds rigid_speeds(const LumpedModel& m, const physics::WorldStructure& w, int driver) {
+  // The body that carries a mesh (a planet's carrier): the parent, with coordinates, of either gear.
+  auto carrier_of = [&](int a, int b) {
+    for (int g : {a, b}) {
+      const int p = m.bodies[g].parent;
+      if (p >= 0 && m.bodies[p].first_dof >= 0) return p;
+    }
+    return -1;
+  };
+  const int n = static_cast<int>(m.bodies.size());
+  std::vector<Eigen::RowVectorXd> rows;
+  std::vector<double> rhs;
+  auto row = [&]() {
+    rows.push_back(Eigen::RowVectorXd::Zero(n));
+    rhs.push_back(0);
+    return rows.size() - 1;
+  };
+  for (int b = 0; b < n; ++b)
+    if (m.bodies[b].first_dof < 0) rows[row()](b) = 1;
+  const std::size_t d = row();
+  rows[d](driver) = 1, rhs[d] = 1;
+  for (const physics::StructureJoint& j : w.joints)
+    if (j.def->bearing && j.def->bearing->torsional_stiffness_N_m_per_rad > 0) {
+      const std::size_t r = row();
+      rows[r](j.body) = 1;
+      if (j.parent >= 0) rows[r](j.parent) -= 1;
+    }
+  for (const physics::StructurePair& pr : w.pairs) {
+    const bool internal = w.bodies[pr.a].flanks->internal() || w.bodies[pr.b].flanks->internal();
+    const int carrier = carrier_of(pr.a, pr.b);
+    const double za = m.bodies[pr.a].teeth, zb = (internal ? -1.0 : 1.0) * m.bodies[pr.b].teeth;
+    const std::size_t r = row();
+    rows[r](pr.a) += za, rows[r](pr.b) += zb;
+    if (carrier >= 0) rows[r](carrier) -= za + zb;
+  }
+  Eigen::MatrixXd A(static_cast<Eigen::Index>(rows.size()), n);
+  Eigen::VectorXd y(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t r = 0; r < rows.size(); ++r) A.row(static_cast<Eigen::Index>(r)) = rows[r], y(static_cast<Eigen::Index>(r)) = rhs[r];
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+  RigidSpeeds out;
+  if (qr.rank() < n) {
+    out.why_not = "the drive's speed does not fix every body's speed (a body free to turn without a mesh, torsional support or weld)";
+    return out;
+  }
+  out.omega = qr.solve(y);
+  if ((A * out.omega - y).norm() > 1e-9 * (1 + y.norm()))
+    out.why_not = "the gear train's kinematics contradict each other (a locked train)";
+  return out;
 }
 
 }  // namespace gearsim::linear

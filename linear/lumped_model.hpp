@@ -75,4 +75,15 @@ struct ModelOptions {
 // which flanks carry the load, a gear no mesh drives).
 LumpedModel build_lumped_model(const physics::World& world, const physics::Scenario& scenario, const ModelOptions& options);
 
+// The train's rigid kinematics: every body's absolute speed about +z per rad/s of `driver`, each
+// mesh (pair of `structure`) rolling without slip, z_a (ω_a − ω_c) = ∓ z_b (ω_b − ω_c), about the
+// body c that carries it (a planet's movable parent), welded bodies still, and joints with a
+// torsional spring (supports, shafts) turning with their parent. `why_not` says why there are no
+// speeds: the drive does not fix them all, or they contradict each other (a locked train).
+struct RigidSpeeds {
+  Eigen::VectorXd omega;  // per body of model.bodies, rad/s per rad/s of the driver
+  std::string why_not;
+};
+RigidSpeeds rigid_speeds(const LumpedModel& model, const physics::WorldStructure& structure, int driver);
+
 }  // namespace gearsim::linear
