@@ -53,11 +53,20 @@ PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<doubl
   // The spectrum, its floor, the mesh harmonics with their sidebands.
   r.spectrum = amplitude_spectrum(f, sample_rate_hz, {WindowKind::Hann, padded_length(f.size()), true});
   r.floor_N = median_noise_floor(r.spectrum, 0, kRunFloorBandTop_hz);
-  r.mesh = analyse_sidebands(r.spectrum, train.frequencies.mesh_hz, train.frequencies.frequencies);
+  // The pair's own stage: its mesh frequency and planet fault family (one stage: the train's).
+  double mesh_hz = train.frequencies.mesh_hz, planet_fault_hz = 0;
+  if (train.planetary && train.pair_stages.empty()) planet_fault_hz = train.frequencies.at("planet_fault").value_hz;
+  for (const TrainDescription::PairStage& ps : train.pair_stages)
+    if (ps.pair.same_bodies(pair.a, pair.b)) mesh_hz = ps.mesh_hz, planet_fault_hz = ps.planet_fault_hz;
+  // The harmonics below the record's Nyquist frequency (a slow stage's three; a fast one's fewer).
+  SidebandOptions options;
+  const double top_hz = r.spectrum.frequency_hz.empty() ? 0.0 : r.spectrum.frequency_hz.back();
+  if (mesh_hz > 0 && top_hz >= mesh_hz) options.harmonics = std::min(options.harmonics, static_cast<int>(top_hz / mesh_hz));
+  r.mesh = analyse_sidebands(r.spectrum, mesh_hz, train.frequencies.frequencies, options);
   for (const MeshHarmonic& h : r.mesh.harmonics)
     r.harmonic_over_floor_db.push_back(h.peak ? std::optional(amplitude_ratio_db(h.peak->amplitude, r.floor_N)) : std::nullopt);
   // The planet local-fault family (a planet tooth meets the sun once per relative turn).
-  if (train.planetary) r.planet_fault_family = planet_fault_family(r.spectrum, train.frequencies.at("planet_fault").value_hz, r.floor_N);
+  if (planet_fault_hz > 0) r.planet_fault_family = planet_fault_family(r.spectrum, planet_fault_hz, r.floor_N);
   return r;
 }
 

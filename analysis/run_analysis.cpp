@@ -78,8 +78,9 @@ TransmissionErrorStats windowed_te_stats(const TransmissionError& te, double fro
 std::vector<SynchronousTeeth> synchronous_averages(const RunSignals& s, const TrainDescription& train, std::string& note) {
   std::vector<SynchronousTeeth> out;
   for (const PlanetGear& planet : train.planets) {
-    const auto pf = std::find_if(s.pair_forces.begin(), s.pair_forces.end(),
-                                 [&](const PairForce& p) { return p.pair.same_bodies(train.sun, planet.body); });
+    const std::string& sun = planet.sun.empty() ? train.sun : planet.sun;
+    const auto pf =
+        std::find_if(s.pair_forces.begin(), s.pair_forces.end(), [&](const PairForce& p) { return p.pair.same_bodies(sun, planet.body); });
     if (pf == s.pair_forces.end()) continue;
     const std::vector<double>& angle = angle_of(s, planet.body, "the synchronous average of its teeth");
     const std::vector<double> turned = window(angle, s.time_s, s.from_s);
@@ -136,6 +137,23 @@ void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
       if (log.pairs[q] == pf.pair) pf.steps_without_force_share = 1 - static_cast<double>(with_force[q]) / steps;
 }
 
+// A stage's transmission error over the window: θ_in − ratio·θ_out, each the sum of its chain's
+// logged angles.
+RunAnalysis::StageTe stage_te(const RunSignals& s, const TrainDescription::StageTe& st) {
+  const auto absolute = [&](const std::vector<std::string>& chain) {
+    std::vector<double> theta(s.time_s.size(), 0.0);
+    for (const std::string& body : chain) {
+      const std::vector<double>& a = angle_of(s, body, "the transmission error of its stage");
+      for (std::size_t i = 0; i < theta.size(); ++i) theta[i] += a[i];
+    }
+    return theta;
+  };
+  const TransmissionError te = transmission_error(s.time_s, absolute(st.input_chain), absolute(st.output_chain), st.ratio);
+  RunAnalysis::StageTe out{st.stage, st.ratio, {}, 0.0};
+  out.te = windowed_te_stats(te, s.from_s, &out.samples_peak_to_peak_rad);
+  return out;
+}
+
 }  // namespace
 
 std::size_t samples_from(const std::vector<double>& time_s, double from_s) {
@@ -159,6 +177,7 @@ RunAnalysis analyze_signals(const RunSignals& s, const TrainDescription& train) 
     r.te = windowed_te_stats(*s.te, s.from_s, &samples_p2p);
     r.te_samples_peak_to_peak_rad = samples_p2p;
   }
+  for (const TrainDescription::StageTe& st : train.stage_te) r.stage_te.push_back(stage_te(s, st));
   if (train.planetary) r.synchronous = synchronous_averages(s, train, r.synchronous_note);
   if (train.planetary && !train.carrier.empty())
     for (const SensorSignal& sensor : s.sensors) r.sensors.push_back(analyse_sensor(sensor, s, train));

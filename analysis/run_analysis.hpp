@@ -30,6 +30,14 @@ struct RunAnalysis {
   // band-limited signal the samples hold (band_limited.hpp), mean and rms the samples'.
   std::optional<TransmissionErrorStats> te;
   std::optional<double> te_samples_peak_to_peak_rad;  // the samples' own max − min
+  // A train of several stages: each stage's transmission error (TrainDescription::stage_te), as te.
+  struct StageTe {
+    std::string stage;
+    double ratio = 0;
+    TransmissionErrorStats te;
+    double samples_peak_to_peak_rad = 0;
+  };
+  std::vector<StageTe> stage_te;
   // Planetary: one per planet whose sun–planet pair is logged; nothing for a gear pair.
   std::optional<std::vector<SynchronousTeeth>> synchronous;
   std::string synchronous_note;  // why a planet has no synchronous average (a window under one turn), else ""

@@ -85,6 +85,7 @@ struct PlanetGear {
   // Where its centre sits about the set's centre at t = 0 (world angle, rad): with the carrier's
   // turn, where it is when (a sensor's planet-pass window).
   double position0_rad = 0;
+  std::string sun{};  // the sun it meshes with ("": TrainDescription::sun)
 };
 
 // A gear whose per-tooth loads are taken from the tooth-contact log.
@@ -117,6 +118,24 @@ struct TrainDescription {
     bool b_internal = false;
   };
   std::vector<LoadedFlank> loaded_flanks;
+  // A train of several stages: per gear pair the stage it meshes in, the mesh frequency its
+  // harmonics are sought at and, in a planetary stage, the planet local-fault frequency (0: none).
+  // Empty: every pair belongs to the one stage `frequencies` describes.
+  struct PairStage {
+    PairId pair;
+    std::string stage;
+    double mesh_hz = 0;
+    double planet_fault_hz = 0;
+  };
+  std::vector<PairStage> pair_stages;
+  // A train of several stages: per stage, θ_in − ratio·θ_out is its transmission error, each
+  // absolute angle the sum of the logged (parent-relative) angles of its chain's bodies.
+  struct StageTe {
+    std::string stage;
+    std::vector<std::string> input_chain, output_chain;
+    double ratio = 0;
+  };
+  std::vector<StageTe> stage_te;
 };
 
 }  // namespace gearsim

@@ -32,6 +32,20 @@ struct Candidate {
   double tolerance_hz;
 };
 
+// The candidate of kind Mesh nearest frequency_hz within max(tolerance_floor_hz,
+// relative_tolerance·f), or nothing.
+std::optional<SidebandMatch> mesh_line(double frequency_hz, const std::vector<CharacteristicFrequency>& candidates,
+                                       double tolerance_floor_hz, double relative_tolerance) {
+  std::optional<SidebandMatch> best;
+  for (const CharacteristicFrequency& c : candidates) {
+    if (c.kind != FrequencyKind::Mesh || !(c.value_hz > 0.0)) continue;
+    const double tol = std::max(tolerance_floor_hz, relative_tolerance * c.value_hz), error = frequency_hz - c.value_hz;
+    if (std::abs(error) > tol || (best && std::abs(best->error_hz) <= std::abs(error))) continue;
+    best = SidebandMatch{c.key, c.name, 1, c.value_hz, error, tol, {}};
+  }
+  return best;
+}
+
 }  // namespace
 
 std::optional<SidebandMatch> match_offset(double offset_hz, const std::vector<CharacteristicFrequency>& candidates,
@@ -110,6 +124,7 @@ SidebandAnalysis analyse_sidebands(const Spectrum& s, double mesh_hz, const std:
         sb.level_db_re_harmonic = amplitude_ratio_db(p.amplitude, hp.amplitude);
         sb.height_over_floor_db = amplitude_ratio_db(p.amplitude, h.noise_floor);
         sb.match = match_offset(offset, candidates, r.tolerance_floor_hz, o.relative_tolerance, o.max_multiple);
+        sb.mesh_line = mesh_line(p.frequency_hz, candidates, r.tolerance_floor_hz, o.relative_tolerance);
         h.sidebands.push_back(std::move(sb));
       }
     }

@@ -46,6 +46,10 @@ struct Sideband {
   double level_db_re_harmonic = 0;  // 20·log10(sideband/harmonic amplitude), dB
   double height_over_floor_db = 0;  // 20·log10(sideband/noise floor), dB
   std::optional<SidebandMatch> match;  // nothing: no characteristic frequency explains the offset
+  // The peak is itself a mesh line of the candidates (in a train: another stage's mesh harmonic
+  // reaching this pair's force), not a modulation: that line (multiple 1, its key and name), or
+  // nothing. Sought within the offset's tolerance around the line.
+  std::optional<SidebandMatch> mesh_line;
 };
 
 struct MeshHarmonic {
@@ -69,7 +73,7 @@ struct SidebandAnalysis {
 };
 
 // Harmonics of mesh_hz and their sidebands; candidates of kind Mesh (and zero frequencies) are not
-// used for matching. Throws InputError on a non-positive mesh frequency, harmonics or max_multiple
+// used for matching offsets, only for naming a peak that is a mesh line (Sideband::mesh_line). Throws InputError on a non-positive mesh frequency, harmonics or max_multiple
 // < 1, a negative span or tolerance, or a harmonic above the spectrum's highest frequency.
 SidebandAnalysis analyse_sidebands(const Spectrum& spectrum, double mesh_hz, const std::vector<CharacteristicFrequency>& candidates,
                                    const SidebandOptions& options = {});

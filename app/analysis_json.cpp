@@ -21,6 +21,7 @@ json harmonic_json(const MeshHarmonic& h, const std::optional<double>& over_floo
             {"level_db_re_harmonic", b.level_db_re_harmonic},
             {"over_floor_db", b.height_over_floor_db}};
     if (b.match) bj["match"] = match_label(*b.match);
+    if (b.mesh_line) bj["mesh_line"] = b.mesh_line->key;
     sides.push_back(bj);
   }
   hj["sidebands"] = sides;
@@ -217,15 +218,46 @@ json sensors_json(const std::vector<SensorAnalysis>& list) {
   return out;
 }
 
-json gear_train_json(const input::GearTrain& train) {
+const char* stage_kind(const input::TrainStage& st) {
+  return st.planetary ? "planetary" : st.internal_pair ? "internal pair" : "external pair";
+}
+
+json gear_train_json(const input::GearTrain& train, const RunAnalysis& a) {
   json freqs = json::array();
   for (const CharacteristicFrequency& f : train.frequencies.frequencies)
     freqs.push_back({{"key", f.key}, {"name", f.name}, {"value_hz", f.value_hz}, {"formula", f.formula}});
-  return {{"kind", train.planetary       ? "planetary"
-                   : train.internal_pair ? "internal pair"
-                                         : "external pair"},
-          {"mesh_hz", train.frequencies.mesh_hz},
-          {"characteristic_frequencies", freqs}};
+  json j = {{"kind", train.stages.size() > 1 ? "train" : stage_kind(train.stages.front())},
+            {"mesh_hz", train.frequencies.mesh_hz},
+            {"characteristic_frequencies", freqs}};
+  if (train.stages.size() == 1) return j;
+  // Several stages: each with its members, kinematics, mesh frequency and transmission error.
+  json stages = json::array();
+  double ratio = 1;
+  for (const input::TrainStage& st : train.stages) {
+    json e = {{"name", st.name}, {"kind", stage_kind(st)}};
+    if (st.planetary)
+      e["members"] = {{"sun", st.sun}, {"planets", st.planets}, {"ring", st.ring}, {"carrier", st.carrier}, {"fixed", st.fixed}},
+      e["teeth"] = {{"sun", st.sun_teeth}, {"planet", st.planet_teeth}, {"ring", st.ring_teeth}};
+    else
+      e["members"] = {{"driver", st.driver}, {"driven", st.driven}},
+      e["teeth"] = {{"driver", st.driver_teeth}, {"driven", st.driven_teeth}};
+    e["input"] = st.input;
+    e["output"] = st.output;
+    e["input_speed_rad_s"] = st.input_speed_rad_s;
+    e["output_speed_rad_s"] = st.output_speed_rad_s;
+    e["ratio"] = st.ratio;
+    e["mesh_hz"] = st.frequencies.mesh_hz;
+    for (const RunAnalysis::StageTe& te : a.stage_te)
+      if (te.stage == st.name) {
+        e["transmission_error"] = te_json(te.te.rad);
+        e["transmission_error"]["samples_peak_to_peak_rad"] = te.samples_peak_to_peak_rad;
+      }
+    ratio *= st.ratio;
+    stages.push_back(e);
+  }
+  j["ratio"] = ratio;
+  j["stages"] = stages;
+  return j;
 }
 
 }  // namespace
@@ -239,9 +271,13 @@ json analysis_json(const RunAnalysis& a, const input::GearTrain& train, const st
   j["scenario"] = scenario_name;
   j["window_s"] = {a.from_s, a.to_s};
   j["sample_rate_hz"] = a.sample_rate_hz;
-  j["gear_train"] = gear_train_json(train);
+  j["gear_train"] = gear_train_json(train, a);
   json pairs = json::object();
-  for (const PairForceAnalysis& p : a.pairs) pairs[pair_name(p.pair)] = pair_json(p, train.planetary);
+  for (const PairForceAnalysis& p : a.pairs) {
+    const input::TrainStage* st = train.stage_of(p.pair.a);
+    json& e = pairs[pair_name(p.pair)] = pair_json(p, st && st->planetary);
+    if (train.stages.size() > 1 && st) e["stage"] = st->name;
+  }
   j["pairs"] = pairs;
   // Teeth that lose contact and strike again: their lines need a finer step than a run in mesh.
   json separating = json::array();

@@ -52,14 +52,14 @@ void write_spectrum_csv(const std::filesystem::path& path, const RunAnalysis& a,
 void write_sidebands_csv(const std::filesystem::path& path, const RunAnalysis& a) {
   write_output(path, [&](std::ostream& f) {
     f << std::setprecision(10);
-    f << "pair,harmonic_order,around_hz,offset_hz,frequency_hz,amplitude_N,amplitude_db_re_harmonic,over_floor_db,matched\n";
+    f << "pair,harmonic_order,around_hz,offset_hz,frequency_hz,amplitude_N,amplitude_db_re_harmonic,over_floor_db,matched,mesh_line\n";
     for (const PairForceAnalysis& p : a.pairs)
       for (const MeshHarmonic& h : p.mesh.harmonics) {
         if (!h.peak) continue;
         for (const Sideband& b : h.sidebands)
           f << pair_name(p.pair) << ',' << h.order << ',' << h.peak->frequency_hz << ',' << b.offset_hz << ',' << b.peak.frequency_hz << ','
             << b.peak.amplitude << ',' << b.level_db_re_harmonic << ',' << b.height_over_floor_db << ','
-            << (b.match ? match_label(*b.match) : "") << '\n';
+            << (b.match ? match_label(*b.match) : "") << ',' << (b.mesh_line ? b.mesh_line->key : "") << '\n';
       }
   });
 }

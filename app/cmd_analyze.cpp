@@ -15,7 +15,22 @@ namespace gearsim::app {
 void print_analysis(const nlohmann::ordered_json& j, std::ostream& out) {
   out << std::fixed << std::setprecision(2);
   out << "analysis of " << j["scenario"].get<std::string>() << ", " << j["window_s"][0].get<double>() << "–"
-      << j["window_s"][1].get<double>() << " s; mesh frequency " << j["gear_train"]["mesh_hz"].get<double>() << " Hz\n";
+      << j["window_s"][1].get<double>() << " s; mesh frequency " << j["gear_train"]["mesh_hz"].get<double>() << " Hz";
+  const auto& train = j["gear_train"];
+  if (train.contains("stages")) {
+    out << " (the first stage's); overall ratio " << std::setprecision(6) << train["ratio"].get<double>() << "\n";
+    for (const auto& st : train["stages"]) {
+      out << "  stage " << st["name"].get<std::string>() << ", " << st["kind"].get<std::string>() << " " << st["input"].get<std::string>()
+          << " → " << st["output"].get<std::string>() << ": ratio " << std::setprecision(6) << st["ratio"].get<double>()
+          << ", mesh frequency " << std::setprecision(2) << st["mesh_hz"].get<double>() << " Hz";
+      if (st.contains("transmission_error"))
+        out << ", TE peak-to-peak " << std::scientific << std::setprecision(3) << st["transmission_error"]["peak_to_peak_rad"].get<double>()
+            << " rad" << std::fixed;
+      out << std::setprecision(2) << "\n";
+    }
+  } else {
+    out << "\n";
+  }
   for (const auto& [pair, p] : j["pairs"].items()) {
     out << "  " << pair << ": mean " << p["mean_force_N"].get<double>() << " N, zero-force samples "
         << 100 * p["zero_force_share"].get<double>() << " %";

@@ -50,7 +50,7 @@ render::Image draw_frame(render::Renderer& renderer, const RunMeshes& meshes, co
   char line[128];
   std::snprintf(line, sizeof line, "%s  t = %.4f s  (%s, %gx slower)", run.scenario.name.c_str(), t, o.camera.c_str(), o.slowmo);
   const render::Scene scene = run_scene(meshes, poses, {line});
-  return renderer.render(scene, run_camera(o.camera, run.scenario, scene, poses, renderer.aspect()));
+  return renderer.render(scene, run_camera(o.camera, run, scene, poses, renderer.aspect()));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "app/html.hpp"
 #include "app/report.hpp"
 #include "input/csv_table.hpp"
+#include "app/run_analysis.hpp"
 #include "input/gear_train.hpp"
 
 namespace gearsim::app {
@@ -65,8 +66,10 @@ std::string one_sensor(const RunDir& run, const physics::SensorDef& d, const jso
                    900, 280);
   const Spectrum sp = amplitude_spectrum(xw, d.sample_rate_hz);
   // The train: which planet-pass components survive at k·f_m + n·f_c.
-  const input::GearTrain train = input::gear_train_of(run.scenario);
-  if (!train.planetary || train.ring_teeth == 0) return h;
+  const input::GearTrain whole = run_gear_train(run);
+  const input::TrainStage* set = whole.first_planetary();
+  if (!set || set->fixed != set->ring || set->ring_teeth == 0) return h;
+  const input::TrainStage& train = *set;
   const double fm = train.frequencies.mesh_hz, fc = fm / train.ring_teeth;
   const int N = static_cast<int>(train.planets.size());
   for (int k = 1; k <= 3; ++k) {

@@ -109,32 +109,54 @@ const physics::BodyDef* body_named(const physics::Scenario& s, const std::string
 
 // Where the sun lies seen from the planet at t = 0 (carrier frame = world frame then), less the
 // planet's tooth-0 angle, rad.
-double sun_direction_rad(const physics::Scenario& s, const std::string& planet) {
+double sun_direction_rad(const physics::Scenario& s, const std::string& planet, const std::string& sun) {
   const physics::BodyDef* b = body_named(s, planet);
   if (!b) return 0;
-  const Eigen::Vector3d& p = b->pose.position_m;
+  const physics::BodyDef* c = body_named(s, sun);
+  const Eigen::Vector3d p = b->pose.position_m - (c ? c->pose.position_m : Eigen::Vector3d::Zero());
   return std::atan2(-p.y(), -p.x()) - (b->gear ? b->gear->tooth0_angle_rad : 0.0);
 }
 
 // What the analysis needs of the train: frequencies, planets, the gears whose teeth are counted
-// (each planet of a set; the driven gear of a pair).
+// (each planet of a set; the driven gear of a pair); with several stages each pair's stage and
+// each stage's transmission error.
 TrainDescription train_description(const input::GearTrain& train, const physics::Scenario& s) {
   const auto teeth = [&](const std::string& body) { return body_named(s, body) ? input::teeth_of(*body_named(s, body)) : 0; };
   TrainDescription d;
   d.frequencies = train.frequencies;
-  d.planetary = train.planetary;
-  d.sun = train.sun;
-  d.carrier = train.carrier;
-  d.sun_teeth = train.sun_teeth;
-  d.planets_in_phase = train.planetary && !train.planets.empty() && train.sun_teeth % static_cast<int>(train.planets.size()) == 0;
-  for (const std::string& planet : train.planets) {
-    const physics::BodyDef* b = body_named(s, planet);
-    const physics::BodyDef* c = body_named(s, train.carrier);
-    const Eigen::Vector3d r = b && c ? Eigen::Vector3d(b->pose.position_m - c->pose.position_m) : Eigen::Vector3d::Zero();
-    d.planets.push_back({planet, train.planet_teeth, sun_direction_rad(s, planet), std::atan2(r.y(), r.x())});
-    d.counted_gears.push_back({planet, teeth(planet)});
+  // The set a housing sensor watches and the planetary flags: the train's one planetary stage.
+  int planetary_stages = 0;
+  for (const input::TrainStage& st : train.stages) planetary_stages += st.planetary;
+  d.planetary = planetary_stages > 0;
+  if (planetary_stages == 1) {
+    const input::TrainStage& st = *train.first_planetary();
+    d.sun = st.sun;
+    d.carrier = st.carrier;
+    d.sun_teeth = st.sun_teeth;
+    d.planets_in_phase = !st.planets.empty() && st.sun_teeth % static_cast<int>(st.planets.size()) == 0;
   }
-  if (!train.planetary) d.counted_gears.push_back({train.driven, teeth(train.driven)});
+  for (const input::TrainStage& st : train.stages) {
+    for (const std::string& planet : st.planets) {
+      const physics::BodyDef* b = body_named(s, planet);
+      const physics::BodyDef* c = body_named(s, st.carrier);
+      const Eigen::Vector3d r = b && c ? Eigen::Vector3d(b->pose.position_m - c->pose.position_m) : Eigen::Vector3d::Zero();
+      d.planets.push_back({planet, st.planet_teeth, sun_direction_rad(s, planet, st.sun), std::atan2(r.y(), r.x()), st.sun});
+      d.counted_gears.push_back({planet, teeth(planet)});
+    }
+    if (!st.planetary) d.counted_gears.push_back({st.driven, teeth(st.driven)});
+  }
+  if (train.stages.size() > 1)
+    for (const input::TrainStage& st : train.stages) {
+      const double fault = st.planetary ? st.frequencies.at("planet_fault").value_hz : 0.0;
+      if (st.planetary)
+        for (const std::string& planet : st.planets) {
+          d.pair_stages.push_back({{st.sun, planet}, st.name, st.frequencies.mesh_hz, fault});
+          d.pair_stages.push_back({{planet, st.ring}, st.name, st.frequencies.mesh_hz, fault});
+        }
+      else
+        d.pair_stages.push_back({{st.driver, st.driven}, st.name, st.frequencies.mesh_hz, 0.0});
+      d.stage_te.push_back({st.name, train.angle_chain.at(st.input), train.angle_chain.at(st.output), st.ratio});
+    }
   return d;
 }
 
@@ -186,9 +208,14 @@ RunSignals run_signals(const RunDir& run, const TrainDescription& train, double 
     }
   }
   for (const CountedGear& g : train.counted_gears) s.angles.push_back({g.body, state.column(g.body + "_angle_rad")});
-  for (const PlanetGear& p : train.planets)
-    if (std::none_of(s.angles.begin(), s.angles.end(), [&](const BodyAngle& a) { return a.body == p.body; }))
-      s.angles.push_back({p.body, state.column(p.body + "_angle_rad")});
+  const auto add_angle = [&](const std::string& body) {
+    if (std::none_of(s.angles.begin(), s.angles.end(), [&](const BodyAngle& a) { return a.body == body; }))
+      s.angles.push_back({body, state.column(body + "_angle_rad")});
+  };
+  for (const PlanetGear& p : train.planets) add_angle(p.body);
+  for (const TrainDescription::StageTe& st : train.stage_te)
+    for (const auto* chain : {&st.input_chain, &st.output_chain})
+      for (const std::string& body : *chain) add_angle(body);
   // The logs the run's scenario says it wrote are read (a missing one is refused by its reader,
   // naming it), never skipped.
   if (run.scenario.output.per_step_log) s.tooth_contacts = tooth_contacts(run.dir / "steps.h5", pairs);
@@ -229,10 +256,15 @@ std::vector<TrainDescription::LoadedFlank> loaded_flanks(const RunDir& run) {
   return out;
 }
 
+input::GearTrain run_gear_train(const RunDir& run) {
+  std::vector<input::Mesh> meshes;
+  for (const PairId& p : gear_pairs_of(run)) meshes.emplace_back(p.a, p.b);
+  return input::gear_train_of(run.scenario, meshes);
+}
+
 RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
-  TrainDescription description = train_description(input::gear_train_of(s), s);
-  gear_pairs_of(run);  // checks the list's shape first
+  TrainDescription description = train_description(run_gear_train(run), s);
   description.loaded_flanks = loaded_flanks(run);
   double from_s = o.from_s;
   // Not before the anti-aliased force is free of its start (held at the first value before t = 0).
@@ -246,7 +278,7 @@ RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& o) {
 
 json write_run_analysis(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
-  const input::GearTrain train = input::gear_train_of(s);
+  const input::GearTrain train = run_gear_train(run);
   const RunAnalysis a = analyze_run_dir(run, o);
   const json j = analysis_json(a, train, s.name);
   declare_outputs(run.dir, {"analysis.json", "spectrum.csv", "sidebands.csv", "teeth.csv", "summary.json"});

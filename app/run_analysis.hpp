@@ -11,6 +11,7 @@
 
 #include "analysis/run_analysis.hpp"
 #include "app/run_dir.hpp"
+#include "input/gear_train.hpp"
 
 namespace gearsim::app {
 
@@ -25,5 +26,9 @@ nlohmann::ordered_json write_run_analysis(const RunDir& run, const AnalyzeOption
 // from the end of the ramps (or the force filter's edge, or options.from_s) to the end of the
 // record less the filter's edge, as write_run_analysis takes it. InputError as write_run_analysis.
 RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& options = {});
+
+// The run's gear train: its scenario's bodies with summary.json's gear_pairs as the meshes.
+// InputError as input::gear_train_of, or naming summary.json when gear_pairs is missing or malformed.
+input::GearTrain run_gear_train(const RunDir& run);
 
 }  // namespace gearsim::app

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "app/run_analysis.hpp"
 #include "input/gear_train.hpp"
 #include "core/errors.hpp"
 #include "geometry/mesh_io.hpp"
@@ -63,12 +64,15 @@ render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>
   return scene;
 }
 
-render::Camera run_camera(const std::string& preset, const physics::Scenario& s, const render::Scene& scene,
+render::Camera run_camera(const std::string& preset, const RunDir& run, const render::Scene& scene,
                           const std::vector<Eigen::Isometry3d>& poses, double aspect) {
+  const physics::Scenario& s = run.scenario;
   if (preset == "overview") return render::overview_camera(render::scene_bounds(scene), aspect);
   if (preset == "tilted") return render::overview_camera(render::scene_bounds(scene), aspect, kTilt_rad);
   if (preset == "sun_mesh" || preset == "ring_mesh") {
-    const input::GearTrain t = input::gear_train_of(s);
+    // The train's first planetary stage, else its first stage.
+    const input::GearTrain train = run_gear_train(run);
+    const input::TrainStage& t = train.first_planetary() ? *train.first_planetary() : train.stages.front();
     // The faulty planet (the first whose gear carries an error), planet 0 without one.
     std::string planet = t.planetary ? t.planets.front() : t.driven;
     for (const physics::BodyDef& b : s.bodies)

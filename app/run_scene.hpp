@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run_dir.hpp"
 #include "physics/scenario.hpp"
 #include "render/camera.hpp"
 #include "render/scene.hpp"
@@ -31,7 +32,7 @@ render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>
 // 6 mm tall, on the pitch point of the faulty planet — the first planet whose gear carries an
 // error, else planet 0 — with the sun and with the ring; a pair's "sun_mesh" is its mesh).
 // InputError naming the preset when it is unknown or the train has no ring.
-render::Camera run_camera(const std::string& preset, const physics::Scenario& s, const render::Scene& scene,
+render::Camera run_camera(const std::string& preset, const RunDir& run, const render::Scene& scene,
                           const std::vector<Eigen::Isometry3d>& poses, double aspect);
 
 }  // namespace gearsim::app

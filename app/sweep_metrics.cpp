@@ -42,7 +42,10 @@ void add_named_metric(json& m, const std::string& name, const RunDir& run, const
   } else if (name == "mean_force_N") {
     for (const PairForceAnalysis& p : a.pairs) m["mean_force_N." + pair_name(p.pair)] = p.mean_force_N;
   } else if (name == "mesh_frequency_hz") {
-    m["mesh_frequency_hz"] = input::gear_train_of(run.scenario).frequencies.mesh_hz;
+    const input::GearTrain train = run_gear_train(run);
+    m["mesh_frequency_hz"] = train.frequencies.mesh_hz;  // the first stage's
+    if (train.stages.size() > 1)
+      for (const input::TrainStage& st : train.stages) m["mesh_frequency_hz." + st.name] = st.frequencies.mesh_hz;
   } else if (name == "rms_dynamic_te_rad") {
     if (!a.te) throw InputError((run.dir / "state.csv").string() + ": no te_rad column: the run has no transmission error");
     m["rms_dynamic_te_rad"] = a.te->rad.rms;  // about the window's mean: the dynamic part

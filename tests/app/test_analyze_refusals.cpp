@@ -9,8 +9,11 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "input/scenario_file.hpp"
 #include "input/scenario_record.hpp"
@@ -21,11 +24,29 @@ namespace test_analyze_refusals {
 
 namespace fs = std::filesystem;
 
-// A run folder of paper_dynamics_healthy.yaml (ramps end at 0.05 s): a summary naming its one gear
-// pair sun–planet_0 (`gear_pairs` as gearsim run writes it, unless told otherwise), contacts.csv with
-// `contacts_header` and rows every 0.5 ms to 0.3 s, state.csv (time_s, te_rad) up to `state_to_s`.
-fs::path hand_made_run(const std::string& contacts_header, double state_to_s,
-                       const std::string& gear_pairs = R"(, "gear_pairs": [{"a": "sun", "b": "planet_0"}])") {
+// The paper set's six meshes, as gearsim run lists them in summary.json's gear_pairs.
+const std::vector<std::pair<std::string, std::string>> kPaperPairs = {{"sun", "planet_0"},  {"sun", "planet_1"},  {"sun", "planet_2"},
+                                                                      {"planet_0", "ring"}, {"planet_1", "ring"}, {"planet_2", "ring"}};
+
+std::string paper_gear_pairs() {
+  std::string list;
+  for (const auto& [a, b] : kPaperPairs) list += (list.empty() ? "" : ", ") + std::string("{\"a\": \"") + a + "\", \"b\": \"" + b + "\"}";
+  return ", \"gear_pairs\": [" + list + "]";
+}
+
+// contacts.csv's header with the three columns gearsim run writes per pair, sun–planet_0 first.
+std::string paper_contacts_header() {
+  std::string h = "time_s";
+  for (const auto& [a, b] : kPaperPairs)
+    h += "," + a + "__" + b + "_force_N," + a + "__" + b + "_tooth_pairs," + a + "__" + b + "_max_depth_um";
+  return h;
+}
+
+// A run folder of paper_dynamics_healthy.yaml (ramps end at 0.05 s): a summary naming its six gear
+// pairs (`gear_pairs` as gearsim run writes it, unless told otherwise), contacts.csv with
+// `contacts_header` and rows every 0.5 ms to 0.3 s (118 N, 1 tooth pair, 0.9 µm in each pair's
+// columns), state.csv (time_s, te_rad) up to `state_to_s`.
+fs::path hand_made_run(const std::string& contacts_header, double state_to_s, const std::string& gear_pairs = paper_gear_pairs()) {
   const fs::path dir = gearsim::test::fresh_test_dir();
   // The record's required keys as gearsim run writes them (input/run_record_check.hpp checks them first).
   std::ofstream(dir / "summary.json") << "{\"status\": \"completed\", \"sim_seconds\": 0.3, \"time_step_s\": 2e-5, "
@@ -36,9 +57,12 @@ fs::path hand_made_run(const std::string& contacts_header, double state_to_s,
   std::ofstream contacts(dir / "contacts.csv"), state(dir / "state.csv");
   contacts << contacts_header << "\n";
   state << "time_s,te_rad\n";
+  const auto columns = std::count(contacts_header.begin(), contacts_header.end(), ',');
   for (int k = 1; k <= 600; ++k) {
     const double t = 0.0005 * k;
-    contacts << t << ",118.0,1,0.9\n";
+    contacts << t;
+    for (long c = 0; c < columns; ++c) contacts << (c % 3 == 0 ? ",118.0" : c % 3 == 1 ? ",1" : ",0.9");
+    contacts << "\n";
     if (t <= state_to_s) state << t << ",1e-5\n";
   }
   return dir;
@@ -55,12 +79,12 @@ void expect_refused(const fs::path& dir, const std::string& file, const std::str
 }
 
 TEST(AnalyzeRefusals, StateWithoutRowsAfterTheRampIsRefusedNotACrash) {
-  const fs::path dir = hand_made_run("time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um", 0.04);
+  const fs::path dir = hand_made_run(paper_contacts_header(), 0.04);
   expect_refused(dir, "state.csv", "only 0 rows after t = 0.05");
 }
 
 TEST(AnalyzeRefusals, StateWithTooFewRowsAfterTheRampIsRefused) {
-  const fs::path dir = hand_made_run("time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um", 0.06);
+  const fs::path dir = hand_made_run(paper_contacts_header(), 0.06);
   expect_refused(dir, "state.csv", "at least 64 are needed");
 }
 
@@ -87,7 +111,7 @@ void replace_in_row(const fs::path& file, int data_row, const std::string& value
 }
 
 TEST(AnalyzeRefusals, ANonFiniteForceOrTransmissionErrorIsRefusedWithItsPlace) {
-  const std::string header = "time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um";
+  const std::string header = paper_contacts_header();
   const fs::path force = hand_made_run(header, 0.3);
   replace_in_row(force / "contacts.csv", 300, "nan", 1);
   expect_refused(force, "contacts.csv", "column sun__planet_0_force_N, data row 300: expected a finite force in N");
@@ -98,7 +122,7 @@ TEST(AnalyzeRefusals, ANonFiniteForceOrTransmissionErrorIsRefusedWithItsPlace) {
 
 TEST(AnalyzeRefusals, ASummaryWithoutGearPairsIsRefused) {
   // The pairs come from the summary, never from the column names.
-  const std::string header = "time_s,sun__planet_0_force_N,sun__planet_0_tooth_pairs,sun__planet_0_max_depth_um";
+  const std::string header = paper_contacts_header();
   expect_refused(hand_made_run(header, 0.3, ""), "summary.json", "gear_pairs: missing");
   // Checked when the record is read (input/run_record_check.hpp), before the analysis looks at it.
   expect_refused(hand_made_run(header, 0.3, R"(, "gear_pairs": [{"a": "sun"}])"), "summary.json", "key gear_pairs[0].b: missing");

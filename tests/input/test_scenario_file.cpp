@@ -213,13 +213,23 @@ TEST(ScenarioFile, InternalPairPutsTheRingAtTheOriginAndTurnsBothTheSameWay) {
 // The analysis sees a ring meshing one pinion about the ground as a gear pair (not a planetary
 // set without planets): mesh frequency z_driver·ω/2π.
 TEST(ScenarioFile, AnInternalPairIsAnalysedAsAGearPair) {
-  const GearTrain t = gear_train_of(planet_ring_pair("planet", "ring_relieved"));
+  const GearTrain train = gear_train_of(planet_ring_pair("planet", "ring_relieved"), {{"planet", "ring_relieved"}});
+  ASSERT_EQ(train.stages.size(), 1u);
+  const TrainStage& t = train.stages.front();
   EXPECT_FALSE(t.planetary);
   EXPECT_TRUE(t.internal_pair);
   EXPECT_EQ(t.driver, "planet");
   EXPECT_EQ(t.driven, "ring_relieved");
-  EXPECT_NEAR(t.frequencies.mesh_hz, 36 * 20 / (2 * kPi), 1e-9);
-  EXPECT_TRUE(gear_train_of(paper()).planetary);
+  EXPECT_NEAR(train.frequencies.mesh_hz, 36 * 20 / (2 * kPi), 1e-9);
+  // A ring turning the same way as its pinion, at z_p/z_r of its speed.
+  EXPECT_NEAR(t.ratio, 96.0 / 36, 1e-12);
+  std::vector<Mesh> meshes;
+  for (const char* p : {"planet_0", "planet_1", "planet_2"}) meshes.push_back({"sun", p}), meshes.push_back({p, "ring"});
+  const GearTrain set = gear_train_of(paper(), meshes);
+  ASSERT_EQ(set.stages.size(), 1u);
+  EXPECT_TRUE(set.stages.front().planetary);
+  EXPECT_EQ(set.stages.front().fixed, "ring");
+  EXPECT_NEAR(set.stages.front().ratio, 5.0, 1e-12);  // sun in, carrier out: 1 + z_r/z_s
 }
 
 // The planetary macro with members given as shapes (here gear_from: the paper's gears): the

@@ -73,13 +73,28 @@ TEST(ScenarioStages, MembersAreNamedByStageAndTheTransmissionChainsThroughTheSha
   EXPECT_DOUBLE_EQ(s.transmission->ratio, 4.0);  // (−40/20)·(−40/20)
   // Without the shaft the stages are not one train: no transmission is proposed.
   EXPECT_FALSE(loaded(train("")).transmission);
-  // The run analysis takes one set or pair so far, and says so of a train.
-  try {
-    gear_train_of(s);
-    ADD_FAILURE() << "a train of stages was analysed as one stage";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("a train of stages joined by shafts ('a_wheel' to 'b_pinion')"), std::string::npos) << e.what();
-  }
+}
+
+// The analysis sees the train as its two stages, named as written, in order from the motor: each
+// with its input and output, its ratio and its own mesh frequency from the rigid kinematics.
+TEST(ScenarioStages, TheAnalysisNamesEachStageWithItsSpeedsAndMeshFrequency) {
+  const physics::Scenario s = loaded(train(kShaft, "motors:\n  - {joint: a_pinion, target_speed_rad_s: 10, max_torque_N_m: 5}\n"));
+  // Listed in the other order: the stages are ordered from the motor, not by the list.
+  const GearTrain t = gear_train_of(s, {{"b_wheel", "b_pinion"}, {"a_pinion", "a_wheel"}});
+  ASSERT_EQ(t.stages.size(), 2u);
+  EXPECT_EQ(t.stages[0].name, "a");
+  EXPECT_EQ(t.stages[1].name, "b");
+  EXPECT_EQ(t.stages[1].driver, "b_pinion");  // the gear the shaft drives
+  EXPECT_NEAR(t.stages[0].output_speed_rad_s, -5.0, 1e-12);
+  EXPECT_NEAR(t.stages[1].input_speed_rad_s, -5.0, 1e-12);  // turns with a_wheel on its shaft
+  EXPECT_NEAR(t.stages[1].output_speed_rad_s, 2.5, 1e-12);
+  EXPECT_NEAR(t.stages[0].ratio * t.stages[1].ratio, s.transmission->ratio, 1e-12);
+  const double two_pi = 2 * 3.14159265358979323846;
+  EXPECT_NEAR(t.frequencies.at("a.mesh").value_hz, 20 * 10 / two_pi, 1e-12);
+  EXPECT_NEAR(t.frequencies.at("b.mesh").value_hz, 20 * 5 / two_pi, 1e-12);
+  EXPECT_EQ(t.frequencies.at("b.driven_shaft").name, "stage b: driven rotation");
+  // b_pinion's absolute angle is its angle on the shaft plus a_wheel's.
+  EXPECT_EQ(t.angle_chain.at("b_pinion"), (std::vector<std::string>{"b_pinion", "a_wheel"}));
 }
 
 TEST(ScenarioStages, AShaftJoiningTwoMembersOfOneStageIsRefused) {

@@ -95,7 +95,11 @@ namespace test_scenario_supports {
 // ring's, z_r·ω_c/2π = 96·104.7/5/2π = 319.94 Hz for the paper set on bearings.
 TEST(ScenarioSupports, ARingHeldTorsionallyCountsAsTheFixedMember) {
   const physics::Scenario s = load_scenario(std::filesystem::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/paper_dynamics_bearings.yaml");
-  const GearTrain t = gear_train_of(s);
+  std::vector<Mesh> meshes;
+  for (const physics::BodyDef& b : s.bodies)
+    if (b.name.rfind("planet", 0) == 0) meshes.push_back({"sun", b.name}), meshes.push_back({b.name, "ring"});
+  const GearTrain t = gear_train_of(s, meshes);
+  EXPECT_EQ(t.stages.front().fixed, "ring");
   EXPECT_NEAR(t.frequencies.mesh_hz, 96 * 104.7 / 5 / (2 * 3.14159265358979323846), 1e-9);
 }
 
