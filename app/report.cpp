@@ -51,8 +51,9 @@ std::string build_report(const RunDir& run, const std::optional<RunDir>& compare
   std::string body = "<h1>Gearsim report: " + html_escape(run.scenario.name) + "</h1>\n";
   if (compare)
     body += "<p>Compared with <b>" + html_escape(compare->scenario.name) + "</b> (" + html_escape(compare->dir.string()) + ").</p>\n";
-  body += run_section(run) + report_paper_section(run) + report_gears_section(run) + report_signals_section(run, compare) +
-          report_sensors_section(run, compare) + report_sampling_section(run) + frames_section(run);
+  body += run_section(run) + report_train_section(run) + (reproduces_paper(run) ? report_paper_section(run) : std::string()) +
+          report_gears_section(run) + report_signals_section(run, compare) + report_sensors_section(run, compare) +
+          report_sampling_section(run) + frames_section(run);
   return html_document("Gearsim report: " + run.scenario.name, body);
 }
 

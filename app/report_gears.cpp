@@ -1,4 +1,5 @@
-// Report section: the gear table from first principles beside the published one, and the
+// Report section (for a scenario built from a gear-set spec): the gear table from first
+// principles beside the published one, and the
 // tolerance table (DIN 3961 and ISO 1328-1), from the gear-set spec the scenario was built from.
 #include "app/gear_report.hpp"
 #include "input/gearset_file.hpp"
@@ -10,9 +11,9 @@ namespace gearsim::app {
 using json = nlohmann::ordered_json;
 
 std::string report_gears_section(const RunDir& run) {
-  std::string h = "<h2>Gears</h2>\n";
-  if (run.scenario.gearset_spec.empty())
-    return h + "<p class=\"note\">The scenario's gears do not come from a gear-set spec (meshes given directly): no gear table.</p>\n";
+  // The gears themselves are in the gearbox section (report_train.cpp) for any scenario.
+  if (run.scenario.gearset_spec.empty()) return "";
+  std::string h = "<h2>The gear-set spec</h2>\n";
   const input::GearSetFile file = input::load_gearset(run.scenario.gearset_spec);
   // Decomposition deviation sampled coarsely: the report shows the gear table, not the pieces.
   const GearSetAnalysis a = analyse_gearset(file, 2e-3);

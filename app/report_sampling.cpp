@@ -105,7 +105,7 @@ std::string full_rate_lines(const RunDir& run, const json& a, double stop_hz) {
   const Spectrum s = amplitude_spectrum(f, 1 / dt, {WindowKind::Hann, 0, true});
   std::vector<SpectralPeak> peaks = local_maxima(s, stop_hz, 0.5 / dt);
   std::sort(peaks.begin(), peaks.end(), [](const SpectralPeak& x, const SpectralPeak& y) { return x.amplitude > y.amplitude; });
-  const double fm = a["gear_train"]["mesh_hz"].get<double>();
+  const double fm = pair_mesh_hz(a, log.pairs[0]);
   std::string lines;
   for (std::size_t i = 0; i < peaks.size() && i < 6; ++i)
     lines += (i ? ", " : "") + num(peaks[i].frequency_hz, 5) + " Hz (" + num(peaks[i].frequency_hz / fm, 4) + "·f<sub>m</sub>, " +
@@ -125,19 +125,24 @@ std::string full_rate_lines(const RunDir& run, const json& a, double stop_hz) {
 }  // namespace
 
 std::string report_sampling_section(const RunDir& run) {
-  std::string h = "<h2>Sampling: why the paper's 2000-sample record misleads</h2>\n";
+  const bool paper = reproduces_paper(run);
+  std::string h = paper ? "<h2>Sampling: why the paper's 2000-sample record misleads</h2>\n"
+                        : "<h2>Sampling: the anti-aliased force and its point samples</h2>\n";
   const std::filesystem::path analysis = run.dir / "analysis.json";
   if (!run.summary.contains("force_filter") || !std::filesystem::exists(analysis))
     return h + "<p class=\"note\">This run logged point samples only (no force_filter in summary.json).</p>\n";
   const json a = read_json_record(analysis);
   const json& ff = run.summary["force_filter"];
   const double fs = ff["output_rate_hz"].get<double>(), stop = ff["stopband_edge_hz"].get<double>();
-  h += "<p>The paper kept the contact force every 25th step (2 kHz) of a 50 kHz simulation. Everything the force "
-       "holds above " +
-       num(fs / 2, 4) + " Hz then folds onto 0–" + num(fs / 2, 4) +
-       " Hz: the 24th mesh harmonic (7680 Hz = 4·2000 − 320 Hz) lands exactly on the 320 Hz mesh line, and the "
-       "contact ringing lands wherever its frequency folds. Those point samples change with the time step and no "
-       "spectral figure taken from them converges. This run's <code>contacts.csv</code> force is instead every "
+  h += std::string(paper ? "<p>The paper kept the contact force every 25th step (2 kHz) of a 50 kHz simulation. Everything the force "
+                           "holds above " +
+                               num(fs / 2, 4) + " Hz then folds onto 0–" + num(fs / 2, 4) +
+                               " Hz: the 24th mesh harmonic (7680 Hz = 4·2000 − 320 Hz) lands exactly on the 320 Hz mesh line, and "
+                               "the contact ringing lands wherever its frequency folds. Those point samples change with the time "
+                               "step and no spectral figure taken from them converges. "
+                         : "<p>Point samples of the contact force at the output rate fold everything it holds above " + num(fs / 2, 4) +
+                               " Hz (high mesh harmonics, the contact ringing) onto 0–" + num(fs / 2, 4) + " Hz. ") +
+       "This run's <code>contacts.csv</code> force is instead every "
        "step's force through a zero-phase low-pass (" +
        std::to_string(ff["taps"].get<long>()) + " taps, passband to " + num(ff["passband_edge_hz"].get<double>(), 4) + " Hz, " +
        num(ff["stopband_attenuation_dB"].get<double>(), 4) + " dB from " + num(stop, 4) +

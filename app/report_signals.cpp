@@ -1,6 +1,7 @@
-// Report section: characteristic frequencies and what the record resolves; the contact force
-// (paper Fig. 4), its spectrum with harmonics (Fig. 5) and zooms with sidebands (Fig. 6), the
-// transmission error (Fig. 7), per-tooth loads; healthy/faulty overlays with --compare.
+// Report section: characteristic frequencies and what the record resolves; per stage the contact
+// force of its first pair (paper Fig. 4), its spectrum with harmonics (Fig. 5) and zooms with
+// sidebands (Fig. 6); the transmission error (Fig. 7), per-tooth loads; healthy/faulty overlays
+// with --compare. The paper's figure numbers only for a run that reproduces the paper.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -27,29 +28,50 @@ std::string frequencies_table(const json& a) {
   return html_table({"key", "what", "Hz", "formula"}, rows);
 }
 
+// " (paper Fig. n)" for a run that reproduces the paper, else "".
+std::string paper_figure(const RunDir& run, int n) { return reproduces_paper(run) ? " (paper Fig. " + std::to_string(n) + ")" : ""; }
+
+// Per stage (one for a single-stage train) the first pair analysis.json lists in it.
+std::vector<std::string> stage_pairs(const json& a) {
+  std::vector<std::string> out;
+  if (!a["gear_train"].contains("stages")) return {first_force_pair(a)};
+  for (const auto& st : a["gear_train"]["stages"])
+    for (const auto& [name, p] : a["pairs"].items())
+      if (p.contains("stage") && p["stage"] == st["name"]) {
+        out.push_back(name);
+        break;
+      }
+  return out;
+}
+
 std::string force_plots(const RunDir& run, const json& a, const std::string& pair) {
   const input::CsvTable c = input::read_csv(run.dir / "contacts.csv");
   const std::vector<double>& t = c.column("time_s");
   const std::vector<double>& f = c.column(pair + "_force_N");
   const double from = a["window_s"][0].get<double>();
-  std::vector<double> tz, fz;  // 25 ms after the ramp: eight mesh periods
+  // Eight mesh periods after the ramp (25 ms for the paper's set).
+  const double span = 8 / pair_mesh_hz(a, pair);
+  std::vector<double> tz, fz;
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (t[i] >= from && t[i] < from + 0.025) tz.push_back(t[i]), fz.push_back(f[i]);
-  std::string h = "<h3>Contact force, " + html_escape(pair) + " (paper Fig. 4)</h3>\n";
+    if (t[i] >= from && t[i] < from + span) tz.push_back(t[i]), fz.push_back(f[i]);
+  std::string h = "<h3>Contact force, " + html_escape(pair) + paper_figure(run, 4) + "</h3>\n";
   h += gnuplot_svg(data_block("d", {t, f}) +
                    "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
                    "plot $d using 1:2 with lines lw 1 title " +
                    gnuplot_string(pair) + "\n");
   h += gnuplot_svg(data_block("d", {tz, fz}) +
                        "set xlabel 'time, s'; set ylabel 'force, N'; set grid\n"
-                       "plot $d using 1:2 with linespoints pt 7 ps 0.3 title '25 ms at speed (output samples)'\n",
+                       "plot $d using 1:2 with linespoints pt 7 ps 0.3 title " +
+                       gnuplot_string(num(span * 1e3, 3) + " ms at speed: eight mesh periods (output samples)") + "\n",
                    900, 300);
   return h;
 }
 
 std::string spectrum_plots(const RunDir& run, const json& a, const std::string& pair, const std::optional<RunDir>& cmp) {
   const input::CsvTable s = input::read_csv(run.dir / "spectrum.csv");
-  const double fm = a["gear_train"]["mesh_hz"].get<double>();
+  const double fm = pair_mesh_hz(a, pair);
+  // To 1000 Hz, or past the third harmonic of a faster stage (within the record).
+  const double top = std::min(s.column("frequency_hz").back(), std::max(1000.0, 3.3 * fm));
   std::string script = data_block("s", {s.column("frequency_hz"), s.column(pair + "_amplitude_N")});
   std::string plot = "plot $s using 1:2 with lines lw 1 title " + gnuplot_string(run.scenario.name);
   if (cmp) {
@@ -60,11 +82,11 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
   std::string marks;
   for (int k = 1; k <= 3; ++k)
     marks += "set arrow from " + num(k * fm, 6) + ", graph 0 to " + num(k * fm, 6) + ", graph 1 nohead dt 2 lc rgb 'gray'\n";
-  std::string h =
-      "<h3>Spectrum of the contact force to 1000 Hz, harmonics of f<sub>m</sub> = " + num(fm, 5) + " Hz dashed (paper Fig. 5)</h3>\n";
-  h += gnuplot_svg(script + marks +
-                   "set logscale y; set xrange [0:1000]; set xlabel 'frequency, Hz'; set ylabel 'amplitude, N'; set grid\n" + plot + "\n");
-  h += "<h3>Around each harmonic, sidebands labelled by the characteristic frequency they match (paper Fig. 6)</h3>\n";
+  std::string h = "<h3>Spectrum of the contact force of " + html_escape(pair) + " to " + num(top, 4) +
+                  " Hz, harmonics of f<sub>m</sub> = " + num(fm, 5) + " Hz dashed" + paper_figure(run, 5) + "</h3>\n";
+  h += gnuplot_svg(script + marks + "set logscale y; set xrange [0:" + num(top, 6) +
+                   "]; set xlabel 'frequency, Hz'; set ylabel 'amplitude, N'; set grid\n" + plot + "\n");
+  h += "<h3>Around each harmonic, sidebands labelled by the characteristic frequency they match" + paper_figure(run, 6) + "</h3>\n";
   const json& p = a["pairs"][pair];
   for (const auto& hm : p["mesh_harmonics"]) {
     if (!hm.contains("peak_hz")) continue;
@@ -77,10 +99,11 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
     for (const json& b : sb) {
       if (std::abs(b["offset_hz"].get<double>()) > span || n >= 6) continue;
       ++n;
-      labels += "set label " +
-                gnuplot_string(num(b["offset_hz"].get<double>(), 3) + " Hz" +
-                               (b.contains("match") ? " " + b["match"].get<std::string>() : std::string(" (unmatched)"))) +
-                " at " + num(b["frequency_hz"].get<double>(), 6) + "," + num(b["amplitude_N"].get<double>(), 6) +
+      const std::string what = b.contains("mesh_line") ? " line " + b["mesh_line"].get<std::string>()
+                               : b.contains("match")   ? " " + b["match"].get<std::string>()
+                                                       : std::string(" (unmatched)");
+      labels += "set label " + gnuplot_string(num(b["offset_hz"].get<double>(), 3) + " Hz" + what) + " at " +
+                num(b["frequency_hz"].get<double>(), 6) + "," + num(b["amplitude_N"].get<double>(), 6) +
                 " rotate by 60 font ',8' offset 0,0.5\n";
     }
     h += gnuplot_svg(script + labels + "set logscale y; set xrange [" + num(c - span, 6) + ":" + num(c + span, 6) +
@@ -93,7 +116,7 @@ std::string spectrum_plots(const RunDir& run, const json& a, const std::string& 
 std::string te_plot(const RunDir& run) {
   const input::CsvTable st = input::read_csv(run.dir / "state.csv");
   if (!st.has("te_rad")) return "";
-  return "<h3>Transmission error θ<sub>in</sub> − i·θ<sub>out</sub> (paper Fig. 7)</h3>\n" +
+  return "<h3>Transmission error θ<sub>in</sub> − i·θ<sub>out</sub>" + paper_figure(run, 7) + "</h3>\n" +
          gnuplot_svg(data_block("d", {st.column("time_s"), st.column("te_rad")}) +
                          "set xlabel 'time, s'; set ylabel 'TE, rad'; set grid\nplot $d using 1:2 with lines title 'te_rad'\n",
                      900, 320);
@@ -140,23 +163,29 @@ std::string report_signals_section(const RunDir& run, const std::optional<RunDir
   std::string h = "<h2>Characteristic frequencies</h2>\n" + frequencies_table(a);
   h += "<p>Analysed window " + num(a["window_s"][0].get<double>()) + "–" + num(a["window_s"][1].get<double>()) +
        " s: the record resolves " + num(p["resolution_hz"].get<double>(), 3) +
-       " Hz (1/T); with the Hann window, tones closer than about twice that merge into one peak. A 1 s record "
-       "cannot separate 6.67 Hz (2·f<sub>c</sub>), 8.89 Hz (f<sub>m</sub>/36) and 10 Hz (3·f<sub>c</sub>): the spectrum is "
-       "zero-padded to a " +
-       num(p["bin_width_hz"].get<double>(), 3) + " Hz grid, which places peaks, not resolves them.</p>\n";
-  h += "<h2>Signals</h2>\n" + force_plots(run, a, pair) + spectrum_plots(run, a, pair, compare) + te_plot(run);
+       " Hz (1/T); with the Hann window, tones closer than about twice that merge into one peak" +
+       (reproduces_paper(run) ? ". A 1 s record cannot separate 6.67 Hz (2·f<sub>c</sub>), 8.89 Hz (f<sub>m</sub>/36) and 10 Hz "
+                                "(3·f<sub>c</sub>)"
+                              : std::string()) +
+       ": the spectrum is zero-padded to a " + num(p["bin_width_hz"].get<double>(), 3) +
+       " Hz grid, which places peaks, not resolves them.</p>\n";
+  h += "<h2>Signals</h2>\n";
+  for (const std::string& first : stage_pairs(a)) h += force_plots(run, a, first) + spectrum_plots(run, a, first, compare);
+  h += te_plot(run);
   std::vector<std::vector<std::string>> rows;
   for (const auto& [name, q] : a["pairs"].items()) {
     std::vector<std::string> r{
-        html_escape(name), num(q["mean_force_N"].get<double>(), 5), num(100 * q["zero_force_share"].get<double>(), 3),
+        html_escape(name), q.contains("stage") ? html_escape(q["stage"].get<std::string>()) : "–", num(q["mean_force_N"].get<double>(), 5),
+        num(100 * q["zero_force_share"].get<double>(), 3),
         q.contains("steps_without_force_share") ? num(100 * q["steps_without_force_share"].get<double>(), 3) : "no per-step log"};
     for (const auto& hm : q["mesh_harmonics"])
       r.push_back(hm.contains("peak_hz")
                       ? num(hm["peak_hz"].get<double>(), 6) + " Hz, +" + num(hm["over_median_floor_0_1000_hz_db"].get<double>(), 3) + " dB"
                       : "not found");
+    while (r.size() < 8) r.push_back("above the record's Nyquist frequency");
     rows.push_back(r);
   }
-  h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "mean force, N", "zero-force samples, %", "steps without force, %",
+  h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "stage", "mean force, N", "zero-force samples, %", "steps without force, %",
                                                   "f<sub>m</sub> over floor", "2·f<sub>m</sub>", "3·f<sub>m</sub>"},
                                                  rows);
   if (a.contains("contact_loss")) {

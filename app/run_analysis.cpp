@@ -283,7 +283,12 @@ json write_run_analysis(const RunDir& run, const AnalyzeOptions& o) {
   const json j = analysis_json(a, train, s.name);
   declare_outputs(run.dir, {"analysis.json", "spectrum.csv", "sidebands.csv", "teeth.csv", "summary.json"});
   write_output_file(run.dir / "analysis.json", j.dump(2) + "\n", Durability::Record);
-  write_spectrum_csv(run.dir / "spectrum.csv", a, analysis_constants::kRunFloorBandTop_hz);
+  // To 1000 Hz, or a fifth past the highest mesh harmonic analysed when a fast stage's lie above.
+  double top_hz = analysis_constants::kRunFloorBandTop_hz;
+  for (const PairForceAnalysis& p : a.pairs)
+    for (const MeshHarmonic& h : p.mesh.harmonics)
+      if (h.expected_hz >= top_hz) top_hz = std::max(top_hz, 1.2 * h.expected_hz);
+  write_spectrum_csv(run.dir / "spectrum.csv", a, top_hz);
   write_sidebands_csv(run.dir / "sidebands.csv", a);
   write_teeth_csv(run.dir / "teeth.csv", a);
   RunDir updated = run;

@@ -50,11 +50,19 @@ struct Topology {
       if (b.name == name) return &b;
     return nullptr;
   }
-  // Turns on a pin in a moving body (a planet on its carrier), not about the ground or on a shaft.
+  // Turns on a pin off its parent body's axis (a planet on its carrier), not about the ground or
+  // coaxially on another member (a shaft, a coupling). The parent's axis: its own joint's pivot,
+  // else (a welded carrier) its position.
   bool carried(const std::string& gear) const {
     const physics::JointDef* j = joint_of(gear);
-    return j && j->parent != "ground" && !(j->bearing && j->bearing->radially_rigid);
+    if (!j || j->parent == "ground") return false;
+    const physics::JointDef* pj = joint_of(j->parent);
+    const physics::BodyDef* p = body(j->parent);
+    const Eigen::Vector3d axis = pj ? pj->pivot_m : p ? p->pose.position_m : Eigen::Vector3d::Zero();
+    return (j->pivot_m - axis).head<2>().norm() > kCoaxial_m;
   }
+  // Pivots closer than this (in the plane) share an axis, m.
+  static constexpr double kCoaxial_m = 1e-6;
 };
 
 // Every body's absolute speed, rad/s, from the train's rigid kinematics: the motor's joint at its

@@ -224,6 +224,9 @@ physics::Scenario parse(const YamlMap& top, const fs::path& file) {
   const int seed = top.integer_or("seed", 0);
   if (seed < 0) top.fail("seed", "expected a seed ≥ 0");
   s.seed = static_cast<std::uint64_t>(seed);
+  s.reference = top.string_or("reference", "");
+  if (given(top, "reference") && s.reference != "paper")
+    top.fail("reference", "expected `paper` (the scenario reproduces the reference paper's gearbox), or no key for your own gearbox");
   parse_settings(top, s);
   if (s.solver.time_step_s >= s.duration_s) top.fail("duration_s", "expected a duration longer than one time step");
 

@@ -164,6 +164,7 @@ void settings_json(const physics::Scenario& s, ojson& j) {
 
 ojson scenario_json(const physics::Scenario& s) {
   ojson j = {{"name", s.name}, {"source", s.source.string()}, {"duration_s", s.duration_s}, {"seed", s.seed}};
+  if (!s.reference.empty()) j["reference"] = s.reference;
   settings_json(s, j);
   j["bodies"] = ojson::array();
   for (const physics::BodyDef& b : s.bodies) j["bodies"].push_back(body_json(b));

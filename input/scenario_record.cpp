@@ -279,6 +279,10 @@ void read_rest(const Node& r, physics::Scenario& s) {
       t.fail("ratio", limit_message(limits::kRatioMagnitude, std::abs(s.transmission->ratio)));
   }
   if (r.has("gearset_spec")) s.gearset_spec = r.string("gearset_spec");
+  if (r.has("reference")) {
+    s.reference = r.string("reference");
+    if (s.reference != "paper") r.fail("reference", "expected \"paper\"");
+  }
   if (r.has("planetary")) s.planetary = planetary_of(r.object("planetary"));
   if (r.has("fe")) s.fe = fe_of(r.object("fe"));
   if (r.has("pair_tables"))

@@ -347,6 +347,9 @@ struct Scenario {
   // The gear-set spec file a macro (planetary, pair) generated its gears from; empty otherwise.
   // For reports that show the gear table; the simulation does not read it.
   std::filesystem::path gearset_spec;
+  // What the scenario reproduces: "paper" — the reference paper's gearbox (the report then sets
+  // the paper's figures beside the run's); "" — the user's own gearbox. Read by app/ only.
+  std::string reference;
   std::optional<RenderDef> render;
   std::optional<PlanetaryTrainDef> planetary;  // set by the planetary macro
   std::optional<FeTeDef> fe;  // the `fe:` section, when given
