@@ -2,6 +2,8 @@
 // frequencies with their multiplicity and type, strain energy shares, mode shapes, and the
 // drive speeds at which mesh harmonics meet them.
 #include <filesystem>
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -55,9 +57,19 @@ void print_table(const linear::LumpedModel& m, const linear::ModalAnalysis& a, c
   }
   if (!c.why_not.empty())
     std::cout << "Campbell: " << c.why_not << "\n";
-  else if (c.operating_speed_rad_s && !c.rates.empty())
-    std::cout << "mesh frequency at the motor's " << *c.operating_speed_rad_s
-              << " rad/s: " << c.rates.front().hz_per_rad_s * *c.operating_speed_rad_s << " Hz\n";
+  else if (c.operating_speed_rad_s && !c.rates.empty()) {
+    // Each distinct mesh frequency (a planetary set's meshes share one; each stage has its own).
+    std::cout << "mesh frequency at the motor's " << *c.operating_speed_rad_s << " rad/s:";
+    std::vector<double> seen;
+    for (const linear::MeshRate& r : c.rates) {
+      const double f = r.hz_per_rad_s * *c.operating_speed_rad_s;
+      if (std::any_of(seen.begin(), seen.end(), [&](double g) { return std::abs(g - f) <= 1e-9 * f; })) continue;
+      seen.push_back(f);
+      const linear::MeshInfo& mi = m.meshes[static_cast<std::size_t>(r.mesh)];
+      std::cout << (seen.size() > 1 ? "," : "") << " " << f << " Hz (" << m.bodies[mi.a].name << "–" << m.bodies[mi.b].name << ")";
+    }
+    std::cout << "\n";
+  }
 }
 
 void modes(const ModesOptions& o) {

@@ -7,10 +7,10 @@
 namespace gearsim::linear {
 namespace {
 
-// The body that carries a mesh (a planet's carrier): the parent, with coordinates, of either gear.
+// The body that carries a mesh (a planet's carrier): the pin's parent, with coordinates, of either gear.
 int carrier_of(const LumpedModel& m, const MeshInfo& mi) {
   for (int g : {mi.a, mi.b}) {
-    const int p = m.bodies[g].parent;
+    const int p = m.bodies[g].pin_parent;
     if (p >= 0 && m.bodies[p].first_dof >= 0) return p;
   }
   return -1;

@@ -116,6 +116,14 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
     m.bodies.push_back(bi);
   }
   for (const physics::StructureJoint& j : w.joints) m.bodies[j.body].parent = j.parent;
+  // Pins off the parent's axis (its own joint's pivot, else its centre of mass), by 1 µm or more.
+  for (const physics::StructureJoint& j : w.joints) {
+    if (j.parent < 0) continue;
+    Eigen::Vector3d axis(m.bodies[j.parent].centre_of_mass_m.x(), m.bodies[j.parent].centre_of_mass_m.y(), 0);
+    for (const physics::StructureJoint& pj : w.joints)
+      if (pj.body == j.parent) axis = pj.def->pivot_m;
+    if ((j.def->pivot_m - axis).head<2>().norm() > 1e-6) m.bodies[j.body].pin_parent = j.parent;
+  }
   // A shapeless body that carries others (a carrier) is drawn out to the bodies it carries.
   for (const BodyInfo& b : m.bodies)
     if (b.parent >= 0 && !m.bodies[b.parent].gear) {
@@ -131,7 +139,6 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
   // Loaded flanks: senses spread from the drive over the meshes.
   std::string said;
   const auto [driver, sense] = find_drive(m, w, s, o, said);
-  if (!m.bodies[driver].gear) throw InputError("modes: the drive '" + m.bodies[driver].name + "' is not a gear; give --drive GEAR=ccw|cw");
   m.driver = driver;
   m.drive = m.bodies[driver].name + (sense > 0 ? " counter-clockwise" : " clockwise") + " (" + said + ")";
   std::vector<int> senses(m.bodies.size(), 0), depth(m.bodies.size(), -1);
@@ -160,6 +167,26 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
     for (const physics::StructureJoint& j : w.joints)
       if (j.parent >= 0 && !m.bodies[j.parent].gear && senses[j.body] != 0 && depth[j.parent] < 0)
         depth[j.parent] = depth[j.body], grew = true;
+    // A carrier that drives (the drive itself, or a shaft's far end) pushes its planets on their
+    // pins: each planet pushes both its mates — sun and ring — on in the carrier's sense (equal
+    // tangential forces, one direction), so each of those meshes is driven at its mate.
+    for (std::size_t p = 0; p < w.pairs.size(); ++p) {
+      const physics::StructurePair& pr = w.pairs[p];
+      if (driven_of[p] >= 0) continue;
+      for (auto [planet, mate] : {std::pair{pr.a, pr.b}, std::pair{pr.b, pr.a}}) {
+        const int c = m.bodies[planet].pin_parent;
+        if (c < 0 || m.bodies[c].gear || senses[c] == 0 || senses[planet] != 0 || m.bodies[mate].pin_parent == c) continue;
+        if (senses[mate] != 0 && senses[mate] != senses[c])
+          throw InputError("modes: gear '" + m.bodies[mate].name +
+                           "' would carry load on opposite flanks from two paths of the drive (a locked train): give --drive");
+        senses[mate] = senses[c];
+        if (depth[mate] < 0) depth[mate] = depth[c] + 1;
+        if (depth[planet] < 0) depth[planet] = depth[c] + 1;
+        driven_of[p] = mate;
+        grew = true;
+        break;
+      }
+    }
     for (std::size_t p = 0; p < w.pairs.size(); ++p) {
       const physics::StructurePair& pr = w.pairs[p];
       if (driven_of[p] >= 0 || (senses[pr.a] == 0 && senses[pr.b] == 0)) continue;
@@ -239,10 +266,10 @@ LumpedModel build_lumped_model(const physics::World& world, const physics::Scena
 }
 
 RigidSpeeds rigid_speeds(const LumpedModel& m, const physics::WorldStructure& w, int driver) {
-  // The body that carries a mesh (a planet's carrier): the parent, with coordinates, of either gear.
+  // The body that carries a mesh (a planet's carrier): the pin's parent, with coordinates, of either gear.
   auto carrier_of = [&](int a, int b) {
     for (int g : {a, b}) {
-      const int p = m.bodies[g].parent;
+      const int p = m.bodies[g].pin_parent;
       if (p >= 0 && m.bodies[p].first_dof >= 0) return p;
     }
     return -1;

@@ -44,6 +44,9 @@ struct BodyInfo {
   double mass_kg = 0, inertia_z_kg_m2 = 0;
   Eigen::Vector2d centre_of_mass_m = Eigen::Vector2d::Zero();
   int parent = -1;  // the body its joint hangs on (−1: ground or none)
+  // The parent, when the joint is a pin off the parent's axis (a planet on its carrier: the body
+  // that carries its meshes); −1 for a joint on the parent's axis (a shaft, a coupling) or none.
+  int pin_parent = -1;
   bool gear = false;
   int teeth = 0;
   double radius_m = 0;  // a gear's tip (ring: its root), a carrier's reach to its planets; for pictures

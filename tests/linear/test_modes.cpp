@@ -220,5 +220,50 @@ TEST(Modes, AShaftCarriesTheDriveToTheNextStageAndItsSpringSetsTheLowestMode) {
   std::printf("lowest mode %.2f Hz (shaft %.1f %% of its strain energy), 4x softer shaft %.2f Hz\n", f, 100 * share, f_soft);
 }
 
+// The wind-turbine gearbox is driven at its carrier (the rotor): the carrier pushes its planets
+// on their pins, each planet pushing sun and ring on in the carrier's sense, and the drive reaches
+// stages 2 and 3 through the shafts. Every stage has its own mesh rate per rad/s of the carrier
+// (z·|ω_gear − ω_carrier| by the train's kinematics: 99/2π, 82·(1 + 99/21)/2π, and that times
+// 88/23), so the Campbell diagram crosses each mode with each stage's lines.
+TEST(Modes, ACarrierDrivenThreeStageTrainHasEveryStagesMeshRate) {
+  const Solved s = solve(asset("wind_turbine_3stage.yaml"));
+  EXPECT_EQ(s.model.bodies[static_cast<std::size_t>(s.model.driver)].name, "s1_carrier");
+  const linear::Campbell c = linear::campbell(s.model, s.world->structure(), s.modes, 1, 1e3);
+  ASSERT_TRUE(c.why_not.empty()) << c.why_not;
+  const double two_pi = 2 * std::numbers::pi, sun = 1 + 99.0 / 21;
+  const std::map<std::string, double> expected{{"s1_sun–s1_planet_0", 99 / two_pi},
+                                               {"s1_planet_0–s1_ring", 99 / two_pi},
+                                               {"s2_wheel–s2_pinion", 82 * sun / two_pi},
+                                               {"s3_wheel–s3_pinion", 88 * sun * 82 / 23 / two_pi}};
+  int found = 0;
+  for (const linear::MeshRate& r : c.rates) {
+    const linear::MeshInfo& mi = s.model.meshes[static_cast<std::size_t>(r.mesh)];
+    const auto e =
+        expected.find(s.model.bodies[static_cast<std::size_t>(mi.a)].name + "–" + s.model.bodies[static_cast<std::size_t>(mi.b)].name);
+    if (e == expected.end()) continue;
+    EXPECT_NEAR(r.hz_per_rad_s, e->second, 1e-9 * e->second) << e->first;
+    ++found;
+  }
+  EXPECT_EQ(found, 4);
+  // The sun and ring meshes of a planet carry load on the flanks the carrier's sense pushes:
+  // the sun and the ring are each the driven gear of their mesh, driven counter-clockwise.
+  for (const linear::MeshInfo& mi : s.model.meshes) {
+    const std::string driven = s.model.bodies[static_cast<std::size_t>(mi.driven)].name;
+    if (driven == "s1_sun" || driven == "s1_ring") {
+      EXPECT_EQ(mi.driven_sense, 1) << driven;
+    }
+  }
+  // The two lowest elastic modes are the shafts' (most of their strain energy in one shaft).
+  ASSERT_GE(s.modes.modes.size(), 3u);
+  for (int k = 0; k < 2; ++k) {
+    double shafts = 0;
+    for (std::size_t e = 0; e < s.model.elements.size(); ++e)
+      if (s.model.elements[e].name.rfind("shaft ", 0) == 0) shafts += s.modes.modes[static_cast<std::size_t>(k)].energy_share[e];
+    EXPECT_GT(shafts, 0.8) << "mode " << k;
+  }
+  std::printf("wind turbine: lowest natural frequencies %.2f, %.2f, %.2f Hz\n", s.modes.modes[0].frequency_hz,
+              s.modes.modes[1].frequency_hz, s.modes.modes[2].frequency_hz);
+}
+
 }  // namespace test_modes
 }  // namespace gearsim
