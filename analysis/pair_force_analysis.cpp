@@ -48,7 +48,7 @@ PairForceAnalysis analyse_pair_force(const PairId& pair, const std::vector<doubl
   // The band-limited force's peak, between samples too (band_limited.hpp), when the force is the
   // anti-aliased one (a point-sampled record given apart); else the largest sample.
   r.peak_force_N = f.empty() ? 0.0 : point_force_N.empty() ? *std::max_element(f.begin(), f.end()) : band_limited_extremes(f).max;
-  r.dynamic_factor = r.mean_force_N > 0 ? r.peak_force_N / r.mean_force_N : 0.0;
+  r.dynamic_factor_band_limited = r.mean_force_N > 0 ? r.peak_force_N / r.mean_force_N : 0.0;
   r.zero_force_share = zeros / static_cast<double>(f.size());
   // The spectrum, its floor, the mesh harmonics with their sidebands.
   r.spectrum = amplitude_spectrum(f, sample_rate_hz, {WindowKind::Hann, padded_length(f.size()), true});

@@ -32,8 +32,13 @@ struct PairForceAnalysis {
   // samples too: band_limited.hpp), or the largest sample of a point-sampled record.
   double peak_force_N = 0;
   // peak_force_N / mean_force_N: how far the meshing dynamics lift the force over its mean
-  // (the dynamic factor of the window); 0 when the mean is not positive.
-  double dynamic_factor = 0;
+  // within the output band (the band-limited dynamic factor of the window); 0 when the mean is not
+  // positive. Below the per-step figure wherever the force carries more than the band holds.
+  double dynamic_factor_band_limited = 0;
+  // From the per-step log (steps.h5), unset without one: the pair's force in each step of the
+  // window (its tooth contacts' impulses / dt), its mean and peak, N, and their ratio — the
+  // dynamic factor ISO 6336's K_v stands for (the largest mesh force over the mean one).
+  std::optional<double> mean_step_force_N, peak_step_force_N, dynamic_factor_per_step;
   double zero_force_share = 0;  // samples with exactly zero force / samples
   // Steps of the window in which the pair carried no force / steps, from the per-step log
   // (steps.h5); unset without one. A tooth that leaves its mate for less than a sample

@@ -137,6 +137,37 @@ void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
       if (log.pairs[q] == pf.pair) pf.steps_without_force_share = 1 - static_cast<double>(with_force[q]) / steps;
 }
 
+// Per pair, its force in each step of the window (the sum of its contacts' impulses over dt):
+// mean, peak and their ratio, the per-step dynamic factor. Rows in step order: memory per pair.
+void per_step_forces(const ToothContactLog& log, RunAnalysis& r) {
+  const double dt = log.time_step_s;
+  if (!(dt > 0)) return;
+  const auto first = static_cast<std::int64_t>(std::ceil(r.from_s / dt - 1e-6)),
+             last = static_cast<std::int64_t>(std::floor(r.to_s / dt + 1e-6));
+  if (last < first) return;
+  const std::size_t n = log.pairs.size();
+  std::vector<std::int64_t> step(n, first - 1);
+  std::vector<double> current(n, 0.0), peak(n, 0.0), total(n, 0.0);
+  for (std::size_t c = 0; c < log.time_s.size(); ++c) {
+    const auto k = static_cast<std::int64_t>(std::llround(log.time_s[c] / dt));
+    const auto p = static_cast<std::size_t>(log.pair[c]);
+    if (k < first || k > last) continue;
+    if (k != step[p]) peak[p] = std::max(peak[p], current[p]), current[p] = 0, step[p] = k;
+    const double f = log.normal_impulse_N_s[c] / dt;
+    current[p] += f;
+    total[p] += f;
+  }
+  const double steps = static_cast<double>(last - first + 1);
+  for (PairForceAnalysis& pf : r.pairs)
+    for (std::size_t q = 0; q < n; ++q)
+      if (log.pairs[q] == pf.pair) {
+        const double mean = total[q] / steps, top = std::max(peak[q], current[q]);
+        pf.mean_step_force_N = mean;
+        pf.peak_step_force_N = top;
+        pf.dynamic_factor_per_step = mean > 0 ? top / mean : 0.0;
+      }
+}
+
 // A stage's transmission error over the window: θ_in − ratio·θ_out, each the sum of its chain's
 // logged angles.
 RunAnalysis::StageTe stage_te(const RunSignals& s, const TrainDescription::StageTe& st) {
@@ -183,6 +214,7 @@ RunAnalysis analyze_signals(const RunSignals& s, const TrainDescription& train) 
     for (const SensorSignal& sensor : s.sensors) r.sensors.push_back(analyse_sensor(sensor, s, train));
   if (s.tooth_contacts) {
     steps_without_force(*s.tooth_contacts, r);
+    per_step_forces(*s.tooth_contacts, r);
     r.tooth_loads = all_tooth_loads(s, train);
     r.diagnosis = diagnose_from_contacts(*r.tooth_loads, [&](const PairId& pair, const std::string& gear) -> std::string {
       for (const TrainDescription::LoadedFlank& l : train.loaded_flanks) {

@@ -49,7 +49,12 @@ json pair_json(const PairForceAnalysis& p, bool planetary) {
   }
   j["mean_force_N"] = p.mean_force_N;
   j["peak_force_N"] = p.peak_force_N;
-  j["dynamic_factor"] = p.dynamic_factor;
+  j["dynamic_factor_band_limited"] = p.dynamic_factor_band_limited;
+  if (p.dynamic_factor_per_step) {
+    j["mean_step_force_N"] = *p.mean_step_force_N;
+    j["peak_step_force_N"] = *p.peak_step_force_N;
+    j["dynamic_factor_per_step"] = *p.dynamic_factor_per_step;
+  }
   j["zero_force_share"] = p.zero_force_share;
   if (p.steps_without_force_share) j["steps_without_force_share"] = *p.steps_without_force_share;
   return j;

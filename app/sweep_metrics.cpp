@@ -33,12 +33,24 @@ json read_json(const std::filesystem::path& p) {
 
 // A named metric from the run's analysis over its steady window.
 void add_named_metric(json& m, const std::string& name, const RunDir& run, const RunAnalysis& a) {
-  if (name == "dynamic_factor") {
+  if (name == "dynamic_factor_band_limited") {
     // Peak over mean of each pair's anti-aliased force; the sweep's column is the worst pair.
     double worst = 0;
-    for (const PairForceAnalysis& p : a.pairs) worst = std::max(worst, p.dynamic_factor);
-    m["dynamic_factor"] = worst;
-    for (const PairForceAnalysis& p : a.pairs) m["dynamic_factor." + pair_name(p.pair)] = p.dynamic_factor;
+    for (const PairForceAnalysis& p : a.pairs) worst = std::max(worst, p.dynamic_factor_band_limited);
+    m[name] = worst;
+    for (const PairForceAnalysis& p : a.pairs) m[name + "." + pair_name(p.pair)] = p.dynamic_factor_band_limited;
+  } else if (name == "dynamic_factor_per_step") {
+    // Peak over mean of each pair's per-step force (steps.h5): ISO 6336's K_v.
+    double worst = 0;
+    for (const PairForceAnalysis& p : a.pairs) {
+      if (!p.dynamic_factor_per_step)
+        throw InputError((run.dir / "summary.json").string() +
+                         ": metric dynamic_factor_per_step needs the per-step log (output.per_step_log: true), which this case did "
+                         "not keep");
+      worst = std::max(worst, *p.dynamic_factor_per_step);
+    }
+    m[name] = worst;
+    for (const PairForceAnalysis& p : a.pairs) m[name + "." + pair_name(p.pair)] = *p.dynamic_factor_per_step;
   } else if (name == "mean_force_N") {
     for (const PairForceAnalysis& p : a.pairs) m["mean_force_N." + pair_name(p.pair)] = p.mean_force_N;
   } else if (name == "mesh_frequency_hz") {

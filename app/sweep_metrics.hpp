@@ -1,8 +1,9 @@
 // What a sweep collects from one case's run folder (the collector sweep/case_runner.hpp calls):
 // summary.json and analysis.json values by key path, and the named metrics computed from the run's
 // logs over the steady window `gearsim analyze` uses (app/run_analysis.hpp). Column names carry
-// units: `summary.<path>`, `analysis.<path>`, `dynamic_factor` (max over pairs) and
-// `dynamic_factor.<pair>`, `mean_force_N.<pair>`, `mesh_frequency_hz`, `rms_dynamic_te_rad`.
+// units: `summary.<path>`, `analysis.<path>`, `dynamic_factor_band_limited` and
+// `dynamic_factor_per_step` (max over pairs) with `.<pair>` per pair, `mean_force_N.<pair>`,
+// `mesh_frequency_hz` (per stage `.<stage>` for a train), `rms_dynamic_te_rad`.
 #pragma once
 
 #include <nlohmann/json.hpp>

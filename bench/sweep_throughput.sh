@@ -24,7 +24,7 @@ set: ["duration_s=$duration"]
 grid:
   motors[0].target_speed_rad_s: {from: 20, to: 80, steps: $cases}
 collect:
-  metrics: [dynamic_factor, mesh_frequency_hz, rms_dynamic_te_rad]
+  metrics: [dynamic_factor_band_limited, mesh_frequency_hz, rms_dynamic_te_rad]
 YAML
 
 calc() { awk "BEGIN { print $1 }"; }

@@ -142,9 +142,12 @@ SweepCollect read_collect(const YamlMap& top) {
       bool known = false;
       for (const std::string& n : sweep_metric_names()) known = known || n == name;
       if (!known)
-        m.fail("metrics", "unknown metric '" + shown_name(name) +
-                              "': expected some of {dynamic_factor, "
-                              "mean_force_N, mesh_frequency_hz, rms_dynamic_te_rad}");
+        m.fail(
+            "metrics", "unknown metric '" + shown_name(name) + "': expected some of {" + [] {
+              std::string list;
+              for (const std::string& n : sweep_metric_names()) list += (list.empty() ? "" : ", ") + n;
+              return list;
+            }() + "}" + (name == "dynamic_factor" ? " (the dynamic factor is given two ways, band-limited and per step: name one)" : ""));
       c.metrics.push_back(name);
     }
   m.reject_unknown_keys();
@@ -170,7 +173,8 @@ std::string read_text(const std::filesystem::path& file) { return read_input_fil
 }  // namespace
 
 const std::vector<std::string>& sweep_metric_names() {
-  static const std::vector<std::string> names{"dynamic_factor", "mean_force_N", "mesh_frequency_hz", "rms_dynamic_te_rad"};
+  static const std::vector<std::string> names{"dynamic_factor_band_limited", "dynamic_factor_per_step", "mean_force_N", "mesh_frequency_hz",
+                                              "rms_dynamic_te_rad"};
   return names;
 }
 

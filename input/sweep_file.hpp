@@ -51,8 +51,8 @@ struct SweepFile {
   std::string content_hash;  // FNV-1a 64 of the file's bytes, 16 hex digits: detects an edit
 };
 
-// The named metrics a sweep can collect: dynamic_factor, mean_force_N, mesh_frequency_hz,
-// rms_dynamic_te_rad.
+// The named metrics a sweep can collect: dynamic_factor_band_limited, dynamic_factor_per_step,
+// mean_force_N, mesh_frequency_hz, rms_dynamic_te_rad.
 const std::vector<std::string>& sweep_metric_names();
 
 // Reads and checks a sweep file. InputError naming file:line:col and key when the YAML is bad, a

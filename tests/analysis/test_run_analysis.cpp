@@ -162,7 +162,47 @@ TEST(RunAnalysis, DynamicFactorIsPeakOverMeanOfTheWindow) {
   const PairForceAnalysis& p = r.pairs.at(1);
   const double n = static_cast<double>(kSamples - 1), mean = (100.0 * (n - 1) + 180.0) / n;
   EXPECT_EQ(p.peak_force_N, 180.0);
-  EXPECT_NEAR(p.dynamic_factor, 180.0 / mean, 1e-12);
+  EXPECT_NEAR(p.dynamic_factor_band_limited, 180.0 / mean, 1e-12);
+}
+
+// The per-step dynamic factor: the pair's force in each step is the sum of its tooth contacts'
+// impulses over dt, its mean over every step of the window (steps without contact count as 0).
+// planet_0–ring: steps of 100 N on one tooth pair, one step with two pairs of 60 and 90 N (150 N:
+// the peak), one step without contact, and a 900 N step before the window (not counted).
+TEST(RunAnalysis, PerStepDynamicFactorIsThePeakStepForceOverItsMean) {
+  RunSignals s = synthetic_run();
+  s.from_s = s.time_s[1];
+  ToothContactLog log;
+  log.pairs = {s.pair_forces[0].pair, s.pair_forces[1].pair};
+  log.time_step_s = 1.0 / kFs;  // one step per sample here
+  const auto contact = [&](std::size_t step, double force_N) {
+    log.time_s.push_back(static_cast<double>(step) * log.time_step_s);
+    log.pair.push_back(1);
+    log.tooth_a.push_back(0);
+    log.tooth_b.push_back(0);
+    log.normal_impulse_N_s.push_back(force_N * log.time_step_s);
+  };
+  contact(0, 900.0);  // before the window
+  for (std::size_t k = 1; k < kSamples; ++k) {
+    if (k == 7) continue;  // no contact in this step
+    if (k == kSamples / 2) {
+      contact(k, 60.0), contact(k, 90.0);
+      continue;
+    }
+    contact(k, 100.0);
+  }
+  s.tooth_contacts = log;
+  TrainDescription train = paper_like_train();
+  train.counted_gears.clear();  // no per-tooth loads in this test
+  const RunAnalysis r = analyze_signals(s, train);
+  const PairForceAnalysis& p = r.pairs.at(1);
+  const double steps = static_cast<double>(kSamples - 1), mean = (100.0 * (steps - 2) + 150.0) / steps;
+  ASSERT_TRUE(p.dynamic_factor_per_step);
+  EXPECT_NEAR(*p.mean_step_force_N, mean, 1e-9 * mean);
+  EXPECT_DOUBLE_EQ(*p.peak_step_force_N, 150.0);
+  EXPECT_NEAR(*p.dynamic_factor_per_step, 150.0 / mean, 1e-9);
+  // A pair with no contact in the log: mean and peak 0, factor 0 (not a division by zero).
+  EXPECT_EQ(*r.pairs.at(0).dynamic_factor_per_step, 0.0);
 }
 
 TEST(RunAnalysis, ZeroShareIsCountedOnThePointSamplesWhenTheForceWasFiltered) {

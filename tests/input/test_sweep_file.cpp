@@ -45,7 +45,7 @@ TEST(SweepFile, GridAxesAndCollectAreRead) {
                                                        "  loads[0].constant_torque_N_m: [-1, 0.1, 2e-5]\n"
                                                        "collect:\n"
                                                        "  summary: [bodies.wheel.mean_absolute_speed_rad_s]\n"
-                                                       "  metrics: [dynamic_factor, rms_dynamic_te_rad]\n");
+                                                       "  metrics: [dynamic_factor_band_limited, rms_dynamic_te_rad]\n");
   const SweepFile f = load_sweep_file(p);
   EXPECT_TRUE(f.grid);
   EXPECT_EQ(f.case_count, 12u);  // 4 × 3
@@ -55,7 +55,7 @@ TEST(SweepFile, GridAxesAndCollectAreRead) {
   EXPECT_EQ(f.parameters[0].values, (std::vector<std::string>{"10", "40", "70", "100"}));
   EXPECT_EQ(f.parameters[1].values, (std::vector<std::string>{"-1", "0.1", "2e-05"}));
   EXPECT_EQ(f.set, std::vector<std::string>{"duration_s=0.2"});
-  EXPECT_EQ(f.collect.metrics, (std::vector<std::string>{"dynamic_factor", "rms_dynamic_te_rad"}));
+  EXPECT_EQ(f.collect.metrics, (std::vector<std::string>{"dynamic_factor_band_limited", "rms_dynamic_te_rad"}));
   EXPECT_EQ(f.scenario, fs::path(kScenario).lexically_normal());
   EXPECT_EQ(f.content_hash.size(), 16u);
   EXPECT_NE(f.parameters[0].where.find("sweep.yaml:5:3"), std::string::npos) << f.parameters[0].where;

@@ -17,11 +17,11 @@ namespace gearsim::test {
 // A sweep of spur_pair.yaml: short runs (0.15 s simulated: 0.06 s of steady window after the
 // 0.05 s ramp and the force filter's 0.04 s edges, 120 samples at 2 kHz; ~0.5 s wall each).
 inline std::filesystem::path spur_sweep_file(const std::filesystem::path& dir, const std::string& body,
-                                             const std::string& name = "sweep.yaml") {
+                                             const std::string& name = "sweep.yaml", bool per_step_log = false) {
   const std::filesystem::path p = dir / name;
   std::ofstream(p) << "name: spur test sweep\n"
                    << "scenario: " << GEARSIM_SOURCE_DIR << "/assets/scenarios/spur_pair.yaml\n"
-                   << "set: [\"duration_s=0.15\", \"output.per_step_log=false\"]\n"
+                   << "set: [\"duration_s=0.15\", \"output.per_step_log=" << (per_step_log ? "true" : "false") << "\"]\n"
                    << body;
   return p;
 }

@@ -28,7 +28,8 @@ fs::path sweep_folder() {
     r.index = i;
     r.status = CaseStatus::Completed;
     r.parameters = {{"motors[0].target_speed_rad_s", std::to_string(10 * (i + 1))}, {"tag", "<script>x</script>"}};
-    r.metrics = {{"dynamic_factor", 1.1 + 0.1 * static_cast<double>(i)}, {"mesh_frequency_hz", 100.0 * static_cast<double>(i + 1)}};
+    r.metrics = {{"dynamic_factor_band_limited", 1.1 + 0.1 * static_cast<double>(i)},
+                 {"mesh_frequency_hz", 100.0 * static_cast<double>(i + 1)}};
     write_case_record(case_dir(dir, i), r);
   }
   // f_n = 400 Hz: f_n/2 = 200 and f_n/3 = 133.3 fall inside 100–300 Hz, f_n/1 does not.
@@ -42,7 +43,7 @@ TEST(SweepReport, TableAndModeLinesOnTheMeshFrequencyPlot) {
   const test::CliRun r = test::gearsim("report " + dir.string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string html = test::file_text(dir / "report.html");
-  EXPECT_NE(html.find("<h3>dynamic_factor</h3>"), std::string::npos);
+  EXPECT_NE(html.find("<h3>dynamic_factor_band_limited</h3>"), std::string::npos);
   EXPECT_NE(html.find("<svg"), std::string::npos);
   EXPECT_NE(html.find("400 Hz / 2"), std::string::npos);  // f_m = 200 Hz: the 2nd harmonic meets f_n
   EXPECT_NE(html.find("400 Hz / 3"), std::string::npos);
