@@ -91,6 +91,33 @@ planetary:
 motors: [{joint: sun, target_speed_rad_s: 20, max_torque_N_m: 5}]
 loads: [{joint: carrier, constant_torque_N_m: -1}]
 EOF
+  cat >"$seeds/star_stages.yaml" <<'EOF'
+name: star stages
+reference: paper
+duration_s: 0.05
+stages:
+  - name: a
+    planetary:
+      sun: {density_kg_m3: 7850, mesh: {file: ../data/mcad/mcad_m1_z12_a20_f5_b005.stl, unit: mm}}
+      planet: {density_kg_m3: 7850, mesh: {file: ../data/mcad/mcad_m1_z18_a20_f5_b005.stl, unit: mm}}
+      ring: {density_kg_m3: 7850, mesh: {file: ../data/mcad/mcadring_m1_z48_a20_f5_b005.stl, unit: mm}}
+      planets: 3
+      fixed: carrier
+      carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}
+  - name: b
+    planetary:
+      origin_m: [0, 0, 0.01]
+      sun: {density_kg_m3: 7850, mesh: {file: ../data/mcad/mcad_m1_z12_a20_f5_b005.stl, unit: mm}}
+      planet: {density_kg_m3: 7850, mesh: {file: ../data/mcad/mcad_m1_z18_a20_f5_b005.stl, unit: mm}}
+      ring: {density_kg_m3: 7850, mesh: {file: ../data/mcad/mcadring_m1_z48_a20_f5_b005.stl, unit: mm}}
+      planets: 3
+      fixed: sun
+      carrier: {mass_kg: 0.3, inertia_z_kg_m2: 2.0e-4}
+shafts:
+  - {from: a_ring, to: b_ring, torsional_stiffness_N_m_per_rad: 1.0e4}
+motors: [{joint: a_sun, target_speed_rad_s: 20, max_torque_N_m: 5}]
+loads: [{joint: b_carrier, constant_torque_N_m: -1}]
+EOF
   cat >"$seeds/ring_pair.yaml" <<'EOF'
 name: ring_pair
 duration_s: 0.01
