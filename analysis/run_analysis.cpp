@@ -179,7 +179,8 @@ RunAnalysis::StageTe stage_te(const RunSignals& s, const TrainDescription::Stage
     }
     return theta;
   };
-  const TransmissionError te = transmission_error(s.time_s, absolute(st.input_chain), absolute(st.output_chain), st.ratio);
+  TransmissionError te = transmission_error(s.time_s, absolute(st.input_chain), absolute(st.output_chain), st.ratio);
+  for (double& v : te.te_rad) v -= st.assembly_phase_rad;
   RunAnalysis::StageTe out{st.stage, st.ratio, {}, 0.0};
   out.te = windowed_te_stats(te, s.from_s, &out.samples_peak_to_peak_rad);
   return out;

@@ -128,12 +128,14 @@ struct TrainDescription {
     double planet_fault_hz = 0;
   };
   std::vector<PairStage> pair_stages;
-  // A train of several stages: per stage, θ_in − ratio·θ_out is its transmission error, each
-  // absolute angle the sum of the logged (parent-relative) angles of its chain's bodies.
+  // A train of several stages: per stage, θ_in − ratio·θ_out less its value at the start poses
+  // (the assembly phase) is its transmission error, each absolute angle the sum of the logged
+  // (parent-relative) angles of its chain's bodies.
   struct StageTe {
     std::string stage;
     std::vector<std::string> input_chain, output_chain;
     double ratio = 0;
+    double assembly_phase_rad = 0;
   };
   std::vector<StageTe> stage_te;
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "analysis/constants.hpp"
 #include "analysis/run_analysis.hpp"
@@ -117,6 +118,25 @@ double sun_direction_rad(const physics::Scenario& s, const std::string& planet, 
   return std::atan2(-p.y(), -p.x()) - (b->gear ? b->gear->tooth0_angle_rad : 0.0);
 }
 
+// The sum of the chain's joint angles at the start poses, rad, as the run logs them at t = 0: each
+// body's turn about z against its parent's (the ground's x axis for none), wrapped to (−π, π].
+double start_angle_rad(const physics::Scenario& s, const std::vector<std::string>& chain) {
+  const auto turn = [&](const std::string& body) {
+    const physics::BodyDef* b = body_named(s, body);
+    if (!b) return 0.0;
+    const Eigen::Matrix3d r = b->pose.orientation.toRotationMatrix();
+    return std::atan2(r(1, 0), r(0, 0));
+  };
+  double sum = 0;
+  for (const std::string& body : chain) {
+    std::string parent = "ground";
+    for (const physics::JointDef& j : s.joints)
+      if (j.body == body) parent = j.parent;
+    sum += std::remainder(turn(body) - (parent == "ground" ? 0.0 : turn(parent)), 2 * std::numbers::pi);
+  }
+  return sum;
+}
+
 // What the analysis needs of the train: frequencies, planets, the gears whose teeth are counted
 // (each planet of a set; the driven gear of a pair); with several stages each pair's stage and
 // each stage's transmission error.
@@ -155,7 +175,8 @@ TrainDescription train_description(const input::GearTrain& train, const physics:
         }
       else
         d.pair_stages.push_back({{st.driver, st.driven}, st.name, st.frequencies.mesh_hz, 0.0});
-      d.stage_te.push_back({st.name, train.angle_chain.at(st.input), train.angle_chain.at(st.output), st.ratio});
+      const std::vector<std::string>&in = train.angle_chain.at(st.input), &out = train.angle_chain.at(st.output);
+      d.stage_te.push_back({st.name, in, out, st.ratio, start_angle_rad(s, in) - st.ratio * start_angle_rad(s, out)});
     }
   return d;
 }
