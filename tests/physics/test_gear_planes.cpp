@@ -116,7 +116,7 @@ TEST(GearPlanes, GearsOfTwoStagesWhoseFacesOverlapAlongTheAxisAreRefusedWhenInsi
 // 99 with the shortened addendum h_a* = 0.8 that clears the planets' fillets; ring fixed, carrier
 // out) whose carrier drives, through an elastic shaft, a 23 → 82 spur pair 40 mm further along
 // the axis. Module 1 mm, 20°, faces 10 mm.
-fs::path two_stage_train_file(const std::string& shaft) {
+fs::path two_stage_train_file(const std::string& shaft, double stage2_z_m = 0.04) {
   const fs::path file = test::fresh_test_dir() / "train.yaml";
   auto gear = [](const std::string& kind, int z, const std::string& extra) {
     return "{density_kg_m3: 7850, gear: {kind: " + kind + ", teeth: " + std::to_string(z) + ", module_m: 0.001, face_width_m: 0.01, " +
@@ -136,7 +136,9 @@ fs::path two_stage_train_file(const std::string& shaft) {
                          "      carrier: {mass_kg: 0.2, inertia_z_kg_m2: 2.0e-4}\n"
                          "  - name: s2\n"
                          "    pair:\n"
-                         "      origin_m: [0, 0, 0.04]\n"
+                         "      origin_m: [0, 0, "
+                      << stage2_z_m
+                      << "]\n"
                          "      driver: {name: pinion, "
                       << gear("external", 23, "bore_diameter_m: 0.004").substr(1) << "\n      driven: {name: wheel, "
                       << gear("external", 82, "bore_diameter_m: 0.01").substr(1) << "\nshafts:\n  - " << shaft
@@ -188,6 +190,21 @@ TEST(GearTrain, TwoStagesOnAShaftTurnAtTheProductOfTheirRatiosAndCarryTheirTorqu
   std::printf("ratio %.6f (nominal %.6f); stage 2 %.3f N (T/r_b %.3f), stage 1 %.3f N per mesh (%.3f)\n", *r.ratio, ratio,
               r.pairs.back().mean_ccw_flank_force_N + r.pairs.back().mean_cw_flank_force_N, f2,
               r.pairs.front().mean_ccw_flank_force_N + r.pairs.front().mean_cw_flank_force_N, f1);
+}
+
+// A stage plane that puts stage 2's pinion inside stage 1's sun: its origin 5 mm along the axis
+// (faces 10 mm wide, so they overlap by 5 mm) on the same axis line. Refused naming both gears.
+TEST(GearTrain, AStagePlaneThatPutsTwoGearsInsideEachOtherIsRefused) {
+  const Scenario s =
+      input::load_scenario(two_stage_train_file("{from: s1_carrier, to: s2_pinion, torsional_stiffness_N_m_per_rad: 5.0e3}", 0.005), {});
+  try {
+    World w(s);
+    ADD_FAILURE() << "stage 2's pinion was built inside stage 1's sun";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("share a plane (their faces overlap by 5 mm along the axis)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("s2_pinion"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("one body lies inside the other"), std::string::npos) << e.what();
+  }
 }
 
 TEST(GearTrain, AShaftSizedByLengthAndDiameterTakesSteelsShearModulus) {
