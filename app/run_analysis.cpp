@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 
 #include "analysis/constants.hpp"
 #include "analysis/run_analysis.hpp"
@@ -277,6 +278,28 @@ std::vector<TrainDescription::LoadedFlank> loaded_flanks(const RunDir& run) {
   return out;
 }
 
+// A train of several stages: summary.json's `stages`, each stage's ratio ω_in/ω_out measured
+// (the run's mean absolute speeds of its input and output members, summary.json's bodies) beside
+// the rigid kinematics' (`ratio_nominal`).
+static void add_stage_ratios(json& summary, const input::GearTrain& train) {
+  if (train.stages.size() < 2) return;
+  json stages = json::array();
+  for (const input::TrainStage& st : train.stages) {
+    json e = {{"name", st.name}, {"input", st.input}, {"output", st.output}};
+    const auto speed = [&](const std::string& body) -> std::optional<double> {
+      if (!summary.contains("bodies") || !summary["bodies"].contains(body)) return std::nullopt;
+      const json& b = summary["bodies"][body];
+      if (!b.contains("mean_absolute_speed_rad_s") || !b["mean_absolute_speed_rad_s"].is_number()) return std::nullopt;
+      return b["mean_absolute_speed_rad_s"].get<double>();
+    };
+    const std::optional<double> in = speed(st.input), out = speed(st.output);
+    e["ratio"] = in && out && *out != 0 ? json(*in / *out) : json();
+    e["ratio_nominal"] = st.ratio;
+    stages.push_back(e);
+  }
+  summary["stages"] = stages;
+}
+
 input::GearTrain run_gear_train(const RunDir& run) {
   std::vector<input::Mesh> meshes;
   for (const PairId& p : gear_pairs_of(run)) meshes.emplace_back(p.a, p.b);
@@ -314,6 +337,7 @@ json write_run_analysis(const RunDir& run, const AnalyzeOptions& o) {
   write_teeth_csv(run.dir / "teeth.csv", a);
   RunDir updated = run;
   add_to_summary(updated.summary, a, train.frequencies.mesh_hz);
+  add_stage_ratios(updated.summary, train);
   save_summary(updated);
   return j;
 }

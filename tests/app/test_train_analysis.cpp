@@ -101,6 +101,10 @@ TEST(TrainAnalysis, TheWindTurbineGearboxIsAnalysedStageByStage) {
   EXPECT_EQ(a["gear_train"]["stages"][0]["members"]["fixed"], "s1_ring");
   EXPECT_NEAR(ratio, 21.0 / 120 * 23 / 82 * 22 / 88, 1e-12);
   EXPECT_NEAR(a["gear_train"]["ratio"].get<double>(), ratio, 1e-15);
+  // summary.json: each stage's ratio measured from its members' mean speeds, beside the nominal.
+  ASSERT_EQ(summary["stages"].size(), 3u);
+  for (const auto& st : summary["stages"])
+    EXPECT_NEAR(st["ratio"].get<double>() / st["ratio_nominal"].get<double>(), 1.0, 1e-3) << st.dump();
   // Each stage's frequencies under its own name.
   bool s3_mesh = false;
   for (const auto& f : a["gear_train"]["characteristic_frequencies"])
