@@ -211,8 +211,12 @@ RunAnalysis analyze_signals(const RunSignals& s, const TrainDescription& train) 
   }
   for (const TrainDescription::StageTe& st : train.stage_te) r.stage_te.push_back(stage_te(s, st));
   if (train.planetary) r.synchronous = synchronous_averages(s, train, r.synchronous_note);
-  if (train.planetary && !train.carrier.empty())
-    for (const SensorSignal& sensor : s.sensors) r.sensors.push_back(analyse_sensor(sensor, s, train));
+  if (train.planetary && !train.carrier.empty()) {
+    // The watched set's planets only (a train's other planetary stages mesh elsewhere).
+    TrainDescription set = train;
+    std::erase_if(set.planets, [&](const PlanetGear& p) { return !p.sun.empty() && p.sun != train.sun; });
+    for (const SensorSignal& sensor : s.sensors) r.sensors.push_back(analyse_sensor(sensor, s, set));
+  }
   if (s.tooth_contacts) {
     steps_without_force(*s.tooth_contacts, r);
     per_step_forces(*s.tooth_contacts, r);

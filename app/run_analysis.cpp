@@ -145,12 +145,27 @@ TrainDescription train_description(const input::GearTrain& train, const physics:
   const auto teeth = [&](const std::string& body) { return body_named(s, body) ? input::teeth_of(*body_named(s, body)) : 0; };
   TrainDescription d;
   d.frequencies = train.frequencies;
-  // The set a housing sensor watches and the planetary flags: the train's one planetary stage.
+  // The set a housing sensor watches: the train's one planetary stage, or, with several, the one
+  // whose members the sensors sit on (all on one: a sensor watches the set whose ring it is on).
   int planetary_stages = 0;
   for (const input::TrainStage& st : train.stages) planetary_stages += st.planetary;
   d.planetary = planetary_stages > 0;
-  if (planetary_stages == 1) {
-    const input::TrainStage& st = *train.first_planetary();
+  const input::TrainStage* watched = planetary_stages == 1 ? train.first_planetary() : nullptr;
+  if (planetary_stages > 1 && !s.sensors.empty()) {
+    for (const physics::SensorDef& sensor : s.sensors) {
+      const input::TrainStage* st = train.stage_of(sensor.body);
+      if (!st || !st->planetary)
+        throw InputError(s.source.string() + ": sensor '" + sensor.name + "' sits on '" + sensor.body +
+                         "', a member of no planetary stage of the train: a housing sensor is analysed against the planetary set "
+                         "whose ring (or sun) it sits on");
+      if (watched && watched != st)
+        throw InputError(s.source.string() + ": sensors on two planetary stages ('" + watched->name + "', '" + st->name +
+                         "'): the sensor analysis takes one set at a time; run the sensors of each stage apart");
+      watched = st;
+    }
+  }
+  if (watched) {
+    const input::TrainStage& st = *watched;
     d.sun = st.sun;
     d.carrier = st.carrier;
     d.sun_teeth = st.sun_teeth;

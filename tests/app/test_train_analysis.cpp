@@ -12,6 +12,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "input/scenario_file.hpp"
 #include "tests/support/asset_scenario.hpp"
@@ -126,6 +127,32 @@ TEST(TrainAnalysis, TheTwoStagePlanetaryIsAnalysedStageByStage) {
   expect_harmonics_at(a, "s2", stage2_mesh_hz);
   EXPECT_NEAR(a["gear_train"]["ratio"].get<double>(), 25.0, 1e-12);
   expect_report_of_the_train(dir, {"s1", "s2"});
+}
+
+// A housing sensor on stage 2's ring of the two-stage planetary is analysed against stage 2's
+// planets (2.5 s: two passes of each before the window's end); sensors on both rings are refused
+// with one message naming both stages (the run completes, its analysis refused: exit 9).
+TEST(TrainAnalysis, AHousingSensorIsAnalysedAgainstThePlanetaryStageItSitsOn) {
+  const fs::path file = fs::path(GEARSIM_SOURCE_DIR) / "assets/scenarios/two_stage_planetary.yaml";
+  const auto sensor = [](const std::string& name, const std::string& ring) {
+    return "{name: " + name + ", body: " + ring +
+           ", angle_deg: 90, window_width_deg: 120, other_meshes_weight: 0.1, resonance_hz: 4000, damping_ratio: 0.05, "
+           "effective_mass_kg: 1.0, sample_rate_hz: 25000}";
+  };
+  const fs::path dir = gearsim::test::fresh_test_dir();
+  const gearsim::test::CliRun one = gearsim::test::gearsim("run " + file.string() + " --out " + (dir / "one").string() +
+                                                           " --duration 2.5 --set 'sensors=[" + sensor("top", "s2_ring") + "]'");
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  const json a = json::parse(read_text(dir / "one" / "analysis.json"));
+  ASSERT_EQ(a["sensors"].size(), 1u);
+  std::vector<std::string> planets;
+  for (const auto& p : a["sensors"][0]["planets"]) planets.push_back(p["planet"].get<std::string>());
+  EXPECT_EQ(planets, (std::vector<std::string>{"s2_planet_0", "s2_planet_1", "s2_planet_2"}));
+  const gearsim::test::CliRun two =
+      gearsim::test::gearsim("run " + file.string() + " --out " + (dir / "two").string() + " --set 'sensors=[" + sensor("top", "s2_ring") +
+                             ", " + sensor("low", "s1_ring") + "]'");
+  EXPECT_EQ(two.exit_code, 9) << two.output;
+  EXPECT_NE(two.output.find("sensors on two planetary stages ('s2', 's1')"), std::string::npos) << two.output;
 }
 
 // The two-stage reducer written body by body: the planetary set (sun 21, three planets
