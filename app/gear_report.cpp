@@ -3,7 +3,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/extrude.hpp"
 #include "geometry/gear_mesh.hpp"
+#include "geometry/helical.hpp"
 #include "geometry/hausdorff.hpp"
 #include "geometry/mesh_validate.hpp"
 #include "geometry/planetary.hpp"
@@ -13,6 +15,7 @@ namespace gearsim::app {
 namespace {
 
 using gearsim::constants::kDegPerRad;
+using gearsim::constants::kPi;
 
 json gear_json(const GearBody& b, double spacing) {
   const GearSpec& s = b.spec;
@@ -22,6 +25,16 @@ json gear_json(const GearBody& b, double spacing) {
   g["teeth"] = s.teeth;
   g["module_m"] = s.module_m;
   g["pressure_angle_deg"] = s.pressure_angle_rad * kDegPerRad;
+  if (s.helix_angle_rad != 0) {
+    // The transverse values above; the normal ones the gear was given by, and its helix.
+    g["helix_angle_deg"] = std::abs(s.helix_angle_rad) * kDegPerRad;
+    g["hand"] = s.helix_angle_rad > 0 ? "right" : "left";
+    g["normal_module_m"] = normal_module_m(s);
+    g["normal_pressure_angle_deg"] = normal_pressure_angle_rad(s) * kDegPerRad;
+    g["base_helix_angle_deg"] = std::abs(base_helix_angle_rad(s)) * kDegPerRad;
+    g["axial_pitch_m"] = kPi * normal_module_m(s) / std::sin(std::abs(s.helix_angle_rad));
+    g["lead_m"] = 2 * kPi * d.reference_radius_m / std::tan(std::abs(s.helix_angle_rad));
+  }
   g["face_width_m"] = s.face_width_m;
   g["profile_shift"] = s.profile_shift;
   g["reference_diameter_m"] = 2 * d.reference_radius_m;
@@ -49,7 +62,10 @@ json gear_json(const GearBody& b, double spacing) {
                {"volume_m3", b.mass.volume_m3},
                {"mass_kg", b.mass.mass_kg},
                {"inertia_zz_kg_m2", b.mass.inertia_com_kg_m2(2, 2)}};
-  const DecompositionDeviation dev = decomposition_deviation(b.mesh, b.pieces, spacing);
+  // The pieces are the transverse section's prism: against that (a helical gear's own mesh twists).
+  const double half = 0.5 * s.face_width_m;
+  const DecompositionDeviation dev =
+      decomposition_deviation(s.helix_angle_rad == 0 ? b.mesh : extrude(b.outline.outline, -half, half), b.pieces, spacing);
   std::size_t max_vertices = 0;
   for (const ConvexPiece2& p : b.decomposition.pieces) max_vertices = std::max(max_vertices, p.polygon.points.size());
   g["decomposition"] = {{"pieces", b.decomposition.pieces.size()}, {"sectors_exact", b.decomposition.sectors_exact},
@@ -62,6 +78,8 @@ json mesh_json(const MeshGeometry& m) {
   return {{"centre_distance_m", m.centre_distance_m},
           {"working_pressure_angle_deg", m.working_pressure_angle_rad * kDegPerRad},
           {"contact_ratio", m.contact_ratio},
+          {"overlap_ratio", m.overlap_ratio},
+          {"total_contact_ratio", m.contact_ratio + m.overlap_ratio},
           {"effective_contact_ratio", m.effective_contact_ratio},
           {"active_start_roll_a_m", m.active_start_roll_a_m},
           {"form_roll_a_m", m.form_roll_a_m},

@@ -26,10 +26,26 @@ void print_gear_table(std::ostream& out, const json& gears) {
   row(out, "", names);
   row(out, "kind", cells([](const json& g) { return g["kind"].get<std::string>(); }));
   row(out, "teeth z", cells([](const json& g) { return std::to_string(g["teeth"].get<int>()); }));
-  row(out, "module m", cells([](const json& g) { return mm(g["module_m"]); }));
-  row(out, "pressure angle α (°)", cells([](const json& g) { return fixed(g["pressure_angle_deg"], 3); }));
+  bool helical = false;
+  for (const std::string& n : names) helical = helical || gears[n].contains("helix_angle_deg");
+  if (helical) {
+    // Helical gears: the normal values they were given, the helix, and the transverse section's.
+    const auto or_dash = [](const json& g, const char* key, auto show) { return g.contains(key) ? show(g[key]) : std::string("-"); };
+    row(out, "helix angle β (°), hand", cells([&](const json& g) {
+          return or_dash(g, "helix_angle_deg", [&](const json& v) { return fixed(v, 3) + " " + g["hand"].get<std::string>(); });
+        }));
+    row(out, "normal module m_n", cells([&](const json& g) { return or_dash(g, "normal_module_m", [](const json& v) { return mm(v); }); }));
+    row(out, "normal pressure angle α_n (°)",
+        cells([&](const json& g) { return or_dash(g, "normal_pressure_angle_deg", [](const json& v) { return fixed(v, 3); }); }));
+    row(out, "base helix angle β_b (°)",
+        cells([&](const json& g) { return or_dash(g, "base_helix_angle_deg", [](const json& v) { return fixed(v, 3); }); }));
+    row(out, "axial pitch p_x", cells([&](const json& g) { return or_dash(g, "axial_pitch_m", [](const json& v) { return mm(v); }); }));
+  }
+  row(out, helical ? "transverse module m_t" : "module m", cells([](const json& g) { return mm(g["module_m"]); }));
+  row(out, helical ? "transverse pressure angle α_t (°)" : "pressure angle α (°)",
+      cells([](const json& g) { return fixed(g["pressure_angle_deg"], 3); }));
   row(out, "face width b", cells([](const json& g) { return mm(g["face_width_m"], 3); }));
-  row(out, "profile shift x", cells([](const json& g) { return fixed(g["profile_shift"], 3); }));
+  row(out, helical ? "transverse profile shift x_t" : "profile shift x", cells([](const json& g) { return fixed(g["profile_shift"], 3); }));
   row(out, "reference diameter d = m·z", cells([](const json& g) { return mm(g["reference_diameter_m"]); }));
   row(out, "base diameter d_b = d·cos α", cells([](const json& g) { return mm(g["base_diameter_m"]); }));
   row(out, "tip diameter d_a", cells([](const json& g) { return mm(g["tip_diameter_m"]); }));
@@ -64,7 +80,10 @@ void print_gear_table(std::ostream& out, const json& gears) {
 void print_mesh(std::ostream& out, const std::string& label, const json& m) {
   out << "  " << label << ": a = " << mm(m["centre_distance_m"], 3) << " mm, α_w = " << fixed(m["working_pressure_angle_deg"], 3)
       << "°, contact ratio ε_α = " << fixed(m["contact_ratio"], 3) << " (" << fixed(m["effective_contact_ratio"], 3)
-      << " once cut off at the form circles)\n";
+      << " once cut off at the form circles)";
+  if (m.contains("overlap_ratio") && m["overlap_ratio"].get<double>() > 0)
+    out << ", overlap ratio ε_β = " << fixed(m["overlap_ratio"], 3) << ", total ε_γ = " << fixed(m["total_contact_ratio"], 3);
+  out << "\n";
 }
 
 }  // namespace

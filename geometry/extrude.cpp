@@ -1,8 +1,11 @@
 #include "geometry/extrude.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
+
+#include <Eigen/Geometry>
 
 #include "geometry/convex_decomposition.hpp"
 #include "core/errors.hpp"
@@ -53,6 +56,57 @@ TriMesh extrude(const Outline2& outline, double z_min_m, double z_max_m) {
     first += static_cast<int>(h.points.size());
   }
   return build_prism(t.vertices, t.triangles, loops, z_min_m, z_max_m);
+}
+
+TriMesh extrude_twisted(const Outline2& outline, double z_min_m, double z_max_m, double twist_rad_per_m, double max_layer_turn_rad) {
+  require_z_range(z_min_m, z_max_m);
+  if (!std::isfinite(twist_rad_per_m) || !(max_layer_turn_rad > 0))
+    throw InputError("twisted extrusion: need a finite twist and a positive turn per layer");
+  if (twist_rad_per_m == 0) return extrude(outline, z_min_m, z_max_m);
+  const OutlineTriangulation t = triangulate(outline);
+  const double length = z_max_m - z_min_m, mid = 0.5 * (z_min_m + z_max_m);
+  const int layers = std::max(1, static_cast<int>(std::ceil(std::abs(twist_rad_per_m) * length / max_layer_turn_rad)));
+  const auto n = static_cast<std::uint32_t>(t.vertices.size());
+  TriMesh mesh;
+  mesh.vertices.reserve(static_cast<std::size_t>(layers + 1) * n);
+  for (int l = 0; l <= layers; ++l) {
+    const double z = z_min_m + length * l / layers;
+    const Eigen::Rotation2Dd turn(twist_rad_per_m * (z - mid));
+    for (const Eigen::Vector2d& p : t.vertices) {
+      const Eigen::Vector2d q = turn * p;
+      mesh.vertices.emplace_back(q.x(), q.y(), z);
+    }
+  }
+  const std::uint32_t top = static_cast<std::uint32_t>(layers) * n;
+  for (const auto& tri : t.triangles) {
+    const auto a = static_cast<std::uint32_t>(tri[0]), b = static_cast<std::uint32_t>(tri[1]), c = static_cast<std::uint32_t>(tri[2]);
+    mesh.triangles.push_back({a, c, b});  // bottom cap faces -z
+    mesh.triangles.push_back({a + top, b + top, c + top});  // top cap faces +z
+  }
+  std::vector<std::pair<int, int>> loops{{0, static_cast<int>(outline.outer.points.size())}};
+  int first = loops[0].second;
+  for (const Polygon2& h : outline.holes) {
+    loops.emplace_back(first, static_cast<int>(h.points.size()));
+    first += static_cast<int>(h.points.size());
+  }
+  // Each layer's quads as build_prism's: the material left of each loop edge i -> j. A turned
+  // quad is not flat: one diagonal cuts a sliver off the ruled surface, the other adds one, so the
+  // layers take them in turn and the slivers cancel to second order in the turn per layer.
+  for (int l = 0; l < layers; ++l) {
+    const std::uint32_t lo = static_cast<std::uint32_t>(l) * n, hi = lo + n;
+    for (const auto& [start, size] : loops)
+      for (int k = 0; k < size; ++k) {
+        const auto i = static_cast<std::uint32_t>(start + k), j = static_cast<std::uint32_t>(start + (k + 1) % size);
+        if (l % 2 == 0) {
+          mesh.triangles.push_back({lo + i, lo + j, hi + j});
+          mesh.triangles.push_back({lo + i, hi + j, hi + i});
+        } else {
+          mesh.triangles.push_back({lo + i, lo + j, hi + i});
+          mesh.triangles.push_back({lo + j, hi + j, hi + i});
+        }
+      }
+  }
+  return mesh;
 }
 
 TriMesh extrude_convex(const Polygon2& convex, double z_min_m, double z_max_m) {

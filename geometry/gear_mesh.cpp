@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "geometry/gear_profile.hpp"
+#include "geometry/helical.hpp"
 #include "geometry/involute.hpp"
 #include "geometry/tessellate.hpp"
 #include "geometry/constants.hpp"
@@ -142,6 +143,13 @@ MeshGeometry analyse_mesh(const GearSpec& a, const GearSpec& b, double centre_di
   if (a.kind != GearKind::External) throw InputError(pair + ": the first gear must be external");
   if (std::abs(a.module_m - b.module_m) > 1e-12 || std::abs(a.pressure_angle_rad - b.pressure_angle_rad) > 1e-12)
     throw InputError(pair + ": gears of different module or pressure angle cannot mesh");
+  // Helical: one helix angle, opposite hands outside each other, the same hand inside a ring.
+  const double expected_b = b.kind == GearKind::Internal ? a.helix_angle_rad : -a.helix_angle_rad;
+  if (std::abs(b.helix_angle_rad - expected_b) > 1e-12)
+    throw InputError(pair + ": helix angles " + std::to_string(a.helix_angle_rad * 180 / kPi) + "° and " +
+                     std::to_string(b.helix_angle_rad * 180 / kPi) + "° (+ right hand) cannot mesh: " +
+                     (b.kind == GearKind::Internal ? "a ring and its pinion need one helix angle of the same hand"
+                                                   : "two external gears need one helix angle of opposite hands"));
   const GearDimensions da = gear_dimensions(a), db = gear_dimensions(b);
   MeshGeometry m;
   m.internal = b.kind == GearKind::Internal;
@@ -180,6 +188,7 @@ MeshGeometry analyse_mesh(const GearSpec& a, const GearSpec& b, double centre_di
     m.effective_contact_ratio = (end_a_limited - start_a) / m.base_pitch_m;
   }
   m.contact_ratio = m.contact_length_m / m.base_pitch_m;
+  m.overlap_ratio = a.helix_angle_rad == 0 ? 0.0 : overlap_ratio(a, b);
   std::ostringstream note;
   note.precision(4);
   if (m.active_start_roll_a_m < m.form_roll_a_m) {

@@ -26,6 +26,9 @@ struct MeshGeometry {
   double active_start_roll_b_m = 0, form_roll_b_m = 0;
   // Contact ratio once contact below the form circles is cut off (what the teeth really give).
   double effective_contact_ratio = 0;
+  // Helical pairs: the overlap ratio ε_β = b·sin|β|/(π·m_n) (0 for spur); the total contact ratio
+  // ε_γ is contact_ratio + overlap_ratio. contact_ratio is the transverse one, ε_α.
+  double overlap_ratio = 0;
   // Deepest penetration of the mating tip corners into the other gear's outline along the
   // kinematic meshing path (error-free geometry, zero backlash): > 0 is a real collision.
   double tip_interference_a_m = 0;  // b's tips into a

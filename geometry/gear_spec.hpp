@@ -77,6 +77,12 @@ struct GearSpec {
   double tooth0_angle_rad = 0.0;
   double chordal_deviation_m = constants::kDefaultChordalDeviation_m;
   GearErrors errors;
+  // A helical gear: the helix angle on the reference circle, + right hand, − left hand (ISO
+  // 21771), 0 for a spur gear. The values above then describe the transverse section (module_m =
+  // m_n/cos β, pressure_angle_rad = α_t, the coefficients in transverse modules): the section the
+  // outline, flank tables and mesh checks are made of. helical.hpp converts from the normal values
+  // a spec gives.
+  double helix_angle_rad = 0.0;
 };
 
 // Throws InputError naming the gear (spec.name) and the field when a value is impossible.

@@ -83,6 +83,9 @@ constexpr Limit kFaceWidth_m{1e-5, 2, false, "m", "a face width"};
 // Pressure angle, rad: the involute needs 0 < α < 45° (gear_dimensions.cpp); real spur gears
 // use 14.5° to 25°. Keys in degrees are checked against it in degrees (limit_in_degrees).
 constexpr Limit kPressureAngle_rad{0, std::numbers::pi / 4, true, "rad", "a pressure angle", true};
+// Helix angle on the reference circle, rad: 0 (spur) up to 45°; industrial helical gears use
+// 7°–30°, double-helical ones up to 45°.
+constexpr Limit kHelixAngle_rad{0, std::numbers::pi / 4, false, "rad", "a helix angle"};
 // Profile shift coefficient x, in modules: practical shifts lie within −1 to +1.5; beyond ±3 a
 // tooth is all root or all tip.
 constexpr Limit kProfileShift{-3, 3, false, "", "a profile shift coefficient (in modules)"};

@@ -26,22 +26,24 @@ ojson gear_json(const GearSpec& g) {
   for (const ProfileSlopeError& p : g.errors.profile_slopes)
     errors["profile_slopes"].push_back({{"tooth", p.tooth}, {"flank", flank_name(p.flank)}, {"slope_m", p.slope_m}});
   errors["eccentricity"] = {{"eccentricity_m", g.errors.eccentricity.eccentricity_m}, {"phase_rad", g.errors.eccentricity.phase_rad}};
-  return {{"name", g.name},
-          {"kind", g.kind == GearKind::Internal ? "internal" : "external"},
-          {"teeth", g.teeth},
-          {"module_m", g.module_m},
-          {"pressure_angle_rad", g.pressure_angle_rad},
-          {"face_width_m", g.face_width_m},
-          {"profile_shift", g.profile_shift},
-          {"addendum_coeff", g.addendum_coeff},
-          {"dedendum_coeff", g.dedendum_coeff},
-          {"root_fillet_coeff", g.root_fillet_coeff},
-          {"thinning_per_flank_m", g.thinning_per_flank_m},
-          {"bore_diameter_m", g.bore_diameter_m},
-          {"rim_diameter_m", g.rim_diameter_m},
-          {"tooth0_angle_rad", g.tooth0_angle_rad},
-          {"chordal_deviation_m", g.chordal_deviation_m},
-          {"errors", errors}};
+  ojson j = {{"name", g.name},
+             {"kind", g.kind == GearKind::Internal ? "internal" : "external"},
+             {"teeth", g.teeth},
+             {"module_m", g.module_m},
+             {"pressure_angle_rad", g.pressure_angle_rad},
+             {"face_width_m", g.face_width_m},
+             {"profile_shift", g.profile_shift},
+             {"addendum_coeff", g.addendum_coeff},
+             {"dedendum_coeff", g.dedendum_coeff},
+             {"root_fillet_coeff", g.root_fillet_coeff},
+             {"thinning_per_flank_m", g.thinning_per_flank_m},
+             {"bore_diameter_m", g.bore_diameter_m},
+             {"rim_diameter_m", g.rim_diameter_m},
+             {"tooth0_angle_rad", g.tooth0_angle_rad},
+             {"chordal_deviation_m", g.chordal_deviation_m},
+             {"errors", errors}};
+  if (g.helix_angle_rad != 0) j["helix_angle_rad"] = g.helix_angle_rad;  // the values above transverse
+  return j;
 }
 
 ojson body_json(const physics::BodyDef& b) {

@@ -55,6 +55,11 @@ GearSpec gear_of(const Node& n) {
                                    {"tooth0_angle_rad", &g.tooth0_angle_rad, limits::kAngle_rad},
                                    {"chordal_deviation_m", &g.chordal_deviation_m, limits::kChordalDeviation_m}})
     *field = n.number_within(key, limit);
+  if (n.has("helix_angle_rad")) {
+    g.helix_angle_rad = n.number("helix_angle_rad");
+    if (!(std::abs(g.helix_angle_rad) <= limits::kHelixAngle_rad.max))
+      n.fail("helix_angle_rad", "expected a helix angle within ±45° (+ right hand), in rad");
+  }
   const Node e = n.object("errors");
   using limits::kToothError_m;
   for (const Node& f : e.list("flank_offsets"))

@@ -80,6 +80,10 @@ void require_faithful(const contact::FlankTable& t, const std::string& who, cons
 void gear_shape(const BodyDef& def, const ContactDef& contact, const std::string& who, BuiltBody& b, std::optional<MassProperties>& mass,
                 ConvexPieces3& pieces) {
   GearSpec spec = *def.gear;
+  if (spec.helix_angle_rad != 0)
+    throw InputError(who + ": a helical gear (β = " + std::to_string(std::abs(spec.helix_angle_rad) * 180 / 3.14159265358979323846) +
+                     "°): helical gears are read, tabled and exported (gearsim gears), not yet simulated: the contact along their "
+                     "face is not in the model");
   spec.chordal_deviation_m = contact.chordal_deviation_m;
   const double density = def.density_kg_m3.value_or(0);
   GEARSIM_CHECK(def.mass_kg || density > 0, who + ": density_kg_m3 or mass_kg (input/ refuses a scenario without)");

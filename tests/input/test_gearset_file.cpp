@@ -197,5 +197,40 @@ TEST(GearSetFile, MissingFileIsNamed) {
   }
 }
 
+// A helical gear is given by its normal values, helix angle and hand, and read as its transverse
+// section (geometry/helical.hpp); a thinning along the flank normal becomes the section's
+// thinning along its own normal, /cos β_b. Normal values on a spur gear, a transverse module on a
+// helical one, or a helix without its hand are refused, each naming the key.
+TEST(GearSetFile, AHelicalGearIsReadFromItsNormalValues) {
+  const std::string dir = std::filesystem::temp_directory_path() / "gearsim_spec_helical.yaml";
+  {
+    std::ofstream(dir)
+        << "name: t\ndensity_kg_m3: 7850\ngears:\n"
+           "  pinion: {kind: external, teeth: 20, normal_module_m: 0.002, normal_pressure_angle_deg: 20, helix_angle_deg: 15,"
+           " hand: right, face_width_m: 0.02, thinning_per_flank_m: 1.0e-5}\n"
+           "  wheel: {kind: external, teeth: 40, normal_module_m: 0.002, helix_angle_deg: 15, hand: left, face_width_m: 0.02}\n"
+           "train: {type: pair, driver: pinion, driven: wheel}\n";
+  }
+  const GearSetFile f = load_gearset(dir);
+  std::filesystem::remove(dir);
+  const GearSpec &p = f.gear("pinion"), &w = f.gear("wheel");
+  const double beta = 15 * std::numbers::pi / 180;
+  EXPECT_NEAR(p.helix_angle_rad, beta, 1e-15);
+  EXPECT_NEAR(w.helix_angle_rad, -beta, 1e-15);  // left hand
+  EXPECT_NEAR(p.module_m, 0.002 / std::cos(beta), 1e-18);
+  EXPECT_NEAR(std::tan(w.pressure_angle_rad), std::tan(20 * std::numbers::pi / 180) / std::cos(beta), 1e-15);  // α_n 20° by default
+  const double beta_b = std::atan(std::tan(beta) * std::cos(p.pressure_angle_rad));
+  EXPECT_NEAR(p.thinning_per_flank_m, 1.0e-5 / std::cos(beta_b), 1e-18);
+  const std::string g = "name: t\ndensity_kg_m3: 7850\ngears:\n  g: {kind: external, teeth: 20, face_width_m: 0.02, ";
+  EXPECT_NE(
+      error_for(g + "module_m: 0.002, helix_angle_deg: 15, hand: right}\n").find("module_m: a helical gear is given by its normal values"),
+      std::string::npos);
+  EXPECT_NE(error_for(g + "normal_module_m: 0.002, helix_angle_deg: 15}\n").find("hand"), std::string::npos);
+  EXPECT_NE(error_for(g + "normal_module_m: 0.002, helix_angle_deg: 15, hand: up}\n").find("hand"), std::string::npos);
+  EXPECT_NE(error_for(g + "module_m: 0.002, hand: right}\n").find("hand: only a helical gear"), std::string::npos);
+  EXPECT_NE(error_for(g + "module_m: 0.002, normal_module_m: 0.002}\n").find("normal_module_m: only a helical gear"), std::string::npos);
+  EXPECT_NE(error_for(g + "normal_module_m: 0.002, helix_angle_deg: 50, hand: right}\n").find("helix_angle_deg"), std::string::npos);
+}
+
 }  // namespace test_gearset_file
 }  // namespace gearsim::input

@@ -374,5 +374,24 @@ TEST(GearTrain, TheShippedTwoStagePlanetaryTurnsAtTwentyFiveToOne) {
   }
 }
 
+// A helical pair is read, but the planar contact cannot carry its load along the face: the world
+// refuses it (naming the gear and its helix) rather than running it as a spur pair.
+TEST(GearPlanes, AHelicalGearIsNotRunAsASpurGear) {
+  const fs::path file = test::fresh_test_dir() / "helical.yaml";
+  const std::string g = ", normal_module_m: 0.002, helix_angle_deg: 15, face_width_m: 0.02, bore_diameter_m: 0.008}";
+  std::ofstream(file) << "name: helical\nduration_s: 0.01\npair:\n"
+                         "  driver: {name: pinion, density_kg_m3: 7850, gear: {kind: external, teeth: 20, hand: right"
+                      << g << "}\n  driven: {name: wheel, density_kg_m3: 7850, gear: {kind: external, teeth: 40, hand: left" << g
+                      << "}\nmotors: [{joint: pinion, target_speed_rad_s: 10, max_torque_N_m: 5}]\n";
+  const Scenario s = input::load_scenario(file, {});
+  try {
+    World w(s);
+    ADD_FAILURE() << "a helical pair was built as a spur pair";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a helical gear (β = 15.000000°)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pinion"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace test_gear_planes
 }  // namespace gearsim::physics
