@@ -118,6 +118,14 @@ shafts:
 motors: [{joint: a_sun, target_speed_rad_s: 20, max_torque_N_m: 5}]
 loads: [{joint: b_carrier, constant_torque_N_m: -1}]
 EOF
+  cat >"$seeds/helical_pair.yaml" <<'EOF'
+name: helical pair
+duration_s: 0.01
+pair:
+  driver: {name: pinion, density_kg_m3: 7850, gear: {kind: external, teeth: 20, normal_module_m: 0.002, normal_pressure_angle_deg: 20, helix_angle_deg: 15, hand: right, face_width_m: 0.02, bore_diameter_m: 0.008, thinning_per_flank_m: 1.0e-5, errors: {flank_offsets: [{tooth: 0, flank: ccw, normal_offset_m: -4.3e-5}]}}}
+  driven: {name: wheel, density_kg_m3: 7850, gear: {kind: external, teeth: 40, normal_module_m: 0.002, helix_angle_deg: 15, hand: left, face_width_m: 0.02, bore_diameter_m: 0.01}}
+motors: [{joint: pinion, target_speed_rad_s: 10, max_torque_N_m: 5}]
+EOF
   cat >"$seeds/ring_pair.yaml" <<'EOF'
 name: ring_pair
 duration_s: 0.01

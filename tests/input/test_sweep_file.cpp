@@ -89,6 +89,10 @@ TEST(SweepFile, UnknownMetricRefused) {
   const std::string m = refusal(kHead + "grid: {duration_s: [1]}\ncollect: {metrics: [peak_joy]}\n");
   EXPECT_NE(m.find("sweep.yaml:4:"), std::string::npos) << m;
   EXPECT_NE(m.find("collect.metrics: unknown metric 'peak_joy'"), std::string::npos) << m;
+  // The dynamic factor has two figures: a sweep names the one it wants.
+  const std::string d = refusal(kHead + "grid: {duration_s: [1]}\ncollect: {metrics: [dynamic_factor]}\n");
+  EXPECT_NE(d.find("dynamic_factor_band_limited, dynamic_factor_per_step"), std::string::npos) << d;
+  EXPECT_NE(d.find("band-limited and per step: name one"), std::string::npos) << d;
 }
 
 TEST(SweepFile, TooManyCasesRefusedBeforeExpansion) {
