@@ -36,6 +36,9 @@ void print_analysis(const nlohmann::ordered_json& j, std::ostream& out) {
         << 100 * p["zero_force_share"].get<double>() << " %";
     if (p.contains("steps_without_force_share"))
       out << ", steps without force " << 100 * p["steps_without_force_share"].get<double>() << " %";
+    out << std::setprecision(3) << ", dynamic factor " << p["dynamic_factor_band_limited"].get<double>() << " band-limited";
+    if (p.contains("dynamic_factor_per_step")) out << ", " << p["dynamic_factor_per_step"].get<double>() << " per step";
+    out << std::setprecision(2);
     out << "; harmonics";
     for (const auto& h : p["mesh_harmonics"])
       if (h.contains("peak_hz"))

@@ -183,11 +183,15 @@ std::string report_signals_section(const RunDir& run, const std::optional<RunDir
                       ? num(hm["peak_hz"].get<double>(), 6) + " Hz, +" + num(hm["over_median_floor_0_1000_hz_db"].get<double>(), 3) + " dB"
                       : "not found");
     while (r.size() < 8) r.push_back("above the record's Nyquist frequency");
+    // The dynamic factor both ways: the per-step one is ISO 6336's K_v.
+    r.push_back(num(q["dynamic_factor_band_limited"].get<double>(), 4));
+    r.push_back(q.contains("dynamic_factor_per_step") ? num(q["dynamic_factor_per_step"].get<double>(), 4) : "no per-step log");
     rows.push_back(r);
   }
-  h += "<h3>Every gear pair</h3>\n" + html_table({"pair", "stage", "mean force, N", "zero-force samples, %", "steps without force, %",
-                                                  "f<sub>m</sub> over floor", "2·f<sub>m</sub>", "3·f<sub>m</sub>"},
-                                                 rows);
+  h += "<h3>Every gear pair</h3>\n" +
+       html_table({"pair", "stage", "mean force, N", "zero-force samples, %", "steps without force, %", "f<sub>m</sub> over floor",
+                   "2·f<sub>m</sub>", "3·f<sub>m</sub>", "dynamic factor, band-limited", "dynamic factor per step (K<sub>v</sub>)"},
+                  rows);
   if (a.contains("contact_loss")) {
     std::string pairs;
     for (const auto& q : a["contact_loss"]["pairs"]) pairs += (pairs.empty() ? "" : ", ") + html_escape(q.get<std::string>());

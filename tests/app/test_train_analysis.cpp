@@ -65,6 +65,7 @@ void expect_report_of_the_train(const fs::path& dir, const std::vector<std::stri
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string html = read_text(dir / "report.html");
   EXPECT_NE(html.find("<h2>The gearbox</h2>"), std::string::npos);
+  EXPECT_NE(html.find("dynamic factor, band-limited"), std::string::npos);
   for (const std::string& st : stages) EXPECT_NE(html.find("<td>" + st + "</td>"), std::string::npos) << st;
   for (const char* paper : {"The paper and this run", "paper Fig.", "planet z = 36", "f<sub>m</sub>/36", "paper's"})
     EXPECT_EQ(html.find(paper), std::string::npos) << paper;
