@@ -6,6 +6,7 @@
 #include "input/safe_name.hpp"
 #include "input/utf8_text.hpp"
 #include "core/errors.hpp"
+#include "geometry/gear_profile.hpp"
 #include "geometry/helical.hpp"
 #include "geometry/constants.hpp"
 
@@ -115,6 +116,13 @@ GearSpec parse_gear(const YamlMap& g, const std::string& name, const YamlMap* de
   g.reject_unknown_keys();
   try {
     validate_gear_spec(s);
+    // Errors and thinning can leave a tooth pointed or flanks crossing, which only drawing its
+    // outline finds: drawn here, so that the refusal names the file and line (a gear without
+    // them is checked in full by its dimensions above).
+    const GearErrors& e = s.errors;
+    if (!e.flank_offsets.empty() || !e.pitch_errors.empty() || !e.profile_slopes.empty() || e.eccentricity.eccentricity_m > 0 ||
+        s.thinning_per_flank_m > 0)
+      make_gear_outline(s);
   } catch (const InputError& e) {
     g.fail_here(e.what());
   }

@@ -232,5 +232,16 @@ TEST(GearSetFile, AHelicalGearIsReadFromItsNormalValues) {
   EXPECT_NE(error_for(g + "normal_module_m: 0.002, helix_angle_deg: 50, hand: right}\n").find("helix_angle_deg"), std::string::npos);
 }
 
+// Flank errors that take a tooth to a point are refused where the gear is written, naming the
+// file, line and key like every other input error (not only when the run draws the gear).
+TEST(GearSetFile, FlankErrorsThatMakeAToothPointedAreRefusedWithTheirLine) {
+  const std::string e = error_for(
+      "name: t\ndensity_kg_m3: 7850\ngears:\n"
+      "  g: {kind: external, teeth: 20, module_m: 0.001, face_width_m: 0.01, errors: {flank_offsets: [{tooth: 0, flank: ccw, "
+      "normal_offset_m: -4.0e-4}, {tooth: 0, flank: cw, normal_offset_m: -4.0e-4}]}}\n");
+  EXPECT_NE(e.find(".yaml:4:"), std::string::npos) << e;
+  EXPECT_NE(e.find("gears.g: gear 'g': tooth 0: flank errors make the tooth pointed"), std::string::npos) << e;
+}
+
 }  // namespace test_gearset_file
 }  // namespace gearsim::input
