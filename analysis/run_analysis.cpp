@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -116,13 +118,22 @@ std::vector<ToothLoads> all_tooth_loads(const RunSignals& s, const TrainDescript
 // the per-step log: a step counts as in contact when any of the pair's contacts in it has a
 // positive normal impulse. The log's rows come in step order (the reader checks it), so each pair
 // keeps only the last step it counted: memory per pair, not per step.
-void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
+// The window's steps, first and last index (step k ends at k·dt: its time in the log, a sum of
+// steps, within rounding of it); nothing without a step or a step in the window.
+std::optional<std::pair<std::int64_t, std::int64_t>> window_steps(const ToothContactLog& log, const RunAnalysis& r) {
   const double dt = log.time_step_s;
-  if (!(dt > 0)) return;
-  // Step k ends at k·dt (its time in the log, a sum of steps: within rounding of it).
+  if (!(dt > 0)) return std::nullopt;
   const auto first = static_cast<std::int64_t>(std::ceil(r.from_s / dt - 1e-6)),
              last = static_cast<std::int64_t>(std::floor(r.to_s / dt + 1e-6));
-  if (last < first) return;
+  if (last < first) return std::nullopt;
+  return std::pair{first, last};
+}
+
+void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
+  const auto w = window_steps(log, r);
+  if (!w) return;
+  const auto [first, last] = *w;
+  const double dt = log.time_step_s;
   std::vector<std::int64_t> with_force(log.pairs.size(), 0), last_counted(log.pairs.size(), first - 1);
   for (std::size_t c = 0; c < log.time_s.size(); ++c) {
     const auto k = static_cast<std::int64_t>(std::llround(log.time_s[c] / dt));
@@ -140,11 +151,10 @@ void steps_without_force(const ToothContactLog& log, RunAnalysis& r) {
 // Per pair, its force in each step of the window (the sum of its contacts' impulses over dt):
 // mean, peak and their ratio, the per-step dynamic factor. Rows in step order: memory per pair.
 void per_step_forces(const ToothContactLog& log, RunAnalysis& r) {
+  const auto w = window_steps(log, r);
+  if (!w) return;
+  const auto [first, last] = *w;
   const double dt = log.time_step_s;
-  if (!(dt > 0)) return;
-  const auto first = static_cast<std::int64_t>(std::ceil(r.from_s / dt - 1e-6)),
-             last = static_cast<std::int64_t>(std::floor(r.to_s / dt + 1e-6));
-  if (last < first) return;
   const std::size_t n = log.pairs.size();
   std::vector<std::int64_t> step(n, first - 1);
   std::vector<double> current(n, 0.0), peak(n, 0.0), total(n, 0.0);

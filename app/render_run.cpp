@@ -45,12 +45,12 @@ render::RenderSettings frame_settings(const physics::RenderDef& o) {
 
 // The frame at simulated time t: the bodies posed, the overlay line, the camera.
 render::Image draw_frame(render::Renderer& renderer, const RunMeshes& meshes, const PoseReplay& replay, const RunDir& run,
-                         const physics::RenderDef& o, double t) {
+                         const std::optional<input::GearTrain>& train, const physics::RenderDef& o, double t) {
   const std::vector<Eigen::Isometry3d> poses = replay.poses(t);
   char line[128];
   std::snprintf(line, sizeof line, "%s  t = %.4f s  (%s, %gx slower)", run.scenario.name.c_str(), t, o.camera.c_str(), o.slowmo);
   const render::Scene scene = run_scene(meshes, poses, {line});
-  return renderer.render(scene, run_camera(o.camera, run, scene, poses, renderer.aspect()));
+  return renderer.render(scene, run_camera(o.camera, run.scenario, train, scene, poses, renderer.aspect()));
 }
 
 }  // namespace
@@ -69,7 +69,7 @@ render::Image render_run_frame(const RunDir& run, const physics::RenderDef& o, d
                      " s of " + (run.dir / "state.csv").string());
   const RunMeshes meshes = run_meshes(run.scenario);
   render::Renderer renderer(frame_settings(o));
-  return draw_frame(renderer, meshes, replay, run, o, t_s);
+  return draw_frame(renderer, meshes, replay, run, camera_train(o.camera, run), o, t_s);
 }
 
 RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const std::function<int()>& stop_requested) {
@@ -85,6 +85,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
   const double dt = 1.0 / (o.fps * o.slowmo);  // simulated seconds per frame
   r.frames = static_cast<long>(std::floor((r.to_s - r.from_s) / dt + 1e-9)) + 1;
   const RunMeshes meshes = run_meshes(run.scenario);
+  const std::optional<input::GearTrain> train = camera_train(o.camera, run);
   render::Renderer renderer(frame_settings(o));
   r.video = run.dir / (o.camera == "overview" ? std::string("video.mp4") : "video_" + o.camera + ".mp4");
   // Every frame file and the video in the folder's manifest before they are written.
@@ -113,7 +114,7 @@ RenderResult render_run(const RunDir& run, const physics::RenderDef& o, const st
       }
     }
     const double t = std::min(r.from_s + static_cast<double>(k) * dt, r.to_s);  // rounding of the last frame
-    const render::Image image = draw_frame(renderer, meshes, replay, run, o, t);
+    const render::Image image = draw_frame(renderer, meshes, replay, run, train, o, t);
     writer->add_frame(image);
     if (o.png_every > 0 && k % o.png_every == 0) {
       render::write_png(image, run.dir / "frames" / frame_name(o.camera, k));

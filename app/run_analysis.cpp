@@ -321,9 +321,10 @@ input::GearTrain run_gear_train(const RunDir& run) {
   return input::gear_train_of(run.scenario, meshes);
 }
 
-RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& o) {
+// The analysis of the run whose train is `train` (run_gear_train's, found once).
+static RunAnalysis analyze_train(const RunDir& run, const input::GearTrain& train, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
-  TrainDescription description = train_description(run_gear_train(run), s);
+  TrainDescription description = train_description(train, s);
   description.loaded_flanks = loaded_flanks(run);
   double from_s = o.from_s;
   // Not before the anti-aliased force is free of its start (held at the first value before t = 0).
@@ -335,10 +336,12 @@ RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& o) {
   return analyze_signals(run_signals(run, description, from_s), description);
 }
 
+RunAnalysis analyze_run_dir(const RunDir& run, const AnalyzeOptions& o) { return analyze_train(run, run_gear_train(run), o); }
+
 json write_run_analysis(const RunDir& run, const AnalyzeOptions& o) {
   const physics::Scenario& s = run.scenario;
   const input::GearTrain train = run_gear_train(run);
-  const RunAnalysis a = analyze_run_dir(run, o);
+  const RunAnalysis a = analyze_train(run, train, o);
   const json j = analysis_json(a, train, s.name);
   declare_outputs(run.dir, {"analysis.json", "spectrum.csv", "sidebands.csv", "teeth.csv", "summary.json"});
   write_output_file(run.dir / "analysis.json", j.dump(2) + "\n", Durability::Record);

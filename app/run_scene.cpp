@@ -64,15 +64,19 @@ render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>
   return scene;
 }
 
-render::Camera run_camera(const std::string& preset, const RunDir& run, const render::Scene& scene,
-                          const std::vector<Eigen::Isometry3d>& poses, double aspect) {
-  const physics::Scenario& s = run.scenario;
+std::optional<input::GearTrain> camera_train(const std::string& preset, const RunDir& run) {
+  if (preset != "sun_mesh" && preset != "ring_mesh") return std::nullopt;
+  return run_gear_train(run);
+}
+
+render::Camera run_camera(const std::string& preset, const physics::Scenario& s, const std::optional<input::GearTrain>& train,
+                          const render::Scene& scene, const std::vector<Eigen::Isometry3d>& poses, double aspect) {
   if (preset == "overview") return render::overview_camera(render::scene_bounds(scene), aspect);
   if (preset == "tilted") return render::overview_camera(render::scene_bounds(scene), aspect, kTilt_rad);
   if (preset == "sun_mesh" || preset == "ring_mesh") {
     // The train's first planetary stage, else its first stage.
-    const input::GearTrain train = run_gear_train(run);
-    const input::TrainStage& t = train.first_planetary() ? *train.first_planetary() : train.stages.front();
+    GEARSIM_CHECK(train.has_value(), "run_camera: the close-up '" + preset + "' needs the run's train (camera_train)");
+    const input::TrainStage& t = train->first_planetary() ? *train->first_planetary() : train->stages.front();
     // The faulty planet (the first whose gear carries an error), planet 0 without one.
     std::string planet = t.planetary ? t.planets.front() : t.driven;
     for (const physics::BodyDef& b : s.bodies)

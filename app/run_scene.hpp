@@ -7,10 +7,12 @@
 #include <Eigen/Geometry>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/run_dir.hpp"
+#include "input/gear_train.hpp"
 #include "physics/scenario.hpp"
 #include "render/camera.hpp"
 #include "render/scene.hpp"
@@ -31,8 +33,13 @@ render::Scene run_scene(const RunMeshes& m, const std::vector<Eigen::Isometry3d>
 // Cameras: "overview" (along −z), "tilted" (30° toward −y), "sun_mesh" and "ring_mesh" (close-ups,
 // 6 mm tall, on the pitch point of the faulty planet — the first planet whose gear carries an
 // error, else planet 0 — with the sun and with the ring; a pair's "sun_mesh" is its mesh).
-// InputError naming the preset when it is unknown or the train has no ring.
-render::Camera run_camera(const std::string& preset, const RunDir& run, const render::Scene& scene,
-                          const std::vector<Eigen::Isometry3d>& poses, double aspect);
+// `train`: the run's (camera_train), for the close-ups. InputError naming the preset when it is
+// unknown or the train has no ring.
+render::Camera run_camera(const std::string& preset, const physics::Scenario& s, const std::optional<input::GearTrain>& train,
+                          const render::Scene& scene, const std::vector<Eigen::Isometry3d>& poses, double aspect);
+
+// The run's gear train when `preset` is a close-up that needs it, else nothing: found once per
+// render, not per frame.
+std::optional<input::GearTrain> camera_train(const std::string& preset, const RunDir& run);
 
 }  // namespace gearsim::app

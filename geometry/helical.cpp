@@ -11,7 +11,8 @@ void set_transverse(GearSpec& s, const NormalValues& n) {
   const double c = std::cos(n.helix_angle_rad);
   s.helix_angle_rad = n.helix_angle_rad;
   s.module_m = n.module_m / c;
-  s.pressure_angle_rad = std::atan(std::tan(n.pressure_angle_rad) / c);
+  // A spur gear's angle as given, bit for bit (atan(tan α) may differ from α in the last bit).
+  s.pressure_angle_rad = n.helix_angle_rad == 0 ? n.pressure_angle_rad : std::atan(std::tan(n.pressure_angle_rad) / c);
   s.addendum_coeff = n.addendum_coeff * c;
   s.dedendum_coeff = n.dedendum_coeff * c;
   s.root_fillet_coeff = n.root_fillet_coeff * c;

@@ -79,28 +79,24 @@ GearSpec parse_gear(const YamlMap& g, const std::string& name, const YamlMap* de
   // A helical gear is given by its normal values (ISO 21771) and converted to its transverse
   // section (helical.hpp); a spur gear by its module and pressure angle.
   const double helix = angle("helix_angle", 0.0, limits::kHelixAngle_rad);
+  NormalValues n;  // a spur gear's are its own (β = 0)
   if (helix != 0.0) {
     for (const char* key : {"module_m", "pressure_angle_deg", "pressure_angle_rad"})
       if (g.has(key)) g.fail(key, "a helical gear is given by its normal values: normal_module_m and normal_pressure_angle_deg");
-    NormalValues n;
     n.helix_angle_rad = g.choice("hand", {"right", "left"}) == "right" ? helix : -helix;
     n.module_m = num("normal_module_m", std::nullopt, limits::kModule_m);
     n.pressure_angle_rad = angle("normal_pressure_angle", constants::kDefaultPressureAngle_rad, limits::kPressureAngle_rad);
-    n.profile_shift = num("profile_shift", 0.0, limits::kProfileShift);
-    n.addendum_coeff = num("addendum_coeff", constants::kAddendumCoeff, limits::kToothDepthFactor);
-    n.dedendum_coeff = num("dedendum_coeff", constants::kDedendumCoeff, limits::kToothDepthFactor);
-    n.root_fillet_coeff = num("root_fillet_coeff", constants::kRootFilletCoeff, limits::kRootFilletFactor);
-    set_transverse(s, n);
   } else {
     for (const char* key : {"hand", "normal_module_m", "normal_pressure_angle_deg", "normal_pressure_angle_rad"})
       if (g.has(key)) g.fail(key, "only a helical gear (helix_angle_deg > 0) has a hand and normal values; a spur gear takes module_m");
-    s.module_m = num("module_m", std::nullopt, limits::kModule_m);
-    s.pressure_angle_rad = angle("pressure_angle", constants::kDefaultPressureAngle_rad, limits::kPressureAngle_rad);
-    s.profile_shift = num("profile_shift", 0.0, limits::kProfileShift);
-    s.addendum_coeff = num("addendum_coeff", constants::kAddendumCoeff, limits::kToothDepthFactor);
-    s.dedendum_coeff = num("dedendum_coeff", constants::kDedendumCoeff, limits::kToothDepthFactor);
-    s.root_fillet_coeff = num("root_fillet_coeff", constants::kRootFilletCoeff, limits::kRootFilletFactor);
+    n.module_m = num("module_m", std::nullopt, limits::kModule_m);
+    n.pressure_angle_rad = angle("pressure_angle", constants::kDefaultPressureAngle_rad, limits::kPressureAngle_rad);
   }
+  n.profile_shift = num("profile_shift", 0.0, limits::kProfileShift);
+  n.addendum_coeff = num("addendum_coeff", constants::kAddendumCoeff, limits::kToothDepthFactor);
+  n.dedendum_coeff = num("dedendum_coeff", constants::kDedendumCoeff, limits::kToothDepthFactor);
+  n.root_fillet_coeff = num("root_fillet_coeff", constants::kRootFilletCoeff, limits::kRootFilletFactor);
+  set_transverse(s, n);
   s.face_width_m = num("face_width_m", std::nullopt, limits::kFaceWidth_m);
   // Lengths along the flank normal (normal plane) as the transverse section's.
   s.thinning_per_flank_m = normal_to_transverse_m(s, num("thinning_per_flank_m", 0.0, limits::kThinning_m));
